@@ -1,0 +1,86 @@
+//! Derjaguin–Muller–Toporov: Hertz deformation plus a constant adhesive force
+//! acting while in contact.
+//!
+//! Thesis (1-41); Derjaguin, Muller & Toporov 1975:
+//! `P = (4/3) E* R^{1/2} δ^{3/2} − 2π w R` for δ ≥ 0, `a = √(Rδ)`; out of contact
+//! (δ < 0) the force is zero (the range of the surface forces is neglected).
+//! Pull-off is `−2πwR` under both controls. The limit λ → 0 of
+//! [`super::MaugisDugdale`].
+
+use super::{check_delta, check_force, stateless, Control, ContactState, Hertz, NormalContact, NormalResponse};
+use crate::error::{check, Result};
+use core::f64::consts::PI;
+
+/// DMT sphere.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dmt {
+    /// Sphere radius R (m).
+    pub radius: f64,
+    /// Contact modulus E* (Pa).
+    pub e_star: f64,
+    /// Work of adhesion w (J/m²).
+    pub work_of_adhesion: f64,
+}
+
+impl Dmt {
+    /// A DMT sphere: radius (m), contact modulus (Pa), work of adhesion (J/m², ≥ 0).
+    pub fn new(radius: f64, e_star: f64, work_of_adhesion: f64) -> Result<Self> {
+        Ok(Self {
+            radius: check::positive("radius", radius)?,
+            e_star: check::positive("e_star", e_star)?,
+            work_of_adhesion: check::non_negative("work_of_adhesion", work_of_adhesion)?,
+        })
+    }
+
+    /// The adhesive force magnitude `2πwR` (N).
+    #[inline]
+    pub fn adhesive_force(&self) -> f64 {
+        2.0 * PI * self.work_of_adhesion * self.radius
+    }
+
+    #[inline]
+    fn hertz(&self) -> Hertz {
+        Hertz {
+            radius: self.radius,
+            e_star: self.e_star,
+        }
+    }
+}
+
+impl NormalContact for Dmt {
+    #[inline]
+    fn eval(&self, delta: f64, _old: &ContactState) -> Result<(NormalResponse, ContactState)> {
+        let delta = check_delta(delta)?;
+        if delta < 0.0 {
+            return Ok(stateless(0.0, delta, 0.0, 0.0));
+        }
+        let (f, a, k) = self.hertz().at_overlap(delta);
+        Ok(stateless(f - self.adhesive_force(), delta, a, k))
+    }
+
+    fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {
+        let force = check_force(force)?;
+        let fa = self.adhesive_force();
+        if force < -fa {
+            return Err(super::below_pull_off(force));
+        }
+        let mut r = self.hertz().eval_at_load(force + fa)?;
+        r.force = force;
+        r.in_contact = 1;
+        Ok(r)
+    }
+
+    fn pull_off_force(&self, _control: Control) -> Result<f64> {
+        Ok(-self.adhesive_force())
+    }
+
+    /// The overlap at which the Hertz force equals the adhesive force,
+    /// `(3πw√R/(2E*))^{2/3}`; the radius when w = 0.
+    fn length_scale(&self) -> f64 {
+        if self.work_of_adhesion == 0.0 {
+            return self.radius;
+        }
+        (3.0 * PI * self.work_of_adhesion * self.radius.sqrt() / (2.0 * self.e_star)).powf(2.0 / 3.0)
+    }
+}

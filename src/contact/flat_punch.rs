@@ -1,0 +1,69 @@
+//! Rigid flat-ended cylindrical punch on an elastic half-space (Boussinesq),
+//! no adhesion: `P = 2 E* a δ` (frictionless), `P = 2 E* a δ · C_NS` when the
+//! punch is bonded (no slip; thesis §4.4, Borodich et al. 2014, with
+//! [`crate::material::no_slip_factor`]). The stiffness is constant while in
+//! contact. The adhesive version is [`super::Kendall`].
+
+use super::{check_delta, check_force, stateless, Control, ContactState, NormalContact, NormalResponse};
+use crate::error::{check, Result};
+use crate::material::no_slip_factor;
+
+/// Flat punch.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlatPunch {
+    /// Punch radius a (m).
+    pub radius: f64,
+    /// Contact modulus E* (Pa).
+    pub e_star: f64,
+    /// Stiffness `2 E* a` times the no-slip factor (1 when frictionless) (N/m).
+    pub stiffness: f64,
+}
+
+impl FlatPunch {
+    /// Frictionless punch of radius `radius` (m) and contact modulus `e_star` (Pa).
+    pub fn new(radius: f64, e_star: f64) -> Result<Self> {
+        let radius = check::positive("radius", radius)?;
+        let e_star = check::positive("e_star", e_star)?;
+        Ok(Self {
+            radius,
+            e_star,
+            stiffness: 2.0 * e_star * radius,
+        })
+    }
+
+    /// Punch bonded to a half-space of Poisson's ratio `nu` (no slip):
+    /// stiffness `2 E* a C_NS(ν)`.
+    pub fn no_slip(radius: f64, e_star: f64, nu: f64) -> Result<Self> {
+        let mut p = Self::new(radius, e_star)?;
+        p.stiffness *= no_slip_factor(nu)?;
+        Ok(p)
+    }
+}
+
+impl NormalContact for FlatPunch {
+    #[inline]
+    fn eval(&self, delta: f64, _old: &ContactState) -> Result<(NormalResponse, ContactState)> {
+        let delta = check_delta(delta)?;
+        if delta < 0.0 {
+            return Ok(stateless(0.0, delta, 0.0, 0.0));
+        }
+        Ok(stateless(self.stiffness * delta, delta, self.radius, self.stiffness))
+    }
+
+    fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {
+        let force = check_force(force)?;
+        if force < 0.0 {
+            return Err(super::below_pull_off(force));
+        }
+        Ok(stateless(force, force / self.stiffness, self.radius, self.stiffness).0)
+    }
+
+    fn pull_off_force(&self, _control: Control) -> Result<f64> {
+        Ok(0.0)
+    }
+
+    fn length_scale(&self) -> f64 {
+        self.radius
+    }
+}

@@ -1,0 +1,102 @@
+//! Hertz: elastic sphere (paraboloid) on a flat, no adhesion.
+//!
+//! Thesis (1-15)..(1-17); Hertz 1882; Johnson 1985 §4.2:
+//!
+//! * `a = √(R δ)`, `P = (4/3) E* R^{1/2} δ^{3/2}`, `dP/dδ = 2 E* a`,
+//! * `a = (3 P R / (4 E*))^{1/3}` under load, peak pressure `p₀ = 3P/(2πa²)`.
+//!
+//! With the Galanov effective radius ([`Hertz::sphere_in_crater`], thesis
+//! (2-19)) the same law describes a sphere unloading from its own plastic
+//! crater.
+
+use super::{check_delta, check_force, stateless, Control, ContactState, NormalContact, NormalResponse};
+use crate::error::{check, Error, Result};
+
+/// Hertz sphere.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hertz {
+    /// Radius of curvature R of the sphere, or the effective radius
+    /// `1/R = 1/R₁ + 1/R₂` of two spheres (m).
+    pub radius: f64,
+    /// Contact modulus E* (Pa).
+    pub e_star: f64,
+}
+
+impl Hertz {
+    /// A sphere of radius `radius` (m) with contact modulus `e_star` (Pa).
+    pub fn new(radius: f64, e_star: f64) -> Result<Self> {
+        Ok(Self {
+            radius: check::positive("radius", radius)?,
+            e_star: check::positive("e_star", e_star)?,
+        })
+    }
+
+    /// Galanov's effective shape for a sphere of radius `sphere_radius` pressed
+    /// into a spherical crater of radius `crater_radius` (m) (thesis (2-19)):
+    /// `1/R_eff = 1/R_sphere − 1/R_crater`. `crater_radius = +∞` is a flat. The
+    /// crater must be flatter than the sphere (`crater_radius > sphere_radius`).
+    pub fn sphere_in_crater(sphere_radius: f64, crater_radius: f64, e_star: f64) -> Result<Self> {
+        let rs = check::positive("sphere_radius", sphere_radius)?;
+        if crater_radius.is_nan() || crater_radius <= rs {
+            return Err(Error::InvalidArgument {
+                name: "crater_radius",
+                value: crater_radius,
+                bound: "> sphere_radius (+inf for a flat)",
+            });
+        }
+        let inv = 1.0 / rs - 1.0 / crater_radius;
+        Self::new(1.0 / inv, e_star)
+    }
+
+    /// Contact radius under load `force` ≥ 0 (N): `a = (3PR/(4E*))^{1/3}` (1-15).
+    #[inline]
+    pub fn contact_radius_at_load(&self, force: f64) -> f64 {
+        (3.0 * force * self.radius / (4.0 * self.e_star)).cbrt()
+    }
+
+    /// Maximum (central) pressure `p₀ = 3P/(2πa²)` (Pa) at load `force` > 0 (1-17).
+    pub fn peak_pressure(&self, force: f64) -> Result<f64> {
+        let p = check::positive("force", force)?;
+        let a = self.contact_radius_at_load(p);
+        Ok(3.0 * p / (2.0 * core::f64::consts::PI * a * a))
+    }
+
+    /// Force, contact radius and stiffness at overlap δ ≥ 0 (no checks).
+    #[inline]
+    pub(crate) fn at_overlap(&self, delta: f64) -> (f64, f64, f64) {
+        let a = (self.radius * delta).sqrt();
+        let force = 4.0 / 3.0 * self.e_star * a * delta;
+        (force, a, 2.0 * self.e_star * a)
+    }
+}
+
+impl NormalContact for Hertz {
+    #[inline]
+    fn eval(&self, delta: f64, _old: &ContactState) -> Result<(NormalResponse, ContactState)> {
+        let delta = check_delta(delta)?;
+        if delta <= 0.0 {
+            return Ok(stateless(0.0, delta, 0.0, 0.0));
+        }
+        let (f, a, k) = self.at_overlap(delta);
+        Ok(stateless(f, delta, a, k))
+    }
+
+    fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {
+        let force = check_force(force)?;
+        if force < 0.0 {
+            return Err(super::below_pull_off(force));
+        }
+        let a = self.contact_radius_at_load(force);
+        let delta = a * a / self.radius;
+        Ok(stateless(force, delta, a, 2.0 * self.e_star * a).0)
+    }
+
+    fn pull_off_force(&self, _control: Control) -> Result<f64> {
+        Ok(0.0)
+    }
+
+    fn length_scale(&self) -> f64 {
+        self.radius
+    }
+}

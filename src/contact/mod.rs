@@ -1,0 +1,254 @@
+//! Single-asperity normal contact laws.
+//!
+//! One file per law; every law implements [`NormalContact`]. Conventions, the
+//! same everywhere in the library:
+//!
+//! * `delta` δ (m) is the **overlap**: δ > 0 is penetration, δ < 0 separation.
+//!   For a rigid sphere under a surface-force law ([`derjaguin`]) δ is measured
+//!   from the position where the gap equals the law's length scale (see there).
+//! * `force` P (N) is **positive when repulsive** (compressive).
+//! * `work_of_adhesion` w (J/m²) is Dupré's, `w = 2γ` for identical surfaces.
+//! * `e_star` E* (Pa) is the contact modulus of
+//!   [`crate::material::effective_modulus`].
+//!
+//! Hysteretic laws (JKR, Maugis–Dugdale with jump-in/jump-out, Kendall) read
+//! their history from a caller-owned [`ContactState`] and return the new one
+//! separately, so a host code can re-evaluate an increment or cut it back. An
+//! all-zero state means "never touched" (the surfaces approach from afar).
+//!
+//! Evaluations never allocate.
+
+use crate::error::{Error, Result};
+
+pub mod derjaguin;
+pub mod dmt;
+pub mod flat_punch;
+pub mod hertz;
+pub mod jkr;
+pub mod jkr_power_punch;
+pub mod kendall;
+pub mod maugis_dugdale;
+pub mod power_punch;
+
+pub use derjaguin::{Derjaguin, SurfaceLaw};
+pub use dmt::Dmt;
+pub use flat_punch::FlatPunch;
+pub use hertz::Hertz;
+pub use jkr::Jkr;
+pub use jkr_power_punch::JkrPowerPunch;
+pub use kendall::Kendall;
+pub use maugis_dugdale::MaugisDugdale;
+pub use power_punch::PowerPunch;
+
+/// How the contact is driven, which decides where an adhesive contact
+/// separates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Control {
+    /// The force is prescribed ("load control", soft machine): the contact
+    /// separates at the minimum of P on the equilibrium curve.
+    Load,
+    /// The approach δ is prescribed ("displacement control", rigid machine,
+    /// fixed grips): the contact separates where dδ/da = 0 on retraction.
+    Displacement,
+}
+
+/// Per-contact history, owned by the caller. All-zero means "never touched".
+///
+/// Laws without hysteresis ignore the old state and write the current one.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactState {
+    /// Contact radius a at the end of the step (m).
+    pub contact_radius: f64,
+    /// Outer radius c of the cohesive (adhesive) zone at the end of the step (m);
+    /// 0 when the law has none.
+    pub cohesive_radius: f64,
+    /// 1 when the surfaces are in contact (or, for laws with a cohesive zone,
+    /// interacting) at the end of the step, 0 otherwise.
+    pub in_contact: i32,
+    /// Law-specific index of the equilibrium branch the contact is on; 0 for a
+    /// fresh state.
+    pub branch: i32,
+}
+
+/// Result of one evaluation.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct NormalResponse {
+    /// Normal force P (N), positive when repulsive.
+    pub force: f64,
+    /// Overlap δ (m) of this equilibrium (the input under displacement control).
+    pub delta: f64,
+    /// Contact radius a (m); 0 out of contact.
+    pub contact_radius: f64,
+    /// Tangent stiffness dP/dδ (N/m) along the branch the contact is on.
+    pub stiffness: f64,
+    /// 1 in contact, 0 otherwise.
+    pub in_contact: i32,
+    /// Reserved, always 0.
+    pub reserved: i32,
+}
+
+/// A single-asperity normal contact law.
+pub trait NormalContact {
+    /// Equilibrium at the prescribed overlap `delta` (m), starting from the
+    /// history `old`. Returns the response and the new state; `old` is not
+    /// modified, so the same step can be evaluated again.
+    fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)>;
+
+    /// Equilibrium at the prescribed force `force` (N) on the stable branch
+    /// (largest contact radius). Errors with [`Error::OutOfDomain`] below the
+    /// load-controlled pull-off force.
+    fn eval_at_load(&self, force: f64) -> Result<NormalResponse>;
+
+    /// The force at which the contact separates (N, ≤ 0 for adhesive laws, 0
+    /// without adhesion) under the given control.
+    fn pull_off_force(&self, control: Control) -> Result<f64>;
+
+    /// A characteristic overlap of the law (m), used to non-dimensionalise
+    /// (for example the JKR critical approach for adhesive spheres, the
+    /// radius for Hertz).
+    fn length_scale(&self) -> f64;
+}
+
+/// Any of the library's normal laws, by value. This is what scenes and the C
+/// ABI carry; it dispatches to the law's own implementation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum NormalLaw {
+    /// [`Hertz`] sphere.
+    Hertz(Hertz),
+    /// [`PowerPunch`] (Galin), including cones.
+    PowerPunch(PowerPunch),
+    /// [`FlatPunch`] (Boussinesq).
+    FlatPunch(FlatPunch),
+    /// [`Dmt`] sphere.
+    Dmt(Dmt),
+    /// [`Jkr`] sphere.
+    Jkr(Jkr),
+    /// [`JkrPowerPunch`], frictionless or no-slip.
+    JkrPowerPunch(JkrPowerPunch),
+    /// [`Kendall`] adhesive flat punch.
+    Kendall(Kendall),
+    /// [`MaugisDugdale`] sphere.
+    MaugisDugdale(MaugisDugdale),
+    /// [`Derjaguin`] rigid sphere with a surface-force law.
+    Derjaguin(Derjaguin),
+}
+
+macro_rules! dispatch {
+    ($self:ident, $law:ident => $e:expr) => {
+        match $self {
+            NormalLaw::Hertz($law) => $e,
+            NormalLaw::PowerPunch($law) => $e,
+            NormalLaw::FlatPunch($law) => $e,
+            NormalLaw::Dmt($law) => $e,
+            NormalLaw::Jkr($law) => $e,
+            NormalLaw::JkrPowerPunch($law) => $e,
+            NormalLaw::Kendall($law) => $e,
+            NormalLaw::MaugisDugdale($law) => $e,
+            NormalLaw::Derjaguin($law) => $e,
+        }
+    };
+}
+
+/// `NormalLaw` adds one guarantee to the laws it dispatches to: an `Ok`
+/// response is finite (an overflow at an extreme overlap or load becomes
+/// [`Error::OutOfDomain`]).
+impl NormalContact for NormalLaw {
+    #[inline]
+    fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
+        dispatch!(self, l => l.eval(delta, old)).and_then(finite_response)
+    }
+    #[inline]
+    fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {
+        let r = dispatch!(self, l => l.eval_at_load(force))?;
+        if is_finite(&r) {
+            Ok(r)
+        } else {
+            Err(Error::OutOfDomain {
+                name: "force",
+                value: force,
+                reason: "the response overflows f64",
+            })
+        }
+    }
+    #[inline]
+    fn pull_off_force(&self, control: Control) -> Result<f64> {
+        dispatch!(self, l => l.pull_off_force(control))
+    }
+    #[inline]
+    fn length_scale(&self) -> f64 {
+        dispatch!(self, l => l.length_scale())
+    }
+}
+
+/// Check an overlap argument: any finite value.
+#[inline]
+pub(crate) fn check_delta(delta: f64) -> Result<f64> {
+    crate::error::check::finite("delta", delta)
+}
+
+/// Check a force argument: any finite value.
+#[inline]
+pub(crate) fn check_force(force: f64) -> Result<f64> {
+    crate::error::check::finite("force", force)
+}
+
+/// The response and state of a law without hysteresis.
+#[inline]
+pub(crate) fn stateless(
+    force: f64,
+    delta: f64,
+    contact_radius: f64,
+    stiffness: f64,
+) -> (NormalResponse, ContactState) {
+    let in_contact = (contact_radius > 0.0 || delta >= 0.0) as i32;
+    (
+        NormalResponse {
+            force,
+            delta,
+            contact_radius,
+            stiffness,
+            in_contact,
+            reserved: 0,
+        },
+        ContactState {
+            contact_radius,
+            cohesive_radius: 0.0,
+            in_contact,
+            branch: 0,
+        },
+    )
+}
+
+/// Error for a load below what a law can sustain.
+#[inline]
+pub(crate) fn below_pull_off(force: f64) -> Error {
+    Error::OutOfDomain {
+        name: "force",
+        value: force,
+        reason: "below the load-controlled pull-off force: no equilibrium",
+    }
+}
+
+#[inline]
+fn is_finite(r: &NormalResponse) -> bool {
+    r.force.is_finite() && r.delta.is_finite() && r.contact_radius.is_finite() && r.stiffness.is_finite()
+}
+
+/// Pass a finite response through; an overflowed one becomes
+/// [`Error::OutOfDomain`] on `delta`.
+#[inline]
+pub(crate) fn finite_response(
+    rs: (NormalResponse, ContactState),
+) -> Result<(NormalResponse, ContactState)> {
+    if is_finite(&rs.0) {
+        Ok(rs)
+    } else {
+        Err(Error::OutOfDomain {
+            name: "delta",
+            value: rs.0.delta,
+            reason: "the response overflows f64",
+        })
+    }
+}

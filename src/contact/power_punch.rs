@@ -1,0 +1,177 @@
+//! Galin's axisymmetric power-law punch `f(r) = B r^d`, d ≥ 1, no adhesion.
+//!
+//! Thesis (1-19)..(1-22); Galin 1946; Borodich 1983; Sneddon 1965:
+//!
+//! * `δ(a) = D(d) B a^d`, `D(d) = √π Γ(d/2 + 1) / Γ(d/2 + 1/2)`,
+//! * `P(a) = C(d) B E* a^{d+1}`, `C(d) = (2d/(d+1)) D(d)`,
+//! * `dP/dδ = 2 E* a` for every d (the BASh relation).
+//!
+//! `d = 2, B = 1/(2R)` is Hertz; `d = 1, B = cot γ` the cone of half-angle γ
+//! (`P = (π/2) E* a² cot γ`, `δ = (π/2) a cot γ`). Pyramids enter through the
+//! cone of equal projected area ([`BERKOVICH_EQUIVALENT_HALF_ANGLE`], …). A cone
+//! unloading from its own imprint uses Galanov's effective cone
+//! ([`PowerPunch::cone_in_imprint`], thesis (2-18)).
+
+use super::{check_delta, check_force, stateless, Control, ContactState, NormalContact, NormalResponse};
+use crate::error::{check, Error, Result};
+
+/// Half-angle (rad) of the cone with the projected area of a Berkovich pyramid
+/// at equal depth: 70.3° (thesis §3.6.2).
+pub const BERKOVICH_EQUIVALENT_HALF_ANGLE: f64 = 70.3 * core::f64::consts::PI / 180.0;
+/// Half-angle (rad) of the cone equivalent to a Vickers pyramid: 70.3°
+/// (thesis §3.6.2).
+pub const VICKERS_EQUIVALENT_HALF_ANGLE: f64 = 70.3 * core::f64::consts::PI / 180.0;
+/// Half-angle (rad) of the cone equivalent to a cube-corner pyramid: 42.3°
+/// (thesis §3.6.2).
+pub const CUBE_CORNER_EQUIVALENT_HALF_ANGLE: f64 = 42.3 * core::f64::consts::PI / 180.0;
+
+/// Largest accepted exponent d. Beyond it `a^d` leaves the range of `f64` for
+/// any physically sized punch; use [`super::FlatPunch`] for the limit d → ∞.
+pub const MAX_EXPONENT: f64 = 100.0;
+
+/// Galin's `D(d) = √π Γ(d/2+1)/Γ(d/2+1/2)` (dimensionless), `δ = D B a^d`.
+/// D(1) = π/2, D(2) = 2, D(3) = 3π/4.
+pub fn galin_d(d: f64) -> f64 {
+    let x = 0.5 * d;
+    core::f64::consts::PI.sqrt() * (libm::lgamma(x + 1.0) - libm::lgamma(x + 0.5)).exp()
+}
+
+/// Galin's `C(d) = (2d/(d+1)) D(d)` (dimensionless), `P = C B E* a^{d+1}`.
+/// C(1) = π/2, C(2) = 8/3.
+pub fn galin_c(d: f64) -> f64 {
+    2.0 * d / (d + 1.0) * galin_d(d)
+}
+
+/// Validate the shape of a power-law punch, shared by the adhesive variant.
+pub(crate) fn check_shape(b: f64, d: f64) -> Result<(f64, f64)> {
+    let b = check::positive("b", b)?;
+    let d = check::in_range("d", d, 1.0, MAX_EXPONENT, "in [1, 100]")?;
+    Ok((b, d))
+}
+
+/// A power-law punch `f(r) = B r^d`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PowerPunch {
+    /// Shape coefficient B (m^{1−d}).
+    pub b: f64,
+    /// Shape exponent d (1 ≤ d ≤ 100).
+    pub d: f64,
+    /// Contact modulus E* (Pa).
+    pub e_star: f64,
+    /// Cached `C(d) B E*` (Pa·m^{1−d}).
+    pub force_coefficient: f64,
+    /// Cached `D(d) B` (m^{1−d}).
+    pub depth_coefficient: f64,
+}
+
+impl PowerPunch {
+    /// A punch `f(r) = b r^d` with contact modulus `e_star` (Pa).
+    pub fn new(b: f64, d: f64, e_star: f64) -> Result<Self> {
+        let (b, d) = check_shape(b, d)?;
+        let e_star = check::positive("e_star", e_star)?;
+        Ok(Self {
+            b,
+            d,
+            e_star,
+            force_coefficient: galin_c(d) * b * e_star,
+            depth_coefficient: galin_d(d) * b,
+        })
+    }
+
+    /// A cone of half-angle `half_angle` (rad, in (0, π/2)): `d = 1`, `B = cot γ`.
+    pub fn cone(half_angle: f64, e_star: f64) -> Result<Self> {
+        let g = check_half_angle("half_angle", half_angle)?;
+        Self::new(1.0 / g.tan(), 1.0, e_star)
+    }
+
+    /// Galanov's effective cone for a cone of half-angle `indenter_half_angle`
+    /// unloading from a conical imprint of half-angle `imprint_half_angle`
+    /// (rad) (thesis (2-18)): `B₁ = cot γ_i − cot γ_f`. The imprint must be
+    /// blunter than the indenter (`imprint_half_angle > indenter_half_angle`);
+    /// `π/2` is a flat.
+    pub fn cone_in_imprint(
+        indenter_half_angle: f64,
+        imprint_half_angle: f64,
+        e_star: f64,
+    ) -> Result<Self> {
+        let gi = check_half_angle("indenter_half_angle", indenter_half_angle)?;
+        if !(imprint_half_angle > gi && imprint_half_angle <= core::f64::consts::FRAC_PI_2) {
+            return Err(Error::InvalidArgument {
+                name: "imprint_half_angle",
+                value: imprint_half_angle,
+                bound: "in (indenter_half_angle, pi/2]",
+            });
+        }
+        let cot_f = imprint_half_angle.cos() / imprint_half_angle.sin();
+        Self::new(1.0 / gi.tan() - cot_f, 1.0, e_star)
+    }
+
+    /// Overlap at contact radius `a` (m): `δ = D(d) B a^d` (1-19).
+    #[inline]
+    pub fn delta_at_radius(&self, a: f64) -> f64 {
+        self.depth_coefficient * a.powf(self.d)
+    }
+
+    /// Force at contact radius `a` (m): `P = C(d) B E* a^{d+1}` (1-20).
+    #[inline]
+    pub fn force_at_radius(&self, a: f64) -> f64 {
+        self.force_coefficient * a.powf(self.d + 1.0)
+    }
+
+    /// Contact radius at overlap δ ≥ 0: `a = (δ/(D B))^{1/d}` (1-21).
+    #[inline]
+    pub fn radius_at_delta(&self, delta: f64) -> f64 {
+        (delta / self.depth_coefficient).powf(1.0 / self.d)
+    }
+}
+
+fn check_half_angle(name: &'static str, g: f64) -> Result<f64> {
+    if g > 0.0 && g < core::f64::consts::FRAC_PI_2 {
+        Ok(g)
+    } else {
+        Err(Error::InvalidArgument {
+            name,
+            value: g,
+            bound: "in (0, pi/2) rad",
+        })
+    }
+}
+
+impl NormalContact for PowerPunch {
+    #[inline]
+    fn eval(&self, delta: f64, _old: &ContactState) -> Result<(NormalResponse, ContactState)> {
+        let delta = check_delta(delta)?;
+        if delta <= 0.0 {
+            return Ok(stateless(0.0, delta, 0.0, 0.0));
+        }
+        let a = self.radius_at_delta(delta);
+        // P = C B E* a^{d+1} = (C/D) E* a δ: one powf per call.
+        let force = self.force_coefficient / self.depth_coefficient * a * delta;
+        Ok(stateless(force, delta, a, 2.0 * self.e_star * a))
+    }
+
+    fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {
+        let force = check_force(force)?;
+        if force < 0.0 {
+            return Err(super::below_pull_off(force));
+        }
+        let a = (force / self.force_coefficient).powf(1.0 / (self.d + 1.0));
+        Ok(stateless(force, self.delta_at_radius(a), a, 2.0 * self.e_star * a).0)
+    }
+
+    fn pull_off_force(&self, _control: Control) -> Result<f64> {
+        Ok(0.0)
+    }
+
+    /// The contact radius at which the punch depth equals the radius,
+    /// `(D B)^{−1/(d−1)}`, for d > 1; `1/(D B)`… is dimensionless for the
+    /// cone, whose scale is taken as 1 m.
+    fn length_scale(&self) -> f64 {
+        if self.d > 1.0 {
+            self.depth_coefficient.powf(-1.0 / (self.d - 1.0))
+        } else {
+            1.0
+        }
+    }
+}

@@ -1,0 +1,165 @@
+//! The Rust error type.
+//!
+//! Every fallible function of the library returns [`Result<T>`]. The variants
+//! carry only `&'static str` and numbers, so building an error never allocates
+//! (a host code can hit the error path inside a hot loop without touching the
+//! heap); the message is formatted only when it is displayed. The C ABI maps each
+//! variant to a status code in `ffi/status.rs` and nowhere else.
+
+use core::fmt;
+
+/// The library's error.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Error {
+    /// An argument is outside its documented domain (negative radius, ν > 0.5,
+    /// NaN, …). `name` is the argument's name as it appears in the API and
+    /// `bound` the condition it violates.
+    InvalidArgument {
+        /// Argument name, as in the API (e.g. `"radius"`).
+        name: &'static str,
+        /// The value received.
+        value: f64,
+        /// The violated condition, as text (e.g. `"finite and > 0"`).
+        bound: &'static str,
+    },
+    /// A required pointer was NULL (C ABI only).
+    NullPointer {
+        /// Argument name.
+        name: &'static str,
+    },
+    /// An integer selector (law kind, control mode, …) has no meaning.
+    UnknownSelector {
+        /// Argument name (e.g. `"kind"`).
+        name: &'static str,
+        /// The value received.
+        value: i64,
+    },
+    /// The arguments are individually valid but the requested state does not
+    /// exist for this law (for example a rigid-sphere law asked for a
+    /// penetration, or a load below the pull-off force).
+    OutOfDomain {
+        /// Argument name.
+        name: &'static str,
+        /// The value received.
+        value: f64,
+        /// Why it is outside the law's domain.
+        reason: &'static str,
+    },
+    /// An iterative method did not reach its tolerance.
+    NotConverged {
+        /// Which solver.
+        what: &'static str,
+        /// Iterations spent.
+        iterations: u32,
+        /// Residual reached (in the solver's own scaled units).
+        residual: f64,
+    },
+}
+
+/// `Result` with the library's [`Error`].
+pub type Result<T> = core::result::Result<T, Error>;
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Error::InvalidArgument { name, value, bound } => {
+                write!(f, "invalid argument `{name}` = {value:e}: must be {bound}")
+            }
+            Error::NullPointer { name } => write!(f, "null pointer: `{name}` must not be NULL"),
+            Error::UnknownSelector { name, value } => {
+                write!(f, "unknown value {value} for `{name}`")
+            }
+            Error::OutOfDomain { name, value, reason } => {
+                write!(f, "out of domain: `{name}` = {value:e}: {reason}")
+            }
+            Error::NotConverged {
+                what,
+                iterations,
+                residual,
+            } => write!(
+                f,
+                "not converged: {what} after {iterations} iterations (residual {residual:e})"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// Argument checks shared by every module. Each returns the value on success so
+/// constructors read as `let r = check::positive("radius", radius)?;`.
+pub mod check {
+    use super::{Error, Result};
+
+    /// Finite and strictly positive.
+    #[inline]
+    pub fn positive(name: &'static str, value: f64) -> Result<f64> {
+        if value.is_finite() && value > 0.0 {
+            Ok(value)
+        } else {
+            Err(Error::InvalidArgument {
+                name,
+                value,
+                bound: "finite and > 0",
+            })
+        }
+    }
+
+    /// Finite and ≥ 0.
+    #[inline]
+    pub fn non_negative(name: &'static str, value: f64) -> Result<f64> {
+        if value.is_finite() && value >= 0.0 {
+            Ok(value)
+        } else {
+            Err(Error::InvalidArgument {
+                name,
+                value,
+                bound: "finite and >= 0",
+            })
+        }
+    }
+
+    /// Finite (any sign).
+    #[inline]
+    pub fn finite(name: &'static str, value: f64) -> Result<f64> {
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(Error::InvalidArgument {
+                name,
+                value,
+                bound: "finite",
+            })
+        }
+    }
+
+    /// Poisson's ratio of an isotropic solid used by the contact laws: 0 ≤ ν ≤ 0.5.
+    #[inline]
+    pub fn poisson(name: &'static str, value: f64) -> Result<f64> {
+        if (0.0..=0.5).contains(&value) {
+            Ok(value)
+        } else {
+            Err(Error::InvalidArgument {
+                name,
+                value,
+                bound: "in [0, 0.5]",
+            })
+        }
+    }
+
+    /// A value in a closed range `[lo, hi]`; `bound` names it for the message.
+    #[inline]
+    pub fn in_range(
+        name: &'static str,
+        value: f64,
+        lo: f64,
+        hi: f64,
+        bound: &'static str,
+    ) -> Result<f64> {
+        if value >= lo && value <= hi {
+            Ok(value)
+        } else {
+            Err(Error::InvalidArgument { name, value, bound })
+        }
+    }
+}

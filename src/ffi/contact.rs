@@ -1,0 +1,564 @@
+//! C ABI for `crate::contact`: the plain law value, its constructors, scalar
+//! and batch evaluation, evaluation at a load, and pull-off.
+
+use super::{guard, input, output, Failure};
+use crate::contact::{
+    ContactState, Control, Derjaguin, Dmt, FlatPunch, Hertz, Jkr, JkrPowerPunch, Kendall,
+    MaugisDugdale, NormalContact, NormalLaw, NormalResponse, PowerPunch, SurfaceLaw,
+};
+use crate::error::{Error, Result};
+
+/// Law kind: not a law (an all-zero `AsperityNormalLaw`).
+pub const ASPERITY_LAW_NONE: i32 = 0;
+/// Law kind: Hertz sphere.
+pub const ASPERITY_LAW_HERTZ: i32 = 1;
+/// Law kind: Galin power-law punch (cones included).
+pub const ASPERITY_LAW_POWER_PUNCH: i32 = 2;
+/// Law kind: flat punch (Boussinesq), frictionless or no-slip.
+pub const ASPERITY_LAW_FLAT_PUNCH: i32 = 3;
+/// Law kind: DMT sphere.
+pub const ASPERITY_LAW_DMT: i32 = 4;
+/// Law kind: JKR sphere.
+pub const ASPERITY_LAW_JKR: i32 = 5;
+/// Law kind: JKR power-law punch (Borodich 2014), frictionless or no-slip.
+pub const ASPERITY_LAW_JKR_POWER_PUNCH: i32 = 6;
+/// Law kind: Kendall adhesive flat punch.
+pub const ASPERITY_LAW_KENDALL: i32 = 7;
+/// Law kind: Maugis–Dugdale sphere.
+pub const ASPERITY_LAW_MAUGIS_DUGDALE: i32 = 8;
+/// Law kind: rigid sphere with a surface-force law (Derjaguin approximation).
+pub const ASPERITY_LAW_DERJAGUIN: i32 = 9;
+
+/// Control mode: prescribed force (soft machine).
+pub const ASPERITY_CONTROL_LOAD: i32 = 0;
+/// Control mode: prescribed approach (rigid machine, fixed grips).
+pub const ASPERITY_CONTROL_DISPLACEMENT: i32 = 1;
+
+/// Surface law of `asperity_law_derjaguin`: Lennard-Jones 3-9, `range` = z₀.
+pub const ASPERITY_SURFACE_LAW_LENNARD_JONES: i32 = 1;
+/// Surface law: Dugdale step, `range` = σ₀ (Pa), the cohesive stress.
+pub const ASPERITY_SURFACE_LAW_DUGDALE: i32 = 2;
+/// Surface law: exponential, `range` = decay length ℓ (m).
+pub const ASPERITY_SURFACE_LAW_EXPONENTIAL: i32 = 3;
+
+/// Parameters of a law; which member is meaningful is given by
+/// `AsperityNormalLaw::kind`. Sized for 16 doubles so laws can grow without
+/// changing the layout.
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub union AsperityLawParams {
+    /// `ASPERITY_LAW_HERTZ`.
+    pub hertz: Hertz,
+    /// `ASPERITY_LAW_POWER_PUNCH`.
+    pub power_punch: PowerPunch,
+    /// `ASPERITY_LAW_FLAT_PUNCH`.
+    pub flat_punch: FlatPunch,
+    /// `ASPERITY_LAW_DMT`.
+    pub dmt: Dmt,
+    /// `ASPERITY_LAW_JKR`.
+    pub jkr: Jkr,
+    /// `ASPERITY_LAW_JKR_POWER_PUNCH`.
+    pub jkr_power_punch: JkrPowerPunch,
+    /// `ASPERITY_LAW_KENDALL`.
+    pub kendall: Kendall,
+    /// `ASPERITY_LAW_MAUGIS_DUGDALE`.
+    pub maugis_dugdale: MaugisDugdale,
+    /// `ASPERITY_LAW_DERJAGUIN`.
+    pub derjaguin: Derjaguin,
+    /// Storage.
+    pub raw: [f64; 16],
+}
+
+/// A single-asperity normal law, by value: copy it freely, share it between
+/// threads, keep it in your own arrays. Build it with an `asperity_law_*`
+/// constructor, which validates the parameters and fills derived constants;
+/// treat the fields as read-only.
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub struct AsperityNormalLaw {
+    /// One of `ASPERITY_LAW_*`.
+    pub kind: i32,
+    /// Reserved, 0.
+    pub reserved: i32,
+    /// The parameters of `kind`.
+    pub params: AsperityLawParams,
+}
+
+const _: () = assert!(core::mem::size_of::<AsperityLawParams>() == 16 * 8);
+
+impl From<NormalLaw> for AsperityNormalLaw {
+    fn from(law: NormalLaw) -> Self {
+        let (kind, params) = match law {
+            NormalLaw::Hertz(hertz) => (ASPERITY_LAW_HERTZ, AsperityLawParams { hertz }),
+            NormalLaw::PowerPunch(power_punch) => {
+                (ASPERITY_LAW_POWER_PUNCH, AsperityLawParams { power_punch })
+            }
+            NormalLaw::FlatPunch(flat_punch) => {
+                (ASPERITY_LAW_FLAT_PUNCH, AsperityLawParams { flat_punch })
+            }
+            NormalLaw::Dmt(dmt) => (ASPERITY_LAW_DMT, AsperityLawParams { dmt }),
+            NormalLaw::Jkr(jkr) => (ASPERITY_LAW_JKR, AsperityLawParams { jkr }),
+            NormalLaw::JkrPowerPunch(jkr_power_punch) => (
+                ASPERITY_LAW_JKR_POWER_PUNCH,
+                AsperityLawParams { jkr_power_punch },
+            ),
+            NormalLaw::Kendall(kendall) => (ASPERITY_LAW_KENDALL, AsperityLawParams { kendall }),
+            NormalLaw::MaugisDugdale(maugis_dugdale) => (
+                ASPERITY_LAW_MAUGIS_DUGDALE,
+                AsperityLawParams { maugis_dugdale },
+            ),
+            NormalLaw::Derjaguin(derjaguin) => {
+                (ASPERITY_LAW_DERJAGUIN, AsperityLawParams { derjaguin })
+            }
+        };
+        // Zero the whole union first so unused bytes are deterministic.
+        let mut out = AsperityNormalLaw {
+            kind,
+            reserved: 0,
+            params: AsperityLawParams { raw: [0.0; 16] },
+        };
+        out.params = params;
+        out
+    }
+}
+
+impl AsperityNormalLaw {
+    /// The Rust law of this value; the kind is validated, never transmuted.
+    pub fn to_law(&self) -> Result<NormalLaw> {
+        // SAFETY: every member is plain old data (f64/i32 fields), valid for
+        // any bit pattern; `kind` selects the member the constructor wrote.
+        unsafe {
+            Ok(match self.kind {
+                ASPERITY_LAW_HERTZ => NormalLaw::Hertz(self.params.hertz),
+                ASPERITY_LAW_POWER_PUNCH => NormalLaw::PowerPunch(self.params.power_punch),
+                ASPERITY_LAW_FLAT_PUNCH => NormalLaw::FlatPunch(self.params.flat_punch),
+                ASPERITY_LAW_DMT => NormalLaw::Dmt(self.params.dmt),
+                ASPERITY_LAW_JKR => NormalLaw::Jkr(self.params.jkr),
+                ASPERITY_LAW_JKR_POWER_PUNCH => {
+                    NormalLaw::JkrPowerPunch(self.params.jkr_power_punch)
+                }
+                ASPERITY_LAW_KENDALL => NormalLaw::Kendall(self.params.kendall),
+                ASPERITY_LAW_MAUGIS_DUGDALE => {
+                    NormalLaw::MaugisDugdale(self.params.maugis_dugdale)
+                }
+                ASPERITY_LAW_DERJAGUIN => NormalLaw::Derjaguin(self.params.derjaguin),
+                k => {
+                    return Err(Error::UnknownSelector {
+                        name: "law.kind",
+                        value: k as i64,
+                    })
+                }
+            })
+        }
+    }
+}
+
+fn control_of(control: i32) -> Result<Control> {
+    match control {
+        ASPERITY_CONTROL_LOAD => Ok(Control::Load),
+        ASPERITY_CONTROL_DISPLACEMENT => Ok(Control::Displacement),
+        v => Err(Error::UnknownSelector {
+            name: "control",
+            value: v as i64,
+        }),
+    }
+}
+
+fn no_slip_flag(no_slip: i32) -> Result<bool> {
+    match no_slip {
+        0 => Ok(false),
+        1 => Ok(true),
+        v => Err(Error::UnknownSelector {
+            name: "no_slip",
+            value: v as i64,
+        }),
+    }
+}
+
+unsafe fn build(out: *mut AsperityNormalLaw, make: impl FnOnce() -> Result<NormalLaw>) -> i32 {
+    guard(|| {
+        let out = output(out, "out")?;
+        *out = make()?.into();
+        Ok(())
+    })
+}
+
+/// Hertz sphere: radius R (m), contact modulus E* (Pa).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_hertz(
+    radius: f64,
+    e_star: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || Ok(NormalLaw::Hertz(Hertz::new(radius, e_star)?)))
+}
+
+/// Galanov effective sphere: a sphere of radius `sphere_radius` (m) in a
+/// spherical crater of radius `crater_radius` (m, INFINITY for a flat),
+/// `1/R = 1/R_s − 1/R_c` (thesis (2-19)).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_sphere_in_crater(
+    sphere_radius: f64,
+    crater_radius: f64,
+    e_star: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || {
+        Ok(NormalLaw::Hertz(Hertz::sphere_in_crater(
+            sphere_radius,
+            crater_radius,
+            e_star,
+        )?))
+    })
+}
+
+/// Galin power-law punch `f(r) = b r^d`: b (m^(1−d)), 1 ≤ d ≤ 100, E* (Pa).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_power_punch(
+    b: f64,
+    d: f64,
+    e_star: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || Ok(NormalLaw::PowerPunch(PowerPunch::new(b, d, e_star)?)))
+}
+
+/// Cone of half-angle `half_angle` (rad, in (0, π/2)); a power punch with
+/// d = 1, b = cot(half_angle).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_cone(
+    half_angle: f64,
+    e_star: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || Ok(NormalLaw::PowerPunch(PowerPunch::cone(half_angle, e_star)?)))
+}
+
+/// Galanov effective cone: indenter half-angle γ_i in an imprint of half-angle
+/// γ_f > γ_i (rad), `b = cot γ_i − cot γ_f` (thesis (2-18)).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_cone_in_imprint(
+    indenter_half_angle: f64,
+    imprint_half_angle: f64,
+    e_star: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || {
+        Ok(NormalLaw::PowerPunch(PowerPunch::cone_in_imprint(
+            indenter_half_angle,
+            imprint_half_angle,
+            e_star,
+        )?))
+    })
+}
+
+/// Frictionless flat punch of radius a (m): `P = 2E*aδ`.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_flat_punch(
+    radius: f64,
+    e_star: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || Ok(NormalLaw::FlatPunch(FlatPunch::new(radius, e_star)?)))
+}
+
+/// Bonded (no-slip) flat punch: `P = 2E*aδ·C_NS(ν)`.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_flat_punch_no_slip(
+    radius: f64,
+    e_star: f64,
+    nu: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || Ok(NormalLaw::FlatPunch(FlatPunch::no_slip(radius, e_star, nu)?)))
+}
+
+/// DMT sphere: radius (m), E* (Pa), work of adhesion (J/m²).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_dmt(
+    radius: f64,
+    e_star: f64,
+    work_of_adhesion: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || Ok(NormalLaw::Dmt(Dmt::new(radius, e_star, work_of_adhesion)?)))
+}
+
+/// JKR sphere: radius (m), E* (Pa), work of adhesion (J/m²).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_jkr(
+    radius: f64,
+    e_star: f64,
+    work_of_adhesion: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || Ok(NormalLaw::Jkr(Jkr::new(radius, e_star, work_of_adhesion)?)))
+}
+
+/// JKR power-law punch (Borodich 2014): `f(r) = b r^d`, E* (Pa), work of
+/// adhesion (J/m²); `no_slip` = 1 for a punch bonded to a half-space of
+/// Poisson's ratio `nu` (thesis (1-39), (1-40)), 0 for frictionless (then `nu`
+/// is only range-checked).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_jkr_power_punch(
+    b: f64,
+    d: f64,
+    e_star: f64,
+    work_of_adhesion: f64,
+    nu: f64,
+    no_slip: i32,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || {
+        let law = if no_slip_flag(no_slip)? {
+            JkrPowerPunch::no_slip(b, d, e_star, work_of_adhesion, nu)?
+        } else {
+            crate::error::check::poisson("nu", nu)?;
+            JkrPowerPunch::new(b, d, e_star, work_of_adhesion)?
+        };
+        Ok(NormalLaw::JkrPowerPunch(law))
+    })
+}
+
+/// Kendall adhesive flat punch of radius a (m); `no_slip` = 1 for a bonded
+/// punch on a half-space of Poisson's ratio `nu`.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_kendall(
+    radius: f64,
+    e_star: f64,
+    work_of_adhesion: f64,
+    nu: f64,
+    no_slip: i32,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || {
+        let law = if no_slip_flag(no_slip)? {
+            Kendall::no_slip(radius, e_star, work_of_adhesion, nu)?
+        } else {
+            crate::error::check::poisson("nu", nu)?;
+            Kendall::new(radius, e_star, work_of_adhesion)?
+        };
+        Ok(NormalLaw::Kendall(law))
+    })
+}
+
+/// Maugis–Dugdale sphere: radius (m), E* (Pa), work of adhesion (J/m²),
+/// Dugdale cohesive stress σ₀ (Pa).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_maugis_dugdale(
+    radius: f64,
+    e_star: f64,
+    work_of_adhesion: f64,
+    sigma0: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || {
+        Ok(NormalLaw::MaugisDugdale(MaugisDugdale::new(
+            radius,
+            e_star,
+            work_of_adhesion,
+            sigma0,
+        )?))
+    })
+}
+
+/// Rigid sphere of radius (m) with a surface-force law between flats
+/// (Derjaguin approximation). `surface_law` is one of `ASPERITY_SURFACE_LAW_*`
+/// and `parameter` its second parameter: z₀ (m) for Lennard-Jones, σ₀ (Pa) for
+/// Dugdale, ℓ (m) for exponential.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_derjaguin(
+    radius: f64,
+    work_of_adhesion: f64,
+    surface_law: i32,
+    parameter: f64,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || {
+        let w = work_of_adhesion;
+        let law = match surface_law {
+            ASPERITY_SURFACE_LAW_LENNARD_JONES => SurfaceLaw::LennardJones {
+                work_of_adhesion: w,
+                equilibrium_separation: parameter,
+            },
+            ASPERITY_SURFACE_LAW_DUGDALE => SurfaceLaw::Dugdale {
+                work_of_adhesion: w,
+                cohesive_stress: parameter,
+            },
+            ASPERITY_SURFACE_LAW_EXPONENTIAL => SurfaceLaw::Exponential {
+                work_of_adhesion: w,
+                decay_length: parameter,
+            },
+            v => {
+                return Err(Error::UnknownSelector {
+                    name: "surface_law",
+                    value: v as i64,
+                })
+            }
+        };
+        Ok(NormalLaw::Derjaguin(Derjaguin::new(radius, law)?))
+    })
+}
+
+/// Evaluate `law` at the overlap `delta` (m; > 0 penetration) from the history
+/// `old_state`, writing the history after the step to `new_state` and the
+/// response to `out`. `old_state` may be NULL (a fresh contact) and
+/// `new_state` NULL (history discarded); they may point to the same struct.
+/// `law` and `out` are required.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_normal_eval(
+    law: *const AsperityNormalLaw,
+    delta: f64,
+    old_state: *const ContactState,
+    new_state: *mut ContactState,
+    out: *mut NormalResponse,
+) -> i32 {
+    guard(|| {
+        let law = input(law, "law")?.to_law()?;
+        let out = output(out, "out")?;
+        let old = if old_state.is_null() {
+            ContactState::default()
+        } else {
+            old_state.read()
+        };
+        let (r, s) = law.eval(delta, &old)?;
+        *out = r;
+        if !new_state.is_null() {
+            new_state.write(s);
+        }
+        Ok(())
+    })
+}
+
+/// Evaluate `law` for `n` contacts: `delta[i]` (m), `old_state[i]` →
+/// `new_state[i]`, writing `force[i]` (N), `contact_radius[i]` (m) and
+/// `stiffness[i]` (N/m). `delta` and `force` are required; the other arrays may
+/// be NULL (fresh states / not wanted). Input and output arrays may be the same
+/// memory. On an error at element i, elements before i are written, the status
+/// is returned and the message names i.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_normal_eval_batch(
+    law: *const AsperityNormalLaw,
+    n: usize,
+    delta: *const f64,
+    old_state: *const ContactState,
+    new_state: *mut ContactState,
+    force: *mut f64,
+    contact_radius: *mut f64,
+    stiffness: *mut f64,
+) -> i32 {
+    guard(|| {
+        let law = input(law, "law")?.to_law()?;
+        if n == 0 {
+            return Ok(());
+        }
+        input(delta, "delta")?;
+        output(force, "force")?;
+        let arrays = BatchArrays {
+            delta,
+            old_state,
+            new_state,
+            force,
+            contact_radius,
+            stiffness,
+        };
+        match &law {
+            NormalLaw::Hertz(l) => arrays.run(l, n),
+            NormalLaw::PowerPunch(l) => arrays.run(l, n),
+            NormalLaw::FlatPunch(l) => arrays.run(l, n),
+            NormalLaw::Dmt(l) => arrays.run(l, n),
+            NormalLaw::Jkr(l) => arrays.run(l, n),
+            NormalLaw::JkrPowerPunch(l) => arrays.run(l, n),
+            NormalLaw::Kendall(l) => arrays.run(l, n),
+            NormalLaw::MaugisDugdale(l) => arrays.run(l, n),
+            NormalLaw::Derjaguin(l) => arrays.run(l, n),
+        }
+    })
+}
+
+struct BatchArrays {
+    delta: *const f64,
+    old_state: *const ContactState,
+    new_state: *mut ContactState,
+    force: *mut f64,
+    contact_radius: *mut f64,
+    stiffness: *mut f64,
+}
+
+impl BatchArrays {
+    /// Element-wise raw reads before writes, so aliasing arrays are allowed.
+    #[inline]
+    unsafe fn run<L: NormalContact>(&self, law: &L, n: usize) -> core::result::Result<(), Failure> {
+        for i in 0..n {
+            let d = self.delta.add(i).read();
+            let old = if self.old_state.is_null() {
+                ContactState::default()
+            } else {
+                self.old_state.add(i).read()
+            };
+            let (r, s) = law
+                .eval(d, &old)
+                .and_then(crate::contact::finite_response)
+                .map_err(|e| Failure::at(i, e))?;
+            self.force.add(i).write(r.force);
+            if !self.contact_radius.is_null() {
+                self.contact_radius.add(i).write(r.contact_radius);
+            }
+            if !self.stiffness.is_null() {
+                self.stiffness.add(i).write(r.stiffness);
+            }
+            if !self.new_state.is_null() {
+                self.new_state.add(i).write(s);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Equilibrium of `law` at the prescribed force `force` (N) on the stable
+/// branch (largest contact radius); `out->delta` is the overlap.
+/// `ASPERITY_ERR_OUT_OF_DOMAIN` below the load-controlled pull-off force.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_normal_eval_at_load(
+    law: *const AsperityNormalLaw,
+    force: f64,
+    out: *mut NormalResponse,
+) -> i32 {
+    guard(|| {
+        let law = input(law, "law")?.to_law()?;
+        let out = output(out, "out")?;
+        *out = law.eval_at_load(force)?;
+        Ok(())
+    })
+}
+
+/// The force (N, ≤ 0 for adhesive laws) at which the contact separates under
+/// `control` (`ASPERITY_CONTROL_LOAD` or `ASPERITY_CONTROL_DISPLACEMENT`).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_pull_off_force(
+    law: *const AsperityNormalLaw,
+    control: i32,
+    force: *mut f64,
+) -> i32 {
+    guard(|| {
+        let law = input(law, "law")?.to_law()?;
+        let control = control_of(control)?;
+        let out = output(force, "force")?;
+        *out = law.pull_off_force(control)?;
+        Ok(())
+    })
+}
+
+/// A characteristic overlap of `law` (m), for non-dimensionalising host-code
+/// tolerances.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_length_scale(
+    law: *const AsperityNormalLaw,
+    length: *mut f64,
+) -> i32 {
+    guard(|| {
+        let law = input(law, "law")?.to_law()?;
+        *output(length, "length")? = law.length_scale();
+        Ok(())
+    })
+}

@@ -1,0 +1,42 @@
+//! # asperity
+//!
+//! The physics of dry contact between rough surfaces for simulation codes:
+//! single-asperity normal contact laws (Hertz, Galin power-law punches, JKR,
+//! DMT, Maugis–Dugdale, Kendall, Derjaguin with a surface-force law), with a
+//! stable C ABI (`include/asperity.h`) for finite-element, DEM and
+//! molecular-dynamics host codes.
+//!
+//! ## Units and conventions
+//!
+//! SI throughout, plain `f64`: m, N, Pa, J, J/m². No hidden scaling:
+//! dimensionless groups (Tabor μ, Maugis λ) are computed by named functions in
+//! [`material`]. Overlap δ > 0 is penetration; force P > 0 is repulsive. The
+//! adhesion parameter is the work of adhesion `w` (Dupré; `w = 2γ` for
+//! identical surfaces), named `work_of_adhesion` everywhere.
+//!
+//! ## Modules
+//!
+//! * [`material`]: contact modulus E*, rod modulus, no-slip factor, Tabor and
+//!   Maugis parameters.
+//! * [`contact`]: the laws, one file each, all implementing
+//!   [`contact::NormalContact`].
+//! * [`error`]: the error type; every fallible call returns
+//!   [`error::Result`].
+//! * `ffi`: the C ABI (thin translation only; see `include/asperity.h`).
+//!
+//! ## Sources
+//!
+//! Equation numbers "(1-37)" refer to the PhD thesis on multi-scale dry
+//! friction that seeds this project; `REFERENCE.md` in the project's shared
+//! folder restores its formulas. Each law's documentation cites its equation
+//! and the original paper.
+
+#![deny(missing_docs)]
+
+pub mod contact;
+pub mod error;
+pub mod ffi;
+pub mod material;
+
+pub use contact::{Control, ContactState, NormalContact, NormalLaw, NormalResponse};
+pub use error::{Error, Result};

@@ -1,0 +1,210 @@
+//! Materials, effective moduli and the dimensionless groups of adhesive contact.
+//!
+//! Conventions (see `REFERENCE.md` §1): SI units; the *contact modulus*
+//! `E*` is defined by `1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂` (Johnson's convention,
+//! thesis (1-15)); JKR-era papers use `K = 4E*/3` ([`jkr_k`]); `w` is the work of
+//! adhesion (Dupré), `w = 2γ` for identical surfaces.
+
+use crate::error::{check, Error, Result};
+
+/// Contact modulus `E*` of two isotropic elastic bodies (Pa):
+/// `1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂` (thesis (1-15); Johnson 1985, §4.2).
+///
+/// Either body may be rigid: pass `E = f64::INFINITY` and its term vanishes.
+/// Both rigid is rejected (no finite contact modulus).
+///
+/// * `e1`, `e2`: Young's moduli (Pa), `> 0`, `+∞` allowed.
+/// * `nu1`, `nu2`: Poisson's ratios, `0 ≤ ν ≤ 0.5`.
+pub fn effective_modulus(e1: f64, nu1: f64, e2: f64, nu2: f64) -> Result<f64> {
+    let c1 = compliance(check_modulus("e1", e1)?, check::poisson("nu1", nu1)?);
+    let c2 = compliance(check_modulus("e2", e2)?, check::poisson("nu2", nu2)?);
+    let c = c1 + c2;
+    if c > 0.0 {
+        Ok(1.0 / c)
+    } else {
+        Err(Error::InvalidArgument {
+            name: "e2",
+            value: e2,
+            bound: "finite when e1 is infinite (two rigid bodies have no contact modulus)",
+        })
+    }
+}
+
+/// `(1−ν²)/E`, zero for a rigid body.
+#[inline]
+fn compliance(e: f64, nu: f64) -> f64 {
+    if e.is_infinite() {
+        0.0
+    } else {
+        (1.0 - nu * nu) / e
+    }
+}
+
+fn check_modulus(name: &'static str, e: f64) -> Result<f64> {
+    if e > 0.0 && !e.is_nan() {
+        Ok(e)
+    } else {
+        Err(Error::InvalidArgument {
+            name,
+            value: e,
+            bound: "> 0 (+inf for a rigid body)",
+        })
+    }
+}
+
+/// Effective modulus of two elastic rods of equal length and section pressed end
+/// to end (thesis (6-4)..(6-8)): `1/E_eff = 1/E₁ + 1/E₂` (Pa). Used for the
+/// micro- and nano-asperity rods of the hierarchical slider. A rigid rod
+/// (`+∞`) contributes nothing.
+pub fn rod_effective_modulus(e1: f64, e2: f64) -> Result<f64> {
+    let e1 = check_modulus("e1", e1)?;
+    let e2 = check_modulus("e2", e2)?;
+    let c = 1.0 / e1 + 1.0 / e2;
+    if c > 0.0 {
+        Ok(1.0 / c)
+    } else {
+        Err(Error::InvalidArgument {
+            name: "e2",
+            value: e2,
+            bound: "finite when e1 is infinite (two rigid rods have no effective modulus)",
+        })
+    }
+}
+
+/// The JKR modulus `K = 4E*/3` (Pa) used by Johnson–Kendall–Roberts and Maugis.
+#[inline]
+pub fn jkr_k(e_star: f64) -> f64 {
+    4.0 * e_star / 3.0
+}
+
+/// Below this |1/2 − ν| the no-slip factor uses its Taylor series.
+pub const NO_SLIP_SERIES_SWITCH: f64 = 1e-4;
+
+/// No-slip factor of a rigid punch bonded to an elastic half-space
+/// (thesis §4.4; Borodich, Galanov, Keer & Suarez-Alvarez 2014):
+///
+/// `C_NS = (1−ν) ln(3−4ν) / (1−2ν)`.
+///
+/// The formula is 0/0 at ν = 1/2 (incompressible: no-slip and frictionless
+/// coincide, `C_NS = 1`). With `ε = 1/2 − ν` it reads
+/// `C_NS = (1 + 2ε) · ln(1+4ε)/(4ε)`; for `ε <` [`NO_SLIP_SERIES_SWITCH`] the
+/// factor `ln(1+x)/x` is taken from its series `1 − x/2 + x²/3 − x³/4`, whose
+/// truncation error there is below 1e-16. `C_NS(0) = ln 3 = 1.0986123`,
+/// `C_NS(0.355) = 1.017376`.
+pub fn no_slip_factor(nu: f64) -> Result<f64> {
+    let nu = check::poisson("nu", nu)?;
+    let eps = 0.5 - nu; // exact for nu in [0.25, 0.5] (Sterbenz)
+    let x = 4.0 * eps;
+    let l = if eps < NO_SLIP_SERIES_SWITCH {
+        1.0 - x * (0.5 - x * (1.0 / 3.0 - 0.25 * x))
+    } else {
+        x.ln_1p() / x
+    };
+    Ok((1.0 + 2.0 * eps) * l)
+}
+
+/// The oscillation index of the bonded (no-slip) punch problem,
+/// `ε = ln(3−4ν)/(2π)` (Borodich, Galanov & Suarez-Alvarez 2014; REFERENCE.md §7).
+/// Zero at ν = 1/2.
+pub fn no_slip_epsilon(nu: f64) -> Result<f64> {
+    let nu = check::poisson("nu", nu)?;
+    Ok((4.0 * (0.5 - nu)).ln_1p() / (2.0 * core::f64::consts::PI))
+}
+
+/// Tabor parameter (thesis (1-42); Tabor 1977):
+/// `μ = (R w² / (E*² z₀³))^{1/3}` (dimensionless).
+///
+/// * `radius` R (m), `work_of_adhesion` w (J/m²), `e_star` E* (Pa),
+///   `equilibrium_separation` z₀ (m).
+///
+/// Small μ: stiff, small, weakly adhering spheres (DMT); large μ: compliant,
+/// large, strongly adhering spheres (JKR).
+pub fn tabor_parameter(
+    radius: f64,
+    work_of_adhesion: f64,
+    e_star: f64,
+    equilibrium_separation: f64,
+) -> Result<f64> {
+    let r = check::positive("radius", radius)?;
+    let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
+    let e = check::positive("e_star", e_star)?;
+    let z0 = check::positive("equilibrium_separation", equilibrium_separation)?;
+    Ok((r * w * w / (e * e * z0 * z0 * z0)).cbrt())
+}
+
+/// Maugis parameter (Maugis 1992): `λ = 2σ₀ (R / (π w K²))^{1/3}` with
+/// `K = 4E*/3` and σ₀ the Dugdale cohesive stress (Pa), acting up to the
+/// separation `h₀ = w/σ₀`.
+pub fn maugis_parameter(
+    radius: f64,
+    work_of_adhesion: f64,
+    e_star: f64,
+    cohesive_stress: f64,
+) -> Result<f64> {
+    let r = check::positive("radius", radius)?;
+    let w = check::positive("work_of_adhesion", work_of_adhesion)?;
+    let e = check::positive("e_star", e_star)?;
+    let s0 = check::positive("cohesive_stress", cohesive_stress)?;
+    let k = jkr_k(e);
+    Ok(2.0 * s0 * (r / (core::f64::consts::PI * w * k * k)).cbrt())
+}
+
+/// Peak tension of the Lennard-Jones 3-9 surface law
+/// `p(h) = (8w/(3z₀))[(z₀/h)³ − (z₀/h)⁹]`, reached at `h = 3^{1/6} z₀`:
+/// `σ_th = 16 w / (9√3 z₀) ≈ 1.0264 w/z₀` (thesis (1-44); Greenwood 1997). Pa.
+pub fn lennard_jones_theoretical_stress(
+    work_of_adhesion: f64,
+    equilibrium_separation: f64,
+) -> Result<f64> {
+    let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
+    let z0 = check::positive("equilibrium_separation", equilibrium_separation)?;
+    Ok(16.0 * w / (9.0 * 3f64.sqrt() * z0))
+}
+
+/// `λ/μ` when the Dugdale stress is the Lennard-Jones theoretical stress
+/// ([`lennard_jones_theoretical_stress`]): `(32/(9√3))·(9/(16π))^{1/3} = 1.157012…`.
+pub fn maugis_over_tabor() -> f64 {
+    32.0 / (9.0 * 3f64.sqrt()) * (9.0 / (16.0 * core::f64::consts::PI)).cbrt()
+}
+
+/// An isotropic linear-elastic material.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    /// Young's modulus E (Pa); `+∞` for a rigid body.
+    pub youngs_modulus: f64,
+    /// Poisson's ratio ν, 0 ≤ ν ≤ 0.5.
+    pub poisson_ratio: f64,
+}
+
+impl Material {
+    /// A validated material.
+    pub fn new(youngs_modulus: f64, poisson_ratio: f64) -> Result<Self> {
+        Ok(Self {
+            youngs_modulus: check_modulus("youngs_modulus", youngs_modulus)?,
+            poisson_ratio: check::poisson("poisson_ratio", poisson_ratio)?,
+        })
+    }
+
+    /// Contact modulus of this material against `other` ([`effective_modulus`]).
+    pub fn contact_modulus(&self, other: &Material) -> Result<f64> {
+        effective_modulus(
+            self.youngs_modulus,
+            self.poisson_ratio,
+            other.youngs_modulus,
+            other.poisson_ratio,
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn no_slip_series_is_continuous_at_switch() {
+        let nu = 0.5 - NO_SLIP_SERIES_SWITCH;
+        let below = no_slip_factor(nu + 1e-12).unwrap();
+        let above = no_slip_factor(nu - 1e-12).unwrap();
+        assert!((below - above).abs() < 1e-14, "{below} {above}");
+    }
+}
