@@ -87,20 +87,19 @@ pub const NO_SLIP_SERIES_SWITCH: f64 = 1e-4;
 ///
 /// The formula is 0/0 at ν = 1/2 (incompressible: no-slip and frictionless
 /// coincide, `C_NS = 1`). With `ε = 1/2 − ν` it reads
-/// `C_NS = (1 + 2ε) · ln(1+4ε)/(4ε)`; for `ε <` [`NO_SLIP_SERIES_SWITCH`] the
-/// factor `ln(1+x)/x` is taken from its series `1 − x/2 + x²/3 − x³/4`, whose
-/// truncation error there is below 1e-16. `C_NS(0) = ln 3 = 1.0986123`,
-/// `C_NS(0.355) = 1.017376`.
+/// `C_NS = (1 + 2ε) · ln(1+4ε)/(4ε)`, evaluated with `ln_1p`; for
+/// `ε <` [`NO_SLIP_SERIES_SWITCH`] its Taylor series
+/// `1 + (4/3)ε² − (16/3)ε³ + (96/5)ε⁴` is used instead (truncation below 1e-19
+/// there), which keeps `C_NS ≥ 1` and monotone to the last bit.
+/// `C_NS(0) = ln 3 = 1.0986123`, `C_NS(0.355) = 1.017376`.
 pub fn no_slip_factor(nu: f64) -> Result<f64> {
     let nu = check::poisson("nu", nu)?;
     let eps = 0.5 - nu; // exact for nu in [0.25, 0.5] (Sterbenz)
+    if eps < NO_SLIP_SERIES_SWITCH {
+        return Ok(1.0 + eps * eps * (4.0 / 3.0 + eps * (-16.0 / 3.0 + eps * 96.0 / 5.0)));
+    }
     let x = 4.0 * eps;
-    let l = if eps < NO_SLIP_SERIES_SWITCH {
-        1.0 - x * (0.5 - x * (1.0 / 3.0 - 0.25 * x))
-    } else {
-        x.ln_1p() / x
-    };
-    Ok((1.0 + 2.0 * eps) * l)
+    Ok((1.0 + 2.0 * eps) * x.ln_1p() / x)
 }
 
 /// The oscillation index of the bonded (no-slip) punch problem,

@@ -7,7 +7,10 @@
 //! Pull-off is `−2πwR` under both controls. The limit λ → 0 of
 //! [`super::MaugisDugdale`].
 
-use super::{check_delta, check_force, stateless, Control, ContactState, Hertz, NormalContact, NormalResponse};
+use super::{
+    check_delta, check_force, stateless, ContactState, Control, Hertz, NormalContact,
+    NormalResponse,
+};
 use crate::error::{check, Result};
 use core::f64::consts::PI;
 
@@ -81,6 +84,7 @@ impl NormalContact for Dmt {
         if self.work_of_adhesion == 0.0 {
             return self.radius;
         }
-        (3.0 * PI * self.work_of_adhesion * self.radius.sqrt() / (2.0 * self.e_star)).powf(2.0 / 3.0)
+        (3.0 * PI * self.work_of_adhesion * self.radius.sqrt() / (2.0 * self.e_star))
+            .powf(2.0 / 3.0)
     }
 }

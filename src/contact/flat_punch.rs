@@ -4,7 +4,9 @@
 //! [`crate::material::no_slip_factor`]). The stiffness is constant while in
 //! contact. The adhesive version is [`super::Kendall`].
 
-use super::{check_delta, check_force, stateless, Control, ContactState, NormalContact, NormalResponse};
+use super::{
+    check_delta, check_force, stateless, ContactState, Control, NormalContact, NormalResponse,
+};
 use crate::error::{check, Result};
 use crate::material::no_slip_factor;
 
@@ -48,7 +50,12 @@ impl NormalContact for FlatPunch {
         if delta < 0.0 {
             return Ok(stateless(0.0, delta, 0.0, 0.0));
         }
-        Ok(stateless(self.stiffness * delta, delta, self.radius, self.stiffness))
+        Ok(stateless(
+            self.stiffness * delta,
+            delta,
+            self.radius,
+            self.stiffness,
+        ))
     }
 
     fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {

@@ -9,7 +9,9 @@
 //! (2-19)) the same law describes a sphere unloading from its own plastic
 //! crater.
 
-use super::{check_delta, check_force, stateless, Control, ContactState, NormalContact, NormalResponse};
+use super::{
+    check_delta, check_force, stateless, ContactState, Control, NormalContact, NormalResponse,
+};
 use crate::error::{check, Error, Result};
 
 /// Hertz sphere.

@@ -233,7 +233,10 @@ pub(crate) fn below_pull_off(force: f64) -> Error {
 
 #[inline]
 fn is_finite(r: &NormalResponse) -> bool {
-    r.force.is_finite() && r.delta.is_finite() && r.contact_radius.is_finite() && r.stiffness.is_finite()
+    r.force.is_finite()
+        && r.delta.is_finite()
+        && r.contact_radius.is_finite()
+        && r.stiffness.is_finite()
 }
 
 /// Pass a finite response through; an overflowed one becomes

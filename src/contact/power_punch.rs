@@ -12,7 +12,9 @@
 //! unloading from its own imprint uses Galanov's effective cone
 //! ([`PowerPunch::cone_in_imprint`], thesis (2-18)).
 
-use super::{check_delta, check_force, stateless, Control, ContactState, NormalContact, NormalResponse};
+use super::{
+    check_delta, check_force, stateless, ContactState, Control, NormalContact, NormalResponse,
+};
 use crate::error::{check, Error, Result};
 
 /// Half-angle (rad) of the cone with the projected area of a Berkovich pyramid
@@ -164,9 +166,9 @@ impl NormalContact for PowerPunch {
         Ok(0.0)
     }
 
-    /// The contact radius at which the punch depth equals the radius,
-    /// `(D B)^{−1/(d−1)}`, for d > 1; `1/(D B)`… is dimensionless for the
-    /// cone, whose scale is taken as 1 m.
+    /// The contact radius at which the overlap equals the contact radius,
+    /// `(D B)^{−1/(d−1)}` (m), for d > 1. A cone has no intrinsic length
+    /// (`δ/a = D B` is constant); its scale is taken as 1 m.
     fn length_scale(&self) -> f64 {
         if self.d > 1.0 {
             self.depth_coefficient.powf(-1.0 / (self.d - 1.0))
