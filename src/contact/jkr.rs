@@ -1,6 +1,68 @@
-//! STUB — to be implemented (JKR sphere).
-use super::{Control, ContactState, NormalContact, NormalResponse};
-use crate::error::{check, Error, Result};
+//! Johnson–Kendall–Roberts: elastic sphere (paraboloid) with short-range
+//! adhesion, the limit of large Tabor parameter.
+//!
+//! Thesis (1-34)..(1-36); Johnson, Kendall & Roberts 1971, Proc. R. Soc. Lond.
+//! A 324:301; written with the contact modulus E* (K = 4E*/3) and the work of
+//! adhesion w:
+//!
+//! * `P(a) = 4E*a³/(3R) − √(8πwE*a³)`,
+//! * `δ(a) = a²/R − √(2πwa/E*)`,
+//! * tangent stiffness along the equilibrium curve
+//!   `dP/dδ = (dP/da)/(dδ/da) = 2E*a·(4a^{3/2} − 3kR)/(4a^{3/2} − kR)`, with
+//!   `k = √(2πw/E*)`.
+//!
+//! Note that the tangent stiffness is **not** the BASh value `2E*a` unless
+//! w = 0: `2E*a` is `∂P/∂δ` at *fixed* contact radius (the adhesive term is a
+//! flat-punch mode, `P_adh = 2E*a·δ_adh`), while along the equilibrium curve
+//! the radius changes too. The tangent vanishes at the load-controlled pull-off
+//! and is vertical (`dδ/da = 0`) at the displacement-controlled instability.
+//!
+//! Critical points (REFERENCE.md §1):
+//!
+//! * load-controlled pull-off `P_c = −(3/2)πwR` at `a = (9πwR²/(8E*))^{1/3}`;
+//! * displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}` at
+//!   `a = (πwR²/(8E*))^{1/3}`, `P = −(5/6)πwR`;
+//! * on approach the contact forms at δ = 0 with a jump to
+//!   `a = (2πwR²/E*)^{1/3}` (force `−(4/3)πwR`); the zero-load radius is
+//!   `a₀ = (9πwR²/(2E*))^{1/3}`.
+//!
+//! # Hysteresis (displacement control, [`NormalContact::eval`])
+//!
+//! The caller-owned [`ContactState`] says whether the surfaces were in contact
+//! at the end of the previous step. Out of contact (including the all-zero
+//! fresh state), there is no force until δ ≥ 0, where the contact jumps in to
+//! the stable branch. In contact, the contact follows the stable branch (the
+//! largest root, `dδ/da > 0`) down to δ_c inclusive; below δ_c it jumps out
+//! (force 0, `in_contact = 0`). `branch` is 1 in contact, 0 out.
+//!
+//! # Closed form for a(δ)
+//!
+//! With `y = √a` the equilibrium is the depressed quartic
+//! `y⁴ − kR·y − δR = 0`. Scaling `y = (kR)^{1/3} η`, `δ = L Δ` with
+//! `L = (kR)^{4/3}/R = (4π²w²R/E*²)^{1/3}` gives the universal quartic
+//! `η⁴ − η − Δ = 0` (fold at `η³ = 1/4`, `Δ_c = −(3/4)·4^{−1/3}`). Ferrari:
+//! `(η² + u)² = 2u(η + 1/(4u))²` when u solves the resolvent cubic
+//! `u³ + Δu − 1/8 = 0`, i.e. `u³ + 3su − 2r = 0` with `s = Δ/3`, `r = 1/16`.
+//! Its discriminant `r² + s³` is ≥ 0 exactly when `Δ ≥ Δ_c` (both vanish
+//! together: the quartic has real roots iff the cubic has one real root), so
+//! only Cardano's branch is ever needed on the equilibrium curve. Cardano's
+//! `u = C − s/C`, `C = (r + √(r² + s³))^{1/3}`, cancels catastrophically for
+//! large Δ; multiplying by `C⁴ + sC² + s²` and using `C⁶ − s³ = 2rC³` gives the
+//! cancellation-free `u = 2rC²/(C⁴ + sC² + s²)` (the denominator is
+//! `(C² + s/2)² + 3s²/4 > 0`). With `v = √(2u)` the stable root is
+//! `η = (v + √(2/v − v²))/2`, polished by one Newton step on
+//! `η⁴ − η − Δ`. Accuracy: ≤ 1e-13 relative against a bracketed reference
+//! away from the fold (tests/jkr.rs); within `|Δ − Δ_c| ≲ 1e-3` the root
+//! itself is ill-conditioned (`∂η/∂Δ → ∞`), as for any method.
+
+use super::{check_delta, check_force, ContactState, Control, NormalContact, NormalResponse};
+use crate::error::{check, Result};
+use core::f64::consts::PI;
+
+/// Above this reduced overlap Δ the adhesive correction (relative size
+/// `Δ^{−3/4}`) is far below rounding and the Hertz value seeds the Newton step
+/// (avoids overflow of `s³` in the resolvent).
+const HERTZ_SWITCH: f64 = 1e60;
 
 /// JKR sphere.
 #[repr(C)]
@@ -12,24 +74,289 @@ pub struct Jkr {
     pub e_star: f64,
     /// Work of adhesion w (J/m²).
     pub work_of_adhesion: f64,
+    /// Cached `k = √(2πw/E*)` (m^{1/2}); 0 without adhesion.
+    pub adhesion_coefficient: f64,
+    /// Cached overlap scale `L = (4π²w²R/E*²)^{1/3}` (m) of the reduced quartic
+    /// `η⁴ − η − δ/L = 0`; 0 without adhesion.
+    pub delta_scale: f64,
+    /// Cached `1/L` (1/m); 0 without adhesion.
+    pub inv_delta_scale: f64,
+    /// Cached radius scale `(kR)^{2/3} = (2πwR²/E*)^{1/3}` (m), `a = scale·η²`
+    /// (the jump-in radius); 0 without adhesion.
+    pub radius_scale: f64,
+    /// Cached force scale `2πwR` (N), `P = scale·((4/3)η⁶ − 2η³)`.
+    pub force_scale: f64,
+    /// Cached displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}`
+    /// (m, ≤ 0).
+    pub critical_delta: f64,
 }
 
-const TODO: Error = Error::OutOfDomain { name: "law", value: 0.0, reason: "not implemented" };
-
 impl Jkr {
-    /// A JKR sphere.
+    /// A JKR sphere: radius R (m, > 0), contact modulus E* (Pa, > 0), work of
+    /// adhesion w (J/m², ≥ 0). `w = 0` is Hertz. A w so small that its scales
+    /// underflow `f64` behaves as `w = 0`.
     pub fn new(radius: f64, e_star: f64, work_of_adhesion: f64) -> Result<Self> {
-        Ok(Self {
-            radius: check::positive("radius", radius)?,
-            e_star: check::positive("e_star", e_star)?,
-            work_of_adhesion: check::non_negative("work_of_adhesion", work_of_adhesion)?,
-        })
+        let radius = check::positive("radius", radius)?;
+        let e_star = check::positive("e_star", e_star)?;
+        let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
+        let mut law = Self {
+            radius,
+            e_star,
+            work_of_adhesion: w,
+            adhesion_coefficient: 0.0,
+            delta_scale: 0.0,
+            inv_delta_scale: 0.0,
+            radius_scale: 0.0,
+            force_scale: 0.0,
+            critical_delta: 0.0,
+        };
+        let k = (2.0 * PI * w / e_star).sqrt();
+        let kr = k * radius;
+        let kr13 = kr.cbrt();
+        let radius_scale = kr13 * kr13;
+        let delta_scale = radius_scale * radius_scale / radius;
+        let force_scale = 2.0 * PI * w * radius;
+        let ok = |x: f64| x.is_normal() && x > 0.0;
+        if ok(k) && ok(radius_scale) && ok(delta_scale) && ok(1.0 / delta_scale) && ok(force_scale)
+        {
+            law.adhesion_coefficient = k;
+            law.delta_scale = delta_scale;
+            law.inv_delta_scale = 1.0 / delta_scale;
+            law.radius_scale = radius_scale;
+            law.force_scale = force_scale;
+            // Δ_c = −(3/4)·4^{−1/3}.
+            law.critical_delta = -0.75 * delta_scale / 4f64.cbrt();
+        }
+        Ok(law)
+    }
+
+    /// True when the law has adhesion (w > 0 and representable scales).
+    #[inline]
+    fn adhesive(&self) -> bool {
+        self.delta_scale > 0.0
+    }
+
+    /// Force at contact radius `a` (m): `P = 4E*a³/(3R) − √(8πwE*a³)` (1-34).
+    #[inline]
+    pub fn force_at_radius(&self, a: f64) -> f64 {
+        let k = self.adhesion_coefficient;
+        4.0 * self.e_star * a * a * a / (3.0 * self.radius) - 2.0 * self.e_star * k * a * a.sqrt()
+    }
+
+    /// Overlap at contact radius `a` (m): `δ = a²/R − √(2πwa/E*)` (1-35).
+    #[inline]
+    pub fn delta_at_radius(&self, a: f64) -> f64 {
+        a * a / self.radius - self.adhesion_coefficient * a.sqrt()
+    }
+
+    /// Contact radius on the stable branch (largest root) at overlap `delta`
+    /// (m), by the closed form of the module docs. `None` below the
+    /// displacement-controlled instability δ_c (and for δ < 0 when w = 0).
+    #[inline]
+    pub fn contact_radius_at_delta(&self, delta: f64) -> Option<f64> {
+        if !self.adhesive() {
+            return if delta >= 0.0 {
+                Some((self.radius * delta).sqrt())
+            } else {
+                None
+            };
+        }
+        if delta < self.critical_delta || delta.is_nan() {
+            return None;
+        }
+        let eta = reduced_root(delta * self.inv_delta_scale);
+        Some(self.radius_scale * eta * eta)
+    }
+
+    /// Load-controlled pull-off `−(3/2)πwR` (N).
+    #[inline]
+    fn load_pull_off(&self) -> f64 {
+        if self.adhesive() {
+            -0.75 * self.force_scale
+        } else {
+            0.0
+        }
+    }
+
+    /// The response on the stable branch at overlap δ ≥ δ_c.
+    #[inline]
+    fn on_branch(&self, delta: f64) -> NormalResponse {
+        if !self.adhesive() {
+            let a = (self.radius * delta).sqrt();
+            return in_contact(
+                4.0 / 3.0 * self.e_star * a * delta,
+                delta,
+                a,
+                2.0 * self.e_star * a,
+            );
+        }
+        let (eta, gp) = reduced_root_and_slope(delta * self.inv_delta_scale);
+        let e3 = eta * eta * eta;
+        let a = self.radius_scale * eta * eta;
+        let force = (self.force_scale * e3) * (4.0 / 3.0 * e3 - 2.0);
+        // P = 2πwR((4/3)η⁶ − 2η³); dP/dδ = 2E*a(4η³ − 3)/(4η³ − 1). The
+        // denominator is g'(η) from before the Newton polish (one division
+        // fewer; the polish moves η by rounding only), clamped as in
+        // `tangent_ratio`.
+        let den = gp.max(f64::EPSILON * 4.0 * e3);
+        let stiffness = self.e_star * 2.0 * a * ((4.0 * e3 - 3.0) / den);
+        in_contact(force, delta, a, stiffness)
+    }
+}
+
+/// `(4η³ − 3)/(4η³ − 1)`, the ratio of the tangent stiffness to `2E*a`. The
+/// denominator vanishes at the fold (vertical tangent); it is kept ≥ ε·4η³ so
+/// the value stays finite (about −1/ε there).
+#[inline]
+fn tangent_ratio(e3: f64) -> f64 {
+    let den = (4.0 * e3 - 1.0).max(f64::EPSILON * 4.0 * e3);
+    (4.0 * e3 - 3.0) / den
+}
+
+/// Stable (largest) root η of `η⁴ − η − Δ = 0` for `Δ ≥ Δ_c = −(3/4)4^{−1/3}`
+/// (Δ slightly below Δ_c by rounding is treated as Δ_c).
+#[inline]
+fn reduced_root(big_delta: f64) -> f64 {
+    reduced_root_and_slope(big_delta).0
+}
+
+/// [`reduced_root`] and the slope `g'(η₀) = 4η₀³ − 1` at the closed-form
+/// value η₀ before the Newton polish.
+#[inline]
+fn reduced_root_and_slope(big_delta: f64) -> (f64, f64) {
+    let mut eta = if big_delta > HERTZ_SWITCH {
+        big_delta.sqrt().sqrt()
+    } else {
+        // Resolvent u³ + 3su − 2r = 0, r = 1/16.
+        let s = big_delta * (1.0 / 3.0);
+        const R: f64 = 1.0 / 16.0;
+        let disc = (R * R + s * s * s).max(0.0);
+        let c = cbrt_positive(R + disc.sqrt());
+        let c2 = c * c;
+        let u = 2.0 * R * c2 / (c2 * c2 + s * c2 + s * s);
+        let v = (2.0 * u).sqrt();
+        0.5 * (v + (2.0 / v - v * v).max(0.0).sqrt())
+    };
+    // One Newton step on g(η) = η⁴ − η − Δ, skipped at the fold.
+    let e2 = eta * eta;
+    let gp = 4.0 * e2 * eta - 1.0;
+    if gp > 1e-8 {
+        let g = e2 * e2 - eta - big_delta;
+        eta -= g / gp;
+    }
+    (eta, gp)
+}
+
+/// Cube root of a positive normal `x` (here ≥ 1/16): exponent-bit estimate
+/// (≈ 3 % off) and two Halley steps `c ← c(c³ + 2x)/(2c³ + x)` (cubic
+/// convergence: 3e-2 → 1e-5 → 6e-15 relative). About 3× faster than the libm
+/// `cbrt`, and the Newton polish of η absorbs what is left.
+#[inline]
+fn cbrt_positive(x: f64) -> f64 {
+    let mut c = f64::from_bits(x.to_bits() / 3 + 0x2A9F_7893_782D_A1CE);
+    let c3 = c * c * c;
+    c *= (c3 + 2.0 * x) / (2.0 * c3 + x);
+    let c3 = c * c * c;
+    c *= (c3 + 2.0 * x) / (2.0 * c3 + x);
+    c
+}
+
+#[inline]
+fn in_contact(force: f64, delta: f64, a: f64, stiffness: f64) -> NormalResponse {
+    NormalResponse {
+        force,
+        delta,
+        contact_radius: a,
+        stiffness,
+        in_contact: 1,
+        reserved: 0,
+    }
+}
+
+/// Response and state of a step that ends out of contact.
+#[inline]
+pub(crate) fn out_of_contact(delta: f64) -> (NormalResponse, ContactState) {
+    (
+        NormalResponse {
+            force: 0.0,
+            delta,
+            contact_radius: 0.0,
+            stiffness: 0.0,
+            in_contact: 0,
+            reserved: 0,
+        },
+        ContactState::default(),
+    )
+}
+
+/// The state after a step that ends in contact on the stable branch.
+#[inline]
+pub(crate) fn contact_state(r: &NormalResponse) -> ContactState {
+    ContactState {
+        contact_radius: r.contact_radius,
+        cohesive_radius: 0.0,
+        in_contact: 1,
+        branch: 1,
     }
 }
 
 impl NormalContact for Jkr {
-    fn eval(&self, _delta: f64, _old: &ContactState) -> Result<(NormalResponse, ContactState)> { Err(TODO) }
-    fn eval_at_load(&self, _force: f64) -> Result<NormalResponse> { Err(TODO) }
-    fn pull_off_force(&self, _control: Control) -> Result<f64> { Err(TODO) }
-    fn length_scale(&self) -> f64 { self.radius }
+    /// Displacement-controlled step with jump-in at δ = 0 and jump-out below
+    /// δ_c (module docs).
+    #[inline]
+    fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
+        let delta = check_delta(delta)?;
+        let stays = if old.in_contact != 0 {
+            delta >= self.critical_delta
+        } else {
+            delta >= 0.0
+        };
+        if !stays {
+            return Ok(out_of_contact(delta));
+        }
+        let r = self.on_branch(delta);
+        Ok((r, contact_state(&r)))
+    }
+
+    /// Stable branch at load P ≥ −(3/2)πwR:
+    /// `a^{3/2} = (3R/4)(k + √(k² + 4P/(3RE*)))` (the larger root of the
+    /// quadratic in `a^{3/2}`, sum of non-negative terms).
+    fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {
+        let force = check_force(force)?;
+        if force < self.load_pull_off() {
+            return Err(super::below_pull_off(force));
+        }
+        let k = self.adhesion_coefficient;
+        let rad = (k * k + 4.0 * force / (3.0 * self.radius * self.e_star)).max(0.0);
+        let z = 0.75 * self.radius * (k + rad.sqrt()); // a^{3/2}
+        let y = z.cbrt(); // √a
+        let a = y * y;
+        let delta = a * a / self.radius - k * y;
+        // Stable under load control: dP/dδ ≥ 0 (0 at the pull-off; the clamp
+        // only removes rounding there).
+        let stiffness = if self.adhesive() {
+            (2.0 * self.e_star * a * tangent_ratio(z / (k * self.radius))).max(0.0)
+        } else {
+            2.0 * self.e_star * a
+        };
+        Ok(in_contact(force, delta, a, stiffness))
+    }
+
+    /// Load: `−(3/2)πwR`; displacement: `−(5/6)πwR` (force at δ_c). 0 when w = 0.
+    fn pull_off_force(&self, control: Control) -> Result<f64> {
+        Ok(match control {
+            Control::Load => self.load_pull_off(),
+            Control::Displacement if self.adhesive() => -5.0 / 12.0 * self.force_scale,
+            Control::Displacement => 0.0,
+        })
+    }
+
+    /// `|δ_c| = (3/4)(π²w²R/E*²)^{1/3}`; the radius when w = 0.
+    fn length_scale(&self) -> f64 {
+        if self.adhesive() {
+            -self.critical_delta
+        } else {
+            self.radius
+        }
+    }
 }

@@ -1,6 +1,28 @@
-//! STUB — to be implemented (Kendall adhesive flat punch).
-use super::{Control, ContactState, NormalContact, NormalResponse};
-use crate::error::{check, Error, Result};
+//! Kendall: rigid flat-ended cylindrical punch of radius a adhering to an
+//! elastic half-space.
+//!
+//! Kendall 1971, "The adhesion and surface energy of elastic solids", J. Phys.
+//! D: Appl. Phys. 4:1186; thesis §4.4; REFERENCE.md §1:
+//!
+//! * in contact the punch is the Boussinesq flat punch,
+//!   `P = 2E* C_NS a δ`, constant stiffness `2E* C_NS a` (`C_NS = 1`
+//!   frictionless; for a bonded punch the no-slip factor of
+//!   [`crate::material::no_slip_factor`]);
+//! * the contact (whose radius is fixed) separates when the energy release
+//!   rate of the edge crack reaches w: `P_c = −√(8πwE* C_NS a³)` under both
+//!   controls (the radius cannot shrink, so there is no stable partial
+//!   detachment), at `δ_c = P_c/(2E* C_NS a) = −√(2πwa/(E* C_NS))`.
+//!   Thesis §4.4 uses the no-slip form for a nano-asperity.
+//!
+//! Hysteresis under displacement control: out of contact (including the
+//! all-zero fresh state) the punch touches at δ ≥ 0; in contact it stays
+//! down to δ_c inclusive, and below δ_c it jumps out (force 0,
+//! `in_contact = 0`).
+
+use super::jkr::{contact_state, out_of_contact};
+use super::{check_delta, check_force, ContactState, Control, NormalContact, NormalResponse};
+use crate::error::{check, Result};
+use core::f64::consts::PI;
 
 /// Kendall adhesive flat punch.
 #[repr(C)]
@@ -14,26 +36,104 @@ pub struct Kendall {
     pub work_of_adhesion: f64,
     /// No-slip factor C_NS (1 when frictionless).
     pub no_slip_factor: f64,
+    /// Cached contact stiffness `2E* C_NS a` (N/m).
+    pub stiffness: f64,
+    /// Cached pull-off force `P_c = −√(8πwE* C_NS a³)` (N, ≤ 0).
+    pub pull_off: f64,
+    /// Cached separation overlap `δ_c = P_c/(2E* C_NS a)` (m, ≤ 0).
+    pub critical_delta: f64,
 }
 
-const TODO: Error = Error::OutOfDomain { name: "law", value: 0.0, reason: "not implemented" };
-
 impl Kendall {
-    /// Frictionless adhesive flat punch.
+    /// Frictionless adhesive flat punch: radius (m, > 0), contact modulus
+    /// (Pa, > 0), work of adhesion (J/m², ≥ 0).
     pub fn new(radius: f64, e_star: f64, work_of_adhesion: f64) -> Result<Self> {
-        Ok(Self { radius: check::positive("radius", radius)?, e_star: check::positive("e_star", e_star)?, work_of_adhesion: check::non_negative("work_of_adhesion", work_of_adhesion)?, no_slip_factor: 1.0 })
+        let radius = check::positive("radius", radius)?;
+        let e_star = check::positive("e_star", e_star)?;
+        let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
+        Ok(Self::build(radius, e_star, w, 1.0))
     }
-    /// Bonded (no-slip) adhesive flat punch on a half-space of Poisson's ratio `nu`.
+
+    /// Bonded (no-slip) adhesive flat punch on a half-space of Poisson's ratio
+    /// `nu` (0 ≤ ν ≤ 0.5): stiffness and pull-off carry `C_NS(ν)`.
     pub fn no_slip(radius: f64, e_star: f64, work_of_adhesion: f64, nu: f64) -> Result<Self> {
-        let mut k = Self::new(radius, e_star, work_of_adhesion)?;
-        k.no_slip_factor = crate::material::no_slip_factor(nu)?;
-        Ok(k)
+        let radius = check::positive("radius", radius)?;
+        let e_star = check::positive("e_star", e_star)?;
+        let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
+        let c_ns = crate::material::no_slip_factor(nu)?;
+        Ok(Self::build(radius, e_star, w, c_ns))
+    }
+
+    fn build(radius: f64, e_star: f64, w: f64, c_ns: f64) -> Self {
+        let stiffness = 2.0 * e_star * c_ns * radius;
+        let pull_off = if w > 0.0 {
+            -(8.0 * PI * w * e_star * c_ns * radius).sqrt() * radius
+        } else {
+            0.0
+        };
+        Self {
+            radius,
+            e_star,
+            work_of_adhesion: w,
+            no_slip_factor: c_ns,
+            stiffness,
+            pull_off,
+            critical_delta: pull_off / stiffness,
+        }
+    }
+
+    #[inline]
+    fn respond(&self, force: f64, delta: f64) -> NormalResponse {
+        NormalResponse {
+            force,
+            delta,
+            contact_radius: self.radius,
+            stiffness: self.stiffness,
+            in_contact: 1,
+            reserved: 0,
+        }
     }
 }
 
 impl NormalContact for Kendall {
-    fn eval(&self, _delta: f64, _old: &ContactState) -> Result<(NormalResponse, ContactState)> { Err(TODO) }
-    fn eval_at_load(&self, _force: f64) -> Result<NormalResponse> { Err(TODO) }
-    fn pull_off_force(&self, _control: Control) -> Result<f64> { Err(TODO) }
-    fn length_scale(&self) -> f64 { self.radius }
+    /// Displacement-controlled step: touch at δ ≥ 0, separate below δ_c.
+    #[inline]
+    fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
+        let delta = check_delta(delta)?;
+        let stays = if old.in_contact != 0 {
+            delta >= self.critical_delta
+        } else {
+            delta >= 0.0
+        };
+        if !stays {
+            return Ok(out_of_contact(delta));
+        }
+        // δ ≥ δ_c implies P ≥ P_c; the clamp only removes rounding at δ_c, so
+        // the force returned here is always accepted by `eval_at_load`.
+        let r = self.respond((self.stiffness * delta).max(self.pull_off), delta);
+        Ok((r, contact_state(&r)))
+    }
+
+    /// `δ = P/(2E* C_NS a)` for `P ≥ P_c`.
+    fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {
+        let force = check_force(force)?;
+        if force < self.pull_off {
+            return Err(super::below_pull_off(force));
+        }
+        Ok(self.respond(force, force / self.stiffness))
+    }
+
+    /// `−√(8πwE* C_NS a³)` under both controls.
+    fn pull_off_force(&self, _control: Control) -> Result<f64> {
+        Ok(self.pull_off)
+    }
+
+    /// `|δ_c| = √(2πwa/(E* C_NS))`; the radius when w = 0.
+    fn length_scale(&self) -> f64 {
+        if self.critical_delta < 0.0 {
+            -self.critical_delta
+        } else {
+            self.radius
+        }
+    }
 }
