@@ -112,6 +112,12 @@ typedef struct AsperityPowerPunch {
     double force_coefficient;
     // Cached `D(d) B` (m^{1−d}).
     double depth_coefficient;
+    // Cached `1/(D(d) B)` (m^{d−1}).
+    double inverse_depth_coefficient;
+    // Cached `1/d`.
+    double inverse_d;
+    // Cached `(C(d)/D(d)) E* = 2d E*/(d+1)` (Pa), so that `P = this · a δ`.
+    double force_per_area;
 } AsperityPowerPunch;
 
 // Flat punch.
@@ -142,18 +148,53 @@ typedef struct AsperityJkr {
     double e_star;
     // Work of adhesion w (J/m²).
     double work_of_adhesion;
+    // Cached `k = √(2πw/E*)` (m^{1/2}); 0 without adhesion.
+    double adhesion_coefficient;
+    // Cached overlap scale `L = (4π²w²R/E*²)^{1/3}` (m) of the reduced quartic
+    // `η⁴ − η − δ/L = 0`; 0 without adhesion.
+    double delta_scale;
+    // Cached `1/L` (1/m); 0 without adhesion.
+    double inv_delta_scale;
+    // Cached radius scale `(kR)^{2/3} = (2πwR²/E*)^{1/3}` (m), `a = scale·η²`
+    // (the jump-in radius); 0 without adhesion.
+    double radius_scale;
+    // Cached force scale `2πwR` (N), `P = scale·((4/3)η⁶ − 2η³)`.
+    double force_scale;
+    // Cached displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}`
+    // (m, ≤ 0).
+    double critical_delta;
 } AsperityJkr;
 
-// JKR power-law punch.
+// JKR power-law punch, frictionless or no-slip.
 typedef struct AsperityJkrPowerPunch {
     // Shape coefficient B (m^{1−d}).
     double b;
-    // Shape exponent d.
+    // Shape exponent d (1 ≤ d ≤ 100).
     double d;
     // Contact modulus E* (Pa).
     double e_star;
     // Work of adhesion w (J/m²).
     double work_of_adhesion;
+    // No-slip factor C_NS (1 when frictionless).
+    double no_slip_factor;
+    // Shape factor k*(d) of the bonded punch (1 when frictionless).
+    double k_star;
+    // Cached `α = C_NS C(d) B E*/k*` (Pa·m^{1−d}), `P_shape = α a^{d+1}`.
+    double force_coefficient;
+    // Cached `γ = D(d) B/k*` (m^{1−d}), `δ_shape = γ a^d`.
+    double depth_coefficient;
+    // Cached radius scale `A₀ = (κ/γ)^{1/(d−1/2)}` (m), `κ = √(2πw/(E*C_NS))`;
+    // 0 without adhesion.
+    double radius_scale;
+    // Cached overlap scale `L = κ A₀^{1/2}` (m); 0 without adhesion.
+    double delta_scale;
+    // Cached force scale `F = √(8πwE*C_NS) A₀^{3/2}` (N); 0 without adhesion.
+    double force_scale;
+    // Cached displacement-controlled instability δ_c (m, ≤ 0), the minimum of
+    // δ(a).
+    double critical_delta;
+    // Cached reduced radius `t_c = (2d)^{−1/(2d−1)}` at δ_c.
+    double critical_t;
 } AsperityJkrPowerPunch;
 
 // Kendall adhesive flat punch.
@@ -166,9 +207,18 @@ typedef struct AsperityKendall {
     double work_of_adhesion;
     // No-slip factor C_NS (1 when frictionless).
     double no_slip_factor;
+    // Cached contact stiffness `2E* C_NS a` (N/m).
+    double stiffness;
+    // Cached pull-off force `P_c = −√(8πwE* C_NS a³)` (N, ≤ 0).
+    double pull_off;
+    // Cached separation overlap `δ_c = P_c/(2E* C_NS a)` (m, ≤ 0).
+    double critical_delta;
 } AsperityKendall;
 
-// Maugis–Dugdale sphere.
+// Maugis–Dugdale sphere. Build it with [`MaugisDugdale::new`] (or
+// [`MaugisDugdale::from_tabor`], [`MaugisDugdale::from_maugis_parameter`]),
+// which validates the parameters and caches the derived constants and the
+// turning points; treat the fields as read-only.
 typedef struct AsperityMaugisDugdale {
     // Sphere radius R (m).
     double radius;
@@ -178,6 +228,29 @@ typedef struct AsperityMaugisDugdale {
     double work_of_adhesion;
     // Dugdale cohesive stress σ₀ (Pa).
     double cohesive_stress;
+    // Cached: Maugis parameter λ (dimensionless).
+    double lambda;
+    // Cached: radius unit `(πwR²/K)^{1/3}` (m).
+    double radius_scale;
+    // Cached: overlap unit `(π²w²R/K²)^{1/3}` (m).
+    double delta_scale;
+    // Cached: `C̄₀`, where the non-contact branch closes onto the contact one.
+    double c0_bar;
+    // Cached: jump-out point: `C̄` (turn_kind 0) or `s` (turn_kind 1).
+    double turn_param;
+    // Cached: `Δ̄ + 2/(πλ)` at the jump-out point (≤ 0).
+    double turn_dh;
+    // Cached: load-controlled pull-off `P̄_c` (≤ 0, dimensionless).
+    double pull_off_load_bar;
+    // Cached: `s` at the load-controlled pull-off.
+    double pull_off_load_s;
+    // Cached: displacement-controlled pull-off (dimensionless).
+    double pull_off_disp_bar;
+    // Cached: 0 when the jump-out point is on the non-contact branch
+    // (λ ≤ λ_c), 1 when it is on the contact branch.
+    int32_t turn_kind;
+    // Reserved, 0.
+    int32_t reserved;
 } AsperityMaugisDugdale;
 
 // Rigid sphere with a surface-force law.

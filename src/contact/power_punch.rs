@@ -65,6 +65,12 @@ pub struct PowerPunch {
     pub force_coefficient: f64,
     /// Cached `D(d) B` (m^{1−d}).
     pub depth_coefficient: f64,
+    /// Cached `1/(D(d) B)` (m^{d−1}).
+    pub inverse_depth_coefficient: f64,
+    /// Cached `1/d`.
+    pub inverse_d: f64,
+    /// Cached `(C(d)/D(d)) E* = 2d E*/(d+1)` (Pa), so that `P = this · a δ`.
+    pub force_per_area: f64,
 }
 
 impl PowerPunch {
@@ -72,12 +78,16 @@ impl PowerPunch {
     pub fn new(b: f64, d: f64, e_star: f64) -> Result<Self> {
         let (b, d) = check_shape(b, d)?;
         let e_star = check::positive("e_star", e_star)?;
+        let depth_coefficient = galin_d(d) * b;
         Ok(Self {
             b,
             d,
             e_star,
             force_coefficient: galin_c(d) * b * e_star,
-            depth_coefficient: galin_d(d) * b,
+            depth_coefficient,
+            inverse_depth_coefficient: 1.0 / depth_coefficient,
+            inverse_d: 1.0 / d,
+            force_per_area: 2.0 * d / (d + 1.0) * e_star,
         })
     }
 
@@ -124,7 +134,7 @@ impl PowerPunch {
     /// Contact radius at overlap δ ≥ 0: `a = (δ/(D B))^{1/d}` (1-21).
     #[inline]
     pub fn radius_at_delta(&self, delta: f64) -> f64 {
-        (delta / self.depth_coefficient).powf(1.0 / self.d)
+        (delta * self.inverse_depth_coefficient).powf(self.inverse_d)
     }
 }
 
@@ -149,7 +159,7 @@ impl NormalContact for PowerPunch {
         }
         let a = self.radius_at_delta(delta);
         // P = C B E* a^{d+1} = (C/D) E* a δ: one powf per call.
-        let force = self.force_coefficient / self.depth_coefficient * a * delta;
+        let force = self.force_per_area * a * delta;
         Ok(stateless(force, delta, a, 2.0 * self.e_star * a))
     }
 

@@ -1,0 +1,146 @@
+//! Batch evaluation: one law, many contacts, plain arrays.
+//!
+//! [`eval_batch`] is the safe entry point for Rust callers; the C ABI's
+//! `asperity_normal_eval_batch` passes the caller's arrays straight through as
+//! a [`RawBatch`], so a host code's own arrays are used without copying and
+//! input and output arrays may be the same memory. Laws with a vectorised
+//! kernel override [`NormalContact::eval_batch_raw`]; every other law runs the
+//! element loop of [`eval_elementwise`]. Batch and scalar evaluation agree to
+//! rounding, and a batch is deterministic: an element's result does not depend
+//! on its position in the arrays or on the other elements.
+
+use super::{is_finite, overflow, ContactState, NormalContact};
+use crate::error::{Error, Result};
+
+/// A failed batch: the error and the element it happened at. Elements before
+/// `index` have been written; elements from `index` on are untouched.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BatchError {
+    /// Index of the failing element.
+    pub index: usize,
+    /// What went wrong there.
+    pub error: Error,
+}
+
+impl core::fmt::Display for BatchError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "element {}: {}", self.index, self.error)
+    }
+}
+
+impl std::error::Error for BatchError {}
+
+/// The arrays of a batch, as raw pointers so that inputs and outputs may alias
+/// element by element (each element is read completely before it is written).
+///
+/// `delta` and `force` must be valid for `n` elements; the others are either
+/// NULL (fresh states / output not wanted) or valid for `n` elements.
+#[derive(Debug, Clone, Copy)]
+pub struct RawBatch {
+    /// Number of contacts.
+    pub n: usize,
+    /// Overlaps δ (m).
+    pub delta: *const f64,
+    /// Histories before the step, or NULL for fresh contacts.
+    pub old_state: *const ContactState,
+    /// Histories after the step, or NULL.
+    pub new_state: *mut ContactState,
+    /// Forces (N).
+    pub force: *mut f64,
+    /// Contact radii (m), or NULL.
+    pub contact_radius: *mut f64,
+    /// Tangent stiffnesses dP/dδ (N/m), or NULL.
+    pub stiffness: *mut f64,
+}
+
+/// The element loop every law can use: [`NormalContact::eval`] per element,
+/// with the finiteness guarantee of [`super::NormalLaw`].
+///
+/// # Safety
+/// The pointers of `b` must satisfy the contract of [`RawBatch`].
+#[inline]
+pub unsafe fn eval_elementwise<L: NormalContact + ?Sized>(
+    law: &L,
+    b: &RawBatch,
+) -> core::result::Result<(), BatchError> {
+    for i in 0..b.n {
+        let d = b.delta.add(i).read();
+        let old = if b.old_state.is_null() {
+            ContactState::default()
+        } else {
+            b.old_state.add(i).read()
+        };
+        let (r, s) = law
+            .eval(d, &old)
+            .map_err(|error| BatchError { index: i, error })?;
+        if !is_finite(&r) {
+            return Err(BatchError {
+                index: i,
+                error: overflow(d),
+            });
+        }
+        b.force.add(i).write(r.force);
+        if !b.contact_radius.is_null() {
+            b.contact_radius.add(i).write(r.contact_radius);
+        }
+        if !b.stiffness.is_null() {
+            b.stiffness.add(i).write(r.stiffness);
+        }
+        if !b.new_state.is_null() {
+            b.new_state.add(i).write(s);
+        }
+    }
+    Ok(())
+}
+
+fn check_len(name: &'static str, len: usize, n: usize) -> Result<()> {
+    if len == n {
+        Ok(())
+    } else {
+        Err(Error::InvalidArgument {
+            name,
+            value: len as f64,
+            bound: "of the same length as delta",
+        })
+    }
+}
+
+/// Evaluate `law` for every overlap of `delta` (m), from the histories `old`
+/// (or fresh ones) into `new` (if given), writing forces (N) and, if given,
+/// contact radii (m) and stiffnesses (N/m). Every slice given must have the
+/// length of `delta`.
+pub fn eval_batch<L: NormalContact + ?Sized>(
+    law: &L,
+    delta: &[f64],
+    old: Option<&[ContactState]>,
+    new: Option<&mut [ContactState]>,
+    force: &mut [f64],
+    contact_radius: Option<&mut [f64]>,
+    stiffness: Option<&mut [f64]>,
+) -> core::result::Result<(), BatchError> {
+    let n = delta.len();
+    let lens = [
+        ("old", old.as_ref().map(|s| s.len())),
+        ("new", new.as_ref().map(|s| s.len())),
+        ("force", Some(force.len())),
+        ("contact_radius", contact_radius.as_ref().map(|s| s.len())),
+        ("stiffness", stiffness.as_ref().map(|s| s.len())),
+    ];
+    for (name, len) in lens {
+        if let Some(len) = len {
+            check_len(name, len, n).map_err(|error| BatchError { index: 0, error })?;
+        }
+    }
+    let b = RawBatch {
+        n,
+        delta: delta.as_ptr(),
+        old_state: old.map_or(core::ptr::null(), |s| s.as_ptr()),
+        new_state: new.map_or(core::ptr::null_mut(), |s| s.as_mut_ptr()),
+        force: force.as_mut_ptr(),
+        contact_radius: contact_radius.map_or(core::ptr::null_mut(), |s| s.as_mut_ptr()),
+        stiffness: stiffness.map_or(core::ptr::null_mut(), |s| s.as_mut_ptr()),
+    };
+    // SAFETY: every pointer comes from a slice of length n (or is NULL), and
+    // distinct slices do not overlap.
+    unsafe { law.eval_batch_raw(&b) }
+}
