@@ -1,0 +1,939 @@
+//! Every C program in `examples/c` is compiled with the `cc` crate's compiler
+//! (`-std=c99 -Wall -Wextra -Werror -pedantic`), linked against the freshly
+//! built `libasperity.a` and, separately, `libasperity.so`, run, and its output
+//! checked against the closed forms of REFERENCE.md.
+//!
+//! The programs print `CHECK <name> <value>` lines and table rows; the checks
+//! here parse the numbers and compare them with tolerances. A check that
+//! depends on a contact law says which one in its failure message, so a red
+//! test points at the law to look at.
+//!
+//! Integration tests do not get the staticlib/cdylib for free: the harness runs
+//! `cargo build --lib` with the same profile and target directory as this test
+//! executable before compiling anything. Everything is built once per test run
+//! and shared by the tests; outputs go to `target/tmp/c_examples/<profile>/`.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::OnceLock;
+use std::time::{Duration, Instant};
+
+/// Native libraries a Rust staticlib needs, from
+/// `cargo rustc --lib --crate-type staticlib -- --print native-static-libs`.
+#[cfg(target_os = "linux")]
+const NATIVE_STATIC_LIBS: &[&str] = &[
+    "-lgcc_s",
+    "-lutil",
+    "-lrt",
+    "-lpthread",
+    "-lm",
+    "-ldl",
+    "-lc",
+];
+#[cfg(target_os = "macos")]
+const NATIVE_STATIC_LIBS: &[&str] = &["-lSystem", "-lc", "-lm"];
+#[cfg(not(any(target_os = "linux", target_os = "macos")))]
+const NATIVE_STATIC_LIBS: &[&str] = &["-lpthread", "-lm", "-ldl", "-lc"];
+
+#[cfg(target_os = "macos")]
+const SHARED_LIB: &str = "libasperity.dylib";
+#[cfg(not(target_os = "macos"))]
+const SHARED_LIB: &str = "libasperity.so";
+
+const C_FLAGS: &[&str] = &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"];
+
+/// Where the laws live, for failure messages.
+const JKR: &str = "JKR (src/contact/jkr.rs)";
+const MD: &str = "Maugis–Dugdale (src/contact/maugis_dugdale.rs)";
+const DMT: &str = "DMT (src/contact/dmt.rs)";
+const HERTZ: &str = "Hertz (src/contact/hertz.rs)";
+const FFI: &str = "the C ABI (src/ffi)";
+const MATERIAL: &str = "material (src/material.rs)";
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Linkage {
+    Static,
+    Shared,
+}
+
+struct Built {
+    /// example name → (linkage → binary or compiler error)
+    binaries: BTreeMap<String, BTreeMap<Linkage, Result<PathBuf, String>>>,
+}
+
+fn manifest_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `target/<profile>` (or `target/<triple>/<profile>`) of this test executable,
+/// the target directory, the cargo profile name and the cross triple, if any.
+struct Layout {
+    profile_dir: PathBuf,
+    target_dir: PathBuf,
+    profile: String,
+    cross_target: Option<String>,
+}
+
+fn layout() -> Result<Layout, String> {
+    let exe = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
+    // target/<profile>/deps/c_examples-<hash>
+    let profile_dir = exe
+        .parent()
+        .and_then(Path::parent)
+        .ok_or_else(|| format!("unexpected test executable path {}", exe.display()))?
+        .to_path_buf();
+    let dir_name = profile_dir
+        .file_name()
+        .and_then(|s| s.to_str())
+        .ok_or("profile directory has no name")?
+        .to_string();
+    let profile = match dir_name.as_str() {
+        "debug" => "dev".to_string(),
+        other => other.to_string(),
+    };
+    let parent = profile_dir.parent().ok_or("no target directory")?;
+    // Cargo marks its target directory with CACHEDIR.TAG; one level further up
+    // means a `--target <triple>` build.
+    let (target_dir, cross_target) = if parent.join("CACHEDIR.TAG").exists() {
+        (parent.to_path_buf(), None)
+    } else if parent
+        .parent()
+        .is_some_and(|p| p.join("CACHEDIR.TAG").exists())
+    {
+        (
+            parent.parent().unwrap().to_path_buf(),
+            parent
+                .file_name()
+                .and_then(|s| s.to_str())
+                .map(String::from),
+        )
+    } else {
+        // Fall back to the environment, then to the executable's grandparent.
+        match std::env::var_os("CARGO_TARGET_DIR") {
+            Some(d) => (PathBuf::from(d), None),
+            None => (parent.to_path_buf(), None),
+        }
+    };
+    Ok(Layout {
+        profile_dir,
+        target_dir,
+        profile,
+        cross_target,
+    })
+}
+
+/// Build `libasperity.a` and the shared library with the test's profile.
+fn build_library(l: &Layout) -> Result<(), String> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut cmd = Command::new(cargo);
+    cmd.current_dir(manifest_dir())
+        .args(["build", "--lib", "--profile", &l.profile, "--target-dir"])
+        .arg(&l.target_dir);
+    if let Some(t) = &l.cross_target {
+        cmd.args(["--target", t]);
+    }
+    if cfg!(feature = "cli") {
+        cmd.args(["--features", "cli"]);
+    }
+    let out = cmd
+        .output()
+        .map_err(|e| format!("running cargo build --lib: {e}"))?;
+    if !out.status.success() {
+        return Err(format!(
+            "cargo build --lib failed ({}):\n{}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr)
+        ));
+    }
+    for lib in ["libasperity.a", SHARED_LIB] {
+        if !l.profile_dir.join(lib).exists() {
+            return Err(format!(
+                "cargo build --lib did not produce {}",
+                l.profile_dir.join(lib).display()
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn host_triple() -> String {
+    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+    if let Ok(out) = Command::new(rustc).arg("-vV").output() {
+        let text = String::from_utf8_lossy(&out.stdout);
+        if let Some(h) = text.lines().find_map(|l| l.strip_prefix("host: ")) {
+            return h.trim().to_string();
+        }
+    }
+    // Good enough for the usual hosts when rustc is not on PATH.
+    format!(
+        "{}-{}",
+        std::env::consts::ARCH,
+        match std::env::consts::OS {
+            "linux" => "unknown-linux-gnu",
+            "macos" => "apple-darwin",
+            other => other,
+        }
+    )
+}
+
+/// The C compiler `cc` would use for this target, without any cargo metadata.
+fn c_compiler(l: &Layout, scratch: &Path) -> Result<cc::Tool, String> {
+    let host = host_triple();
+    let target = l.cross_target.clone().unwrap_or_else(|| host.clone());
+    cc::Build::new()
+        .target(&target)
+        .host(&host)
+        .opt_level(0)
+        .debug(false)
+        .out_dir(scratch)
+        .cargo_metadata(false)
+        .cargo_warnings(false)
+        .cargo_output(false)
+        .emit_rerun_if_env_changed(false)
+        .try_get_compiler()
+        .map_err(|e| format!("cc could not find a C compiler: {e}"))
+}
+
+fn compile(
+    tool: &cc::Tool,
+    source: &Path,
+    out: &Path,
+    linkage: Linkage,
+    lib_dir: &Path,
+) -> Result<PathBuf, String> {
+    let mut cmd = tool.to_command();
+    cmd.args(C_FLAGS)
+        .arg("-I")
+        .arg(manifest_dir().join("include"))
+        .arg(source)
+        .arg("-o")
+        .arg(out);
+    match linkage {
+        Linkage::Static => {
+            cmd.arg(lib_dir.join("libasperity.a"));
+            cmd.args(NATIVE_STATIC_LIBS);
+        }
+        Linkage::Shared => {
+            cmd.arg("-L").arg(lib_dir).arg("-lasperity");
+            cmd.arg(format!("-Wl,-rpath,{}", lib_dir.display()));
+            cmd.arg("-lm");
+        }
+    }
+    let o = cmd
+        .output()
+        .map_err(|e| format!("running the C compiler {cmd:?}: {e}"))?;
+    if !o.status.success() {
+        return Err(format!(
+            "compiling {} ({linkage:?}) failed:\n{cmd:?}\n{}{}",
+            source.display(),
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        ));
+    }
+    Ok(out.to_path_buf())
+}
+
+fn example_sources() -> Vec<PathBuf> {
+    let dir = manifest_dir().join("examples/c");
+    let mut v: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("reading {}: {e}", dir.display()))
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "c"))
+        .collect();
+    v.sort();
+    v
+}
+
+fn out_dir(l: &Layout) -> PathBuf {
+    // `CARGO_TARGET_TMPDIR` is target/tmp of the build that compiled this test.
+    let base = option_env!("CARGO_TARGET_TMPDIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| l.target_dir.join("tmp"));
+    base.join("c_examples").join(&l.profile)
+}
+
+fn build_all() -> Result<Built, String> {
+    let l = layout()?;
+    build_library(&l)?;
+    let out = out_dir(&l);
+    std::fs::create_dir_all(&out).map_err(|e| format!("creating {}: {e}", out.display()))?;
+    let tool = c_compiler(&l, &out)?;
+    let jobs: Vec<(String, PathBuf, Linkage)> = example_sources()
+        .into_iter()
+        .flat_map(|src| {
+            let name = src.file_stem().unwrap().to_string_lossy().into_owned();
+            [Linkage::Static, Linkage::Shared]
+                .into_iter()
+                .map(move |k| (name.clone(), src.clone(), k))
+        })
+        .collect();
+    let results: Vec<(String, Linkage, Result<PathBuf, String>)> = std::thread::scope(|s| {
+        let handles: Vec<_> = jobs
+            .iter()
+            .map(|(name, src, k)| {
+                let tool = &tool;
+                let bin = out.join(format!(
+                    "{name}-{}",
+                    if *k == Linkage::Static {
+                        "static"
+                    } else {
+                        "shared"
+                    }
+                ));
+                let lib_dir = &l.profile_dir;
+                s.spawn(move || (name.clone(), *k, compile(tool, src, &bin, *k, lib_dir)))
+            })
+            .collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    let mut binaries: BTreeMap<String, BTreeMap<Linkage, Result<PathBuf, String>>> =
+        BTreeMap::new();
+    for (name, k, r) in results {
+        binaries.entry(name).or_default().insert(k, r);
+    }
+    Ok(Built { binaries })
+}
+
+fn built() -> &'static Built {
+    static BUILT: OnceLock<Result<Built, String>> = OnceLock::new();
+    match BUILT.get_or_init(build_all) {
+        Ok(b) => b,
+        Err(e) => panic!("building the library and the C examples failed: {e}"),
+    }
+}
+
+/// What a program printed.
+struct Run {
+    label: String,
+    status: std::process::ExitStatus,
+    stdout: String,
+    stderr: String,
+    checks: BTreeMap<String, f64>,
+    /// Rows whose first word is "approach" or "retract": (phase, numbers).
+    rows: Vec<(String, Vec<f64>)>,
+}
+
+fn run(name: &str, linkage: Linkage) -> Run {
+    let bin = match built().binaries.get(name).and_then(|m| m.get(&linkage)) {
+        None => panic!("examples/c/{name}.c not found"),
+        Some(Err(e)) => panic!("{e}"),
+        Some(Ok(b)) => b.clone(),
+    };
+    let stdout_path = bin.with_extension("stdout");
+    let stderr_path = bin.with_extension("stderr");
+    let mut child = Command::new(&bin)
+        .stdin(Stdio::null())
+        .stdout(std::fs::File::create(&stdout_path).unwrap())
+        .stderr(std::fs::File::create(&stderr_path).unwrap())
+        .spawn()
+        .unwrap_or_else(|e| panic!("running {}: {e}", bin.display()));
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().unwrap() {
+            break s;
+        }
+        if start.elapsed() > Duration::from_secs(120) {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("{} did not finish within 120 s", bin.display());
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    };
+    let stdout = std::fs::read_to_string(&stdout_path).unwrap_or_default();
+    let stderr = std::fs::read_to_string(&stderr_path).unwrap_or_default();
+    let mut checks = BTreeMap::new();
+    let mut rows = Vec::new();
+    for line in stdout.lines() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("CHECK") => {
+                let (Some(k), Some(v)) = (words.next(), words.next()) else {
+                    panic!("{name}: malformed CHECK line `{line}`");
+                };
+                let v: f64 = v
+                    .parse()
+                    .unwrap_or_else(|_| panic!("{name}: CHECK {k}: `{v}` is not a number"));
+                checks.insert(k.to_string(), v);
+            }
+            Some(phase @ ("approach" | "retract")) => {
+                let numbers: Vec<f64> = words.map_while(|w| w.parse().ok()).collect();
+                rows.push((phase.to_string(), numbers));
+            }
+            _ => {}
+        }
+    }
+    Run {
+        label: format!("{name} ({linkage:?} linkage)"),
+        status,
+        stdout,
+        stderr,
+        checks,
+        rows,
+    }
+}
+
+/// Collects failed checks, each tagged with the law it depends on.
+struct Report<'a> {
+    run: &'a Run,
+    failures: Vec<(&'static str, String)>,
+    passed: usize,
+}
+
+impl<'a> Report<'a> {
+    fn new(run: &'a Run) -> Self {
+        Self {
+            run,
+            failures: Vec::new(),
+            passed: 0,
+        }
+    }
+
+    fn fail(&mut self, needs: &'static str, msg: String) {
+        self.failures.push((needs, msg));
+    }
+
+    fn ok(&mut self, needs: &'static str, cond: bool, msg: impl FnOnce() -> String) {
+        if cond {
+            self.passed += 1;
+        } else {
+            self.fail(needs, msg());
+        }
+    }
+
+    fn get(&mut self, needs: &'static str, name: &str) -> Option<f64> {
+        let v = self.run.checks.get(name).copied();
+        if v.is_none() {
+            self.fail(needs, format!("CHECK {name} missing from the output"));
+        }
+        v
+    }
+
+    /// `|value − expected| ≤ tol`.
+    fn close(&mut self, needs: &'static str, name: &str, expected: f64, tol: f64) {
+        if let Some(v) = self.get(needs, name) {
+            self.ok(needs, (v - expected).abs() <= tol, || {
+                format!("CHECK {name} = {v:.10e}, expected {expected:.10e} ± {tol:e}")
+            });
+        }
+    }
+
+    /// `lo ≤ value ≤ hi`.
+    fn within(&mut self, needs: &'static str, name: &str, lo: f64, hi: f64) {
+        if let Some(v) = self.get(needs, name) {
+            self.ok(needs, v >= lo && v <= hi, || {
+                format!("CHECK {name} = {v:.10e}, expected in [{lo:e}, {hi:e}]")
+            });
+        }
+    }
+
+    fn exit_ok(&mut self, needs: &'static str) {
+        let s = self.run.status;
+        self.ok(needs, s.success(), || {
+            format!("the program exited with {s} (a library call failed, see stderr)")
+        });
+    }
+
+    fn finish(self) {
+        if self.failures.is_empty() {
+            return;
+        }
+        let mut by_law: BTreeMap<&str, Vec<&String>> = BTreeMap::new();
+        for (needs, m) in &self.failures {
+            by_law.entry(needs).or_default().push(m);
+        }
+        let mut msg = format!(
+            "{}: {} check(s) failed, {} passed.\n",
+            self.run.label,
+            self.failures.len(),
+            self.passed
+        );
+        for (law, ms) in by_law {
+            let _ = writeln!(msg, "  depends on {law}:");
+            for m in ms.iter().take(12) {
+                let _ = writeln!(msg, "    - {m}");
+            }
+            if ms.len() > 12 {
+                let _ = writeln!(msg, "    - … and {} more", ms.len() - 12);
+            }
+        }
+        let _ = writeln!(msg, "--- stderr ---\n{}", self.run.stderr.trim_end());
+        let tail: Vec<&str> = self.run.stdout.lines().rev().take(25).collect();
+        let _ = writeln!(msg, "--- stdout (last lines) ---");
+        for l in tail.into_iter().rev() {
+            let _ = writeln!(msg, "{l}");
+        }
+        panic!("{msg}");
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Independent reference solutions (REFERENCE.md section 1), not the library's.
+
+const PI: f64 = std::f64::consts::PI;
+
+/// The example programs' material: REFERENCE.md section 8.
+const R: f64 = 1e-6;
+const W: f64 = 0.05;
+const E_STAR: f64 = 1e9;
+
+fn bisect(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -> f64 {
+    let flo = f(lo);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if (f(mid) > 0.0) == (flo > 0.0) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// JKR sphere, stable (large-radius) branch at overlap `delta`: (force, radius).
+fn jkr_at(delta: f64) -> (f64, f64) {
+    let a_c = (PI * W * R * R / (8.0 * E_STAR)).cbrt();
+    let d = |a: f64| a * a / R - (2.0 * PI * W * a / E_STAR).sqrt() - delta;
+    let mut hi = 2.0 * a_c;
+    while d(hi) < 0.0 {
+        hi *= 2.0;
+    }
+    let a = bisect(a_c, hi, d);
+    let p = 4.0 * E_STAR * a.powi(3) / (3.0 * R) - (8.0 * PI * W * E_STAR * a.powi(3)).sqrt();
+    (p, a)
+}
+
+/// Maugis–Dugdale in reduced units at (λ, m): (Ā, P̄, Δ̄).
+fn md_point(lambda: f64, m: f64) -> (f64, f64, f64) {
+    let s = (m * m - 1.0).max(0.0).sqrt();
+    let t = s.atan();
+    let f1 = s + (m * m - 2.0) * t;
+    let f2 = s * t - m + 1.0;
+    let a2 = lambda / 2.0 * f1;
+    let a1 = 4.0 * lambda * lambda / 3.0 * f2;
+    // Positive root of a2 A² + a1 A − 1 = 0, in the cancellation-free form.
+    let a = 2.0 / (a1 + (a1 * a1 + 4.0 * a2).sqrt());
+    let p = a.powi(3) - lambda * a * a * (s + m * m * t);
+    let d = a * a - 4.0 / 3.0 * lambda * a * s;
+    (a, p, d)
+}
+
+/// Maugis–Dugdale given Ā: (m, P̄, Δ̄); the first equation is increasing in m.
+fn md_at_radius(lambda: f64, a: f64) -> (f64, f64, f64) {
+    let g = |m: f64| {
+        let s = (m * m - 1.0).sqrt();
+        let t = s.atan();
+        lambda * a * a / 2.0 * (s + (m * m - 2.0) * t)
+            + 4.0 * lambda * lambda * a / 3.0 * (s * t - m + 1.0)
+            - 1.0
+    };
+    let mut hi = 2.0;
+    while g(hi) < 0.0 {
+        hi *= 2.0;
+    }
+    let m = bisect(1.0, hi, g);
+    let (_, p, d) = md_point(lambda, m);
+    (m, p, d)
+}
+
+/// Samples of the equilibrium curve, `m − 1` log-spaced over 1e-12 … 1e8.
+fn md_curve(lambda: f64) -> Vec<(f64, f64, f64)> {
+    (0..=8000)
+        .map(|k| md_point(lambda, 1.0 + 10f64.powf(-12.0 + 20.0 * k as f64 / 8000.0)))
+        .collect()
+}
+
+/// Load-controlled pull-off P̄_c: the minimum of P̄ along the curve.
+fn md_pull_off_load(lambda: f64) -> f64 {
+    let c = md_curve(lambda);
+    let (k, _) = c
+        .iter()
+        .enumerate()
+        .min_by(|a, b| a.1 .1.total_cmp(&b.1 .1))
+        .unwrap();
+    // Golden-section refinement in log(m − 1) between the neighbours.
+    let x = |k: usize| -12.0 + 20.0 * k as f64 / 8000.0;
+    let p = |x: f64| md_point(lambda, 1.0 + 10f64.powf(x)).1;
+    let (mut lo, mut hi) = (x(k.saturating_sub(1)), x((k + 1).min(8000)));
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..100 {
+        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if p(x1) < p(x2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    p(0.5 * (lo + hi)).min(c[k].1)
+}
+
+/// Fixed-grip jump-out of the large-contact branch: P̄ at the minimum of Δ̄
+/// over the curve (None when Δ̄ is smallest at the Ā → 0 end, no S-curve).
+/// Used where that minimum is the fold of the large branch (λ ≥ 10).
+fn md_fold(lambda: f64) -> Option<f64> {
+    let c = md_curve(lambda);
+    let (k, _) = c
+        .iter()
+        .enumerate()
+        .min_by(|a, b| a.1 .2.total_cmp(&b.1 .2))
+        .unwrap();
+    if k + 1 >= c.len() {
+        return None;
+    }
+    let x = |k: usize| -12.0 + 20.0 * k as f64 / 8000.0;
+    let d = |x: f64| md_point(lambda, 1.0 + 10f64.powf(x)).2;
+    let (mut lo, mut hi) = (x(k.saturating_sub(1)), x(k + 1));
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..100 {
+        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if d(x1) < d(x2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    Some(md_point(lambda, 1.0 + 10f64.powf(0.5 * (lo + hi))).1)
+}
+
+// ---------------------------------------------------------------------------
+
+fn check_batch_and_errors(linkage: Linkage) {
+    let r = run("batch_and_errors", linkage);
+    let mut c = Report::new(&r);
+    c.exit_ok(FFI);
+    c.close(FFI, "version_matches_header", 1.0, 0.0);
+    c.close(HERTZ, "hertz_batch_vs_scalar_max_abs_diff", 0.0, 0.0);
+    c.within(HERTZ, "hertz_batch_force_max_rel_err", 0.0, 1e-12);
+    c.within(HERTZ, "hertz_batch_radius_max_rel_err", 0.0, 1e-12);
+    c.within(HERTZ, "hertz_batch_stiffness_max_rel_err", 0.0, 1e-12);
+    c.within(HERTZ, "hertz_in_place_force_max_rel_err", 0.0, 1e-12);
+    c.close(DMT, "dmt_batch_vs_scalar_max_abs_diff", 0.0, 0.0);
+    c.within(DMT, "dmt_batch_force_max_rel_err", 0.0, 1e-12);
+    c.close(FFI, "bad_radius_status", -2.0, 0.0);
+    c.close(FFI, "bad_radius_status_is_invalid_argument", 1.0, 0.0);
+    c.close(FFI, "message_length_consistent", 1.0, 0.0);
+    c.close(FFI, "message_names_radius", 1.0, 0.0);
+    c.close(FFI, "truncated_strlen", 15.0, 0.0);
+    c.close(FFI, "truncated_returns_full_length", 1.0, 0.0);
+    c.close(FFI, "truncated_is_prefix", 1.0, 0.0);
+    c.close(FFI, "null_out_status", -1.0, 0.0);
+    c.close(FFI, "batch_error_status", -2.0, 0.0);
+    c.close(FFI, "batch_error_names_element", 1.0, 0.0);
+    c.close(FFI, "batch_error_outputs_written_before", 5.0, 0.0);
+    c.close(FFI, "batch_error_sentinel_after", 1.0, 0.0);
+    // The printed message is the one whose length was reported.
+    let message = r
+        .stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("message: "))
+        .map(str::to_string);
+    match (message, r.checks.get("message_length")) {
+        (Some(m), Some(&n)) => c.ok(FFI, m.len() as f64 == n && m.contains("`radius`"), || {
+            format!("message `{m}` (length {n}) should name `radius`")
+        }),
+        _ => c.fail(FFI, "no `message:` line or message_length".into()),
+    }
+    for (code, text) in [
+        (0, "ok"),
+        (-1, "null pointer"),
+        (-2, "invalid argument"),
+        (-3, "not converged"),
+        (-4, "out of domain"),
+        (-5, "internal error"),
+        (42, "unknown status"),
+    ] {
+        let line = format!("status {code:2}: {text}");
+        c.ok(FFI, r.stdout.contains(&line), || {
+            format!("`{line}` not printed")
+        });
+    }
+    c.finish();
+}
+
+fn check_jkr_hysteresis(linkage: Linkage) {
+    let r = run("jkr_hysteresis", linkage);
+    let mut c = Report::new(&r);
+    let piwr = PI * W * R;
+    let delta_c = -0.75 * (PI * PI * W * W * R / (E_STAR * E_STAR)).cbrt();
+    c.exit_ok(JKR);
+    c.close(FFI, "jkr_delta_c_m", delta_c, 1e-12 * delta_c.abs());
+    c.close(JKR, "jkr_pull_off_load_over_piwR", -1.5, 1e-6);
+    c.close(JKR, "jkr_pull_off_displacement_over_piwR", -5.0 / 6.0, 1e-6);
+    // REFERENCE.md section 8: P_c = 2.35619e-7 N.
+    c.close(JKR, "jkr_pull_off_load_N", -2.35619e-7, 1e-12);
+    c.within(JKR, "jkr_jump_in_delta_over_abs_delta_c", 0.0, 0.05 + 1e-9);
+    c.close(JKR, "jkr_jump_in_radius_over_theory", 1.0, 1e-4);
+    c.close(JKR, "jkr_jump_in_force_over_piwR", -4.0 / 3.0, 1e-4);
+    c.close(JKR, "jkr_jump_in_in_contact", 1.0, 0.0);
+    c.close(JKR, "jkr_fresh_just_outside_in_contact", 0.0, 0.0);
+    // Retraction grid: δ = (39.5 − j)|δ_c|/20, so δ_c lies between −0.975 and −1.025.
+    c.close(JKR, "jkr_last_contact_delta_over_abs_delta_c", -0.975, 1e-9);
+    c.close(JKR, "jkr_first_free_delta_over_abs_delta_c", -1.025, 1e-9);
+    c.close(JKR, "jkr_old_state_unchanged", 1.0, 0.0);
+    c.close(JKR, "jkr_reeval_identical", 1.0, 0.0);
+
+    // Every row against the closed form: (δ, δ/|δ_c|, P, P/πwR, a, in_contact).
+    let n_app = r.rows.iter().filter(|(p, _)| p == "approach").count();
+    let n_ret = r.rows.iter().filter(|(p, _)| p == "retract").count();
+    c.ok(JKR, n_app == 61 && n_ret == 62, || {
+        format!("expected 61 approach and 62 retract rows, got {n_app} and {n_ret}")
+    });
+    let mut min_ref = 0.0f64;
+    for (phase, v) in &r.rows {
+        if v.len() < 6 {
+            c.fail(JKR, format!("short row: {phase} {v:?}"));
+            continue;
+        }
+        let (delta, force, a, in_contact) = (v[0], v[2], v[4], v[5]);
+        // Approach: contact from δ = 0 on (δ = 0 itself may go either way);
+        // retraction: contact down to δ_c.
+        let expect_contact = if phase == "approach" {
+            if delta == 0.0 {
+                in_contact == 1.0
+            } else {
+                delta > 0.0
+            }
+        } else {
+            delta >= delta_c
+        };
+        let (p_ref, a_ref) = if expect_contact {
+            jkr_at(delta)
+        } else {
+            (0.0, 0.0)
+        };
+        if phase == "retract" {
+            min_ref = min_ref.min(p_ref);
+        }
+        let ok = in_contact == f64::from(u8::from(expect_contact))
+            && (force - p_ref).abs() <= 2e-4 * piwr
+            && (a - a_ref).abs() <= 2e-4 * a_ref.max(1e-12);
+        c.ok(JKR, ok, || {
+            format!(
+                "{phase} δ = {delta:e}: got P = {force:e}, a = {a:e}, in_contact = {in_contact}; \
+                 expected P = {p_ref:e}, a = {a_ref:e}, in_contact = {}",
+                u8::from(expect_contact)
+            )
+        });
+    }
+    // The most adhesive force met on retraction: −3/2 πwR up to the grid.
+    c.close(
+        JKR,
+        "jkr_min_force_retraction_over_piwR",
+        min_ref / piwr,
+        2e-4,
+    );
+    c.ok(JKR, (min_ref / piwr + 1.5).abs() < 0.02, || {
+        format!("reference minimum on the grid {min_ref:e} is not near −3/2 πwR")
+    });
+    c.finish();
+}
+
+fn check_pull_off_table(linkage: Linkage) {
+    let r = run("pull_off_table", linkage);
+    let mut c = Report::new(&r);
+    c.exit_ok("JKR and Maugis–Dugdale (the program reports which call failed)");
+    c.within(MATERIAL, "maugis_parameter_max_rel_err", 0.0, 1e-12);
+    c.close(DMT, "dmt_pull_off_load_over_piwR", -2.0, 1e-9);
+    c.close(DMT, "dmt_pull_off_displacement_over_piwR", -2.0, 1e-9);
+    c.close(JKR, "jkr_pull_off_load_over_piwR", -1.5, 1e-6);
+    c.close(JKR, "jkr_pull_off_displacement_over_piwR", -5.0 / 6.0, 1e-6);
+
+    // Maugis–Dugdale, λ = 0.01 … 100.
+    let lambdas: Vec<f64> = (0..13).map(|i| 10f64.powf(-2.0 + i as f64 / 3.0)).collect();
+    let find = |prefix: &str, lambda: f64| -> Option<f64> {
+        r.checks.iter().find_map(|(k, v)| {
+            let l: f64 = k.strip_prefix(prefix)?.strip_prefix('@')?.parse().ok()?;
+            ((l / lambda - 1.0).abs() < 1e-9).then_some(*v)
+        })
+    };
+    let mut previous: Option<f64> = None;
+    for &lambda in &lambdas {
+        let load = find("md_pull_off_load_over_piwR", lambda);
+        let disp = find("md_pull_off_displacement_over_piwR", lambda);
+        let (Some(load), Some(disp)) = (load, disp) else {
+            c.fail(
+                MD,
+                format!("no Maugis–Dugdale pull-off CHECK lines for λ = {lambda:.4}"),
+            );
+            continue;
+        };
+        let reference = md_pull_off_load(lambda);
+        c.ok(MD, (load - reference).abs() <= 1e-3, || {
+            format!("λ = {lambda:.4}: load-controlled pull-off {load:.6} πwR, Maugis (1992) gives {reference:.6}")
+        });
+        c.ok(MD, (-2.0 - 1e-9..=-1.5 + 1e-9).contains(&load), || {
+            format!("λ = {lambda:.4}: load-controlled pull-off {load:.6} πwR is outside [−2, −3/2] (DMT…JKR)")
+        });
+        if let Some(p) = previous {
+            c.ok(MD, load >= p - 1e-6, || {
+                format!("λ = {lambda:.4}: load-controlled pull-off {load:.6} πwR is below {p:.6} at the previous λ: not monotone")
+            });
+        }
+        previous = Some(load);
+        // Fixed grips: a force on the equilibrium curve, so never below the
+        // load-controlled value, and adhesive.
+        c.ok(MD, disp >= load - 1e-3 && disp < 0.0, || {
+            format!("λ = {lambda:.4}: displacement-controlled pull-off {disp:.6} πwR should lie in [{load:.6}, 0)")
+        });
+        if lambda >= 9.99 {
+            // Well-separated S-curve: the jump-out is the fold of the large branch.
+            let fold = md_fold(lambda).expect("an S-curve for λ ≥ 10");
+            c.ok(MD, (disp - fold).abs() <= 2e-3, || {
+                format!("λ = {lambda:.4}: displacement-controlled pull-off {disp:.6} πwR, fold of the Maugis curve at {fold:.6}")
+            });
+        }
+    }
+    // Limits: λ → 0 is DMT, λ → ∞ is JKR.
+    if let Some(v) = find("md_pull_off_load_over_piwR", 0.01) {
+        c.ok(MD, (v + 2.0).abs() < 5e-3, || {
+            format!("λ = 0.01: load pull-off {v} not near DMT −2")
+        });
+    }
+    if let Some(v) = find("md_pull_off_load_over_piwR", 100.0) {
+        c.ok(MD, (v + 1.5).abs() < 5e-3, || {
+            format!("λ = 100: load pull-off {v} not near JKR −3/2")
+        });
+    }
+    if let Some(v) = find("md_pull_off_displacement_over_piwR", 100.0) {
+        c.ok(MD, (v + 5.0 / 6.0).abs() < 5e-3, || {
+            format!("λ = 100: displacement pull-off {v} not near JKR −5/6")
+        });
+    }
+
+    // The λ = 1 curve: (Δ̄, P̄, Ā, C̄, in_contact) rows satisfy Maugis's equations.
+    let lambda = 1.0;
+    let mut checked = 0;
+    for (phase, v) in &r.rows {
+        if v.len() < 5 {
+            c.fail(MD, format!("short curve row: {phase} {v:?}"));
+            continue;
+        }
+        let (big_delta, p, a, cc) = (v[0], v[1], v[2], v[3]);
+        if !(p.is_finite() && a.is_finite() && cc.is_finite()) {
+            c.fail(
+                MD,
+                format!("{phase} Δ̄ = {big_delta}: non-finite output {v:?}"),
+            );
+            continue;
+        }
+        if a < 0.05 {
+            // Out of contact (or a vanishing contact): no repulsion.
+            c.ok(MD, p <= 1e-9, || {
+                format!("{phase} Δ̄ = {big_delta}: P̄ = {p} > 0 without contact")
+            });
+            continue;
+        }
+        let (m, p_ref, d_ref) = md_at_radius(lambda, a);
+        checked += 1;
+        c.ok(MD, (p - p_ref).abs() <= 2e-3 && (big_delta - d_ref).abs() <= 2e-3, || {
+            format!("{phase} Δ̄ = {big_delta}: Ā = {a} gives P̄ = {p_ref:.5}, Δ̄ = {d_ref:.5} by Maugis's equations, the program printed P̄ = {p}")
+        });
+        if cc > 0.0 {
+            c.ok(MD, (cc - m * a).abs() <= 2e-3 * (m * a).max(1.0), || {
+                format!(
+                    "{phase} Δ̄ = {big_delta}: cohesive radius C̄ = {cc}, Maugis gives mĀ = {:.5}",
+                    m * a
+                )
+            });
+        }
+    }
+    c.ok(MD, checked >= 20, || {
+        format!("only {checked} in-contact rows of the λ = 1 curve to check (expected ≥ 20)")
+    });
+    if r.checks.contains_key("md_curve_min_force_over_piwR") {
+        let p_c = md_pull_off_load(lambda);
+        c.within(MD, "md_curve_min_force_over_piwR", p_c - 1e-3, 0.0);
+    } else {
+        c.fail(
+            MD,
+            "CHECK md_curve_min_force_over_piwR missing from the output".into(),
+        );
+    }
+    c.finish();
+}
+
+#[test]
+fn every_example_compiles_and_links_both_ways() {
+    let b = built();
+    let mut errors = String::new();
+    for (name, by_linkage) in &b.binaries {
+        for (k, r) in by_linkage {
+            if let Err(e) = r {
+                let _ = writeln!(errors, "{name} ({k:?}): {e}");
+            }
+        }
+    }
+    assert!(!b.binaries.is_empty(), "no C examples found in examples/c");
+    assert!(errors.is_empty(), "{errors}");
+}
+
+/// Examples without their own test below must at least run cleanly.
+#[test]
+fn every_other_example_runs() {
+    let known = ["batch_and_errors", "jkr_hysteresis", "pull_off_table"];
+    for name in built()
+        .binaries
+        .keys()
+        .filter(|n| !known.contains(&n.as_str()))
+    {
+        for k in [Linkage::Static, Linkage::Shared] {
+            let r = run(name, k);
+            let mut c = Report::new(&r);
+            c.exit_ok("(unknown: see stderr)");
+            c.finish();
+        }
+    }
+}
+
+#[test]
+fn batch_and_errors_static() {
+    check_batch_and_errors(Linkage::Static);
+}
+
+#[test]
+fn batch_and_errors_shared() {
+    check_batch_and_errors(Linkage::Shared);
+}
+
+#[test]
+fn jkr_hysteresis_static() {
+    check_jkr_hysteresis(Linkage::Static);
+}
+
+#[test]
+fn jkr_hysteresis_shared() {
+    check_jkr_hysteresis(Linkage::Shared);
+}
+
+#[test]
+fn pull_off_table_static() {
+    check_pull_off_table(Linkage::Static);
+}
+
+#[test]
+fn pull_off_table_shared() {
+    check_pull_off_table(Linkage::Shared);
+}
+
+/// The reference solutions themselves reproduce REFERENCE.md.
+#[test]
+fn reference_solutions_match_reference_md() {
+    let piwr = PI * W * R;
+    // JKR at the load-controlled pull-off radius 5.61165e-8 m: P = −3/2 πwR.
+    let a_l = (9.0 * PI * W * R * R / (8.0 * E_STAR)).cbrt();
+    assert!((a_l - 5.61165e-8).abs() < 1e-12);
+    let delta_l = a_l * a_l / R - (2.0 * PI * W * a_l / E_STAR).sqrt();
+    let (p, a) = jkr_at(delta_l);
+    assert!((a / a_l - 1.0).abs() < 1e-9 && (p / piwr + 1.5).abs() < 1e-9);
+    // Maugis–Dugdale limits and the fixed-grip limit −5/6.
+    assert!((md_pull_off_load(1e-4) + 2.0).abs() < 1e-3);
+    assert!((md_pull_off_load(1e3) + 1.5).abs() < 1e-3);
+    assert!((md_fold(1e3).unwrap() + 5.0 / 6.0).abs() < 1e-3);
+    let mut last = -2.0;
+    for i in 0..=40 {
+        let p = md_pull_off_load(10f64.powf(-3.0 + i as f64 / 8.0));
+        assert!(p >= last - 1e-9 && (-2.0..=-1.5).contains(&p));
+        last = p;
+    }
+}
