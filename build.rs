@@ -1,0 +1,42 @@
+//! Build script: compiles the hand-written C reference kernels of the
+//! benchmarks (`benches/c/kernels.c`) at -O3 and links them into the bench
+//! targets only (`cargo::rustc-link-arg-benches`). The library (rlib,
+//! staticlib, cdylib), tests and examples never link them: no
+//! `rustc-link-lib`/`rustc-link-search` is emitted (`cargo_metadata(false)`).
+//!
+//! If no C compiler is available the library still builds: the script warns
+//! and the benches skip the C-kernel rows (cfg `asperity_c_kernels` unset).
+
+fn main() {
+    println!("cargo::rerun-if-changed=build.rs");
+    println!("cargo::rerun-if-changed=benches/c/kernels.c");
+    println!("cargo::rerun-if-changed=benches/c/kernels.h");
+    println!("cargo::rustc-check-cfg=cfg(asperity_c_kernels)");
+
+    let objects = cc::Build::new()
+        .file("benches/c/kernels.c")
+        .include("benches/c")
+        .opt_level(3)
+        // Same codegen as an ordinary -O3 build of host code: no frame pointer
+        // forced by the bench profile's debug info, no -march tuning.
+        .force_frame_pointer(false)
+        .warnings(true)
+        .extra_warnings(true)
+        .cargo_metadata(false)
+        .try_compile_intermediates();
+
+    match objects {
+        Ok(objects) => {
+            for object in objects {
+                println!("cargo::rustc-link-arg-benches={}", object.display());
+            }
+            println!("cargo::rustc-cfg=asperity_c_kernels");
+        }
+        Err(e) => {
+            println!(
+                "cargo::warning=benches/c/kernels.c not compiled ({e}); \
+                 the benchmarks will run without the C reference kernels"
+            );
+        }
+    }
+}
