@@ -2,7 +2,7 @@
 //! conversion between C values and the Rust API, status codes. No physics lives
 //! here.
 //!
-//! Every exported function runs inside [`guard`], which turns a Rust error into
+//! Every exported function runs inside `guard`, which turns a Rust error into
 //! a negative status with a thread-local message and a panic into
 //! [`ASPERITY_ERR_INTERNAL`]: no panic crosses the C boundary.
 
