@@ -71,6 +71,18 @@
 // Surface law: exponential, `range` = decay length ℓ (m).
 #define ASPERITY_SURFACE_LAW_EXPONENTIAL 3
 
+// Weir surface energy prefactor `K = 1/((m−2)(n−2))` (the default).
+#define ASPERITY_WEIR_PLANE_SUM 0
+
+// Weir surface energy prefactor `K = 3/(mn)` (reproduces seed 001's 8.6 nN).
+#define ASPERITY_WEIR_THREE_OVER_MN 1
+
+// Pair rule: Dupré with geometric-mean interfacial energy, `w = 2√(γ₁γ₂)`.
+#define ASPERITY_PAIR_GEOMETRIC_MEAN 0
+
+// Pair rule of seed 001: `Δγ = (√γ₁ − √γ₂)²`.
+#define ASPERITY_PAIR_SEED001_DIFFERENCE 1
+
 // Success.
 #define ASPERITY_OK 0
 
@@ -524,6 +536,41 @@ int32_t asperity_maugis_parameter(double radius,
                                   double e_star,
                                   double cohesive_stress,
                                   double *lambda);
+
+// Weir's surface energy `γ = a·B/((m−2)(n−2))` (J/m²), `a = (M/ρ)^{1/3}`,
+// `B = E/(3(1−2ν))`: `atomic_mass` in kg per atom, `density` kg/m³,
+// `youngs_modulus` Pa, `poisson_ratio` in [0, 0.5), exponents 2 < m < n.
+int32_t asperity_weir_surface_energy(double atomic_mass,
+                                     double density,
+                                     double youngs_modulus,
+                                     double poisson_ratio,
+                                     double m,
+                                     double n,
+                                     double *gamma);
+
+// [`asperity_weir_surface_energy`] with the prefactor chosen by `prefactor`
+// (`ASPERITY_WEIR_PLANE_SUM` or `ASPERITY_WEIR_THREE_OVER_MN`).
+int32_t asperity_weir_surface_energy_with(double atomic_mass,
+                                          double density,
+                                          double youngs_modulus,
+                                          double poisson_ratio,
+                                          double m,
+                                          double n,
+                                          int32_t prefactor,
+                                          double *gamma);
+
+// Work of adhesion (J/m²) of a pair of surface energies (J/m²) under `rule`
+// (`ASPERITY_PAIR_GEOMETRIC_MEAN` or `ASPERITY_PAIR_SEED001_DIFFERENCE`).
+int32_t asperity_pair_work_of_adhesion(double gamma1,
+                                       double gamma2,
+                                       int32_t rule,
+                                       double *work_of_adhesion);
+
+// Work of adhesion `A/(12πD₀²)` (J/m²) from a Hamaker constant (J) and a
+// separation D₀ (m).
+int32_t asperity_hamaker_work_of_adhesion(double hamaker,
+                                          double separation,
+                                          double *work_of_adhesion);
 
 // A static, NUL-terminated description of a status code; "unknown status"
 // for a value that is not one. Do not free.
