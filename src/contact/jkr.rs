@@ -55,6 +55,7 @@
 //! away from the fold (tests/jkr.rs); within `|Δ − Δ_c| ≲ 1e-3` the root
 //! itself is ill-conditioned (`∂η/∂Δ → ∞`), as for any method.
 
+use super::batch::{BatchError, RawBatch};
 use super::{check_delta, check_force, ContactState, Control, NormalContact, NormalResponse};
 use crate::error::{check, Result};
 use core::f64::consts::PI;
@@ -62,7 +63,7 @@ use core::f64::consts::PI;
 /// Above this reduced overlap Δ the adhesive correction (relative size
 /// `Δ^{−3/4}`) is far below rounding and the Hertz value seeds the Newton step
 /// (avoids overflow of `s³` in the resolvent).
-const HERTZ_SWITCH: f64 = 1e60;
+pub(crate) const HERTZ_SWITCH: f64 = 1e60;
 
 /// JKR sphere.
 #[repr(C)]
@@ -316,6 +317,15 @@ impl NormalContact for Jkr {
         }
         let r = self.on_branch(delta);
         Ok((r, contact_state(&r)))
+    }
+
+    /// Four contacts at a time with AVX2 where the CPU has it (detected once),
+    /// bit for bit the results of [`Jkr::eval`]; the element loop elsewhere.
+    /// See `jkr_simd.rs`.
+    #[inline]
+    unsafe fn eval_batch_raw(&self, b: &RawBatch) -> core::result::Result<(), BatchError> {
+        // SAFETY: the pointer contract of `b` is the caller's.
+        unsafe { super::jkr_simd::eval_batch(self, b) }
     }
 
     /// Stable branch at load P ≥ −(3/2)πwR:

@@ -27,6 +27,7 @@ pub mod dmt;
 pub mod flat_punch;
 pub mod hertz;
 pub mod jkr;
+mod jkr_simd;
 pub mod jkr_power_punch;
 pub mod kendall;
 pub mod maugis_dugdale;
