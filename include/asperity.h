@@ -103,6 +103,11 @@
 // A bug in the library (a caught panic). The message says where.
 #define ASPERITY_ERR_INTERNAL -5
 
+// An immutable tabulated contact law (opaque). Create it with
+// `asperity_table_new_*` or `asperity_table_from_json`, release it with
+// `asperity_table_free`. Safe to share between threads.
+typedef struct AsperityTable AsperityTable;
+
 // Hertz sphere.
 typedef struct AsperityHertz {
     // Radius of curvature R of the sphere, or the effective radius
@@ -505,6 +510,20 @@ int32_t asperity_pull_off_force(const struct AsperityNormalLaw *law,
 int32_t asperity_law_length_scale(const struct AsperityNormalLaw *law,
                                   double *length);
 
+// Load-controlled pull-off force (N, negative: tensile) of an elastic sphere
+// of radius `radius` (m) and contact modulus `e_star` (Pa) under the
+// Lennard-Jones 3-9 surface law with work of adhesion `work_of_adhesion`
+// (J/m²) and equilibrium separation `z0` (m), from the full numerical
+// solution on `n_grid` radial cells (0 = the library's converged default).
+// Writes `*force`; returns `ASPERITY_ERR_NOT_CONVERGED` when the solver does
+// not converge or the grid does not resolve the edge zone.
+int32_t asperity_lj_sphere_pull_off(double radius,
+                                    double e_star,
+                                    double work_of_adhesion,
+                                    double z0,
+                                    size_t n_grid,
+                                    double *force);
+
 // Contact modulus `1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂` (Pa). `E = INFINITY`
 // marks a rigid body. See `material::effective_modulus`.
 int32_t asperity_effective_modulus(double e1,
@@ -571,6 +590,79 @@ int32_t asperity_pair_work_of_adhesion(double gamma1,
 int32_t asperity_hamaker_work_of_adhesion(double hamaker,
                                           double separation,
                                           double *work_of_adhesion);
+
+// Build the table of a Maugis–Dugdale sphere: radius (m), E* (Pa), work of
+// adhesion (J/m²), Dugdale stress σ₀ (Pa), relative `tolerance` in
+// [1e-10, 0.1] (1e-4 is the default of the Rust API) in the error measure of
+// the documentation (relative to max(|P|, 1e-3·|pull-off|)). Writes a new
+// handle to `*out` (NULL on failure).
+int32_t asperity_table_new_maugis_dugdale(double radius,
+                                          double e_star,
+                                          double work_of_adhesion,
+                                          double sigma0,
+                                          double tolerance,
+                                          struct AsperityTable **out);
+
+// Release a table; NULL is accepted and ignored.
+void asperity_table_free(struct AsperityTable *table);
+
+// Evaluate `table` at the overlap `delta` (m) from the history `old_state`
+// (NULL: fresh), writing the history after the step to `new_state` (may be
+// NULL, may equal `old_state`) and the response to `out`.
+int32_t asperity_table_eval(const struct AsperityTable *table,
+                            double delta,
+                            const struct AsperityContactState *old_state,
+                            struct AsperityContactState *new_state,
+                            struct AsperityNormalResponse *out);
+
+// Evaluate `table` for `n` contacts, as `asperity_normal_eval_batch`:
+// `delta[i]` (m), `old_state[i]` → `new_state[i]`, `force[i]` (N),
+// `contact_radius[i]` (m), `stiffness[i]` (N/m). `delta` and `force` are
+// required, the others may be NULL; inputs and outputs may alias. On an
+// error at element i, elements before i are written and the message names i.
+int32_t asperity_table_eval_batch(const struct AsperityTable *table,
+                                  size_t n,
+                                  const double *delta,
+                                  const struct AsperityContactState *old_state,
+                                  struct AsperityContactState *new_state,
+                                  double *force,
+                                  double *contact_radius,
+                                  double *stiffness);
+
+// Equilibrium at the prescribed force `force` (N) on the load-controlled
+// stable branch; `out->delta` is the overlap.
+int32_t asperity_table_eval_at_load(const struct AsperityTable *table,
+                                    double force,
+                                    struct AsperityNormalResponse *out);
+
+// The pull-off force (N) of `table` under `control`
+// (`ASPERITY_CONTROL_LOAD` or `ASPERITY_CONTROL_DISPLACEMENT`).
+int32_t asperity_table_pull_off_force(const struct AsperityTable *table,
+                                      int32_t control,
+                                      double *force);
+
+// The stated maximum relative error of `table` (its tolerance) and, if
+// `measured` is not NULL, the largest error measured at construction.
+int32_t asperity_table_max_error(const struct AsperityTable *table,
+                                 double *max_error,
+                                 double *measured);
+
+// Write the JSON text of `table` into `buf` (at most `len − 1` bytes and a
+// NUL) and its full length in bytes (without the NUL) to `*needed`, so
+// `asperity_table_to_json(t, NULL, 0, &n)` sizes the buffer. The text is
+// complete only when `*needed < len`; `needed` is required.
+int32_t asperity_table_to_json(const struct AsperityTable *table,
+                               char *buf,
+                               size_t len,
+                               size_t *needed);
+
+// Load a table from `len` bytes of JSON text at `json` (from
+// `asperity_table_to_json`; no NUL needed). The table is validated; a
+// corrupted text gives `ASPERITY_ERR_INVALID_ARGUMENT`. Writes a new handle
+// to `*out` (NULL on failure).
+int32_t asperity_table_from_json(const char *json,
+                                 size_t len,
+                                 struct AsperityTable **out);
 
 // A static, NUL-terminated description of a status code; "unknown status"
 // for a value that is not one. Do not free.

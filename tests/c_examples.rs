@@ -210,6 +210,9 @@ fn compile(
         .arg(source)
         .arg("-o")
         .arg(out);
+    if needs_pthreads(source) {
+        cmd.arg("-pthread");
+    }
     match linkage {
         Linkage::Static => {
             cmd.arg(lib_dir.join("libasperity.a"));
@@ -233,6 +236,11 @@ fn compile(
         ));
     }
     Ok(out.to_path_buf())
+}
+
+/// Examples that use POSIX threads (compiled and linked with `-pthread`).
+fn needs_pthreads(source: &Path) -> bool {
+    source.file_stem().is_some_and(|s| s == "tabulated_threads")
 }
 
 fn example_sources() -> Vec<PathBuf> {
@@ -853,6 +861,46 @@ fn check_pull_off_table(linkage: Linkage) {
     c.finish();
 }
 
+const TABLE: &str = "the tabulated law (src/contact/tabulated.rs, src/ffi/tabulated.rs)";
+
+fn check_tabulated_threads(linkage: Linkage) {
+    let r = run("tabulated_threads", linkage);
+    let mut c = Report::new(&r);
+    c.exit_ok(TABLE);
+    let tol = c.get(TABLE, "table_tolerance").unwrap_or(0.0);
+    c.close(TABLE, "table_tolerance", 1e-4, 0.0);
+    c.within(TABLE, "table_measured_error", 0.0, tol);
+    // Several threads sharing one table, batch calls: bitwise the
+    // single-threaded scalar run.
+    c.close(TABLE, "threads_identical", 1.0, 0.0);
+    c.within(TABLE, "jumps_in", 1.0, f64::INFINITY);
+    c.within(TABLE, "jumps_out", 1.0, f64::INFINITY);
+    // Against the closed-form Maugis–Dugdale law.
+    c.close(TABLE, "pull_off_load_rel_diff", 0.0, 1e-10);
+    c.close(TABLE, "pull_off_displacement_rel_diff", 0.0, 1e-10);
+    c.within(TABLE, "md_compared", 50_000.0, f64::INFINITY);
+    c.close(TABLE, "md_branch_mismatches", 0.0, 0.0);
+    c.close(TABLE, "md_in_contact_mismatches", 0.0, 0.0);
+    c.within(TABLE, "md_max_rel_force_error", 0.0, tol);
+    c.within(TABLE, "md_max_rel_radius_error", 0.0, tol);
+    // Storage.
+    c.within(TABLE, "json_bytes", 100.0, f64::INFINITY);
+    c.close(TABLE, "json_roundtrip_identical", 1.0, 0.0);
+    c.close(TABLE, "json_corrupt_status", -2.0, 0.0);
+    c.close(TABLE, "json_corrupt_out_is_null", 1.0, 0.0);
+    c.finish();
+}
+
+#[test]
+fn tabulated_threads_static() {
+    check_tabulated_threads(Linkage::Static);
+}
+
+#[test]
+fn tabulated_threads_shared() {
+    check_tabulated_threads(Linkage::Shared);
+}
+
 #[test]
 fn every_example_compiles_and_links_both_ways() {
     let b = built();
@@ -871,7 +919,12 @@ fn every_example_compiles_and_links_both_ways() {
 /// Examples without their own test below must at least run cleanly.
 #[test]
 fn every_other_example_runs() {
-    let known = ["batch_and_errors", "jkr_hysteresis", "pull_off_table"];
+    let known = [
+        "batch_and_errors",
+        "jkr_hysteresis",
+        "pull_off_table",
+        "tabulated_threads",
+    ];
     for name in built()
         .binaries
         .keys()

@@ -22,6 +22,7 @@
 use crate::error::{Error, Result};
 
 pub mod batch;
+pub mod curve;
 pub mod derjaguin;
 pub mod dmt;
 pub mod flat_punch;
@@ -30,8 +31,10 @@ pub mod jkr;
 mod jkr_simd;
 pub mod jkr_power_punch;
 pub mod kendall;
+pub mod lj_sphere;
 pub mod maugis_dugdale;
 pub mod power_punch;
+pub mod tabulated;
 
 pub use batch::{eval_batch, BatchError, RawBatch};
 pub use derjaguin::{Derjaguin, SurfaceLaw};
@@ -41,8 +44,10 @@ pub use hertz::Hertz;
 pub use jkr::Jkr;
 pub use jkr_power_punch::JkrPowerPunch;
 pub use kendall::Kendall;
+pub use lj_sphere::{LjCurve, LjOptions, LjPoint, LjPullOff, LjSolution, LjSolver, LjSphere};
 pub use maugis_dugdale::MaugisDugdale;
 pub use power_punch::PowerPunch;
+pub use tabulated::TabulatedLaw;
 
 /// How the contact is driven, which decides where an adhesive contact
 /// separates.

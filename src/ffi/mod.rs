@@ -9,7 +9,9 @@
 #![allow(clippy::missing_safety_doc)]
 
 pub mod contact;
+pub mod lj_sphere;
 pub mod material;
+pub mod tabulated;
 mod status;
 
 pub use status::*;

@@ -1,0 +1,129 @@
+//! Convergence study of the numerical Lennard-Jones sphere (issue §3).
+//!
+//! `cargo run --release --example lj_convergence [NMAX]` (default NMAX = 1024;
+//! 4096 takes minutes: dense LU of order N).
+//!
+//! For each μ and N = 32, 64, …, NMAX it prints the load-controlled pull-off
+//! `P̄_c` (edge-concentrated mesh, [`LjSphere::pull_off`]), the successive
+//! difference, the observed order `log2(e_N/e_2N)`, and the Richardson
+//! estimate `P̄_∞ ≈ P̄_2N + (P̄_2N − P̄_N)/(2^p − 1)` with the observed order p;
+//! then a whole-curve error norm: the max over 40 central gaps spanning the
+//! curve of |P̄_N(h̄₀) − P̄_2N(h̄₀)|, with its order. Finally the S-curve
+//! onset μ by bisection on the sign of the largest dᾱ/dh̄₀.
+use asperity::contact::lj_sphere::{LjOptions, LjSolver, LjSphere};
+use asperity::contact::MaugisDugdale;
+use std::time::Instant;
+
+fn main() {
+    let nmax: usize = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1024);
+    let mut ns = vec![];
+    let mut n = 32;
+    while n <= nmax {
+        ns.push(n);
+        n *= 2;
+    }
+    for mu in [0.1, 1.0, 3.0] {
+        let sp = LjSphere::from_tabor(mu).unwrap();
+        let lam = asperity::material::maugis_over_tabor() * mu;
+        let md = -MaugisDugdale::from_maugis_parameter(1.0, 1.0, 1.0, lam)
+            .unwrap()
+            .load_pull_off_point()
+            .p_bar;
+        println!("\n## μ = {mu}  (Maugis–Dugdale at λ = {lam:.4}: P̄_c = {md:.6})");
+        println!("| N | P̄_c | |P̄_N − P̄_N/2| | order | Richardson | iterations | time |");
+        println!("|---|---|---|---|---|---|---|");
+        let mut vals: Vec<f64> = vec![];
+        for &n in &ns {
+            let t = Instant::now();
+            match sp.pull_off(n) {
+                Ok(po) => {
+                    let p = -po.force;
+                    let (mut d, mut ord, mut rich) = (String::new(), String::new(), String::new());
+                    if let Some(&p1) = vals.last() {
+                        d = format!("{:.2e}", (p - p1).abs());
+                        if vals.len() >= 2 {
+                            let p0 = vals[vals.len() - 2];
+                            let o = ((p1 - p0).abs() / (p - p1).abs()).log2();
+                            ord = format!("{o:.2}");
+                            let r = p + (p - p1) / (2f64.powf(o) - 1.0);
+                            rich = format!("{r:.7} ({:+.2} % vs MD)", 100.0 * (r - md) / md);
+                        }
+                    }
+                    println!(
+                        "| {n} | {p:.7} | {d} | {ord} | {rich} | {} | {:.2?} |",
+                        po.iterations,
+                        t.elapsed()
+                    );
+                    vals.push(p);
+                }
+                Err(e) => println!("| {n} | error: {e} | | | | | {:.2?} |", t.elapsed()),
+            }
+        }
+        // Whole curve at fixed central gaps.
+        let h0s: Vec<f64> = (0..40)
+            .map(|i| {
+                let t = i as f64 / 39.0;
+                6.0 * (1.0 - t) + 0.965 * t
+            })
+            .collect();
+        let mut prev: Option<Vec<f64>> = None;
+        let mut prev_e: Option<f64> = None;
+        println!("\n| N | whole-curve max |ΔP̄| vs N/2 | order |");
+        println!("|---|---|---|");
+        for &n in ns.iter().filter(|&&n| n <= 1024) {
+            let mut o = LjOptions::default();
+            o.n_grid = n;
+            o.max_force = 2.0;
+            let s = LjSolver::new(&sp, o).unwrap();
+            match s.sweep(&h0s) {
+                Ok(pts) => {
+                    let f: Vec<f64> = pts.iter().map(|p| p.force).collect();
+                    if let Some(pf) = &prev {
+                        let e = f
+                            .iter()
+                            .zip(pf)
+                            .map(|(a, b)| (a - b).abs())
+                            .fold(0.0, f64::max);
+                        let ord = prev_e
+                            .map(|pe| format!("{:.2}", (pe / e).log2()))
+                            .unwrap_or_default();
+                        println!("| {n} | {e:.3e} | {ord} |");
+                        prev_e = Some(e);
+                    }
+                    prev = Some(f);
+                }
+                Err(e) => {
+                    println!("| {n} | error: {e} | |");
+                    prev = None;
+                }
+            }
+        }
+    }
+    // S-curve onset by bisection on the largest dᾱ/dh̄₀.
+    let slope = |mu: f64| -> f64 {
+        let mut o = LjOptions::default();
+        o.n_grid = 128;
+        LjSolver::new(&LjSphere::from_tabor(mu).unwrap(), o)
+            .unwrap()
+            .max_turning_slope()
+            .unwrap()
+    };
+    let (mut lo, mut hi) = (0.5, 1.0);
+    println!(
+        "\nslope(0.5) = {:.4e}, slope(1.0) = {:.4e}",
+        slope(lo),
+        slope(hi)
+    );
+    for _ in 0..14 {
+        let m = 0.5 * (lo + hi);
+        if slope(m) > 0.0 {
+            hi = m;
+        } else {
+            lo = m;
+        }
+    }
+    println!("S-curve onset (N = 128): μ_c = {:.4}", 0.5 * (lo + hi));
+}

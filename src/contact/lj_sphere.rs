@@ -1,0 +1,1672 @@
+//! Numerical Lennard-Jones adhesive sphere: an elastic paraboloid against a
+//! flat, interacting through the Lennard-Jones 3-9 surface law under the
+//! Derjaguin approximation (Greenwood 1997, Proc. R. Soc. A 453:1277; Feng
+//! 2000, Colloids Surf. A 172:175; seed 001, Lee & Chong 2015, Eqs. 1–5;
+//! REFERENCE §6).
+//!
+//! # Equations (non-dimensional, REFERENCE §6)
+//!
+//! With `h̄ = h/z₀`, `r̄ = r/√(Rz₀)`, `p̄ = p z₀/Δγ` (attraction positive),
+//! `ᾱ = α/z₀` (the rigid approach, 0 when the undeformed apex sits at z₀) and
+//! the Tabor parameter `μ = (RΔγ²/(E*²z₀³))^{1/3}`:
+//!
+//! ```text
+//! h̄(r̄) = −ᾱ + r̄²/2 + 1 + ū(r̄)
+//! ū(r̄) = −(4μ^{3/2}/π) ∫₀^∞ p̄(s̄) · s̄/(r̄+s̄) · K(2√(r̄s̄)/(r̄+s̄)) ds̄
+//! p̄(h̄) = (8/3)[h̄⁻³ − h̄⁻⁹]
+//! P/(πRΔγ) = −2 ∫₀^∞ p̄ r̄ dr̄          (P > 0 repulsive)
+//! ```
+//!
+//! # Discretisation
+//!
+//! * **Mesh.** `N` annular cells `[c_j, c_{j+1}]` over `[0, L]`, images of a
+//!   uniform grid in `ξ` under the smooth map `ξ = Φ(r)/Φ(L)` with
+//!   `Φ(r) = r_f ln(1 + r/r_f) + B w [tanh((r−a_e)/w) + tanh(a_e/w)]`: nearly
+//!   uniform spacing up to `r_f` (the region the contact edge sweeps),
+//!   geometric growth beyond (the pressure decays as `r̄⁻⁶`), and an optional
+//!   concentration of cells (`B > 0`) in a band of width `w` around an
+//!   expected contact edge `a_e` (used by the pull-off solver, whose edge
+//!   is known in advance). The collocation node `x_j` of cell `j` is the image
+//!   of the cell's `ξ`-midpoint, so the scheme is second order on the smooth
+//!   map ([`LjSolver::mesh`]).
+//! * **Pressure** piecewise constant on each cell, `p̄_j = p̄(h̄(x_j))`.
+//! * **Influence matrix** exact for that pressure: a uniform pressure on a
+//!   disk of radius `c` gives (Johnson 1985, §3.4; REFERENCE §6)
+//!   `D(r, c) = ∫₀^c s/(r+s) K(2√(rs)/(r+s)) ds = c E(r/c)` for `r ≤ c` and
+//!   `r [E(c/r) − (1 − c²/r²) K(c/r)]` for `r ≥ c` (both `= c` at `r = c`,
+//!   taken exactly), annuli are differences of disks:
+//!   `A_ij = D(x_i, c_{j+1}) − D(x_i, c_j)`. The logarithmic singularity of the
+//!   kernel is integrated analytically. `K`, `E` come from the `ellip` crate,
+//!   which takes the parameter `m = k²`.
+//! * **Tail** beyond `L`: there the gap is `r̄²/2 + C` to high accuracy
+//!   (`C = h̄ − r̄²/2` at the last node), so the tail force is added in closed
+//!   form, `−2∫_L^∞ p̄ r̄ dr̄ = −(16/3)[H_L⁻²/2 − H_L⁻⁸/8]`, `H_L = L²/2 + C`;
+//!   its deformation `−(4μ^{3/2}/π)(π/2)[(64/15)L⁻⁵ + (16/21) r̄² L⁻⁷]`
+//!   (leading terms of `K(r/s) ≈ (π/2)(1 + r²/(4s²))` against `p̄ ≈ (64/3)s⁻⁶`) is
+//!   included as a fixed vector.
+//! * **Force** `−2∫ p̄ r̄ dr̄` by 3-point Gauss–Legendre on every cell, with
+//!   `h̄ = w̄(r̄) + r̄²/2` and `w̄ = h̄ − r̄²/2` (the smooth part: constant for a
+//!   rigid sphere) interpolated quadratically between nodes, plus the tail.
+//!   For a rigid sphere (μ = 0) this reproduces the exact Derjaguin force to
+//!   ~1e-12.
+//!
+//! # Solver
+//!
+//! Unknowns are the log-gaps `y_i = ln h̄(x_i)` (positivity for free). Two
+//! controls:
+//!
+//! * **central gap** `h̄₀ = h̄(0)` prescribed (the continuation parameter: the
+//!   equilibrium is unique in `h̄₀` through the turning points of the
+//!   force–approach curve). `ᾱ` is eliminated through `h̄(0) = h̄₀`:
+//!   `F_i = h̄_i − h̄₀ − x_i²/2 − (ū_i − ū_0) = 0`, then `ᾱ = 1 + ū_0 − h̄₀`;
+//! * **approach** `ᾱ` prescribed: `F_i = h̄_i + ᾱ − x_i²/2 − 1 − ū_i = 0`
+//!   (unique only on stable branches).
+//!
+//! Newton's method with the dense Jacobian
+//! `J_ij = δ_ij h̄_i + (4μ^{3/2}/π)(A_ij − [a₀_j]) p̄'(h̄_j) h̄_j` factored by
+//! faer's partial-pivoting LU, steps capped at 0.5 in `ln h̄` and a
+//! backtracking line search on `‖F‖₂`. Single solves
+//! ([`LjSolver::solve_at_central_gap`], [`LjSolver::solve_at_approach`])
+//! refactor every iteration (quadratic convergence); the continuation
+//! ([`LjSolver::curve`], [`LjSolver::sweep`]) keeps the factorisation while
+//! the iteration contracts by at least 4× per step and refactors otherwise
+//! (chord–Newton), with a secant predictor from the previous two solutions.
+//! The residual is the max-norm of `F` in units of z₀; a solve stops below
+//! [`LjOptions::tolerance`] or returns [`Error::NotConverged`] with its
+//! iterations and residual, never a wrong number.
+//!
+//! # The curve
+//!
+//! [`LjSolver::curve`] starts far from the surface (where the rigid solution
+//! is an excellent guess) and marches `h̄₀` down with adaptive steps (a target
+//! arc length in the scaled `(ᾱ, P̄)` plane) until `P̄ ≥`
+//! [`LjOptions::max_force`] (the Hertz regime). Turning points of `ᾱ(h̄₀)`
+//! are the jump-in (local maximum of ᾱ: the approach can increase no
+//! further on the outer branch) and jump-out (local minimum: on retraction
+//! the contact branch ends); both and the load-controlled pull-off (minimum
+//! of `P̄`) are refined by golden-section search in `h̄₀` to 1e-7. The
+//! hysteresis energy is the area of the displacement-controlled loop (outer
+//! branch up to the jump-in, jump at fixed ᾱ, contact branch back down to the
+//! jump-out, jump back), `∮ P̄ dᾱ` in units of `πRΔγ z₀`.
+
+use crate::error::{check, Error, Result};
+use core::f64::consts::PI;
+use faer::linalg::solvers::{PartialPivLu, Solve};
+use faer::{MatMut, MatRef};
+
+/// `(8/3)` of the Lennard-Jones 3-9 law.
+const LJ_C: f64 = 8.0 / 3.0;
+
+/// Non-dimensional Lennard-Jones pressure `p̄(h̄) = (8/3)[h̄⁻³ − h̄⁻⁹]`
+/// (attraction positive) and its derivative `dp̄/dh̄`.
+#[inline]
+pub fn lj_pressure(h: f64) -> (f64, f64) {
+    let i = 1.0 / h;
+    let i3 = i * i * i;
+    let i9 = i3 * i3 * i3;
+    (LJ_C * (i3 - i9), LJ_C * (-3.0 * i3 + 9.0 * i9) * i)
+}
+
+/// Rigid-sphere (μ → 0) force of the Lennard-Jones 3-9 law under the
+/// Derjaguin approximation, `P/(πRΔγ) = −(8/3)[h_m⁻² − h_m⁻⁸/4]` with
+/// `h_m = 1 − ᾱ` the minimum gap in units of z₀ (REFERENCE §6).
+pub fn rigid_force_bar(approach_bar: f64) -> f64 {
+    let hm = 1.0 - approach_bar;
+    -LJ_C * (hm.powi(-2) - 0.25 * hm.powi(-8))
+}
+
+/// `D(r, c) = ∫₀^c s/(r+s) K(2√(rs)/(r+s)) ds`: the (scaled) surface
+/// displacement at radius `r` of a uniform unit pressure on the disk of
+/// radius `c`, `c E(r/c)` inside, `r[E(c/r) − (1 − c²/r²)K(c/r)]` outside,
+/// `c` on the rim (REFERENCE §6; `ellip` takes `m = k²`). `r, c ≥ 0`.
+pub fn disk_displacement(r: f64, c: f64) -> f64 {
+    if c <= 0.0 {
+        return 0.0;
+    }
+    if r == c {
+        return c;
+    }
+    if r < c {
+        let k = r / c;
+        let m = k * k;
+        if m >= 1.0 {
+            return c;
+        }
+        c * ellip::ellipe(m).unwrap_or(f64::NAN)
+    } else {
+        let k = c / r;
+        let m = k * k;
+        if m >= 1.0 {
+            return r;
+        }
+        let e = ellip::ellipe(m).unwrap_or(f64::NAN);
+        let kk = ellip::ellipk(m).unwrap_or(f64::NAN);
+        r * (e - (1.0 - m) * kk)
+    }
+}
+
+/// A Lennard-Jones adhesive elastic sphere (dimensional parameters, SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LjSphere {
+    /// Sphere radius R (m).
+    pub radius: f64,
+    /// Contact modulus E* (Pa); infinite for a rigid sphere.
+    pub e_star: f64,
+    /// Work of adhesion Δγ (J/m²).
+    pub work_of_adhesion: f64,
+    /// Equilibrium separation z₀ (m).
+    pub z0: f64,
+    /// Tabor parameter μ (dimensionless), cached.
+    mu: f64,
+}
+
+impl LjSphere {
+    /// A sphere of radius R (m), contact modulus E* (Pa), work of adhesion
+    /// Δγ (J/m²) and Lennard-Jones equilibrium separation z₀ (m), all finite and
+    /// positive. μ = [`crate::material::tabor_parameter`]; it must lie in
+    /// `[0, 100]` (above, the edge zone of width ~μ^{-3/2}√(Rz₀) needs more
+    /// cells than a dense solver should hold — use JKR).
+    pub fn new(radius: f64, e_star: f64, work_of_adhesion: f64, z0: f64) -> Result<Self> {
+        let r = check::positive("radius", radius)?;
+        let e = check::positive("e_star", e_star)?;
+        let w = check::positive("work_of_adhesion", work_of_adhesion)?;
+        let z = check::positive("z0", z0)?;
+        let mu = crate::material::tabor_parameter(r, w, e, z)?;
+        let mu = check::in_range("tabor_parameter", mu, 0.0, 100.0, "in [0, 100]")?;
+        Ok(Self {
+            radius: r,
+            e_star: e,
+            work_of_adhesion: w,
+            z0: z,
+            mu,
+        })
+    }
+
+    /// The dimensionless sphere with Tabor parameter `mu` ∈ [0, 100]: unit
+    /// radius, work of adhesion and z₀, `E* = μ^{-3/2}` (infinite, i.e. rigid,
+    /// for μ = 0). Forces are then `π P̄`, approaches `ᾱ`.
+    pub fn from_tabor(mu: f64) -> Result<Self> {
+        let mu = check::in_range("mu", mu, 0.0, 100.0, "in [0, 100]")?;
+        Ok(Self {
+            radius: 1.0,
+            e_star: if mu > 0.0 {
+                mu.powf(-1.5)
+            } else {
+                f64::INFINITY
+            },
+            work_of_adhesion: 1.0,
+            z0: 1.0,
+            mu,
+        })
+    }
+
+    /// Tabor parameter `μ = (RΔγ²/(E*²z₀³))^{1/3}`.
+    #[inline]
+    pub fn tabor(&self) -> f64 {
+        self.mu
+    }
+
+    /// Force unit `πRΔγ` (N): `P = P̄ πRΔγ`.
+    #[inline]
+    pub fn force_scale(&self) -> f64 {
+        PI * self.radius * self.work_of_adhesion
+    }
+
+    /// Radius unit `√(Rz₀)` (m).
+    #[inline]
+    pub fn radius_scale(&self) -> f64 {
+        (self.radius * self.z0).sqrt()
+    }
+
+    /// Energy unit `πRΔγ z₀` (J) of [`LjCurve::hysteresis_energy`].
+    #[inline]
+    pub fn energy_scale(&self) -> f64 {
+        self.force_scale() * self.z0
+    }
+
+    /// The grid size the library calls converged: `N = 256` for μ ≤ 3, 512 up
+    /// to μ = 10, 1024 beyond. With the pull-off mesh this gives the
+    /// load-controlled pull-off to about 1e-5 relative for μ ≤ 3 (see the
+    /// convergence study in `examples/lj_convergence.rs` and BENCHMARKS.md:
+    /// the error falls as N⁻²); the edge zone narrows as μ^{-3/2}, hence the
+    /// larger grids at large μ.
+    pub fn converged_default_grid(&self) -> usize {
+        if self.mu <= 3.0 {
+            256
+        } else if self.mu <= 10.0 {
+            512
+        } else {
+            1024
+        }
+    }
+
+    /// A solver with the default options for `n_grid` cells (≥ 16; 0 means
+    /// [`LjSphere::converged_default_grid`]) and the curve mesh.
+    pub fn solver(&self, n_grid: usize) -> Result<LjSolver> {
+        let mut o = LjOptions::default();
+        o.n_grid = n_grid;
+        LjSolver::new(self, o)
+    }
+
+    /// Load-controlled pull-off force (N, negative: tensile) on `n_grid` cells
+    /// (0 = converged default), via [`LjSolver::pull_off`].
+    pub fn pull_off_force(&self, n_grid: usize) -> Result<f64> {
+        Ok(self.pull_off(n_grid)?.force * self.force_scale())
+    }
+
+    /// Load-controlled pull-off, dimensionless, with its solve statistics.
+    pub fn pull_off(&self, n_grid: usize) -> Result<LjPullOff> {
+        let mut o = LjOptions::default();
+        o.n_grid = n_grid;
+        LjSolver::pull_off_with(self, o)
+    }
+}
+
+/// Options of the solver. Build with `LjOptions::default()` and change fields.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LjOptions {
+    /// Number of radial cells N (≥ 16); 0 = [`LjSphere::converged_default_grid`].
+    pub n_grid: usize,
+    /// Newton tolerance on the max-norm of the gap residual (units of z₀).
+    pub tolerance: f64,
+    /// Iteration cap of one solve.
+    pub max_iterations: u32,
+    /// The curve stops once `P/(πRΔγ)` reaches this compressive load.
+    pub max_force: f64,
+    /// Central gap `h̄₀` (units of z₀) the curve starts from; 0 = automatic
+    /// (`6 + 4√μ`, far enough that the rigid solution is accurate).
+    pub start_gap: f64,
+    /// Target number of points of the curve (the arc-length step is chosen
+    /// for it; the actual count is within a few tens of per cent).
+    pub target_points: usize,
+    /// Mesh: radius `r_f` (units of √(Rz₀)) of the nearly uniform region; 0 =
+    /// automatic (covers the contact radius at `max_force`).
+    pub uniform_radius: f64,
+    /// Mesh: outer radius L (units of √(Rz₀)); 0 = automatic (`max(20, 3 r_f)`).
+    pub outer_radius: f64,
+    /// Mesh: expected contact-edge radius `a_e` of the concentrated band;
+    /// ignored unless `edge_fraction > 0`.
+    pub edge_radius: f64,
+    /// Mesh: half-width `w` of the concentrated band.
+    pub edge_width: f64,
+    /// Mesh: fraction of the cells in the band (0 = no band, < 0.9).
+    pub edge_fraction: f64,
+}
+
+impl Default for LjOptions {
+    fn default() -> Self {
+        Self {
+            n_grid: 0,
+            tolerance: 1e-10,
+            max_iterations: 50,
+            max_force: 10.0,
+            start_gap: 0.0,
+            target_points: 250,
+            uniform_radius: 0.0,
+            outer_radius: 0.0,
+            edge_radius: 0.0,
+            edge_width: 0.0,
+            edge_fraction: 0.0,
+        }
+    }
+}
+
+/// One equilibrium, dimensionless.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LjSolution {
+    /// Central gap `h̄₀ = h(0)/z₀`.
+    pub central_gap: f64,
+    /// Approach `ᾱ = α/z₀`.
+    pub approach: f64,
+    /// Force `P/(πRΔγ)`, positive repulsive.
+    pub force: f64,
+    /// Contact radius `a/√(Rz₀)`: where the pressure changes sign (repulsive
+    /// inside), 0 if it is attractive everywhere.
+    pub contact_radius: f64,
+    /// Gap `h̄` at the nodes [`LjSolver::nodes`].
+    pub gap: Vec<f64>,
+    /// Pressure `p̄ = p z₀/Δγ` at the nodes (attraction positive).
+    pub pressure: Vec<f64>,
+    /// Newton iterations spent.
+    pub iterations: u32,
+    /// Final residual (max-norm, units of z₀).
+    pub residual: f64,
+}
+
+/// A point of the force–approach curve, dimensionless.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LjPoint {
+    /// Central gap `h̄₀` (the continuation parameter).
+    pub central_gap: f64,
+    /// Approach `ᾱ`.
+    pub approach: f64,
+    /// Force `P/(πRΔγ)`.
+    pub force: f64,
+    /// Contact radius `a/√(Rz₀)` (see [`LjSolution::contact_radius`]).
+    pub contact_radius: f64,
+    /// `dP̄/dᾱ` along the curve (3-point finite differences in `h̄₀`; infinite
+    /// magnitude at a turning point, negative on the unstable branch).
+    pub stiffness: f64,
+}
+
+/// The force–approach curve and its characteristic points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LjCurve {
+    /// Points by decreasing central gap (approach, then into contact).
+    pub points: Vec<LjPoint>,
+    /// Jump-in (local maximum of ᾱ along decreasing h̄₀), if the curve is
+    /// S-shaped.
+    pub jump_in: Option<LjPoint>,
+    /// Jump-out (the following local minimum of ᾱ), if the curve is S-shaped.
+    pub jump_out: Option<LjPoint>,
+    /// Load-controlled pull-off: the point of minimum force.
+    pub pull_off_load: LjPoint,
+    /// Displacement-controlled pull-off force `P/(πRΔγ)` (at the jump-out);
+    /// `None` when the curve is not S-shaped (separation is then continuous).
+    pub pull_off_displacement: Option<f64>,
+    /// Hysteresis energy of an approach–retract cycle under displacement
+    /// control, in units of `πRΔγ z₀` ([`LjSphere::energy_scale`]); 0 without
+    /// S-shape.
+    pub hysteresis_energy: f64,
+    /// Newton iterations over all solves.
+    pub iterations: u64,
+    /// LU factorisations over all solves.
+    pub factorizations: u64,
+    /// Largest final residual of the solves (units of z₀).
+    pub max_residual: f64,
+    /// Grid size N.
+    pub n_grid: usize,
+}
+
+/// Load-controlled pull-off, dimensionless.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LjPullOff {
+    /// `P/(πRΔγ)` (negative).
+    pub force: f64,
+    /// Approach `ᾱ` at pull-off.
+    pub approach: f64,
+    /// Central gap `h̄₀` at pull-off.
+    pub central_gap: f64,
+    /// Contact radius `a/√(Rz₀)` at pull-off.
+    pub contact_radius: f64,
+    /// Newton iterations over all solves.
+    pub iterations: u64,
+    /// Largest final residual (units of z₀).
+    pub max_residual: f64,
+    /// Grid size N.
+    pub n_grid: usize,
+}
+
+/// Radial mesh: `n` cells with edges `c` (n + 1) and nodes `x` (n).
+#[derive(Debug, Clone)]
+struct Mesh {
+    x: Vec<f64>,
+    c: Vec<f64>,
+}
+
+impl Mesh {
+    fn new(n: usize, rf: f64, l: f64, a_e: f64, w: f64, frac: f64) -> Mesh {
+        let base = |r: f64| rf * (r / rf).ln_1p();
+        let bump_raw = |r: f64| {
+            if frac > 0.0 {
+                w * (((r - a_e) / w).tanh() + (a_e / w).tanh())
+            } else {
+                0.0
+            }
+        };
+        let b = if frac > 0.0 {
+            frac / (1.0 - frac) * base(l) / bump_raw(l)
+        } else {
+            0.0
+        };
+        let phi = |r: f64| base(r) + b * bump_raw(r);
+        let dphi = |r: f64| {
+            let s = if frac > 0.0 {
+                let t = ((r - a_e) / w).tanh();
+                b * (1.0 - t * t)
+            } else {
+                0.0
+            };
+            1.0 / (1.0 + r / rf) + s
+        };
+        let total = phi(l);
+        let inv = |target: f64| -> f64 {
+            let (mut lo, mut hi) = (0.0f64, l);
+            let mut r = l * target / total;
+            for _ in 0..200 {
+                let f = phi(r) - target;
+                if f > 0.0 {
+                    hi = r;
+                } else {
+                    lo = r;
+                }
+                let mut rn = r - f / dphi(r);
+                if !(rn > lo && rn < hi) {
+                    rn = 0.5 * (lo + hi);
+                }
+                if (rn - r).abs() <= 1e-15 * (1.0 + r) {
+                    return rn;
+                }
+                r = rn;
+            }
+            r
+        };
+        let nf = n as f64;
+        let mut c: Vec<f64> = (0..=n).map(|j| inv(total * j as f64 / nf)).collect();
+        c[0] = 0.0;
+        c[n] = l;
+        let x = (0..n).map(|j| inv(total * (j as f64 + 0.5) / nf)).collect();
+        Mesh { x, c }
+    }
+}
+
+/// Which quantity is prescribed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Mode {
+    Gap(f64),
+    Approach(f64),
+}
+
+impl Mode {
+    fn is_gap(&self) -> bool {
+        matches!(self, Mode::Gap(_))
+    }
+}
+
+/// Scratch of the Newton iteration and the cached factorisation.
+struct Work {
+    h: Vec<f64>,
+    p: Vec<f64>,
+    dp: Vec<f64>,
+    ap: Vec<f64>,
+    f: Vec<f64>,
+    d: Vec<f64>,
+    yt: Vec<f64>,
+    jac: Vec<f64>,
+    lu: Option<(PartialPivLu<f64>, bool)>,
+    iterations: u64,
+    factorizations: u64,
+    max_residual: f64,
+}
+
+impl Work {
+    fn new(n: usize) -> Self {
+        Self {
+            h: vec![0.0; n],
+            p: vec![0.0; n],
+            dp: vec![0.0; n],
+            ap: vec![0.0; n],
+            f: vec![0.0; n],
+            d: vec![0.0; n],
+            yt: vec![0.0; n],
+            jac: vec![0.0; n * n],
+            lu: None,
+            iterations: 0,
+            factorizations: 0,
+            max_residual: 0.0,
+        }
+    }
+}
+
+/// The discretised problem for one sphere and one mesh: the influence matrix
+/// is built once ([`LjSolver::new`], `O(N²)` elliptic integrals); every solve
+/// reuses it.
+pub struct LjSolver {
+    mu: f64,
+    /// `4μ^{3/2}/π`.
+    k: f64,
+    opts: LjOptions,
+    mesh: Mesh,
+    /// Influence matrix, column-major n×n.
+    a: Vec<f64>,
+    /// Influence row at r = 0.
+    a0: Vec<f64>,
+    /// Tail deformation factor at the nodes (times −k gives ū_tail).
+    tail: Vec<f64>,
+    /// Tail deformation factor at r = 0.
+    tail0: f64,
+    /// Gauss weights for the force: per cell 3 points, radius, weight·r, and
+    /// the quadratic interpolation (node index i0 and the 3 Lagrange weights).
+    quad: Vec<(f64, f64, usize, [f64; 3])>,
+}
+
+/// Estimate of the JKR contact radius `a/√(Rz₀)` at load `P̄` (an upper bound
+/// of the LJ contact radius, used only to size meshes).
+fn jkr_radius_estimate(mu: f64, force_bar: f64) -> f64 {
+    let f = force_bar.max(-1.5);
+    let s = f + 3.0 + (6.0 * f + 9.0).max(0.0).sqrt();
+    (0.75 * PI * mu.powf(1.5) * s).cbrt()
+}
+
+impl LjSolver {
+    /// Build the solver: mesh and influence matrix. Errors on invalid options
+    /// (`n_grid` in `1..16`, non-positive tolerance, zero iterations, mesh
+    /// parameters out of range).
+    pub fn new(sphere: &LjSphere, options: LjOptions) -> Result<Self> {
+        let mu = sphere.mu;
+        let mut o = options;
+        if o.n_grid == 0 {
+            o.n_grid = sphere.converged_default_grid();
+        }
+        if o.n_grid < 16 || o.n_grid > 16384 {
+            return Err(Error::InvalidArgument {
+                name: "n_grid",
+                value: o.n_grid as f64,
+                bound: "0 (default) or in [16, 16384]",
+            });
+        }
+        check::positive("tolerance", o.tolerance)?;
+        if o.max_iterations == 0 {
+            return Err(Error::InvalidArgument {
+                name: "max_iterations",
+                value: 0.0,
+                bound: ">= 1",
+            });
+        }
+        check::finite("max_force", o.max_force)?;
+        check::non_negative("start_gap", o.start_gap)?;
+        if o.start_gap > 0.0 && o.start_gap < 1.5 {
+            return Err(Error::InvalidArgument {
+                name: "start_gap",
+                value: o.start_gap,
+                bound: "0 (automatic) or >= 1.5",
+            });
+        }
+        check::non_negative("uniform_radius", o.uniform_radius)?;
+        check::non_negative("outer_radius", o.outer_radius)?;
+        check::in_range("edge_fraction", o.edge_fraction, 0.0, 0.9, "in [0, 0.9]")?;
+        if o.uniform_radius == 0.0 {
+            o.uniform_radius = 1.0 + 1.2 * jkr_radius_estimate(mu, o.max_force.max(0.0));
+        }
+        if o.outer_radius == 0.0 {
+            o.outer_radius = (3.0 * o.uniform_radius).max(20.0);
+        }
+        if o.outer_radius <= o.uniform_radius.min(1.0) || o.outer_radius > 1e4 {
+            return Err(Error::InvalidArgument {
+                name: "outer_radius",
+                value: o.outer_radius,
+                bound: "in (min(1, uniform_radius), 1e4]",
+            });
+        }
+        if o.edge_fraction > 0.0 {
+            check::non_negative("edge_radius", o.edge_radius)?;
+            check::positive("edge_width", o.edge_width)?;
+        }
+        if o.start_gap == 0.0 {
+            o.start_gap = 6.0 + 4.0 * mu.sqrt();
+        }
+        let n = o.n_grid;
+        let mesh = Mesh::new(
+            n,
+            o.uniform_radius,
+            o.outer_radius,
+            o.edge_radius,
+            o.edge_width,
+            o.edge_fraction,
+        );
+        // Influence matrix, column-major: a[j*n + i] = D(x_i, c_{j+1}) − D(x_i, c_j).
+        let mut a = vec![0.0; n * n];
+        let mut dprev = vec![0.0; n];
+        for j in 0..n {
+            let cj1 = mesh.c[j + 1];
+            let col = &mut a[j * n..(j + 1) * n];
+            for i in 0..n {
+                let d = disk_displacement(mesh.x[i], cj1);
+                col[i] = d - dprev[i];
+                dprev[i] = d;
+            }
+        }
+        if a.iter().any(|v| !v.is_finite()) {
+            return Err(Error::NotConverged {
+                what: "LJ sphere influence matrix (elliptic integrals)",
+                iterations: 0,
+                residual: f64::NAN,
+            });
+        }
+        let a0: Vec<f64> = (0..n)
+            .map(|j| 0.5 * PI * (mesh.c[j + 1] - mesh.c[j]))
+            .collect();
+        let l = o.outer_radius;
+        let t5 = 64.0 / 15.0 / l.powi(5);
+        let t7 = 16.0 / 21.0 / l.powi(7);
+        let tail = mesh
+            .x
+            .iter()
+            .map(|&x| 0.5 * PI * (t5 + t7 * x * x))
+            .collect();
+        let tail0 = 0.5 * PI * t5;
+        // Force quadrature.
+        let g = [
+            (-(0.6f64).sqrt(), 5.0 / 9.0),
+            (0.0, 8.0 / 9.0),
+            ((0.6f64).sqrt(), 5.0 / 9.0),
+        ];
+        let mut quad = Vec::with_capacity(3 * n);
+        for j in 0..n {
+            let (lo, hi) = (mesh.c[j], mesh.c[j + 1]);
+            let i0 = j.clamp(1, n - 2) - 1;
+            let (x0, x1, x2) = (mesh.x[i0], mesh.x[i0 + 1], mesh.x[i0 + 2]);
+            for &(t, wt) in &g {
+                let r = 0.5 * (lo + hi) + 0.5 * (hi - lo) * t;
+                let l0 = (r - x1) * (r - x2) / ((x0 - x1) * (x0 - x2));
+                let l1 = (r - x0) * (r - x2) / ((x1 - x0) * (x1 - x2));
+                let l2 = (r - x0) * (r - x1) / ((x2 - x0) * (x2 - x1));
+                quad.push((r, 0.5 * (hi - lo) * wt * r, i0, [l0, l1, l2]));
+            }
+        }
+        Ok(Self {
+            mu,
+            k: 4.0 * mu.powf(1.5) / PI,
+            opts: o,
+            mesh,
+            a,
+            a0,
+            tail,
+            tail0,
+            quad,
+        })
+    }
+
+    /// The options in effect (automatic values filled in).
+    pub fn options(&self) -> &LjOptions {
+        &self.opts
+    }
+
+    /// Tabor parameter μ.
+    pub fn tabor(&self) -> f64 {
+        self.mu
+    }
+
+    /// Collocation nodes `x_j` (units of √(Rz₀)), one per cell.
+    pub fn nodes(&self) -> &[f64] {
+        &self.mesh.x
+    }
+
+    /// Cell edges `c_0 = 0 < … < c_N = L` (units of √(Rz₀)).
+    pub fn mesh(&self) -> &[f64] {
+        &self.mesh.c
+    }
+
+    /// `Σ_j A_ij q_j`: the discrete `∫₀^L q(s) s/(r+s) K(2√(rs)/(r+s)) ds` at
+    /// the nodes for the piecewise-constant `q` with values `q_j` on the cells
+    /// (the influence matrix applied to `q`; `q.len()` must be N).
+    pub fn apply_influence(&self, q: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; self.n()];
+        self.matvec(q, &mut out);
+        out
+    }
+
+    fn n(&self) -> usize {
+        self.mesh.x.len()
+    }
+
+    fn matvec(&self, q: &[f64], out: &mut [f64]) {
+        let n = self.n();
+        out.iter_mut().for_each(|v| *v = 0.0);
+        for (j, &qj) in q.iter().enumerate() {
+            if qj == 0.0 {
+                continue;
+            }
+            let col = &self.a[j * n..(j + 1) * n];
+            for (o, &c) in out.iter_mut().zip(col) {
+                *o += c * qj;
+            }
+        }
+    }
+
+    /// Residual at log-gaps `y`: fills h, p, dp, ap, f; returns max-norm.
+    fn residual(&self, mode: Mode, y: &[f64], w: &mut Work) -> f64 {
+        let n = self.n();
+        for i in 0..n {
+            let h = y[i].exp();
+            let (p, dp) = lj_pressure(h);
+            w.h[i] = h;
+            w.p[i] = p;
+            w.dp[i] = dp;
+        }
+        let mut ap = core::mem::take(&mut w.ap);
+        self.matvec(&w.p, &mut ap);
+        w.ap = ap;
+        let k = self.k;
+        let mut m = 0.0f64;
+        match mode {
+            Mode::Gap(h0) => {
+                let a0p = dot(&self.a0, &w.p) + self.tail0;
+                for i in 0..n {
+                    let x = self.mesh.x[i];
+                    let f = w.h[i] - h0 - 0.5 * x * x + k * (w.ap[i] + self.tail[i] - a0p);
+                    w.f[i] = f;
+                    m = m.max(f.abs());
+                }
+            }
+            Mode::Approach(al) => {
+                for i in 0..n {
+                    let x = self.mesh.x[i];
+                    let f = w.h[i] + al - 0.5 * x * x - 1.0 + k * (w.ap[i] + self.tail[i]);
+                    w.f[i] = f;
+                    m = m.max(f.abs());
+                }
+            }
+        }
+        if m.is_finite() {
+            m
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// Factor the Jacobian at the state in `w` (after `residual`).
+    fn factor(&self, gap_mode: bool, w: &mut Work) -> bool {
+        let n = self.n();
+        let k = self.k;
+        for j in 0..n {
+            let qj = k * w.dp[j] * w.h[j];
+            let col = &self.a[j * n..(j + 1) * n];
+            let jc = &mut w.jac[j * n..(j + 1) * n];
+            let sub = if gap_mode { self.a0[j] } else { 0.0 };
+            for i in 0..n {
+                jc[i] = (col[i] - sub) * qj;
+            }
+            jc[j] += w.h[j];
+        }
+        if w.jac.iter().any(|v| !v.is_finite()) {
+            return false;
+        }
+        let m = MatRef::from_column_major_slice(&w.jac, n, n);
+        w.lu = Some((PartialPivLu::new(m), gap_mode));
+        w.factorizations += 1;
+        true
+    }
+
+    /// Newton (full: refactor every iteration; else chord with refresh).
+    fn newton(&self, mode: Mode, y: &mut [f64], w: &mut Work, full: bool) -> Result<(u32, f64)> {
+        let n = self.n();
+        let tol = self.opts.tolerance;
+        let maxit = self.opts.max_iterations;
+        let what = if mode.is_gap() {
+            "LJ sphere Newton solve at prescribed central gap"
+        } else {
+            "LJ sphere Newton solve at prescribed approach"
+        };
+        let mut r = self.residual(mode, y, w);
+        let mut it = 0u32;
+        let mut fresh = false;
+        let mut need = full || !matches!(w.lu, Some((_, g)) if g == mode.is_gap());
+        while r > tol {
+            if it >= maxit || !r.is_finite() {
+                w.iterations += it as u64;
+                return Err(Error::NotConverged {
+                    what,
+                    iterations: it,
+                    residual: r,
+                });
+            }
+            it += 1;
+            if need {
+                if !self.factor(mode.is_gap(), w) {
+                    w.iterations += it as u64;
+                    return Err(Error::NotConverged {
+                        what,
+                        iterations: it,
+                        residual: r,
+                    });
+                }
+                fresh = true;
+                need = full;
+            }
+            for i in 0..n {
+                w.d[i] = -w.f[i];
+            }
+            if let Some((lu, _)) = &w.lu {
+                lu.solve_in_place(MatMut::from_column_major_slice_mut(&mut w.d, n, 1));
+            }
+            let dmax = w.d.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            if !dmax.is_finite() {
+                w.lu = None;
+                if fresh {
+                    w.iterations += it as u64;
+                    return Err(Error::NotConverged {
+                        what,
+                        iterations: it,
+                        residual: r,
+                    });
+                }
+                need = true;
+                continue;
+            }
+            let mut lam = if dmax > 0.5 { 0.5 / dmax } else { 1.0 };
+            let r2 = norm2(&w.f);
+            let d = core::mem::take(&mut w.d);
+            let mut yt = core::mem::take(&mut w.yt);
+            let mut accepted = false;
+            let mut rt = r;
+            for _ in 0..12 {
+                for i in 0..n {
+                    yt[i] = y[i] + lam * d[i];
+                }
+                rt = self.residual(mode, &yt, w);
+                if rt.is_finite() && norm2(&w.f) <= (1.0 - 1e-4 * lam) * r2 {
+                    accepted = true;
+                    break;
+                }
+                lam *= 0.5;
+            }
+            w.d = d;
+            if accepted {
+                y.copy_from_slice(&yt);
+                w.yt = yt;
+                // Chord: refresh the Jacobian when the contraction is poor.
+                if !full && (rt > 0.25 * r || lam < 1.0) {
+                    need = true;
+                }
+                fresh = false;
+                r = rt;
+            } else {
+                w.yt = yt;
+                // Restore the residual state at y.
+                r = self.residual(mode, y, w);
+                if fresh && r <= 1e2 * tol {
+                    // Stagnation at the rounding floor of an ill-conditioned
+                    // Jacobian (near a fold of the prescribed variable): the
+                    // state is converged to the reported residual.
+                    break;
+                }
+                if fresh {
+                    w.iterations += it as u64;
+                    return Err(Error::NotConverged {
+                        what,
+                        iterations: it,
+                        residual: r,
+                    });
+                }
+                need = true;
+            }
+        }
+        w.iterations += it as u64;
+        w.max_residual = w.max_residual.max(r);
+        Ok((it, r))
+    }
+
+    /// Central gap, approach, force and contact radius of the state in `w`
+    /// (after a converged `residual`).
+    fn observe(&self, mode: Mode, w: &Work) -> (f64, f64, f64, f64) {
+        let n = self.n();
+        let k = self.k;
+        let u0 = -k * (dot(&self.a0, &w.p) + self.tail0);
+        let (h0, al) = match mode {
+            Mode::Gap(h0) => (h0, 1.0 + u0 - h0),
+            Mode::Approach(al) => (1.0 + u0 - al, al),
+        };
+        // Force: Gauss on cells with quadratic w̄ = h − r²/2, plus the tail.
+        let mut s = 0.0;
+        for &(r, wr, i0, l) in &self.quad {
+            let wb = |i: usize| w.h[i] - 0.5 * self.mesh.x[i] * self.mesh.x[i];
+            let (w0, w1, w2) = (wb(i0), wb(i0 + 1), wb(i0 + 2));
+            // Quadratic, limited to the range of its nodes (no overshoot
+            // where an unresolved edge zone makes the profile jump).
+            let wv =
+                (l[0] * w0 + l[1] * w1 + l[2] * w2).clamp(w0.min(w1).min(w2), w0.max(w1).max(w2));
+            s += lj_pressure(wv + 0.5 * r * r).0 * wr;
+        }
+        let l = self.opts.outer_radius;
+        let xl = self.mesh.x[n - 1];
+        let hl = 0.5 * l * l + (w.h[n - 1] - 0.5 * xl * xl);
+        let tail = -(16.0 / 3.0) * (0.5 * hl.powi(-2) - 0.125 * hl.powi(-8));
+        let mut force = -2.0 * s + tail;
+        // Resolution check: the cell-sum force of the piecewise-constant
+        // pressure must agree with the Gauss force (they differ by O(N⁻²) on
+        // a resolved grid; by O(1) when the edge zone, of width ~μ^{-3/2},
+        // falls between nodes; 10 % flags the latter).
+        let cells: f64 = (0..n)
+            .map(|j| w.p[j] * (self.mesh.c[j + 1].powi(2) - self.mesh.c[j].powi(2)))
+            .sum();
+        if (-cells + tail - force).abs() > 0.1 * force.abs().max(1.0) {
+            force = f64::NAN;
+        }
+        // Contact radius: first crossing of h = 1 from the centre.
+        let mut a = 0.0;
+        if h0 < 1.0 {
+            let (mut rp, mut hp) = (0.0, h0);
+            for i in 0..n {
+                let (r, h) = (self.mesh.x[i], w.h[i]);
+                if h >= 1.0 {
+                    a = rp + (r - rp) * (1.0 - hp) / (h - hp);
+                    break;
+                }
+                rp = r;
+                hp = h;
+            }
+        }
+        (h0, al, force, a)
+    }
+
+    fn rigid_guess(&self, h0: f64) -> Vec<f64> {
+        self.mesh
+            .x
+            .iter()
+            .map(|&x| (h0 + 0.5 * x * x).ln())
+            .collect()
+    }
+
+    fn solution(&self, mode: Mode, w: &Work, it: u32, res: f64) -> Result<LjSolution> {
+        let (h0, al, force, a) = self.observe(mode, w);
+        if !force.is_finite() {
+            return Err(unresolved(it, res));
+        }
+        Ok(LjSolution {
+            central_gap: h0,
+            approach: al,
+            force,
+            contact_radius: a,
+            gap: w.h.clone(),
+            pressure: w.p.clone(),
+            iterations: it,
+            residual: res,
+        })
+    }
+
+    fn check_guess(&self, guess: Option<&LjSolution>) -> Result<Option<Vec<f64>>> {
+        match guess {
+            None => Ok(None),
+            Some(g) => {
+                if g.gap.len() != self.n() || g.gap.iter().any(|&h| !(h > 0.0 && h.is_finite())) {
+                    return Err(Error::InvalidArgument {
+                        name: "initial_guess",
+                        value: g.gap.len() as f64,
+                        bound: "a solution of this solver (N positive gaps)",
+                    });
+                }
+                Ok(Some(g.gap.iter().map(|h| h.ln()).collect()))
+            }
+        }
+    }
+
+    /// Equilibrium at the prescribed central gap `h0 = h(0)/z₀` (> 0), by
+    /// full Newton from `initial_guess` (or the rigid profile). The
+    /// equilibrium is unique in `h0` for moderate μ (Greenwood 1997), but a
+    /// far guess can fail deep in contact: use [`LjSolver::sweep`] there.
+    pub fn solve_at_central_gap(
+        &self,
+        h0: f64,
+        initial_guess: Option<&LjSolution>,
+    ) -> Result<LjSolution> {
+        let h0 = check::positive("central_gap", h0)?;
+        let mut y = self
+            .check_guess(initial_guess)?
+            .unwrap_or_else(|| self.rigid_guess(h0));
+        let mut w = Work::new(self.n());
+        let (it, res) = self.newton(Mode::Gap(h0), &mut y, &mut w, true)?;
+        self.solution(Mode::Gap(h0), &w, it, res)
+    }
+
+    /// Equilibrium at the prescribed approach `alpha = α/z₀`, by full Newton
+    /// from `initial_guess` (or the rigid profile at `h₀ = max(1 − ᾱ, 0.9)`).
+    /// Several equilibria exist on S-shaped curves: the guess selects the
+    /// branch.
+    pub fn solve_at_approach(
+        &self,
+        alpha: f64,
+        initial_guess: Option<&LjSolution>,
+    ) -> Result<LjSolution> {
+        let al = check::finite("approach", alpha)?;
+        let guess = self.check_guess(initial_guess)?;
+        let has_guess = guess.is_some();
+        let mut y = guess.unwrap_or_else(|| {
+            // Rigid profile, flattened where it would penetrate.
+            self.mesh
+                .x
+                .iter()
+                .map(|&x| (1.0 - al + 0.5 * x * x).max(0.97).ln())
+                .collect()
+        });
+        let mut w = Work::new(self.n());
+        match self.newton(Mode::Approach(al), &mut y, &mut w, true) {
+            Ok((it, res)) => self.solution(Mode::Approach(al), &w, it, res),
+            Err(e) if has_guess => Err(e),
+            Err(_) => self.approach_by_continuation(al),
+        }
+    }
+
+    /// The state reached on approach from far away at approach `al`: the
+    /// first upward crossing of ᾱ = `al` along decreasing h̄₀ (outer branch
+    /// before the jump-in, contact branch after it), bracketed by the
+    /// continuation and finished by Newton at prescribed approach.
+    fn approach_by_continuation(&self, al: f64) -> Result<LjSolution> {
+        let start = self.opts.start_gap.max(1.5 - al);
+        let mut m = Marcher::start(self, start)?;
+        let mut prev = m.point()?;
+        if prev.approach >= al {
+            return Err(Error::OutOfDomain {
+                name: "approach",
+                value: al,
+                reason: "farther than the start of the continuation (raise start_gap)",
+            });
+        }
+        let mut step = (-0.02 * start, 0.0f64);
+        let mut guard = 0;
+        loop {
+            guard += 1;
+            if guard > 100_000 || prev.central_gap + step.0 < 0.05 {
+                return Err(Error::NotConverged {
+                    what: "LJ sphere continuation towards a prescribed approach",
+                    iterations: m.w.iterations.min(u32::MAX as u64) as u32,
+                    residual: m.w.max_residual,
+                });
+            }
+            let y_old = m.y.clone();
+            m.advance(step)?;
+            let p = m.point()?;
+            if p.approach >= al && p.approach > prev.approach {
+                // Bracketed: interpolate the log-gaps, finish at prescribed ᾱ.
+                let t = (al - prev.approach) / (p.approach - prev.approach);
+                let mut y: Vec<f64> = y_old
+                    .iter()
+                    .zip(&m.y)
+                    .map(|(a, b)| a + t * (b - a))
+                    .collect();
+                let mut w = Work::new(self.n());
+                if let Ok((it, res)) = self.newton(Mode::Approach(al), &mut y, &mut w, true) {
+                    return self.solution(Mode::Approach(al), &w, it, res);
+                }
+                // Too coarse a bracket: go back and take smaller steps.
+                m.set(&prev, &y_old);
+                step = (0.25 * step.0, 0.25 * step.1);
+                if step.0.abs().max(step.1.abs()) < 1e-9 {
+                    return Err(Error::NotConverged {
+                        what: "LJ sphere Newton solve at prescribed approach",
+                        iterations: m.w.iterations.min(u32::MAX as u64) as u32,
+                        residual: m.w.max_residual,
+                    });
+                }
+                continue;
+            }
+            let ds = (p.approach - prev.approach)
+                .abs()
+                .max(p.central_gap - prev.central_gap);
+            let ds = ds.abs();
+            // Aim at steps of ~0.05 z₀ in the larger of ᾱ and h̄₀.
+            let f = if ds > 0.0 { 0.05 / ds } else { 2.0 };
+            let f = f.clamp(0.5, 2.0);
+            step = (
+                f * (p.central_gap - prev.central_gap),
+                f * (p.approach - prev.approach),
+            );
+            prev = p;
+        }
+    }
+
+    /// Equilibria at the central gaps `h0s` (strictly decreasing, the first
+    /// ≥ 1.5), by continuation from the rigid profile at the first one (with
+    /// internal sub-steps where needed). Returns points without stiffness.
+    pub fn sweep(&self, h0s: &[f64]) -> Result<Vec<LjPoint>> {
+        if h0s.is_empty() {
+            return Ok(Vec::new());
+        }
+        for (i, &h) in h0s.iter().enumerate() {
+            check::positive("central_gap", h)?;
+            if i > 0 && h >= h0s[i - 1] {
+                return Err(Error::InvalidArgument {
+                    name: "central_gap",
+                    value: h,
+                    bound: "strictly decreasing",
+                });
+            }
+        }
+        if h0s[0] < 1.5 {
+            return Err(Error::InvalidArgument {
+                name: "central_gap",
+                value: h0s[0],
+                bound: "first value >= 1.5 (start away from contact)",
+            });
+        }
+        let mut m = Marcher::start(self, h0s[0])?;
+        let mut out = vec![m.point()?];
+        for &h in &h0s[1..] {
+            m.step_to(h)?;
+            out.push(m.point()?);
+        }
+        Ok(out)
+    }
+
+    /// The whole force–approach curve (see the module documentation).
+    pub fn curve(&self) -> Result<LjCurve> {
+        let o = self.opts;
+        let mut m = Marcher::start(self, o.start_gap)?;
+        let mut pts = vec![m.point()?];
+        let mut ys = vec![m.y.clone()];
+        // Scales of the (ᾱ, P̄) plane for the arc-length step.
+        let al_end = (0.75 * PI * (o.max_force.max(0.0) + 2.0)).powf(2.0 / 3.0) * self.mu.max(0.05);
+        let sa = o.start_gap + al_end;
+        let sp = o.max_force.max(0.0) + 2.5;
+        let ds_target = 2.2 / o.target_points.max(10) as f64;
+        // Last step in (h̄₀, ᾱ); the first one goes down in h̄₀.
+        let mut step = (-0.01 * o.start_gap, 0.0f64);
+        let mut guard = 0usize;
+        loop {
+            guard += 1;
+            if guard > 50 * o.target_points.max(10) {
+                return Err(Error::NotConverged {
+                    what: "LJ sphere curve continuation (too many steps)",
+                    iterations: m.w.iterations.min(u32::MAX as u64) as u32,
+                    residual: m.w.max_residual,
+                });
+            }
+            let last = *pts.last().unwrap();
+            if last.force >= o.max_force {
+                break;
+            }
+            if last.central_gap + step.0 < 0.05 {
+                return Err(Error::OutOfDomain {
+                    name: "max_force",
+                    value: o.max_force,
+                    reason: "not reached before the central gap fell below 0.05 z0",
+                });
+            }
+            m.advance(step)?;
+            let p = m.point()?;
+            let ds = (((p.approach - last.approach) / sa).powi(2)
+                + ((p.force - last.force) / sp).powi(2)
+                + ((p.central_gap - last.central_gap) / sa).powi(2))
+            .sqrt();
+            if ds > 3.0 * ds_target {
+                // Too long a step: go back and retry shorter.
+                let y_last = ys.last().unwrap().clone();
+                m.set(&last, &y_last);
+                let f = (0.8 * ds_target / ds).max(0.05);
+                step = (f * step.0, f * step.1);
+                continue;
+            }
+            pts.push(p);
+            ys.push(m.y.clone());
+            let f = if ds > 0.0 { ds_target / ds } else { 2.0 };
+            let f = f.clamp(0.5, 2.0);
+            step = (
+                f * (p.central_gap - last.central_gap),
+                f * (p.approach - last.approach),
+            );
+            // Never more than a fifth of the remaining central gap at once.
+            let cap = 0.2 * p.central_gap;
+            if step.0.abs() > cap {
+                let g = cap / step.0.abs();
+                step = (g * step.0, g * step.1);
+            }
+        }
+        self.finish_curve(pts, ys, m)
+    }
+
+    fn finish_curve(
+        &self,
+        mut pts: Vec<LjPoint>,
+        mut ys: Vec<Vec<f64>>,
+        mut m: Marcher<'_>,
+    ) -> Result<LjCurve> {
+        // Turning points of ᾱ(h̄₀): sign changes of Δᾱ along the curve.
+        let mut turns: Vec<(usize, bool)> = Vec::new(); // (index of the extreme sample, is_max)
+        for i in 1..pts.len() - 1 {
+            let d1 = pts[i].approach - pts[i - 1].approach;
+            let d2 = pts[i + 1].approach - pts[i].approach;
+            if d1 > 0.0 && d2 <= 0.0 {
+                turns.push((i, true));
+            } else if d1 < 0.0 && d2 >= 0.0 && !turns.is_empty() {
+                turns.push((i, false));
+            }
+        }
+        let mut jump_in = None;
+        let mut jump_out = None;
+        if turns.len() >= 2 && turns[0].1 && !turns[1].1 {
+            let (i1, i2) = (turns[0].0, turns[1].0);
+            let t1 = m.refine(&pts, &ys, i1, true, |p| -p.approach)?;
+            let t2 = m.refine(&pts, &ys, i2, true, |p| p.approach)?;
+            jump_in = Some(t1);
+            jump_out = Some(t2);
+        }
+        // Load-controlled pull-off.
+        let imin = (0..pts.len())
+            .min_by(|&a, &b| pts[a].force.total_cmp(&pts[b].force))
+            .unwrap();
+        let po = if imin > 0 && imin + 1 < pts.len() {
+            {
+                let dh = (pts[imin + 1].central_gap - pts[imin - 1].central_gap).abs();
+                let da = (pts[imin + 1].approach - pts[imin - 1].approach).abs();
+                m.refine(&pts, &ys, imin, dh >= da, |p| p.force)?
+            }
+        } else {
+            pts[imin]
+        };
+        // Insert refined points, keep the order by decreasing h̄₀.
+        for q in [jump_in, jump_out, Some(po)].into_iter().flatten() {
+            let pos = pts
+                .iter()
+                .position(|p| p.central_gap < q.central_gap)
+                .unwrap_or(pts.len());
+            if pos > 0 && pts[pos - 1].central_gap == q.central_gap {
+                continue;
+            }
+            pts.insert(pos, q);
+            ys.insert(pos, Vec::new());
+        }
+        // Stiffness dP̄/dᾱ by 3-point differences in h̄₀.
+        let n = pts.len();
+        let mut st = vec![0.0; n];
+        for i in 0..n {
+            let (a, b, c) = if i == 0 {
+                (0, 1, 2)
+            } else if i + 1 == n {
+                (n - 3, n - 2, n - 1)
+            } else {
+                (i - 1, i, i + 1)
+            };
+            let xs = [pts[a].central_gap, pts[b].central_gap, pts[c].central_gap];
+            let x = pts[i].central_gap;
+            let dfa = deriv3(xs, [pts[a].force, pts[b].force, pts[c].force], x);
+            let daa = deriv3(xs, [pts[a].approach, pts[b].approach, pts[c].approach], x);
+            st[i] = dfa / daa;
+        }
+        for (p, s) in pts.iter_mut().zip(st) {
+            p.stiffness = s;
+        }
+        let find = |q: &LjPoint| pts.iter().position(|p| p.central_gap == q.central_gap);
+        let mut hyst = 0.0;
+        let mut pull_disp = None;
+        if let (Some(t1), Some(t2)) = (jump_in, jump_out) {
+            let (i1, i2) = (find(&t1).unwrap(), find(&t2).unwrap());
+            // Outer branch: from where ᾱ = ᾱ_out (before i1) up to i1.
+            let outer = integrate_from_level(&pts[..=i1], t2.approach, false);
+            // Contact branch: from i2 up to where ᾱ = ᾱ_in (after i2).
+            let inner = integrate_from_level(&pts[i2..], t1.approach, true);
+            match (outer, inner) {
+                (Some(o), Some(inr)) => hyst = (o - inr).abs(),
+                _ => return Err(Error::OutOfDomain {
+                    name: "max_force",
+                    value: self.opts.max_force,
+                    reason:
+                        "the curve ends before the contact branch returns to the jump-in approach",
+                }),
+            }
+            pull_disp = Some(t2.force);
+            jump_in = Some(pts[i1]);
+            jump_out = Some(pts[i2]);
+        }
+        let pull_off_load = pts[find(&po).unwrap()];
+        Ok(LjCurve {
+            points: pts,
+            jump_in,
+            jump_out,
+            pull_off_load,
+            pull_off_displacement: pull_disp,
+            hysteresis_energy: hyst,
+            iterations: m.w.iterations,
+            factorizations: m.w.factorizations,
+            max_residual: m.w.max_residual,
+            n_grid: self.n(),
+        })
+    }
+
+    /// Load-controlled pull-off with the edge-concentrated mesh: a coarse
+    /// (N = 64) curve locates the minimum of P̄ and its contact radius, the
+    /// mesh concentrates half the cells within `±w` of that radius
+    /// (`w = clamp(μ^{-3/2}, 0.1, 1)`, the width of the edge zone), and a
+    /// golden-section search in `h̄₀` (to 1e-7) on the fine grid finds the
+    /// minimum of P̄.
+    pub fn pull_off_with(sphere: &LjSphere, options: LjOptions) -> Result<LjPullOff> {
+        let mut co = options;
+        co.n_grid = 64;
+        co.target_points = 60;
+        co.max_force = 1.0;
+        co.edge_fraction = 0.0;
+        let coarse = LjSolver::new(sphere, co)?;
+        let cc = coarse.curve()?;
+        let po = cc.pull_off_load;
+        let mu = sphere.mu;
+        let mut o = options;
+        o.max_force = 1.0;
+        o.edge_fraction = 0.5;
+        o.edge_radius = po.contact_radius;
+        o.edge_width = mu.powf(-1.5).clamp(0.1, 1.0);
+        let s = LjSolver::new(sphere, o)?;
+        // March from far to just above the coarse minimum, then search.
+        let span = 0.1 * (1.0 + (po.central_gap - 1.0).abs()).min(1.0);
+        let hi = po.central_gap + span;
+        let lo = (po.central_gap - span).max(0.3);
+        let start = s.opts.start_gap.max(hi + 1.0);
+        let mut m = Marcher::start(&s, start)?;
+        let nsteps = 40;
+        for i in 1..=nsteps {
+            let t = i as f64 / nsteps as f64;
+            m.step_to(start + (hi - start) * t)?;
+        }
+        let best = m.golden(true, lo, hi, |p| p.force)?;
+        Ok(LjPullOff {
+            force: best.force,
+            approach: best.approach,
+            central_gap: best.central_gap,
+            contact_radius: best.contact_radius,
+            iterations: m.w.iterations,
+            max_residual: m.w.max_residual,
+            n_grid: s.n(),
+        })
+    }
+
+    /// Largest `dᾱ/dh̄₀` over the curve (by the continuation's samples and a
+    /// local refinement): negative when ᾱ decreases monotonically with h̄₀
+    /// (no S-shape), positive when the curve is S-shaped (unstable branch
+    /// under displacement control). Its zero in μ is the S-curve onset.
+    pub fn max_turning_slope(&self) -> Result<f64> {
+        let mut o = self.opts;
+        o.max_force = o.max_force.min(2.0);
+        let mut m = Marcher::start(self, o.start_gap)?;
+        let mut prev = m.point()?;
+        let mut best = f64::NEG_INFINITY;
+        let mut best_h = prev.central_gap;
+        let mut h = prev.central_gap;
+        let dh0 = 0.02;
+        while prev.force < o.max_force && h > 0.3 {
+            h -= if h > 3.0 { 0.1 } else { dh0 };
+            m.step_to(h)?;
+            let p = m.point()?;
+            let slope = (p.approach - prev.approach) / (p.central_gap - prev.central_gap);
+            if slope > best {
+                best = slope;
+                best_h = 0.5 * (p.central_gap + prev.central_gap);
+            }
+            prev = p;
+        }
+        // Refine on a fine local sweep around the best sample.
+        let mut m = Marcher::start(self, o.start_gap)?;
+        let hi = best_h + 2.0 * dh0;
+        let n0 = 60;
+        for i in 1..=n0 {
+            m.step_to(o.start_gap + (hi - o.start_gap) * i as f64 / n0 as f64)?;
+        }
+        let mut prev = m.point()?;
+        let fine = dh0 / 50.0;
+        let mut hh = hi;
+        for _ in 0..200 {
+            hh -= fine;
+            m.step_to(hh)?;
+            let p = m.point()?;
+            let slope = (p.approach - prev.approach) / (p.central_gap - prev.central_gap);
+            best = best.max(slope);
+            prev = p;
+        }
+        Ok(best)
+    }
+}
+
+/// Continuation state. The curve is followed in whichever of the central
+/// gap h̄₀ and the approach ᾱ changed more over the last step (local
+/// parametrisation): h̄₀ through the folds of ᾱ (jump-in, jump-out), ᾱ
+/// where h̄₀ folds (large μ, near contact formation) and in the Hertz regime.
+struct Marcher<'a> {
+    s: &'a LjSolver,
+    w: Work,
+    y: Vec<f64>,
+    /// Previous state: log-gaps, h̄₀, ᾱ.
+    y_prev: Option<(Vec<f64>, f64, f64)>,
+    h0: f64,
+    al: f64,
+    mode: Mode,
+}
+
+impl<'a> Marcher<'a> {
+    fn start(s: &'a LjSolver, h0: f64) -> Result<Self> {
+        let mut w = Work::new(s.n());
+        let mut y = s.rigid_guess(h0);
+        s.newton(Mode::Gap(h0), &mut y, &mut w, false)?;
+        let (_, al, _, _) = s.observe(Mode::Gap(h0), &w);
+        Ok(Self {
+            s,
+            w,
+            y,
+            y_prev: None,
+            h0,
+            al,
+            mode: Mode::Gap(h0),
+        })
+    }
+
+    /// Solve at central gap `target` (see [`Marcher::step`]).
+    fn step_to(&mut self, target: f64) -> Result<()> {
+        self.step(true, target)
+    }
+
+    /// Solve at `target` of h̄₀ (`gap`) or ᾱ, from the current state with the
+    /// secant predictor; halves the step on failure.
+    fn step(&mut self, gap: bool, target: f64) -> Result<()> {
+        self.step_limited(gap, target, 40)
+    }
+
+    /// Advance by `step = (Δh̄₀, Δᾱ)` in the parameter with the larger
+    /// component, switching to the other one if that fails.
+    fn advance(&mut self, step: (f64, f64)) -> Result<()> {
+        let gap = step.0.abs() >= step.1.abs();
+        let mut err = None;
+        for g in [gap, !gap] {
+            let d = if g { step.0 } else { step.1 };
+            if d == 0.0 {
+                continue;
+            }
+            let target = if g { self.h0 + d } else { self.al + d };
+            match self.step_limited(g, target, if g == gap { 8 } else { 40 }) {
+                Ok(()) => return Ok(()),
+                Err(e) => {
+                    if std::env::var("LJDBG").is_ok() {
+                        eprintln!(
+                            "adv fail g={g} h0={} al={} step={:?} {e}",
+                            self.h0, self.al, step
+                        );
+                    }
+                    err = Some(e)
+                }
+            }
+        }
+        Err(err.unwrap_or(Error::NotConverged {
+            what: "LJ sphere continuation step",
+            iterations: 0,
+            residual: f64::NAN,
+        }))
+    }
+
+    fn step_limited(&mut self, gap: bool, target: f64, max_fails: u32) -> Result<()> {
+        let mut goal = target;
+        let mut fails = 0;
+        loop {
+            let cur = if gap { self.h0 } else { self.al };
+            let dh = goal - cur;
+            let mut y = self.y.clone();
+            if let Some((yp, hp, ap)) = &self.y_prev {
+                let prev = if gap { *hp } else { *ap };
+                let r = dh / (cur - prev);
+                if r.is_finite() && r.abs() <= 4.0 {
+                    for i in 0..y.len() {
+                        y[i] += r * (self.y[i] - yp[i]);
+                    }
+                }
+            }
+            let mode = if gap {
+                Mode::Gap(goal)
+            } else {
+                Mode::Approach(goal)
+            };
+            match self.s.newton(mode, &mut y, &mut self.w, false) {
+                Ok(_) => {
+                    let old = core::mem::replace(&mut self.y, y);
+                    self.y_prev = Some((old, self.h0, self.al));
+                    self.mode = mode;
+                    let (h0, al, _, _) = self.s.observe(mode, &self.w);
+                    self.h0 = h0;
+                    self.al = al;
+                    if goal == target {
+                        return Ok(());
+                    }
+                    goal = target;
+                    fails = 0;
+                }
+                Err(e) => {
+                    fails += 1;
+                    self.w.lu = None;
+                    if fails > max_fails || dh.abs() < 1e-10 {
+                        return Err(e);
+                    }
+                    self.s.residual(self.mode, &self.y, &mut self.w);
+                    goal = cur + 0.5 * dh;
+                }
+            }
+        }
+    }
+
+    fn point(&self) -> Result<LjPoint> {
+        let (h0, al, f, a) = self.s.observe(self.mode, &self.w);
+        if !f.is_finite() {
+            return Err(unresolved(
+                self.w.iterations.min(u32::MAX as u64) as u32,
+                self.w.max_residual,
+            ));
+        }
+        Ok(LjPoint {
+            central_gap: h0,
+            approach: al,
+            force: f,
+            contact_radius: a,
+            stiffness: f64::NAN,
+        })
+    }
+
+    /// Jump to a stored curve state.
+    fn set(&mut self, p: &LjPoint, y: &[f64]) {
+        self.y.copy_from_slice(y);
+        self.y_prev = None;
+        self.h0 = p.central_gap;
+        self.al = p.approach;
+        self.mode = Mode::Gap(p.central_gap);
+        self.s.residual(self.mode, &self.y, &mut self.w);
+    }
+
+    /// Minimise `g(point)` between the neighbours of sample `i`, in h̄₀
+    /// (`gap`) or ᾱ.
+    fn refine(
+        &mut self,
+        pts: &[LjPoint],
+        ys: &[Vec<f64>],
+        i: usize,
+        gap: bool,
+        g: impl Fn(&LjPoint) -> f64,
+    ) -> Result<LjPoint> {
+        let v = |p: &LjPoint| if gap { p.central_gap } else { p.approach };
+        let (x0, x1) = (v(&pts[i - 1]), v(&pts[i + 1]));
+        self.set(&pts[i - 1], &ys[i - 1]);
+        self.golden(gap, x0.min(x1), x0.max(x1), g)
+    }
+
+    /// Golden-section minimisation of `g` over h̄₀ (`gap`) or ᾱ in
+    /// `[lo, hi]` (to 1e-7), continuing from the current state (which
+    /// should sit near the interval).
+    fn golden(
+        &mut self,
+        gap: bool,
+        lo: f64,
+        hi: f64,
+        g: impl Fn(&LjPoint) -> f64,
+    ) -> Result<LjPoint> {
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut a, mut b) = (lo, hi);
+        let mut x1 = b - r * (b - a);
+        let mut x2 = a + r * (b - a);
+        let cur = if gap { self.h0 } else { self.al };
+        // Visit the nearer interior point first.
+        let (first, second) = if (cur - x2).abs() < (cur - x1).abs() {
+            (x2, x1)
+        } else {
+            (x1, x2)
+        };
+        self.step(gap, first)?;
+        let pf = self.point()?;
+        self.step(gap, second)?;
+        let ps = self.point()?;
+        let (mut p1, mut p2) = if first == x1 { (pf, ps) } else { (ps, pf) };
+        let (mut f1, mut f2) = (g(&p1), g(&p2));
+        while b - a > 1e-7 {
+            if f1 < f2 {
+                b = x2;
+                x2 = x1;
+                p2 = p1;
+                f2 = f1;
+                x1 = b - r * (b - a);
+                self.step(gap, x1)?;
+                p1 = self.point()?;
+                f1 = g(&p1);
+            } else {
+                a = x1;
+                x1 = x2;
+                p1 = p2;
+                f1 = f2;
+                x2 = a + r * (b - a);
+                self.step(gap, x2)?;
+                p2 = self.point()?;
+                f2 = g(&p2);
+            }
+        }
+        Ok(if f1 < f2 { p1 } else { p2 })
+    }
+}
+
+/// The error of a state whose edge zone the grid does not resolve.
+#[cold]
+fn unresolved(iterations: u32, residual: f64) -> Error {
+    Error::NotConverged {
+        what: "LJ sphere: the grid does not resolve the edge zone (Gauss and cell-sum forces differ by > 10 %; raise n_grid or concentrate the mesh)",
+        iterations,
+        residual,
+    }
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+fn norm2(a: &[f64]) -> f64 {
+    a.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// Derivative at `x` of the parabola through three points.
+fn deriv3(xs: [f64; 3], ys: [f64; 3], x: f64) -> f64 {
+    let [x0, x1, x2] = xs;
+    let [y0, y1, y2] = ys;
+    y0 * ((x - x1) + (x - x2)) / ((x0 - x1) * (x0 - x2))
+        + y1 * ((x - x0) + (x - x2)) / ((x1 - x0) * (x1 - x2))
+        + y2 * ((x - x0) + (x - x1)) / ((x2 - x0) * (x2 - x1))
+}
+
+/// `∫ P̄ dᾱ` along `pts` (trapezoid): with `from_start = false` from the
+/// last crossing of ᾱ = `level` up to the end; with `from_start = true` from
+/// the start up to the first crossing of `level`.
+fn integrate_from_level(pts: &[LjPoint], level: f64, from_start: bool) -> Option<f64> {
+    let n = pts.len();
+    let lerp = |a: &LjPoint, b: &LjPoint| {
+        let t = (level - a.approach) / (b.approach - a.approach);
+        a.force + t * (b.force - a.force)
+    };
+    if from_start {
+        let mut s = 0.0;
+        for i in 0..n - 1 {
+            let (a, b) = (&pts[i], &pts[i + 1]);
+            if (a.approach - level) * (b.approach - level) <= 0.0 && b.approach != a.approach {
+                let f = lerp(a, b);
+                return Some(s + 0.5 * (a.force + f) * (level - a.approach));
+            }
+            s += 0.5 * (a.force + b.force) * (b.approach - a.approach);
+        }
+        None
+    } else {
+        let mut s = 0.0;
+        for i in (0..n - 1).rev() {
+            let (a, b) = (&pts[i], &pts[i + 1]);
+            if (a.approach - level) * (b.approach - level) <= 0.0 && b.approach != a.approach {
+                let f = lerp(a, b);
+                return Some(s + 0.5 * (f + b.force) * (b.approach - level));
+            }
+            s += 0.5 * (a.force + b.force) * (b.approach - a.approach);
+        }
+        None
+    }
+}

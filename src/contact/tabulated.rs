@@ -1,0 +1,1507 @@
+//! Tabulated contact laws: the exact equilibrium path of an adhesive sphere
+//! (Maugis–Dugdale now, the numerical Lennard-Jones sphere later) at the cost
+//! of a closed-form law.
+//!
+//! # Construction
+//!
+//! [`TabulatedLaw::from_curve`] takes an [`EquilibriumCurve`] (the path in
+//! reduced units, with turning points, force extrema and corners explicit)
+//! and a relative tolerance. It
+//!
+//! 1. splits the path at its turning points into monotone pieces in Δ and
+//!    keeps the **stable** ones (Δ increasing along the path); the jump
+//!    points are the turning points themselves, so jumps happen at exactly the
+//!    source's Δ;
+//! 2. on each stable piece interpolates `F` and the contact radius with
+//!    **cubic Hermite** polynomials in a regularising variable
+//!    `u = √(Δ − Δ_turn)` (or `√(Δ_turn − Δ)` towards a turning point at the
+//!    piece's end, or `u = Δ − Δ_start` on a piece without turning points):
+//!    at a turning point F(Δ) has a square-root singularity (infinite
+//!    stiffness) but is analytic in u, and the Hertz regime `F ∝ Δ^{3/2}` is
+//!    a cubic in u. Slopes are the source's exact derivatives;
+//! 3. picks the knots among the curve's points, greedily, each interval as
+//!    long as the interpolant reproduces every curve point it skips to half
+//!    the tolerance, with the Fritsch–Carlson condition `α² + β² ≤ 9` so that
+//!    the interpolant is **monotone** between knots (force extrema such as the
+//!    load-controlled pull-off, and corners such as the contact onset, are
+//!    always knots);
+//! 4. measures the error of the final table on every curve point it skipped
+//!    and on the curve's tail checks, stores it ([`TabulatedLaw::measured_error`])
+//!    and fails if it exceeds the tolerance ([`TabulatedLaw::tolerance`], the
+//!    stated bound).
+//!
+//! Beyond the last point the force follows the Hertz asymptote with a
+//! correction fitted to the last point's value and slope (see
+//! [`DeepTail::Hertz`]); before the first, the curve's [`FarTail`].
+//!
+//! # Error measure
+//!
+//! For the force, `|F_table − F_exact| / max(|F_exact|, F_floor)` with
+//! `F_floor = 10⁻³ |P_c|` (P_c the load-controlled pull-off force), so that
+//! the error is relative except near a zero crossing of the force, where it
+//! is relative to a thousandth of the pull-off; for the contact radius the
+//! same with `a_floor = 10⁻³ max(a_c, 10⁻³·radius unit)` (a_c the contact
+//! radius at the load-controlled pull-off). [`TabulatedLaw::relative_error`]
+//! computes it. The default tolerance is [`DEFAULT_TOLERANCE`] = 10⁻⁴.
+//!
+//! # Lookup
+//!
+//! O(1) per call: one square root for u, then a bucket index computed from
+//! the bit pattern of `u + bias` (a piecewise-linear logarithm, so buckets
+//! are fine where the knots are dense near a turning point and coarse in the
+//! deep Hertz regime), at most a couple of comparisons, and two cubic
+//! polynomials. The stiffness `dP/dδ` is the derivative of the interpolant.
+//!
+//! # Hysteresis
+//!
+//! Exactly as [`super::MaugisDugdale`]'s: `ContactState::branch` is the
+//! index of the stable branch the contact is on — 0 for the far branch (the
+//! far tail, plus the first stable piece of the path when the path starts
+//! stable, as the Lennard-Jones sphere does), then 1, 2, … in path order. An
+//! all-zero state is fresh: approaching from far. A contact stays on its
+//! branch while Δ lies in the branch's range (`lo ≤ Δ ≤ hi`, the turning
+//! points); beyond `hi` it jumps forward to the next branch that contains Δ
+//! (jump-in), below `lo` back to the previous one (jump-out). For
+//! Maugis–Dugdale this gives branch 0 = separated for `δ ≤ −h₀` and branch 1
+//! = the stable piece down to its turning point, as `MaugisDugdale::eval`.
+//! `ContactState::in_contact` is 1 on branches ≥ 1 or when the radius is
+//! positive; `cohesive_radius` is 0 (a table does not carry it).
+//!
+//! # Sharing and storage
+//!
+//! A table is immutable after construction, `Send + Sync`, and serialises
+//! with serde ([`TabulatedLaw::to_json`], [`TabulatedLaw::from_json`]):
+//! numbers are written as exact decimal strings, so a loaded table evaluates
+//! bit-identically. Loading validates everything (finite numbers, lengths,
+//! strictly increasing knots, monotone knot data, branch ranges) and rebuilds
+//! the lookup index; a corrupted table is an error, never a panic.
+
+// NaN-aware comparisons (`!(x <= hi)`) are intended.
+#![allow(clippy::neg_cmp_op_on_partial_ord, clippy::type_complexity)]
+
+use super::curve::{exact_f64, exact_vec, DeepTail, EquilibriumCurve, FarTail, PathPoint};
+use super::{
+    below_pull_off, check_delta, check_force, finite_response, ContactState, Control,
+    MaugisDugdale, NormalContact, NormalResponse,
+};
+use crate::error::{Error, Result};
+use serde::{Deserialize, Serialize};
+
+/// Default relative tolerance of a table (see the module's error measure).
+pub const DEFAULT_TOLERANCE: f64 = 1e-4;
+
+/// Bound on the reduced stiffness (infinite at a turning point).
+const STIFFNESS_BAR_MAX: f64 = 1e100;
+/// Identifies the serialised format.
+const FORMAT: &str = "asperity-tabulated-law-1";
+/// Largest lookup index per segment (entries).
+const MAX_INDEX: usize = 1 << 16;
+
+// ------------------------------------------------------------------ data
+
+/// How a segment maps Δ to its interpolation variable u ≥ 0.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+enum Transform {
+    /// `u = √(sign·(Δ − reference))`.
+    Sqrt,
+    /// `u = sign·(Δ − reference)`.
+    Linear,
+}
+
+/// Serialised segment: knots in ascending u.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct SegmentData {
+    transform: Transform,
+    /// +1 or −1.
+    #[serde(with = "exact_f64")]
+    sign: f64,
+    #[serde(with = "exact_f64")]
+    reference: f64,
+    /// Δ range covered.
+    #[serde(with = "exact_f64")]
+    lo: f64,
+    #[serde(with = "exact_f64")]
+    hi: f64,
+    #[serde(with = "exact_vec")]
+    u: Vec<f64>,
+    #[serde(with = "exact_vec")]
+    force: Vec<f64>,
+    /// dF/du.
+    #[serde(with = "exact_vec")]
+    d_force: Vec<f64>,
+    #[serde(with = "exact_vec")]
+    radius: Vec<f64>,
+    /// d(radius)/du.
+    #[serde(with = "exact_vec")]
+    d_radius: Vec<f64>,
+}
+
+/// Serialised branch: a stable piece. `None` bounds are unbounded.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct BranchData {
+    #[serde(with = "opt_exact")]
+    lo: Option<f64>,
+    #[serde(with = "opt_exact")]
+    hi: Option<f64>,
+    segments: Vec<SegmentData>,
+}
+
+mod opt_exact {
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    #[derive(Deserialize)]
+    struct E(#[serde(with = "super::exact_f64")] f64);
+
+    pub fn serialize<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+        match v {
+            Some(x) => s.serialize_some(&format!("{x:e}")),
+            None => s.serialize_none(),
+        }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
+        Ok(Option::<E>::deserialize(d)?.map(|e| e.0))
+    }
+}
+
+/// Serialised far tail.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+enum FarData {
+    Zero,
+    RigidLennardJones {
+        #[serde(with = "exact_f64")]
+        k: f64,
+    },
+}
+
+/// Serialised deep tail: `F = h x^{3/2} + bf x^{qf}`, `a = g x^{1/2} + ba x^{qa}`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+struct DeepData {
+    #[serde(with = "exact_f64")]
+    delta_zero: f64,
+    #[serde(with = "exact_f64")]
+    h: f64,
+    #[serde(with = "exact_f64")]
+    bf: f64,
+    #[serde(with = "exact_f64")]
+    qf: f64,
+    #[serde(with = "exact_f64")]
+    g: f64,
+    #[serde(with = "exact_f64")]
+    ba: f64,
+    #[serde(with = "exact_f64")]
+    qa: f64,
+}
+
+/// The serialised table.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct TableData {
+    format: String,
+    source: String,
+    #[serde(with = "exact_f64")]
+    tolerance: f64,
+    #[serde(with = "exact_f64")]
+    measured_error: f64,
+    #[serde(with = "exact_f64")]
+    force_floor: f64,
+    #[serde(with = "exact_f64")]
+    radius_floor: f64,
+    #[serde(with = "exact_f64")]
+    approach_origin: f64,
+    #[serde(with = "exact_f64")]
+    approach_scale: f64,
+    #[serde(with = "exact_f64")]
+    force_scale: f64,
+    #[serde(with = "exact_f64")]
+    radius_scale: f64,
+    branches: Vec<BranchData>,
+    far: FarData,
+    deep: DeepData,
+    /// Reduced load-controlled pull-off force and the u of its knot (in the
+    /// last branch's single segment).
+    #[serde(with = "exact_f64")]
+    load_pull_off: f64,
+    #[serde(with = "exact_f64")]
+    load_pull_off_u: f64,
+    /// Reduced displacement-controlled pull-off force.
+    #[serde(with = "exact_f64")]
+    displacement_pull_off: f64,
+}
+
+// --------------------------------------------------------------- runtime
+
+/// One Hermite interval: `y(t) = c0 + t(c1 + t(c2 + t c3))`, `t = (u − lo)/h`.
+#[derive(Debug, Clone, Copy)]
+struct Interval {
+    lo: f64,
+    hi: f64,
+    inv_h: f64,
+    f: [f64; 4],
+    a: [f64; 4],
+}
+
+#[derive(Debug, Clone)]
+struct Segment {
+    sqrt: bool,
+    sign: f64,
+    reference: f64,
+    lo: f64,
+    hi: f64,
+    u0: f64,
+    bias: f64,
+    bias_bits: i64,
+    shift: u32,
+    intervals: Vec<Interval>,
+    index: Vec<u32>,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Branch {
+    lo: f64,
+    hi: f64,
+    seg0: usize,
+    seg1: usize,
+}
+
+/// A tabulated adhesive-sphere law; see the module documentation. Build it
+/// with [`TabulatedLaw::from_curve`] or [`TabulatedLaw::from_maugis_dugdale`],
+/// load it with [`TabulatedLaw::from_json`].
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(into = "TableData", try_from = "TableData")]
+pub struct TabulatedLaw {
+    data: TableData,
+    branches: Vec<Branch>,
+    segments: Vec<Segment>,
+    stiffness_scale: f64,
+    load_segment: usize,
+    load_interval: usize,
+}
+
+const _: () = {
+    const fn shareable<T: Send + Sync>() {}
+    shareable::<TabulatedLaw>();
+};
+
+impl From<TabulatedLaw> for TableData {
+    fn from(t: TabulatedLaw) -> Self {
+        t.data
+    }
+}
+
+impl TryFrom<TableData> for TabulatedLaw {
+    type Error = Error;
+    fn try_from(d: TableData) -> Result<Self> {
+        TabulatedLaw::from_data(d)
+    }
+}
+
+fn bad(name: &'static str, value: f64, bound: &'static str) -> Error {
+    Error::InvalidArgument { name, value, bound }
+}
+
+#[inline]
+fn horner(c: &[f64; 4], t: f64) -> f64 {
+    c[0] + t * (c[1] + t * (c[2] + t * c[3]))
+}
+
+#[inline]
+fn horner_d(c: &[f64; 4], t: f64) -> f64 {
+    c[1] + t * (2.0 * c[2] + t * (3.0 * c[3]))
+}
+
+fn coefficients(y0: f64, m0: f64, y1: f64, m1: f64, h: f64) -> [f64; 4] {
+    let d = y1 - y0;
+    let (p0, p1) = (h * m0, h * m1);
+    [y0, p0, 3.0 * d - 2.0 * p0 - p1, p0 + p1 - 2.0 * d]
+}
+
+/// Fritsch–Carlson: whether the Hermite cubic through (y0, m0), (y1, m1)
+/// over length h is monotone.
+fn monotone(y0: f64, m0: f64, y1: f64, m1: f64, h: f64) -> bool {
+    let s = (y1 - y0) / h;
+    if s == 0.0 {
+        return m0 == 0.0 && m1 == 0.0;
+    }
+    let (al, be) = (m0 / s, m1 / s);
+    al >= 0.0 && be >= 0.0 && al * al + be * be <= 9.0 * (1.0 + 1e-12)
+}
+
+/// Make the slopes of one interval monotone (Fritsch–Carlson limiter).
+fn limit(y0: f64, m0: &mut f64, y1: f64, m1: &mut f64, h: f64) {
+    let s = (y1 - y0) / h;
+    if s == 0.0 {
+        *m0 = 0.0;
+        *m1 = 0.0;
+        return;
+    }
+    if *m0 / s < 0.0 {
+        *m0 = 0.0;
+    }
+    if *m1 / s < 0.0 {
+        *m1 = 0.0;
+    }
+    let (al, be) = (*m0 / s, *m1 / s);
+    let r = al * al + be * be;
+    if r > 9.0 {
+        let tau = 3.0 / r.sqrt();
+        *m0 = tau * al * s;
+        *m1 = tau * be * s;
+    }
+}
+
+impl Segment {
+    #[inline]
+    fn key(&self, u: f64) -> i64 {
+        ((u - self.u0) + self.bias).to_bits() as i64 - self.bias_bits
+    }
+
+    #[inline]
+    fn u_of(&self, x: f64) -> f64 {
+        let d = self.sign * (x - self.reference);
+        if self.sqrt {
+            d.max(0.0).sqrt()
+        } else {
+            d
+        }
+    }
+
+    #[inline]
+    fn x_of(&self, u: f64) -> f64 {
+        if self.sqrt {
+            self.reference + self.sign * u * u
+        } else {
+            self.reference + self.sign * u
+        }
+    }
+
+    /// Reduced (F, radius, dF/dΔ) at reduced approach x.
+    #[inline]
+    fn eval(&self, x: f64) -> (f64, f64, f64) {
+        let u = self.u_of(x);
+        let iv = self.interval(u);
+        let t = (u - iv.lo) * iv.inv_h;
+        let f = horner(&iv.f, t);
+        let a = horner(&iv.a, t);
+        let dfdu = horner_d(&iv.f, t) * iv.inv_h;
+        // dΔ/du = 2·sign·u (sqrt) or sign (linear).
+        let k = if self.sqrt {
+            let k = dfdu / (2.0 * self.sign * u);
+            if u == 0.0 && iv.f[1] == 0.0 {
+                // F − F₀ ∝ u²: the finite limit.
+                iv.f[2] * iv.inv_h * iv.inv_h * self.sign
+            } else {
+                k
+            }
+        } else {
+            dfdu * self.sign
+        };
+        let k = if k.is_nan() {
+            STIFFNESS_BAR_MAX
+        } else {
+            k.clamp(-STIFFNESS_BAR_MAX, STIFFNESS_BAR_MAX)
+        };
+        (f, a.max(0.0), k)
+    }
+
+    #[inline]
+    fn interval(&self, u: f64) -> &Interval {
+        let nb = self.index.len() as i64;
+        let b = (self.key(u) >> self.shift).clamp(0, nb - 1) as usize;
+        let mut i = self.index[b] as usize;
+        let last = self.intervals.len() - 1;
+        while i < last && u >= self.intervals[i].hi {
+            i += 1;
+        }
+        &self.intervals[i]
+    }
+
+    fn build(d: &SegmentData) -> Result<Segment> {
+        let n = d.u.len();
+        let mut intervals = Vec::with_capacity(n);
+        for i in 0..n - 1 {
+            let h = d.u[i + 1] - d.u[i];
+            if h == 0.0 {
+                continue;
+            }
+            intervals.push(Interval {
+                lo: d.u[i],
+                hi: d.u[i + 1],
+                inv_h: 1.0 / h,
+                f: coefficients(
+                    d.force[i],
+                    d.d_force[i],
+                    d.force[i + 1],
+                    d.d_force[i + 1],
+                    h,
+                ),
+                a: coefficients(
+                    d.radius[i],
+                    d.d_radius[i],
+                    d.radius[i + 1],
+                    d.d_radius[i + 1],
+                    h,
+                ),
+            });
+        }
+        if intervals.is_empty() {
+            return Err(bad("segment.u", n as f64, "spanning a non-empty range"));
+        }
+        let u0 = intervals[0].lo;
+        let span = intervals[intervals.len() - 1].hi - u0;
+        let bias = (intervals[0].hi - u0).max(span * 1e-12);
+        let mut seg = Segment {
+            sqrt: d.transform == Transform::Sqrt,
+            sign: d.sign,
+            reference: d.reference,
+            lo: d.lo,
+            hi: d.hi,
+            u0,
+            bias,
+            bias_bits: bias.to_bits() as i64,
+            shift: 52,
+            intervals,
+            index: Vec::new(),
+        };
+        // The finest index (smallest shift) whose buckets hold at most two
+        // interval starts, within MAX_INDEX entries.
+        let keys: Vec<i64> = seg.intervals.iter().map(|iv| seg.key(iv.lo)).collect();
+        let kmax = seg.key(seg.intervals[seg.intervals.len() - 1].hi).max(0);
+        let mut best = 62u32;
+        for shift in (0..=62u32).rev() {
+            let nb = (kmax >> shift) + 1;
+            if nb as usize > MAX_INDEX {
+                break;
+            }
+            best = shift;
+            let mut worst = 0;
+            let mut run = 0;
+            let mut prev = -1i64;
+            for &k in &keys {
+                let b = k.max(0) >> shift;
+                run = if b == prev { run + 1 } else { 1 };
+                prev = b;
+                worst = worst.max(run);
+            }
+            if worst <= 2 {
+                break;
+            }
+        }
+        seg.shift = best;
+        let nb = ((kmax >> best) + 1) as usize;
+        let mut index = Vec::with_capacity(nb);
+        let mut j = 0usize;
+        for b in 0..nb as i64 {
+            // Largest interval whose start key lies in an earlier bucket.
+            while j + 1 < keys.len() && (keys[j + 1].max(0) >> best) < b {
+                j += 1;
+            }
+            index.push(j as u32);
+        }
+        seg.index = index;
+        Ok(seg)
+    }
+}
+
+// ------------------------------------------------------------- building
+
+/// A candidate knot of a segment.
+#[derive(Debug, Clone, Copy)]
+struct Cand {
+    u: f64,
+    f: f64,
+    df: f64,
+    a: f64,
+    da: f64,
+    must: bool,
+}
+
+/// Measure of the module documentation, in reduced units.
+#[inline]
+fn measure(ft: f64, fe: f64, at: f64, ae: f64, ff: f64, af: f64) -> f64 {
+    ((ft - fe).abs() / fe.abs().max(ff)).max((at - ae).abs() / ae.max(af))
+}
+
+fn hermite_at(c0: &Cand, c1: &Cand, u: f64) -> (f64, f64) {
+    let h = c1.u - c0.u;
+    let t = (u - c0.u) / h;
+    (
+        horner(&coefficients(c0.f, c0.df, c1.f, c1.df, h), t),
+        horner(&coefficients(c0.a, c0.da, c1.a, c1.da, h), t),
+    )
+}
+
+impl TabulatedLaw {
+    /// Build a table from `curve` with relative tolerance `tolerance` (in
+    /// [1e-10, 0.1]; [`DEFAULT_TOLERANCE`] is 1e-4), in the error measure of
+    /// the module documentation.
+    ///
+    /// Errors: [`Error::InvalidArgument`] for an invalid curve or tolerance;
+    /// [`Error::NotConverged`] when the curve is too coarse for the tolerance
+    /// (its points interpolate each other, or the tails meet the tail checks,
+    /// less accurately than asked).
+    pub fn from_curve(curve: &EquilibriumCurve, tolerance: f64) -> Result<Self> {
+        let tol =
+            crate::error::check::in_range("tolerance", tolerance, 1e-10, 0.1, "in [1e-10, 0.1]")?;
+        curve.validate()?;
+        let p = &curve.points;
+        let n = p.len();
+        // Monotone pieces of the path: (first, last, stable).
+        let mut pieces: Vec<(usize, usize, bool)> = Vec::new();
+        let mut start = 0;
+        let reverses = |i: usize| {
+            // Δ turns back at point i (corners skipped).
+            let before = (1..=i)
+                .rev()
+                .map(|j| p[j].delta - p[j - 1].delta)
+                .find(|d| *d != 0.0);
+            let after = (i..n - 1)
+                .map(|j| p[j + 1].delta - p[j].delta)
+                .find(|d| *d != 0.0);
+            matches!((before, after), (Some(b), Some(a)) if a * b < 0.0)
+        };
+        for i in 1..n {
+            if p[i].d_delta == 0.0 && i + 1 < n && reverses(i) || i == n - 1 {
+                let stable = p[start..=i].windows(2).any(|w| w[1].delta > w[0].delta);
+                pieces.push((start, i, stable));
+                start = i;
+            }
+        }
+        let last_piece = *pieces.last().unwrap();
+        // The load-controlled pull-off: the smallest force at a force
+        // extremum (or the start) of the last piece.
+        let (lp0, lp1, _) = last_piece;
+        let mut load_idx = lp0;
+        for i in lp0..=lp1 {
+            if (p[i].d_force == 0.0 || i == lp0) && p[i].force < p[load_idx].force {
+                load_idx = i;
+            }
+        }
+        // Displacement-controlled pull-off: where contact is lost going back
+        // along the last piece (radius reaching 0), or its start.
+        let mut disp_idx = lp0;
+        for i in (lp0..=lp1).rev() {
+            if p[i].radius == 0.0 {
+                disp_idx = i;
+                break;
+            }
+        }
+        let force_floor = 1e-3 * p[load_idx].force.abs().max(f64::MIN_POSITIVE);
+        let radius_floor = 1e-3 * p[load_idx].radius.max(1e-3);
+
+        // Branches: far (tail, plus the first piece when stable), then the
+        // other stable pieces.
+        let mut branch_pieces: Vec<Option<(usize, usize)>> = Vec::new();
+        let first_stable = pieces[0].2;
+        branch_pieces.push(if first_stable {
+            Some((pieces[0].0, pieces[0].1))
+        } else {
+            None
+        });
+        for (k, &(a, b, s)) in pieces.iter().enumerate() {
+            if s && !(k == 0 && first_stable) {
+                branch_pieces.push(Some((a, b)));
+            }
+        }
+        let nbr = branch_pieces.len();
+        if nbr < 2 && !first_stable {
+            return Err(bad("curve", 0.0, "a curve with a stable piece"));
+        }
+        let mut branches = Vec::new();
+        let mut seg_data: Vec<(SegmentData, Vec<(f64, f64, f64)>)> = Vec::new();
+        for (k, bp) in branch_pieces.iter().enumerate() {
+            let lo = if k == 0 {
+                None
+            } else {
+                Some(p[bp.unwrap().0].delta)
+            };
+            let hi = if k + 1 == nbr {
+                None
+            } else {
+                match bp {
+                    Some((_, b)) => Some(p[*b].delta),
+                    None => Some(p[0].delta),
+                }
+            };
+            let mut segments = Vec::new();
+            if let Some((a0, b0)) = *bp {
+                // Split at corners (the second point of a pair starts a part).
+                let mut cuts = vec![a0];
+                for i in a0 + 1..b0 {
+                    if p[i].delta == p[i - 1].delta
+                        && p[i].force == p[i - 1].force
+                        && p[i].radius == p[i - 1].radius
+                    {
+                        cuts.push(i);
+                    }
+                }
+                let mut spans: Vec<(usize, usize)> = Vec::new();
+                for (w, &c) in cuts.iter().enumerate() {
+                    let end = cuts.get(w + 1).map_or(b0, |&nx| nx - 1);
+                    spans.push((c, end));
+                }
+                let mut parts: Vec<(usize, usize, Transform, f64, f64)> = Vec::new();
+                for (a, b) in spans {
+                    let turn_lo = p[a].d_delta == 0.0;
+                    let turn_hi = p[b].d_delta == 0.0 && b + 1 < n;
+                    if turn_lo && turn_hi {
+                        let mid_d = 0.5 * (p[a].delta + p[b].delta);
+                        let m = (a + 1..b)
+                            .min_by(|&i, &j| {
+                                (p[i].delta - mid_d)
+                                    .abs()
+                                    .total_cmp(&(p[j].delta - mid_d).abs())
+                            })
+                            .ok_or(bad("curve", a as f64, "two points between turning points"))?;
+                        parts.push((a, m, Transform::Sqrt, 1.0, p[a].delta));
+                        parts.push((m, b, Transform::Sqrt, -1.0, p[b].delta));
+                    } else if turn_lo {
+                        parts.push((a, b, Transform::Sqrt, 1.0, p[a].delta));
+                    } else if turn_hi {
+                        parts.push((a, b, Transform::Sqrt, -1.0, p[b].delta));
+                    } else {
+                        parts.push((a, b, Transform::Linear, 1.0, p[a].delta));
+                    }
+                }
+                for (i0, i1, tr, sign, reference) in parts {
+                    let (sd, skipped) = Self::build_segment(
+                        p,
+                        i0,
+                        i1,
+                        tr,
+                        sign,
+                        reference,
+                        tol,
+                        force_floor,
+                        radius_floor,
+                    )?;
+                    segments.push(sd.clone());
+                    seg_data.push((sd, skipped));
+                }
+            }
+            branches.push(BranchData { lo, hi, segments });
+        }
+        // Tails.
+        let far = match curve.far_tail {
+            FarTail::Zero => FarData::Zero,
+            FarTail::RigidLennardJones => FarData::RigidLennardJones {
+                k: p[0].force / rigid_lj(p[0].delta).0,
+            },
+        };
+        let DeepTail::Hertz {
+            force_coefficient: h,
+            radius_coefficient: g,
+            delta_zero,
+        } = curve.deep_tail;
+        let l = p[n - 1];
+        let x = l.delta - delta_zero;
+        let fit = |y: f64, slope: f64, c: f64, e: f64| -> (f64, f64) {
+            let r = y - c * x.powf(e);
+            let rp = slope - e * c * x.powf(e - 1.0);
+            if r == 0.0 || r.abs() < 1e-14 * y.abs() {
+                (0.0, 0.0)
+            } else {
+                let q = (x * rp / r).clamp(-4.0, e);
+                (r / x.powf(q), q)
+            }
+        };
+        let (bf, qf) = fit(l.force, l.d_force / l.d_delta, h, 1.5);
+        let (ba, qa) = fit(l.radius, l.d_radius / l.d_delta, g, 0.5);
+        let deep = DeepData {
+            delta_zero,
+            h,
+            bf,
+            qf,
+            g,
+            ba,
+            qa,
+        };
+        // The load pull-off knot lies in the last segment of the last branch.
+        let last_seg = branches[nbr - 1].segments.last().unwrap();
+        if p[load_idx].delta < last_seg.lo {
+            return Err(bad(
+                "curve",
+                p[load_idx].delta,
+                "the load-controlled pull-off on the last part of the last stable piece",
+            ));
+        }
+        let load_u = last_seg.u_of_delta(p[load_idx].delta);
+        let data = TableData {
+            format: FORMAT.to_string(),
+            source: curve.source.clone(),
+            tolerance: tol,
+            measured_error: 0.0,
+            force_floor,
+            radius_floor,
+            approach_origin: curve.approach_origin,
+            approach_scale: curve.approach_scale,
+            force_scale: curve.force_scale,
+            radius_scale: curve.radius_scale,
+            branches,
+            far,
+            deep,
+            load_pull_off: p[load_idx].force,
+            load_pull_off_u: load_u,
+            displacement_pull_off: p[disp_idx].force,
+        };
+        let mut table = Self::from_data(data)?;
+        // Measure the final table on every skipped point and tail check.
+        let mut worst = 0.0f64;
+        for (_, skipped) in &seg_data {
+            for &(x, fe, ae) in skipped {
+                let k = table.branch_containing(x);
+                let (ft, at, _) = table.on_branch(k, x);
+                worst = worst.max(measure(ft, fe, at, ae, force_floor, radius_floor));
+            }
+        }
+        for c in &curve.tail_checks {
+            let k = if c.delta > l.delta {
+                nbr - 1
+            } else if c.delta < p[0].delta {
+                0
+            } else {
+                continue;
+            };
+            let (ft, at, _) = table.on_branch(k, c.delta);
+            worst = worst.max(measure(
+                ft,
+                c.force,
+                at,
+                c.radius,
+                force_floor,
+                radius_floor,
+            ));
+        }
+        if !(worst <= tol) {
+            return Err(Error::NotConverged {
+                what: "tabulated law: the curve is too coarse for the tolerance",
+                iterations: 0,
+                residual: worst,
+            });
+        }
+        table.data.measured_error = worst;
+        Ok(table)
+    }
+
+    /// Knots of one segment chosen among the curve points `i0..=i1`; returns
+    /// the segment and the skipped points (x, F, radius).
+    #[allow(clippy::too_many_arguments)]
+    fn build_segment(
+        p: &[PathPoint],
+        i0: usize,
+        i1: usize,
+        transform: Transform,
+        sign: f64,
+        reference: f64,
+        tol: f64,
+        ff: f64,
+        af: f64,
+    ) -> Result<(SegmentData, Vec<(f64, f64, f64)>)> {
+        let sq = transform == Transform::Sqrt;
+        let mut c: Vec<Cand> = Vec::with_capacity(i1 - i0 + 1);
+        for i in i0..=i1 {
+            let q = &p[i];
+            let d = sign * (q.delta - reference);
+            let u = if sq { d.max(0.0).sqrt() } else { d };
+            let (df, da) = if q.d_delta == 0.0 {
+                if !sq {
+                    return Err(bad("curve", i as f64, "turning points only at piece ends"));
+                }
+                // u ≈ √(|Δ''|/2)|t − t_turn|; du/dt > 0 leaving a turning
+                // point that starts the segment along the path.
+                let dudt = (0.5 * q.d2_delta.abs()).sqrt() * if i == i0 { 1.0 } else { -1.0 };
+                (q.d_force / dudt, q.d_radius / dudt)
+            } else {
+                let dxdu = if sq { 2.0 * sign * u } else { sign };
+                (q.d_force / q.d_delta * dxdu, q.d_radius / q.d_delta * dxdu)
+            };
+            let corner = (i > i0
+                && p[i - 1].delta == q.delta
+                && p[i - 1].force == q.force
+                && p[i - 1].radius == q.radius)
+                || (i < i1
+                    && p[i + 1].delta == q.delta
+                    && p[i + 1].force == q.force
+                    && p[i + 1].radius == q.radius);
+            c.push(Cand {
+                u,
+                f: q.force,
+                df,
+                a: q.radius,
+                da,
+                must: i == i0 || i == i1 || corner || q.d_force == 0.0 || q.force == 0.0,
+            });
+        }
+        if sign < 0.0 {
+            c.reverse();
+        }
+        // u must not decrease (rounding near a turning point).
+        for i in 1..c.len() {
+            if c[i].u < c[i - 1].u {
+                return Err(bad(
+                    "curve.points",
+                    (i0 + i) as f64,
+                    "monotone in Δ on each piece",
+                ));
+            }
+        }
+        let accept = |i: usize, j: usize| -> bool {
+            let (a, b) = (&c[i], &c[j]);
+            let h = b.u - a.u;
+            if h <= 0.0 {
+                return j == i + 1;
+            }
+            if j > i + 1
+                && !(monotone(a.f, a.df, b.f, b.df, h) && monotone_or_flat(a.a, a.da, b.a, b.da, h))
+            {
+                return false;
+            }
+            // At the skipped points (exact), and at quarter points of every
+            // interval between neighbouring candidates, where the fine
+            // interpolant through them stands in for the source.
+            c[i + 1..j].iter().all(|m| {
+                let (ft, at) = hermite_at(a, b, m.u);
+                measure(ft, m.f, at, m.a, ff, af) <= 0.5 * tol
+            }) && c[i..=j].windows(2).all(|w| {
+                let h = w[1].u - w[0].u;
+                h <= 0.0
+                    || [0.25, 0.5, 0.75].iter().all(|&s| {
+                        let u = w[0].u + s * h;
+                        let (fe, ae) = hermite_at(&w[0], &w[1], u);
+                        let (ft, at) = hermite_at(a, b, u);
+                        measure(ft, fe, at, ae, ff, af) <= 0.5 * tol
+                    })
+            })
+        };
+        let mut keep = vec![0usize];
+        let mut i = 0;
+        let last = c.len() - 1;
+        while i < last {
+            // The next mandatory knot bounds the interval.
+            let q = (i + 1..=last).find(|&j| c[j].must).unwrap_or(last);
+            let mut best = i + 1;
+            let mut step = 2;
+            let mut fail = None;
+            while best < q {
+                let j = (i + step).min(q);
+                if accept(i, j) {
+                    best = j;
+                    step *= 2;
+                } else {
+                    fail = Some(j);
+                    break;
+                }
+            }
+            if let Some(mut hi) = fail {
+                let mut lo = best;
+                while hi - lo > 1 {
+                    let mid = (lo + hi) / 2;
+                    if accept(i, mid) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                best = lo;
+            }
+            keep.push(best);
+            i = best;
+        }
+        let mut k: Vec<Cand> = keep.iter().map(|&i| c[i]).collect();
+        // Monotone slopes (Fritsch–Carlson limiter) where the data are.
+        for w in 0..k.len() - 1 {
+            let h = k[w + 1].u - k[w].u;
+            if h <= 0.0 {
+                continue;
+            }
+            let (y0, y1) = (k[w].f, k[w + 1].f);
+            let (mut m0, mut m1) = (k[w].df, k[w + 1].df);
+            limit(y0, &mut m0, y1, &mut m1, h);
+            k[w].df = m0;
+            k[w + 1].df = m1;
+            let (y0, y1) = (k[w].a, k[w + 1].a);
+            if y1 >= y0 {
+                let (mut m0, mut m1) = (k[w].da, k[w + 1].da);
+                limit(y0, &mut m0, y1, &mut m1, h);
+                k[w].da = m0;
+                k[w + 1].da = m1;
+            }
+        }
+        let mut skipped = Vec::new();
+        let kept: std::collections::HashSet<usize> = keep.iter().copied().collect();
+        for (j, cj) in c.iter().enumerate() {
+            if !kept.contains(&j) {
+                // The curve's own Δ (exact), not a round trip through u.
+                let idx = if sign < 0.0 { i1 - j } else { i0 + j };
+                skipped.push((p[idx].delta, cj.f, cj.a));
+            }
+        }
+        let (lo, hi) = (p[i0].delta, p[i1].delta);
+        let sd = SegmentData {
+            transform,
+            sign,
+            reference,
+            lo,
+            hi,
+            u: k.iter().map(|q| q.u).collect(),
+            force: k.iter().map(|q| q.f).collect(),
+            d_force: k.iter().map(|q| q.df).collect(),
+            radius: k.iter().map(|q| q.a).collect(),
+            d_radius: k.iter().map(|q| q.da).collect(),
+        };
+        Ok((sd, skipped))
+    }
+
+    /// Build a table for a Maugis–Dugdale sphere: the curve of
+    /// [`EquilibriumCurve::from_maugis_dugdale`] sampled for `tolerance`,
+    /// then [`TabulatedLaw::from_curve`].
+    pub fn from_maugis_dugdale(md: &MaugisDugdale, tolerance: f64) -> Result<Self> {
+        let curve = EquilibriumCurve::from_maugis_dugdale(md, tolerance)?;
+        Self::from_curve(&curve, tolerance)
+    }
+
+    /// Validate serialised data and build the runtime structures.
+    fn from_data(d: TableData) -> Result<Self> {
+        if d.format != FORMAT {
+            return Err(bad("format", 0.0, "\"asperity-tabulated-law-1\""));
+        }
+        crate::error::check::in_range("tolerance", d.tolerance, 1e-10, 0.1, "in [1e-10, 0.1]")?;
+        crate::error::check::in_range(
+            "measured_error",
+            d.measured_error,
+            0.0,
+            d.tolerance,
+            "in [0, tolerance]",
+        )?;
+        for (n, v) in [
+            ("force_floor", d.force_floor),
+            ("radius_floor", d.radius_floor),
+            ("approach_scale", d.approach_scale),
+            ("force_scale", d.force_scale),
+            ("radius_scale", d.radius_scale),
+            ("deep.h", d.deep.h),
+            ("deep.g", d.deep.g),
+        ] {
+            crate::error::check::positive(n, v)?;
+        }
+        let nbr = d.branches.len();
+        if nbr < 2 && d.branches.first().map_or(true, |b| b.segments.is_empty()) {
+            return Err(bad("branches", nbr as f64, "at least one stable branch"));
+        }
+        let mut branches = Vec::with_capacity(nbr);
+        let mut segments = Vec::new();
+        for (k, b) in d.branches.iter().enumerate() {
+            let lo = match (k, b.lo) {
+                (0, None) => f64::NEG_INFINITY,
+                (k, Some(v)) if k > 0 => v,
+                _ => {
+                    return Err(bad(
+                        "branches.lo",
+                        k as f64,
+                        "unbounded exactly for branch 0",
+                    ))
+                }
+            };
+            let hi = match (k + 1 == nbr, b.hi) {
+                (true, None) => f64::INFINITY,
+                (false, Some(v)) => v,
+                _ => {
+                    return Err(bad(
+                        "branches.hi",
+                        k as f64,
+                        "unbounded exactly for the last branch",
+                    ))
+                }
+            };
+            if !(lo < hi) || (k > 0 && b.segments.is_empty()) {
+                return Err(bad(
+                    "branches",
+                    k as f64,
+                    "lo < hi and segments on branches ≥ 1",
+                ));
+            }
+            let seg0 = segments.len();
+            let mut x_prev = f64::NEG_INFINITY;
+            for s in &b.segments {
+                let n = s.u.len();
+                if n < 2
+                    || s.force.len() != n
+                    || s.d_force.len() != n
+                    || s.radius.len() != n
+                    || s.d_radius.len() != n
+                {
+                    return Err(bad(
+                        "segment",
+                        n as f64,
+                        "at least 2 knots and equal lengths",
+                    ));
+                }
+                if !(s.sign == 1.0 || s.sign == -1.0) || !(s.lo < s.hi) || s.lo < x_prev {
+                    return Err(bad("segment", s.lo, "sign ±1 and ordered ranges lo < hi"));
+                }
+                x_prev = s.hi;
+                if (k > 0 && s.lo < lo) || s.hi > hi {
+                    return Err(bad("segment", s.lo, "inside its branch's range"));
+                }
+                for i in 0..n {
+                    if s.u[i] < 0.0 || s.radius[i] < 0.0 {
+                        return Err(bad("segment.u", s.u[i], "u ≥ 0 and radius ≥ 0"));
+                    }
+                }
+                for i in 0..n - 1 {
+                    let h = s.u[i + 1] - s.u[i];
+                    let dup = h == 0.0 && (i + 2 >= n || s.u[i + 2] > s.u[i + 1]) && i > 0;
+                    if !(h > 0.0 || dup) {
+                        return Err(bad("segment.u", i as f64, "strictly increasing knots"));
+                    }
+                    if h > 0.0
+                        && !(monotone(
+                            s.force[i],
+                            s.d_force[i],
+                            s.force[i + 1],
+                            s.d_force[i + 1],
+                            h,
+                        ) && monotone_or_flat(
+                            s.radius[i],
+                            s.d_radius[i],
+                            s.radius[i + 1],
+                            s.d_radius[i + 1],
+                            h,
+                        ))
+                    {
+                        return Err(bad("segment.force", i as f64, "monotone between knots"));
+                    }
+                }
+                // The knot range reproduces the Δ range.
+                let sq = s.transform == Transform::Sqrt;
+                let xu = |u: f64| {
+                    if sq {
+                        s.reference + s.sign * u * u
+                    } else {
+                        s.reference + s.sign * u
+                    }
+                };
+                let (x0, x1) = (xu(s.u[0]), xu(s.u[n - 1]));
+                let (xa, xb) = if s.sign > 0.0 { (x0, x1) } else { (x1, x0) };
+                let tolx = 1e-9 * (s.hi - s.lo).abs().max(s.hi.abs()).max(s.lo.abs());
+                if (xa - s.lo).abs() > tolx || (xb - s.hi).abs() > tolx {
+                    return Err(bad("segment.lo", s.lo, "equal to the Δ of its first knot"));
+                }
+                segments.push(Segment::build(s)?);
+            }
+            branches.push(Branch {
+                lo,
+                hi,
+                seg0,
+                seg1: segments.len(),
+            });
+        }
+        let far_k = match d.far {
+            FarData::Zero => 0.0,
+            FarData::RigidLennardJones { k } => crate::error::check::positive("far.k", k)?,
+        };
+        if matches!(d.far, FarData::RigidLennardJones { .. })
+            && branches[0].seg0 == branches[0].seg1
+        {
+            return Err(bad(
+                "far",
+                far_k,
+                "a far branch with segments for a Lennard-Jones tail",
+            ));
+        }
+        let load_segment = branches[nbr - 1].seg1 - 1;
+        let ls = &segments[load_segment];
+        let load_interval = ls
+            .intervals
+            .iter()
+            .position(|iv| iv.lo == d.load_pull_off_u)
+            .ok_or(bad(
+                "load_pull_off_u",
+                d.load_pull_off_u,
+                "a knot of the last branch",
+            ))?;
+        if horner(&ls.intervals[load_interval].f, 0.0) != d.load_pull_off
+            || ls.intervals[load_interval..]
+                .iter()
+                .any(|iv| horner(&iv.f, 1.0) < iv.f[0])
+        {
+            return Err(bad(
+                "load_pull_off",
+                d.load_pull_off,
+                "the force at its knot, increasing beyond",
+            ));
+        }
+        if !(d.load_pull_off < 0.0 && d.displacement_pull_off <= 0.0) {
+            return Err(bad("load_pull_off", d.load_pull_off, "adhesive (< 0)"));
+        }
+        for v in [
+            d.deep.delta_zero,
+            d.deep.bf,
+            d.deep.qf,
+            d.deep.ba,
+            d.deep.qa,
+        ] {
+            crate::error::check::finite("deep", v)?;
+        }
+        let stiffness_scale = d.force_scale / d.approach_scale;
+        if !stiffness_scale.is_finite() {
+            return Err(bad("force_scale", d.force_scale, "a finite stiffness unit"));
+        }
+        Ok(TabulatedLaw {
+            stiffness_scale,
+            branches,
+            segments,
+            load_segment,
+            load_interval,
+            data: d,
+        })
+    }
+
+    // ------------------------------------------------------------ accessors
+
+    /// The stated bound of the relative error (the tolerance the table was
+    /// built for), in the measure of the module documentation.
+    #[inline]
+    pub fn tolerance(&self) -> f64 {
+        self.data.tolerance
+    }
+
+    /// The largest error measured at construction, on every curve point the
+    /// table skipped and on the curve's tail checks (≤ [`Self::tolerance`]).
+    #[inline]
+    pub fn measured_error(&self) -> f64 {
+        self.data.measured_error
+    }
+
+    /// The error measure of the module documentation between an exact
+    /// response and an approximate one (dimensionless).
+    pub fn relative_error(&self, exact: &NormalResponse, approx: &NormalResponse) -> f64 {
+        let d = &self.data;
+        measure(
+            approx.force / d.force_scale,
+            exact.force / d.force_scale,
+            approx.contact_radius / d.radius_scale,
+            exact.contact_radius / d.radius_scale,
+            d.force_floor,
+            d.radius_floor,
+        )
+    }
+
+    /// Where the table came from.
+    pub fn source(&self) -> &str {
+        &self.data.source
+    }
+
+    /// Number of branches (ContactState::branch runs over 0..branch_count()).
+    pub fn branch_count(&self) -> usize {
+        self.branches.len()
+    }
+
+    /// The overlap range (m) of branch `k`: a contact on it stays while
+    /// `lo ≤ δ ≤ hi` (up to rounding: the comparison is made in reduced
+    /// units); `lo` is the jump-out point, `hi` the jump-in point.
+    pub fn branch_range(&self, k: usize) -> Option<(f64, f64)> {
+        let b = self.branches.get(k)?;
+        let d = &self.data;
+        Some((
+            d.approach_origin + b.lo * d.approach_scale,
+            d.approach_origin + b.hi * d.approach_scale,
+        ))
+    }
+
+    /// Number of knots over all segments.
+    pub fn knot_count(&self) -> usize {
+        self.segments.iter().map(|s| s.intervals.len() + 1).sum()
+    }
+
+    /// Number of lookup-index entries over all segments.
+    pub fn index_len(&self) -> usize {
+        self.segments.iter().map(|s| s.index.len()).sum()
+    }
+
+    /// Memory of the evaluation structures (bytes).
+    pub fn memory_bytes(&self) -> usize {
+        self.segments
+            .iter()
+            .map(|s| {
+                s.intervals.len() * core::mem::size_of::<Interval>()
+                    + s.index.len() * 4
+                    + core::mem::size_of::<Segment>()
+            })
+            .sum::<usize>()
+            + core::mem::size_of::<Self>()
+    }
+
+    /// JSON text of the table (numbers written exactly).
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(&self.data).expect("a table always serialises")
+    }
+
+    /// A table from [`TabulatedLaw::to_json`] text, validated; evaluates
+    /// bit-identically to the table written.
+    pub fn from_json(json: &str) -> Result<Self> {
+        let d: TableData = serde_json::from_str(json).map_err(|e| {
+            bad(
+                "json",
+                e.line() as f64,
+                "a serialised TabulatedLaw (syntax, field or value error at this line)",
+            )
+        })?;
+        Self::from_data(d)
+    }
+
+    // ---------------------------------------------------------- evaluation
+
+    /// The branch containing x searched from branch 0 (for measurements).
+    fn branch_containing(&self, x: f64) -> usize {
+        (0..self.branches.len())
+            .rev()
+            .find(|&k| x >= self.branches[k].lo && x <= self.branches[k].hi)
+            .unwrap_or(0)
+    }
+
+    #[cold]
+    fn jump_forward(&self, k: usize, x: f64) -> usize {
+        let n = self.branches.len();
+        (k + 1..n)
+            .find(|&j| x >= self.branches[j].lo && x <= self.branches[j].hi)
+            .unwrap_or(n - 1)
+    }
+
+    #[cold]
+    fn jump_back(&self, k: usize, x: f64) -> usize {
+        (0..k)
+            .rev()
+            .find(|&j| x >= self.branches[j].lo && x <= self.branches[j].hi)
+            .unwrap_or(0)
+    }
+
+    /// Reduced (F, radius, dF/dΔ) on branch k at reduced approach x.
+    #[inline]
+    fn on_branch(&self, k: usize, x: f64) -> (f64, f64, f64) {
+        let b = &self.branches[k];
+        let segs = &self.segments[b.seg0..b.seg1];
+        if let Some(first) = segs.first() {
+            if x >= first.lo {
+                for s in segs {
+                    if x <= s.hi {
+                        return s.eval(x);
+                    }
+                }
+                return self.beyond(k, x);
+            }
+        }
+        self.far(x)
+    }
+
+    #[cold]
+    fn beyond(&self, k: usize, x: f64) -> (f64, f64, f64) {
+        if k + 1 == self.branches.len() {
+            self.deep(x)
+        } else {
+            let b = &self.branches[k];
+            self.segments[b.seg1 - 1].eval(x)
+        }
+    }
+
+    fn far(&self, x: f64) -> (f64, f64, f64) {
+        match self.data.far {
+            FarData::Zero => (0.0, 0.0, 0.0),
+            FarData::RigidLennardJones { k } => {
+                let (g, dg) = rigid_lj(x);
+                (k * g, 0.0, k * dg)
+            }
+        }
+    }
+
+    fn deep(&self, x: f64) -> (f64, f64, f64) {
+        let d = &self.data.deep;
+        let z = x - d.delta_zero;
+        let f = d.h * z * z.sqrt() + d.bf * z.powf(d.qf);
+        let a = d.g * z.sqrt() + d.ba * z.powf(d.qa);
+        let k = 1.5 * d.h * z.sqrt() + d.qf * d.bf * z.powf(d.qf - 1.0);
+        (f, a.max(0.0), k)
+    }
+
+    /// Reduced approach on the load-controlled stable branch at reduced
+    /// force `target` (≥ the load pull-off).
+    fn x_at_load(&self, target: f64) -> f64 {
+        let s = &self.segments[self.load_segment];
+        let ivs = &s.intervals[self.load_interval..];
+        let end = horner(&ivs[ivs.len() - 1].f, 1.0);
+        if target > end {
+            // Deep tail: Newton on z, F increasing and convex.
+            let d = &self.data.deep;
+            let x_last = s.x_of(ivs[ivs.len() - 1].hi);
+            let mut z = (x_last - d.delta_zero).max((target / d.h).powf(2.0 / 3.0));
+            for _ in 0..100 {
+                let f = d.h * z * z.sqrt() + d.bf * z.powf(d.qf) - target;
+                let k = 1.5 * d.h * z.sqrt() + d.qf * d.bf * z.powf(d.qf - 1.0);
+                let step = f / k;
+                let zn = (z - step).max(0.5 * z);
+                if !(zn.is_finite()) || (zn - z).abs() <= 1e-15 * z {
+                    z = if zn.is_finite() { zn } else { z };
+                    break;
+                }
+                z = zn;
+            }
+            return d.delta_zero + z;
+        }
+        // Interval whose force range contains the target.
+        let i = ivs
+            .partition_point(|iv| horner(&iv.f, 1.0) < target)
+            .min(ivs.len() - 1);
+        let iv = &ivs[i];
+        // Safeguarded Newton on t ∈ [0, 1] (monotone cubic).
+        let (mut lo, mut hi) = (0.0f64, 1.0f64);
+        let mut t = 0.5;
+        for _ in 0..100 {
+            let f = horner(&iv.f, t) - target;
+            if f == 0.0 {
+                break;
+            }
+            if f < 0.0 {
+                lo = t;
+            } else {
+                hi = t;
+            }
+            let df = horner_d(&iv.f, t);
+            let mut tn = t - f / df;
+            if !(tn > lo && tn < hi) {
+                tn = 0.5 * (lo + hi);
+            }
+            if (tn - t).abs() <= 1e-16 || hi - lo <= 1e-16 {
+                t = tn;
+                break;
+            }
+            t = tn;
+        }
+        s.x_of(iv.lo + t / iv.inv_h)
+    }
+}
+
+/// Whether the Hermite cubic is monotone, or the data are flat/decreasing
+/// radii where no monotonicity is promised (then always true).
+fn monotone_or_flat(y0: f64, m0: f64, y1: f64, m1: f64, h: f64) -> bool {
+    if y1 < y0 || (y1 == y0 && m0 == 0.0 && m1 == 0.0) {
+        true
+    } else {
+        monotone(y0, m0, y1, m1, h)
+    }
+}
+
+/// Rigid Lennard-Jones sphere (Derjaguin), reduced: `g = −(8/3)[h⁻² − h⁻⁸/4]`,
+/// `h = 1 − x`, and dg/dx.
+fn rigid_lj(x: f64) -> (f64, f64) {
+    let h = 1.0 - x;
+    let h2 = 1.0 / (h * h);
+    let h8 = h2 * h2 * h2 * h2;
+    let g = -(8.0 / 3.0) * (h2 - 0.25 * h8);
+    let dg = -(8.0 / 3.0) * (2.0 * h2 / h - 2.0 * h8 / h);
+    (g, dg)
+}
+
+impl SegmentData {
+    fn u_of_delta(&self, x: f64) -> f64 {
+        let d = self.sign * (x - self.reference);
+        if self.transform == Transform::Sqrt {
+            d.max(0.0).sqrt()
+        } else {
+            d
+        }
+    }
+}
+
+impl NormalContact for TabulatedLaw {
+    /// Equilibrium at overlap δ (m) under displacement control, following the
+    /// history in `old` (see the module documentation).
+    ///
+    /// Errors: [`Error::InvalidArgument`] for a non-finite δ or a branch
+    /// outside `0..branch_count()`; [`Error::OutOfDomain`] when the response
+    /// overflows.
+    #[inline]
+    fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
+        let delta = check_delta(delta)?;
+        let br = old.branch;
+        if br < 0 || br as usize >= self.branches.len() {
+            return Err(bad_branch(br));
+        }
+        let d = &self.data;
+        let x = (delta - d.approach_origin) / d.approach_scale;
+        let mut k = br as usize;
+        let b = &self.branches[k];
+        if !(x <= b.hi) {
+            k = self.jump_forward(k, x);
+        } else if x < b.lo {
+            k = self.jump_back(k, x);
+        }
+        let (f, a, kbar) = self.on_branch(k, x);
+        let radius = a * d.radius_scale;
+        let r = NormalResponse {
+            force: f * d.force_scale,
+            delta,
+            contact_radius: radius,
+            stiffness: kbar * self.stiffness_scale,
+            in_contact: (a > 0.0) as i32,
+            reserved: 0,
+        };
+        let s = ContactState {
+            contact_radius: radius,
+            cohesive_radius: 0.0,
+            in_contact: (k > 0 || a > 0.0) as i32,
+            branch: k as i32,
+        };
+        finite_response((r, s))
+    }
+
+    /// Equilibrium at force P (N) on the load-controlled stable branch (beyond
+    /// the minimum of the force on the last branch), by inverting the
+    /// interpolant.
+    ///
+    /// Errors: [`Error::OutOfDomain`] below the load-controlled pull-off.
+    fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {
+        let force = check_force(force)?;
+        let d = &self.data;
+        let target = force / d.force_scale;
+        if target < d.load_pull_off {
+            return Err(below_pull_off(force));
+        }
+        let x = self.x_at_load(target);
+        let k = self.branches.len() - 1;
+        let (_, a, kbar) = self.on_branch(k, x);
+        let r = NormalResponse {
+            force,
+            delta: d.approach_origin + x * d.approach_scale,
+            contact_radius: a * d.radius_scale,
+            stiffness: kbar * self.stiffness_scale,
+            in_contact: 1,
+            reserved: 0,
+        };
+        finite_response((r, ContactState::default())).map(|rs| rs.0)
+    }
+
+    /// Load control: the minimum of the force on the last branch (exactly the
+    /// curve's point). Displacement control: the force where contact is lost
+    /// on retraction, at the point where the radius reaches zero or at the
+    /// jump-out turning point (exactly the curve's point).
+    fn pull_off_force(&self, control: Control) -> Result<f64> {
+        let bar = match control {
+            Control::Load => self.data.load_pull_off,
+            Control::Displacement => self.data.displacement_pull_off,
+        };
+        Ok(bar * self.data.force_scale)
+    }
+
+    /// The curve's approach unit (m).
+    fn length_scale(&self) -> f64 {
+        self.data.approach_scale
+    }
+}
+
+#[cold]
+fn bad_branch(b: i32) -> Error {
+    Error::InvalidArgument {
+        name: "old.branch",
+        value: b as f64,
+        bound: "a branch of the table: 0 (far) to branch_count() - 1",
+    }
+}

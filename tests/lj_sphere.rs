@@ -1,0 +1,322 @@
+//! Numerical Lennard-Jones sphere (REFERENCE §6): rigid limit, influence
+//! matrix, Newton convergence, pull-off against Maugis–Dugdale, S-shape,
+//! Hertz limit, error paths.
+
+use asperity::contact::lj_sphere::{
+    disk_displacement, rigid_force_bar, LjOptions, LjSolver, LjSphere,
+};
+use asperity::contact::MaugisDugdale;
+use asperity::Error;
+use core::f64::consts::PI;
+
+fn solver(mu: f64, n: usize) -> LjSolver {
+    LjSphere::from_tabor(mu).unwrap().solver(n).unwrap()
+}
+
+#[test]
+fn rigid_limit_reproduces_derjaguin() {
+    // μ = 0 exactly: the elastic term vanishes; REFERENCE: −2 at ᾱ = 0,
+    // −0.6640625 at ᾱ = −1 (to 1e-9).
+    let s = solver(0.0, 64);
+    for (al, want) in [
+        (0.0, -2.0),
+        (-1.0, -0.6640625),
+        (-0.5, rigid_force_bar(-0.5)),
+    ] {
+        let r = s.solve_at_approach(al, None).unwrap();
+        assert!(
+            (r.force - want).abs() < 1e-9,
+            "ᾱ={al}: {} vs {want}",
+            r.force
+        );
+        assert!(r.residual <= 1e-10);
+    }
+    // Small μ: the elastic correction is O(μ^{3/2}).
+    let s = solver(1e-6, 64);
+    let r = s.solve_at_approach(0.0, None).unwrap();
+    assert!((r.force + 2.0).abs() < 1e-6, "{}", r.force);
+    let r = s.solve_at_approach(-1.0, None).unwrap();
+    assert!((r.force + 0.6640625).abs() < 1e-6, "{}", r.force);
+}
+
+#[test]
+fn disk_displacement_limits() {
+    // Centre: c E(0) = πc/2; rim: c; far field: ≈ (π/2)c²/(2r).
+    assert!((disk_displacement(0.0, 2.0) - PI).abs() < 1e-14);
+    assert!((disk_displacement(2.0, 2.0) - 2.0).abs() < 1e-14);
+    assert!((disk_displacement(2.0 * (1.0 - 1e-12), 2.0) - 2.0).abs() < 1e-9);
+    assert!((disk_displacement(2.0 * (1.0 + 1e-12), 2.0) - 2.0).abs() < 1e-9);
+    let r = 1e3;
+    assert!((disk_displacement(r, 1.0) / (PI / 4.0 / r) - 1.0).abs() < 1e-5);
+}
+
+/// `∫₀^∞ q(s) s/(r+s) K(2√(rs)/(r+s)) ds` by Gauss–Legendre on intervals
+/// graded geometrically towards the logarithmic singularity at s = r.
+fn kernel_quadrature(q: impl Fn(f64) -> f64, r: f64, smax: f64) -> f64 {
+    let (gx, gw) = gauss16();
+    // Landen form of the kernel: (s/r)K(s/r) for s < r, K(r/s) for s > r.
+    let kern = |s: f64| {
+        let (f, k) = if s < r { (s / r, s / r) } else { (1.0, r / s) };
+        q(s) * f * ellip::ellipk(k * k).unwrap()
+    };
+    let seg = |a: f64, b: f64| -> f64 {
+        let (c, h) = (0.5 * (a + b), 0.5 * (b - a));
+        gx.iter()
+            .zip(&gw)
+            .map(|(x, w)| w * h * kern(c + h * x))
+            .sum::<f64>()
+    };
+    let mut total = 0.0;
+    // Left of r: [0, r) graded towards r.
+    let mut edges = vec![0.0];
+    let mut d = r;
+    while d > 1e-14 * r.max(1.0) {
+        d *= 0.3;
+        edges.push(r - d);
+    }
+    for w in edges.windows(2) {
+        total += seg(w[0], w[1]);
+    }
+    // Right of r, graded away from r up to smax.
+    let mut a = r;
+    let mut d = 1e-14 * r.max(1.0);
+    while a < smax {
+        let b = (r + d).min(smax);
+        total += seg(a, b);
+        a = b;
+        d /= 0.3;
+    }
+    total
+}
+
+fn gauss16() -> (Vec<f64>, Vec<f64>) {
+    // Golub–Welsch would be overkill: Newton on P_16.
+    let n = 16;
+    let mut x = vec![0.0; n];
+    let mut w = vec![0.0; n];
+    for i in 0..n {
+        let mut z = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+        for _ in 0..100 {
+            let (mut p0, mut p1) = (1.0, z);
+            for k in 2..=n {
+                let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
+                p0 = p1;
+                p1 = p2;
+            }
+            let dp = n as f64 * (z * p1 - p0) / (z * z - 1.0);
+            let dz = p1 / dp;
+            z -= dz;
+            if dz.abs() < 1e-16 {
+                let dp2 = {
+                    let (mut p0, mut p1) = (1.0, z);
+                    for k in 2..=n {
+                        let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
+                        p0 = p1;
+                        p1 = p2;
+                    }
+                    n as f64 * (z * p1 - p0) / (z * z - 1.0)
+                };
+                x[i] = z;
+                w[i] = 2.0 / ((1.0 - z * z) * dp2 * dp2);
+                break;
+            }
+        }
+    }
+    (x, w)
+}
+
+#[test]
+fn influence_matrix_matches_direct_quadrature() {
+    // Smooth test pressure q(s) = (1 + s²)^{-3}; the piecewise-constant
+    // discretisation is second order: at N = 400 the error is ~1e-4.
+    let q = |s: f64| (1.0 + s * s).powi(-3);
+    let s = solver(1.0, 400);
+    let qn: Vec<f64> = s.nodes().iter().map(|&x| q(x)).collect();
+    let u = s.apply_influence(&qn);
+    let l = *s.mesh().last().unwrap();
+    let mut worst = 0.0f64;
+    for (i, &x) in s.nodes().iter().enumerate().step_by(37) {
+        let exact = kernel_quadrature(q, x, l);
+        worst = worst.max((u[i] - exact).abs() / exact.abs());
+    }
+    assert!(worst < 3e-4, "relative error {worst}");
+    // And the error falls with N (second order: ×16 per ×4 in N; assert ×4).
+    let s2 = solver(1.0, 100);
+    let qn2: Vec<f64> = s2.nodes().iter().map(|&x| q(x)).collect();
+    let u2 = s2.apply_influence(&qn2);
+    let l2 = *s2.mesh().last().unwrap();
+    let mut worst100 = 0.0f64;
+    for (i, &x) in s2.nodes().iter().enumerate().step_by(9) {
+        let exact = kernel_quadrature(q, x, l2);
+        worst100 = worst100.max((u2[i] - exact).abs() / exact.abs());
+    }
+    assert!(worst < worst100 / 4.0, "N=400 {worst}, N=100 {worst100}");
+}
+
+#[test]
+fn newton_converges_quadratically() {
+    let s = solver(0.5, 128);
+    let r = s.solve_at_central_gap(0.98, None).unwrap();
+    assert!(r.iterations <= 8, "{} iterations", r.iterations);
+    assert!(r.residual <= 1e-10);
+    // From a converged neighbour: 2–3 iterations.
+    let r2 = s.solve_at_central_gap(0.975, Some(&r)).unwrap();
+    assert!(r2.iterations <= 4, "{} iterations", r2.iterations);
+}
+
+#[test]
+fn not_converged_is_an_error_with_residual() {
+    let sp = LjSphere::from_tabor(1.0).unwrap();
+    let mut o = LjOptions::default();
+    o.n_grid = 64;
+    o.max_iterations = 1;
+    let s = LjSolver::new(&sp, o).unwrap();
+    match s.solve_at_central_gap(0.95, None) {
+        Err(Error::NotConverged {
+            iterations,
+            residual,
+            ..
+        }) => {
+            assert_eq!(iterations, 1);
+            assert!(residual > 1e-10 && residual.is_finite());
+        }
+        other => panic!("expected NotConverged, got {other:?}"),
+    }
+}
+
+#[test]
+fn bad_inputs_are_rejected() {
+    assert!(LjSphere::new(-1.0, 1e9, 0.1, 1e-10).is_err());
+    assert!(LjSphere::new(1e-6, f64::NAN, 0.1, 1e-10).is_err());
+    assert!(LjSphere::new(1e-6, 1e9, 0.0, 1e-10).is_err());
+    assert!(LjSphere::new(1e-6, 1e9, 0.1, 0.0).is_err());
+    assert!(LjSphere::from_tabor(-0.1).is_err());
+    assert!(LjSphere::from_tabor(1e3).is_err());
+    let sp = LjSphere::from_tabor(1.0).unwrap();
+    assert!(sp.solver(8).is_err());
+    let mut o = LjOptions::default();
+    o.n_grid = 64;
+    o.tolerance = 0.0;
+    assert!(LjSolver::new(&sp, o).is_err());
+    let s = sp.solver(64).unwrap();
+    assert!(s.solve_at_central_gap(-1.0, None).is_err());
+    assert!(s.solve_at_approach(f64::INFINITY, None).is_err());
+    assert!(s.sweep(&[3.0, 3.5]).is_err());
+}
+
+#[test]
+fn pull_off_is_two_in_the_dmt_limit_and_above_maugis_dugdale() {
+    // μ → 0: 2; monotone decrease with μ; a few per cent above MD at λ = 1.157μ.
+    let mut prev = 2.0 + 1e-9;
+    for mu in [0.01, 0.1, 0.3, 1.0] {
+        let sp = LjSphere::from_tabor(mu).unwrap();
+        let po = sp.pull_off(128).unwrap();
+        let p = -po.force;
+        assert!(p < prev, "not monotone at μ = {mu}: {p} ≥ {prev}");
+        assert!(p > 1.5);
+        if mu >= 0.3 {
+            let lam = asperity::material::maugis_over_tabor() * mu;
+            let md = MaugisDugdale::from_maugis_parameter(1.0, 1.0, 1.0, lam).unwrap();
+            let pmd = -md.load_pull_off_point().p_bar;
+            let rel = (p - pmd) / pmd;
+            assert!(
+                rel > 0.0 && rel < 0.06,
+                "μ = {mu}: LJ {p} MD {pmd} rel {rel}"
+            );
+        }
+        prev = p;
+    }
+    let po = LjSphere::from_tabor(0.01).unwrap().pull_off(64).unwrap();
+    assert!((po.force + 2.0).abs() < 2e-3, "{}", po.force);
+}
+
+#[test]
+fn s_shape_present_at_mu_1_absent_at_mu_half() {
+    let mut o = LjOptions::default();
+    o.n_grid = 96;
+    o.target_points = 120;
+    o.max_force = 2.0;
+    let c = LjSolver::new(&LjSphere::from_tabor(1.0).unwrap(), o)
+        .unwrap()
+        .curve()
+        .unwrap();
+    let (ji, jo) = (c.jump_in.unwrap(), c.jump_out.unwrap());
+    assert!(ji.approach > jo.approach);
+    assert!(ji.central_gap > jo.central_gap);
+    assert!(c.hysteresis_energy > 0.0);
+    assert!(c.pull_off_displacement.unwrap() > c.pull_off_load.force);
+    assert!(c.max_residual <= 1e-8);
+    let c = LjSolver::new(&LjSphere::from_tabor(0.5).unwrap(), o)
+        .unwrap()
+        .curve()
+        .unwrap();
+    assert!(c.jump_in.is_none() && c.jump_out.is_none());
+    assert_eq!(c.hysteresis_energy, 0.0);
+    // Without S-shape ᾱ increases monotonically along decreasing h̄₀.
+    assert!(c
+        .points
+        .windows(2)
+        .all(|w| w[1].approach >= w[0].approach - 1e-12));
+}
+
+#[test]
+fn deep_indentation_tends_to_hertz() {
+    // μ = 0.3 (DMT-like): at ᾱ = 20 the Hertz force (4/(3π))μ^{-3/2}ᾱ^{3/2}
+    // = 312 dominates; the LJ force equals Hertz minus an adhesive offset of
+    // order 2 and a small correction from the compression of the LJ layer
+    // (h̄₀ < 1): within 2 % of Hertz − 2.
+    let mu: f64 = 0.3;
+    let s = solver(mu, 192);
+    for al in [10.0, 20.0] {
+        let r = s.solve_at_approach(al, None).unwrap();
+        let hertz = 4.0 / (3.0 * PI) * mu.powf(-1.5) * al.powf(1.5);
+        let rel = (r.force - (hertz - 2.0)) / hertz;
+        assert!(
+            rel.abs() < 0.02,
+            "ᾱ = {al}: {} vs Hertz {hertz}: {rel}",
+            r.force
+        );
+        // Contact radius ≈ √ᾱ (Hertz a² = Rδ).
+        assert!((r.contact_radius / al.sqrt() - 1.0).abs() < 0.1);
+    }
+}
+
+#[test]
+fn dimensional_wrapper_and_ffi() {
+    // R = 110 nm, E* = 407.5 GPa, Δγ = 7.409e-3 J/m², z₀ = 1.65 Å: μ = 0.020,
+    // pull-off close to 2πRΔγ = 5.121 nN.
+    let sp = LjSphere::new(110e-9, 4.075403e11, 7.40923e-3, 1.65e-10).unwrap();
+    assert!((sp.tabor() - 0.02008).abs() < 1e-4);
+    let f = sp.pull_off_force(64).unwrap();
+    assert!(f < 0.0 && (f / -5.121e-9 - 1.0).abs() < 0.02, "{f}");
+    let mut out = 0.0;
+    let st = unsafe {
+        asperity::ffi::lj_sphere::asperity_lj_sphere_pull_off(
+            110e-9,
+            4.075403e11,
+            7.40923e-3,
+            1.65e-10,
+            64,
+            &mut out,
+        )
+    };
+    assert_eq!(st, 0);
+    assert!((out - f).abs() < 1e-6 * f.abs());
+    let st = unsafe {
+        asperity::ffi::lj_sphere::asperity_lj_sphere_pull_off(
+            -1.0, 4.0e11, 7e-3, 1.65e-10, 64, &mut out,
+        )
+    };
+    assert!(st < 0);
+    let st = unsafe {
+        asperity::ffi::lj_sphere::asperity_lj_sphere_pull_off(
+            110e-9,
+            4.0e11,
+            7e-3,
+            1.65e-10,
+            64,
+            core::ptr::null_mut(),
+        )
+    };
+    assert!(st < 0);
+}
