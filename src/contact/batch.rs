@@ -144,3 +144,102 @@ pub fn eval_batch<L: NormalContact + ?Sized>(
     // distinct slices do not overlap.
     unsafe { law.eval_batch_raw(&b) }
 }
+
+/// A law whose response is a pure function of the overlap (no hysteresis).
+/// Its batch runs in chunks the compiler can vectorise: the chunk's responses
+/// are computed branch-free into local arrays, checked, then copied out.
+pub(crate) trait Pointwise: NormalContact {
+    /// Force (N), contact radius (m) and stiffness (N/m) at overlap `delta`
+    /// (m). Must be branch-free in spirit (selects, not early returns) and is
+    /// the single source of the law's scalar `eval` too, so batch and scalar
+    /// results agree bit for bit. Non-finite `delta` may give anything but a
+    /// panic.
+    fn point(&self, delta: f64) -> (f64, f64, f64);
+}
+
+/// Batch kernel of a [`Pointwise`] law. Same contract and results as
+/// [`eval_elementwise`]; on a non-finite input or output in a chunk, the
+/// element loop takes over from the chunk's start so the error index and the
+/// partial writes are exactly the element loop's.
+///
+/// # Safety
+/// The pointers of `b` must satisfy the contract of [`RawBatch`].
+#[inline]
+pub(crate) unsafe fn eval_pointwise<L: Pointwise>(
+    law: &L,
+    b: &RawBatch,
+) -> core::result::Result<(), BatchError> {
+    const CHUNK: usize = 64;
+    let mut d = [0.0f64; CHUNK];
+    let mut f = [0.0f64; CHUNK];
+    let mut a = [0.0f64; CHUNK];
+    let mut k = [0.0f64; CHUNK];
+    let mut start = 0;
+    while start < b.n {
+        let m = (b.n - start).min(CHUNK);
+        for (j, dj) in d.iter_mut().enumerate().take(m) {
+            *dj = b.delta.add(start + j).read();
+        }
+        let mut finite = true;
+        for j in 0..m {
+            let (fj, aj, kj) = law.point(d[j]);
+            f[j] = fj;
+            a[j] = aj;
+            k[j] = kj;
+            finite &= d[j].is_finite() & fj.is_finite() & aj.is_finite() & kj.is_finite();
+        }
+        if !finite {
+            let rest = RawBatch {
+                n: b.n - start,
+                delta: b.delta.add(start),
+                old_state: if b.old_state.is_null() {
+                    b.old_state
+                } else {
+                    b.old_state.add(start)
+                },
+                new_state: if b.new_state.is_null() {
+                    b.new_state
+                } else {
+                    b.new_state.add(start)
+                },
+                force: b.force.add(start),
+                contact_radius: if b.contact_radius.is_null() {
+                    b.contact_radius
+                } else {
+                    b.contact_radius.add(start)
+                },
+                stiffness: if b.stiffness.is_null() {
+                    b.stiffness
+                } else {
+                    b.stiffness.add(start)
+                },
+            };
+            return eval_elementwise(law, &rest).map_err(|e| BatchError {
+                index: e.index + start,
+                error: e.error,
+            });
+        }
+        for j in 0..m {
+            b.force.add(start + j).write(f[j]);
+        }
+        if !b.contact_radius.is_null() {
+            for j in 0..m {
+                b.contact_radius.add(start + j).write(a[j]);
+            }
+        }
+        if !b.stiffness.is_null() {
+            for j in 0..m {
+                b.stiffness.add(start + j).write(k[j]);
+            }
+        }
+        if !b.new_state.is_null() {
+            for j in 0..m {
+                b.new_state
+                    .add(start + j)
+                    .write(super::stateless(f[j], d[j], a[j], k[j]).1);
+            }
+        }
+        start += m;
+    }
+    Ok(())
+}

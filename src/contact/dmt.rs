@@ -7,9 +7,10 @@
 //! Pull-off is `−2πwR` under both controls. The limit λ → 0 of
 //! [`super::MaugisDugdale`].
 
+use super::batch::{eval_pointwise, Pointwise};
 use super::{
-    check_delta, check_force, stateless, ContactState, Control, Hertz, NormalContact,
-    NormalResponse,
+    check_delta, check_force, stateless, BatchError, ContactState, Control, Hertz, NormalContact,
+    NormalResponse, RawBatch,
 };
 use crate::error::{check, Result};
 use core::f64::consts::PI;
@@ -51,15 +52,32 @@ impl Dmt {
     }
 }
 
+impl Pointwise for Dmt {
+    /// Hertz minus `2πwR` for δ ≥ 0, zero below (selected, not branched).
+    #[inline]
+    fn point(&self, delta: f64) -> (f64, f64, f64) {
+        let touching = delta >= 0.0;
+        let (f, a, k) = self.hertz().at_overlap(if touching { delta } else { 0.0 });
+        let f = if touching {
+            f - self.adhesive_force()
+        } else {
+            0.0
+        };
+        (f, a, k)
+    }
+}
+
 impl NormalContact for Dmt {
     #[inline]
     fn eval(&self, delta: f64, _old: &ContactState) -> Result<(NormalResponse, ContactState)> {
         let delta = check_delta(delta)?;
-        if delta < 0.0 {
-            return Ok(stateless(0.0, delta, 0.0, 0.0));
-        }
-        let (f, a, k) = self.hertz().at_overlap(delta);
-        Ok(stateless(f - self.adhesive_force(), delta, a, k))
+        let (f, a, k) = self.point(delta);
+        Ok(stateless(f, delta, a, k))
+    }
+
+    #[inline]
+    unsafe fn eval_batch_raw(&self, b: &RawBatch) -> core::result::Result<(), BatchError> {
+        eval_pointwise(self, b)
     }
 
     fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {

@@ -4,8 +4,10 @@
 //! [`crate::material::no_slip_factor`]). The stiffness is constant while in
 //! contact. The adhesive version is [`super::Kendall`].
 
+use super::batch::{eval_pointwise, Pointwise};
 use super::{
-    check_delta, check_force, stateless, ContactState, Control, NormalContact, NormalResponse,
+    check_delta, check_force, stateless, BatchError, ContactState, Control, NormalContact,
+    NormalResponse, RawBatch,
 };
 use crate::error::{check, Result};
 use crate::material::no_slip_factor;
@@ -43,19 +45,29 @@ impl FlatPunch {
     }
 }
 
+impl Pointwise for FlatPunch {
+    /// `(2E*aδ·C, a, 2E*a·C)` for δ ≥ 0, zero below (selected, not branched).
+    #[inline]
+    fn point(&self, delta: f64) -> (f64, f64, f64) {
+        if delta >= 0.0 {
+            (self.stiffness * delta, self.radius, self.stiffness)
+        } else {
+            (0.0, 0.0, 0.0)
+        }
+    }
+}
+
 impl NormalContact for FlatPunch {
     #[inline]
     fn eval(&self, delta: f64, _old: &ContactState) -> Result<(NormalResponse, ContactState)> {
         let delta = check_delta(delta)?;
-        if delta < 0.0 {
-            return Ok(stateless(0.0, delta, 0.0, 0.0));
-        }
-        Ok(stateless(
-            self.stiffness * delta,
-            delta,
-            self.radius,
-            self.stiffness,
-        ))
+        let (f, a, k) = self.point(delta);
+        Ok(stateless(f, delta, a, k))
+    }
+
+    #[inline]
+    unsafe fn eval_batch_raw(&self, b: &RawBatch) -> core::result::Result<(), BatchError> {
+        eval_pointwise(self, b)
     }
 
     fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {

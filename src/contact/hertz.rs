@@ -9,8 +9,10 @@
 //! (2-19)) the same law describes a sphere unloading from its own plastic
 //! crater.
 
+use super::batch::{eval_pointwise, Pointwise};
 use super::{
-    check_delta, check_force, stateless, ContactState, Control, NormalContact, NormalResponse,
+    check_delta, check_force, stateless, BatchError, ContactState, Control, NormalContact,
+    NormalResponse, RawBatch,
 };
 use crate::error::{check, Error, Result};
 
@@ -73,15 +75,25 @@ impl Hertz {
     }
 }
 
+impl Pointwise for Hertz {
+    /// Zero out of contact (δ ≤ 0), selected rather than branched on.
+    #[inline]
+    fn point(&self, delta: f64) -> (f64, f64, f64) {
+        self.at_overlap(if delta > 0.0 { delta } else { 0.0 })
+    }
+}
+
 impl NormalContact for Hertz {
     #[inline]
     fn eval(&self, delta: f64, _old: &ContactState) -> Result<(NormalResponse, ContactState)> {
         let delta = check_delta(delta)?;
-        if delta <= 0.0 {
-            return Ok(stateless(0.0, delta, 0.0, 0.0));
-        }
-        let (f, a, k) = self.at_overlap(delta);
+        let (f, a, k) = self.point(delta);
         Ok(stateless(f, delta, a, k))
+    }
+
+    #[inline]
+    unsafe fn eval_batch_raw(&self, b: &RawBatch) -> core::result::Result<(), BatchError> {
+        eval_pointwise(self, b)
     }
 
     fn eval_at_load(&self, force: f64) -> Result<NormalResponse> {
