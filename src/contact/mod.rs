@@ -185,20 +185,14 @@ macro_rules! dispatch {
             NormalLaw::FlatPunch($law) => $e,
             NormalLaw::Dmt($law) => $e,
             NormalLaw::Jkr($law) => $e,
-            NormalLaw::JkrPowerPunch($law) => outlined(|| $e),
+            NormalLaw::JkrPowerPunch($law) => $e,
             NormalLaw::Kendall($law) => $e,
-            NormalLaw::MaugisDugdale($law) => outlined(|| $e),
-            NormalLaw::Derjaguin($law) => outlined(|| $e),
+            NormalLaw::MaugisDugdale($law) => $e,
+            NormalLaw::Derjaguin($law) => $e,
         }
     };
 }
 
-/// Keeps the iterative laws (hundreds of ns, large stack frames) out of the
-/// dispatcher, so the closed-form laws dispatch without their frame cost.
-#[inline(never)]
-fn outlined<R>(f: impl FnOnce() -> R) -> R {
-    f()
-}
 
 /// `NormalLaw` adds one guarantee to the laws it dispatches to: an `Ok`
 /// response is finite (an overflow at an extreme overlap or load becomes
