@@ -274,22 +274,6 @@ fn in_contact(force: f64, delta: f64, a: f64, stiffness: f64) -> NormalResponse 
     }
 }
 
-/// Response and state of a step that ends out of contact.
-#[inline]
-pub(crate) fn out_of_contact(delta: f64) -> (NormalResponse, ContactState) {
-    (
-        NormalResponse {
-            force: 0.0,
-            delta,
-            contact_radius: 0.0,
-            stiffness: 0.0,
-            in_contact: 0,
-            reserved: 0,
-        },
-        ContactState::default(),
-    )
-}
-
 /// The state after a step that ends in contact on the stable branch.
 #[inline]
 pub(crate) fn contact_state(r: &NormalResponse) -> ContactState {
@@ -313,7 +297,7 @@ impl NormalContact for Jkr {
             delta >= 0.0
         };
         if !stays {
-            return Ok(out_of_contact(delta));
+            return Ok(super::out_of_contact(delta));
         }
         let r = self.on_branch(delta);
         Ok((r, contact_state(&r)))

@@ -64,7 +64,8 @@
 //! Hysteresis under displacement control is that of [`super::Jkr`]: jump-in at
 //! δ = 0 to the stable branch, jump-out below the minimum δ_c of δ(a).
 
-use super::jkr::{contact_state, out_of_contact};
+use super::jkr::contact_state;
+use super::out_of_contact;
 use super::power_punch::{check_shape, galin_c, galin_d};
 use super::{check_delta, check_force, ContactState, Control, NormalContact, NormalResponse};
 use crate::error::{check, Error, Result};

@@ -19,7 +19,8 @@
 //! down to δ_c inclusive, and below δ_c it jumps out (force 0,
 //! `in_contact = 0`).
 
-use super::jkr::{contact_state, out_of_contact};
+use super::jkr::contact_state;
+use super::out_of_contact;
 use super::{check_delta, check_force, ContactState, Control, NormalContact, NormalResponse};
 use crate::error::{check, Result};
 use core::f64::consts::PI;

@@ -676,22 +676,6 @@ impl MaugisDugdale {
         let s2 = (1.5 / (lam * lam * a)).sqrt();
         s1.min(s2)
     }
-
-    /// Zero-force response and the separated (branch 0) state.
-    #[inline]
-    fn separated(delta: f64) -> (NormalResponse, ContactState) {
-        (
-            NormalResponse {
-                force: 0.0,
-                delta,
-                contact_radius: 0.0,
-                stiffness: 0.0,
-                in_contact: 0,
-                reserved: 0,
-            },
-            ContactState::default(),
-        )
-    }
 }
 
 #[inline]
@@ -746,7 +730,7 @@ impl NormalContact for MaugisDugdale {
             dh > 0.0
         };
         if !stays {
-            return Ok(Self::separated(delta));
+            return Ok(super::out_of_contact(delta));
         }
         let b = 8.0 * lam / (3.0 * PI);
         let c0 = self.c0_bar;

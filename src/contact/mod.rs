@@ -28,8 +28,8 @@ pub mod dmt;
 pub mod flat_punch;
 pub mod hertz;
 pub mod jkr;
-mod jkr_simd;
 pub mod jkr_power_punch;
+mod jkr_simd;
 pub mod kendall;
 pub mod lj_sphere;
 pub mod maugis_dugdale;
@@ -193,7 +193,6 @@ macro_rules! dispatch {
     };
 }
 
-
 /// `NormalLaw` adds one guarantee to the laws it dispatches to: an `Ok`
 /// response is finite (an overflow at an extreme overlap or load becomes
 /// [`Error::OutOfDomain`]).
@@ -268,6 +267,22 @@ pub(crate) fn stateless(
             in_contact,
             branch: 0,
         },
+    )
+}
+
+/// Response and state of a step that ends out of contact.
+#[inline]
+pub(crate) fn out_of_contact(delta: f64) -> (NormalResponse, ContactState) {
+    (
+        NormalResponse {
+            force: 0.0,
+            delta,
+            contact_radius: 0.0,
+            stiffness: 0.0,
+            in_contact: 0,
+            reserved: 0,
+        },
+        ContactState::default(),
     )
 }
 
