@@ -1,0 +1,296 @@
+//! The `asperity` command: run the library's models from a terminal.
+//!
+//! Built with `cargo build --release --features cli`. Every subcommand calls
+//! the public Rust API like any other user; tables go to stdout (or CSV/JSON
+//! files), plots to SVG.
+
+use asperity::contact::{Dmt, Jkr, LjSphere, MaugisDugdale, NormalContact};
+use asperity::{ContactState, Control};
+use clap::{Parser, Subcommand};
+use std::error::Error;
+use std::path::PathBuf;
+
+#[derive(Parser)]
+#[command(
+    name = "asperity",
+    version,
+    about = "Dry contact between rough surfaces"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// An adhesive sphere, SI units.
+#[derive(clap::Args, Clone, Copy)]
+struct Sphere {
+    /// Sphere radius R (m).
+    #[arg(long)]
+    radius: f64,
+    /// Contact modulus E* (Pa).
+    #[arg(long)]
+    e_star: f64,
+    /// Work of adhesion w (J/m²).
+    #[arg(long)]
+    work_of_adhesion: f64,
+    /// Lennard-Jones equilibrium separation z₀ (m).
+    #[arg(long, default_value_t = 0.3e-9)]
+    z0: f64,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Force–approach cycle of DMT, JKR and Maugis–Dugdale (λ = 1.157 μ) under
+    /// displacement control, and their pull-off forces.
+    Curve {
+        #[command(flatten)]
+        sphere: Sphere,
+        /// Points per direction.
+        #[arg(long, default_value_t = 200)]
+        points: usize,
+        /// Write the curves as CSV.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Write an SVG plot.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+    },
+    /// The numerical Lennard-Jones sphere: full force–approach curve, jump
+    /// points, pull-off and hysteresis.
+    Lj {
+        #[command(flatten)]
+        sphere: Sphere,
+        /// Radial cells (0 = the converged default).
+        #[arg(long, default_value_t = 0)]
+        grid: usize,
+        /// Write the curve as CSV.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Write an SVG plot.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+    },
+}
+
+fn main() {
+    if let Err(e) = run(Cli::parse()) {
+        eprintln!("asperity: {e}");
+        std::process::exit(1);
+    }
+}
+
+type Series = (String, Vec<(f64, f64)>);
+
+fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
+    match cli.command {
+        Command::Curve {
+            sphere: s,
+            points,
+            csv,
+            svg,
+        } => {
+            let md = MaugisDugdale::from_tabor(s.radius, s.e_star, s.work_of_adhesion, s.z0)?;
+            let dmt = Dmt::new(s.radius, s.e_star, s.work_of_adhesion)?;
+            let jkr = Jkr::new(s.radius, s.e_star, s.work_of_adhesion)?;
+            let scale = std::f64::consts::PI * s.radius * s.work_of_adhesion;
+            let len = md.length_scale();
+            let mu =
+                asperity::material::tabor_parameter(s.radius, s.work_of_adhesion, s.e_star, s.z0)?;
+            println!(
+                "Tabor mu = {mu:.5}, Maugis lambda = {:.5}, length scale = {len:.4e} m",
+                md.lambda()
+            );
+            println!(
+                "{:<16} {:>16} {:>16}",
+                "model", "P_c load / N", "P_c displ. / N"
+            );
+            for (name, l, d) in [
+                (
+                    "DMT",
+                    dmt.pull_off_force(Control::Load)?,
+                    dmt.pull_off_force(Control::Displacement)?,
+                ),
+                (
+                    "JKR",
+                    jkr.pull_off_force(Control::Load)?,
+                    jkr.pull_off_force(Control::Displacement)?,
+                ),
+                (
+                    "Maugis-Dugdale",
+                    md.pull_off_force(Control::Load)?,
+                    md.pull_off_force(Control::Displacement)?,
+                ),
+            ] {
+                println!("{name:<16} {l:>16.6e} {d:>16.6e}");
+            }
+            let lo = -3.0 * len - md.range();
+            let hi = 4.0 * len;
+            let path: Vec<f64> = (0..=points)
+                .map(|i| lo + (hi - lo) * i as f64 / points as f64)
+                .chain(
+                    (0..=points)
+                        .rev()
+                        .map(|i| lo + (hi - lo) * i as f64 / points as f64),
+                )
+                .collect();
+            let mut series: Vec<Series> = Vec::new();
+            series.push(("DMT".into(), cycle(&dmt, &path)?));
+            series.push(("JKR".into(), cycle(&jkr, &path)?));
+            series.push(("Maugis-Dugdale".into(), cycle(&md, &path)?));
+            if let Some(p) = csv {
+                write_csv(&p, &series, "delta_m", "force_N")?;
+            }
+            if let Some(p) = svg {
+                let norm: Vec<Series> = series
+                    .iter()
+                    .map(|(n, v)| {
+                        (
+                            n.clone(),
+                            v.iter().map(|&(d, f)| (d / len, f / scale)).collect(),
+                        )
+                    })
+                    .collect();
+                plot(
+                    &p,
+                    "Force-approach cycle",
+                    "approach / length scale",
+                    "force / (pi w R)",
+                    &norm,
+                )?;
+            }
+        }
+        Command::Lj {
+            sphere: s,
+            grid,
+            csv,
+            svg,
+        } => {
+            let lj = LjSphere::new(s.radius, s.e_star, s.work_of_adhesion, s.z0)?;
+            let bar = indicatif::ProgressBar::new_spinner();
+            bar.set_message(format!(
+                "solving the Lennard-Jones sphere, mu = {:.4}",
+                lj.tabor()
+            ));
+            bar.enable_steady_tick(std::time::Duration::from_millis(120));
+            let curve = lj.solver(grid)?.curve()?;
+            bar.finish_and_clear();
+            let fs = lj.force_scale();
+            println!("Tabor mu = {:.5}, grid {} cells, {} points, {} Newton iterations, max residual {:.2e}",
+                lj.tabor(), curve.n_grid, curve.points.len(), curve.iterations, curve.max_residual);
+            println!(
+                "pull-off (load control)         = {:.6e} N ({:.6} pi w R)",
+                curve.pull_off_load.force * fs,
+                curve.pull_off_load.force
+            );
+            if let Some(p) = curve.pull_off_displacement {
+                println!(
+                    "pull-off (displacement control) = {:.6e} N ({:.6} pi w R)",
+                    p * fs,
+                    p
+                );
+            }
+            if let (Some(i), Some(o)) = (curve.jump_in, curve.jump_out) {
+                println!(
+                    "jump-in at approach {:.5} z0, jump-out at {:.5} z0, hysteresis {:.5e} J",
+                    i.approach,
+                    o.approach,
+                    curve.hysteresis_energy * lj.energy_scale()
+                );
+            } else {
+                println!("no jumps: the curve is single-valued (mu below the S-curve onset)");
+            }
+            let pts: Vec<(f64, f64)> = curve.points.iter().map(|p| (p.approach, p.force)).collect();
+            let series = vec![("Lennard-Jones".to_string(), pts)];
+            if let Some(p) = csv {
+                let dim: Vec<Series> = vec![(
+                    "Lennard-Jones".into(),
+                    curve
+                        .points
+                        .iter()
+                        .map(|p| (p.approach * s.z0, p.force * fs))
+                        .collect(),
+                )];
+                write_csv(&p, &dim, "approach_m", "force_N")?;
+            }
+            if let Some(p) = svg {
+                plot(
+                    &p,
+                    "Lennard-Jones sphere",
+                    "approach / z0",
+                    "force / (pi w R)",
+                    &series,
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Forces along a displacement-controlled path, keeping the law's state.
+fn cycle<L: NormalContact>(law: &L, path: &[f64]) -> Result<Vec<(f64, f64)>, asperity::Error> {
+    let mut state = ContactState::default();
+    path.iter()
+        .map(|&d| {
+            let (r, s) = law.eval(d, &state)?;
+            state = s;
+            Ok((d, r.force))
+        })
+        .collect()
+}
+
+fn write_csv(path: &PathBuf, series: &[Series], x: &str, y: &str) -> std::io::Result<()> {
+    use std::io::Write;
+    let mut f = std::io::BufWriter::new(std::fs::File::create(path)?);
+    writeln!(f, "model,step,{x},{y}")?;
+    for (name, pts) in series {
+        for (i, (a, b)) in pts.iter().enumerate() {
+            writeln!(f, "{name},{i},{a:.10e},{b:.10e}")?;
+        }
+    }
+    Ok(())
+}
+
+fn plot(
+    path: &PathBuf,
+    title: &str,
+    x: &str,
+    y: &str,
+    series: &[Series],
+) -> Result<(), Box<dyn Error>> {
+    use plotters::prelude::*;
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for (_, pts) in series {
+        for &(a, b) in pts {
+            x0 = x0.min(a);
+            x1 = x1.max(a);
+            y0 = y0.min(b);
+            y1 = y1.max(b);
+        }
+    }
+    let pad = 0.05 * (y1 - y0).max(1e-30);
+    let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 22))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(65)
+        .build_cartesian_2d(x0..x1, (y0 - pad)..(y1 + pad))?;
+    chart.configure_mesh().x_desc(x).y_desc(y).draw()?;
+    for (i, (name, pts)) in series.iter().enumerate() {
+        let color = Palette99::pick(i).to_rgba();
+        chart
+            .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))?
+            .label(name.as_str())
+            .legend(move |(a, b)| {
+                PathElement::new(vec![(a, b), (a + 20, b)], color.stroke_width(2))
+            });
+    }
+    chart
+        .configure_series_labels()
+        .border_style(BLACK)
+        .background_style(WHITE.mix(0.8))
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
