@@ -71,6 +71,96 @@
 // Surface law: exponential, `range` = decay length ℓ (m).
 #define ASPERITY_SURFACE_LAW_EXPONENTIAL 3
 
+// Segment label: not assigned.
+#define ASPERITY_SEGMENT_UNKNOWN 0
+
+// Segment label: approach (before contact).
+#define ASPERITY_SEGMENT_APPROACH 1
+
+// Segment label: loading.
+#define ASPERITY_SEGMENT_LOADING 2
+
+// Segment label: hold at peak.
+#define ASPERITY_SEGMENT_HOLD 3
+
+// Segment label: unloading from the peak.
+#define ASPERITY_SEGMENT_UNLOADING 4
+
+// Segment label: thermal-drift hold.
+#define ASPERITY_SEGMENT_DRIFT_HOLD 5
+
+// Segment label: final unloading after the drift hold.
+#define ASPERITY_SEGMENT_FINAL_UNLOADING 6
+
+// Indenter: Berkovich pyramid (ideal area 24.5 h_c², β = 1.05).
+#define ASPERITY_INDENTER_BERKOVICH 1
+
+// Indenter: Vickers pyramid (ideal area 24.5 h_c², β = 1.05).
+#define ASPERITY_INDENTER_VICKERS 2
+
+// Indenter: cube corner (ideal area 2.598 h_c², β = 1.05).
+#define ASPERITY_INDENTER_CUBE_CORNER 3
+
+// Indenter: cone of half-angle `cone_half_angle` (rad), β = 1.
+#define ASPERITY_INDENTER_CONE 4
+
+// Indenter: sphere of radius `sphere_radius` (m), d = 2, β = 1.
+#define ASPERITY_INDENTER_SPHERE 5
+
+// Indenter: not documented (Berkovich area and β assumed, flagged).
+#define ASPERITY_INDENTER_UNKNOWN 6
+
+// Loading-fit anchor: the maximum point of loading (thesis §3.6.1).
+#define ASPERITY_ANCHOR_MAX_POINT 0
+
+// Loading-fit anchor: the point `anchor_index`.
+#define ASPERITY_ANCHOR_INDEX 1
+
+// Loading-fit anchor: none (two-parameter regression).
+#define ASPERITY_ANCHOR_FREE 2
+
+// Flag bit: κ < 0 (outside the rescaling assumptions).
+#define ASPERITY_INDENT_FLAG_KAPPA_NEGATIVE (1 << 0)
+
+// Flag bit: κ > 1 (only densifying or hardening materials).
+#define ASPERITY_INDENT_FLAG_KAPPA_ABOVE_ONE (1 << 1)
+
+// Flag bit: d > 3 (implausibly blunt).
+#define ASPERITY_INDENT_FLAG_D_ABOVE_THREE (1 << 2)
+
+// Flag bit: d < 1 (sharper than a cone).
+#define ASPERITY_INDENT_FLAG_D_BELOW_ONE (1 << 3)
+
+// Flag bit: indenter and specimen both deformable with different κ.
+#define ASPERITY_INDENT_FLAG_BOTH_DEFORMABLE (1 << 4)
+
+// Flag bit: sharp indenter, outside the Hertz assumptions.
+#define ASPERITY_INDENT_FLAG_SHARP_INDENTER (1 << 5)
+
+// Flag bit: no usable unloading branch (no modulus, no hardness).
+#define ASPERITY_INDENT_FLAG_NO_UNLOADING (1 << 6)
+
+// Flag bit: few points in the fits.
+#define ASPERITY_INDENT_FLAG_FEW_POINTS (1 << 7)
+
+// Flag bit: loading branch not a power law (R² < 0.99).
+#define ASPERITY_INDENT_FLAG_POOR_LOADING_FIT (1 << 8)
+
+// Flag bit: unloading branch not a power law (R² < 0.99).
+#define ASPERITY_INDENT_FLAG_POOR_UNLOADING_FIT (1 << 9)
+
+// Flag bit: indenter undocumented, ideal Berkovich area assumed.
+#define ASPERITY_INDENT_FLAG_AREA_FUNCTION_ASSUMED (1 << 10)
+
+// Flag bit: se(κ) > 0.25.
+#define ASPERITY_INDENT_FLAG_KAPPA_POORLY_CONSTRAINED (1 << 11)
+
+// Flag bit: se(d) > d/4.
+#define ASPERITY_INDENT_FLAG_D_POORLY_CONSTRAINED (1 << 12)
+
+// Flag bit: E_r not below the indenter's modulus (no sample modulus).
+#define ASPERITY_INDENT_FLAG_MODULUS_EXCEEDS_INDENTER (1 << 13)
+
 // Weir surface energy prefactor `K = 1/((m−2)(n−2))` (the default).
 #define ASPERITY_WEIR_PLANE_SUM 0
 
@@ -356,6 +446,123 @@ typedef struct AsperityNormalResponse {
     int32_t reserved;
 } AsperityNormalResponse;
 
+// Options of `asperity_indentation_fit`. Fill with
+// `asperity_indentation_default_options` and change what you need.
+typedef struct AsperityIndentationOptions {
+    // One of `ASPERITY_INDENTER_*`.
+    int32_t indenter;
+    // One of `ASPERITY_ANCHOR_*`.
+    int32_t anchor;
+    // Nonzero: use the segment labels when given (default 1).
+    int32_t use_labels;
+    // Number of NanoSuite area coefficients in `area_coefficients` (0: the
+    // indenter's ideal area function).
+    int32_t n_area_coefficients;
+    // NanoSuite area coefficients, `A = C0 h_c² + C1 h_c + C2 h_c^{1/2} + …`
+    // with h_c in nm and A in nm².
+    double area_coefficients[8];
+    // Sphere radius (m), for `ASPERITY_INDENTER_SPHERE`.
+    double sphere_radius;
+    // Cone half-angle (rad), for `ASPERITY_INDENTER_CONE`.
+    double cone_half_angle;
+    // Nonzero: `known_d` is given (otherwise d is fitted; a sphere's d = 2).
+    int32_t has_known_d;
+    // Nonzero: `known_kappa` is given.
+    int32_t has_known_kappa;
+    // Known bluntness index d.
+    double known_d;
+    // Known hardening index κ.
+    double known_kappa;
+    // Anchor index, for `ASPERITY_ANCHOR_INDEX`.
+    size_t anchor_index;
+    // Indenter Young's modulus (Pa; default 1141e9, INFINITY for rigid).
+    double e_indenter;
+    // Indenter Poisson's ratio (default 0.07).
+    double nu_indenter;
+    // Sample Poisson's ratio (default 0.3).
+    double nu_sample;
+    // β (0: the indenter's, 1.05 pyramids, 1 axisymmetric).
+    double beta;
+    // ε of the contact depth (default 0.75).
+    double epsilon;
+    // Loading-fit load window, fractions of the anchor load (default 0.1, 1).
+    double loading_window[2];
+    // Unloading-fit load window, fractions of P_max (default 0.25, 0.95).
+    double unloading_window[2];
+} AsperityIndentationOptions;
+
+// Result of `asperity_indentation_fit` (SI units). Fields that need the
+// unloading branch are 0 when `has_unloading` is 0; `sample_modulus` is 0
+// when `has_sample_modulus` is 0. Never NaN.
+typedef struct AsperityIndentationResult {
+    // Hardening index κ.
+    double kappa;
+    // Standard error of κ.
+    double kappa_stderr;
+    // Bluntness index d.
+    double d;
+    // Standard error of d.
+    double d_stderr;
+    // Loading log–log slope m_l.
+    double loading_slope;
+    // Standard error of m_l.
+    double loading_slope_stderr;
+    // R² of the loading fit (in ln P).
+    double loading_r_squared;
+    // Unloading exponent m of `P = α(h − h_f)^m`.
+    double unloading_exponent;
+    // Standard error of m.
+    double unloading_exponent_stderr;
+    // Final depth h_f (m).
+    double final_depth;
+    // Standard error of h_f (m).
+    double final_depth_stderr;
+    // R² of the unloading fit (in P).
+    double unloading_r_squared;
+    // Peak load at the start of unloading (N).
+    double peak_load;
+    // Depth at the start of unloading (m).
+    double peak_depth;
+    // Unloading stiffness S (N/m).
+    double stiffness;
+    // Standard error of S (N/m).
+    double stiffness_stderr;
+    // Contact depth h_c (m).
+    double contact_depth;
+    // Projected contact area (m²).
+    double contact_area;
+    // Reduced modulus E_r (Pa), Oliver–Pharr with β.
+    double reduced_modulus;
+    // Standard error of E_r (Pa).
+    double reduced_modulus_stderr;
+    // BASh reduced modulus (β = 1) (Pa).
+    double reduced_modulus_bash;
+    // Sample Young's modulus (Pa).
+    double sample_modulus;
+    // Standard error of the sample modulus (Pa).
+    double sample_modulus_stderr;
+    // Hardness P_max/A (Pa).
+    double hardness;
+    // Standard error of H (Pa).
+    double hardness_stderr;
+    // Points in the loading fit.
+    size_t n_loading_points;
+    // Points in the unloading fit.
+    size_t n_unloading_points;
+    // Loading segment `[start, end)`.
+    size_t loading_range[2];
+    // Unloading segment `[start, end)`.
+    size_t unloading_range[2];
+    // `ASPERITY_INDENT_FLAG_*` bits.
+    uint32_t flags;
+    // 1 when the unloading branch was analysed.
+    int32_t has_unloading;
+    // 1 when a sample modulus could be computed.
+    int32_t has_sample_modulus;
+    // 1 when the segments came from the labels.
+    int32_t segments_from_labels;
+} AsperityIndentationResult;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -509,6 +716,120 @@ int32_t asperity_pull_off_force(const struct AsperityNormalLaw *law,
 // tolerances.
 int32_t asperity_law_length_scale(const struct AsperityNormalLaw *law,
                                   double *length);
+
+// Fill `options` with the defaults: Berkovich, ideal area, anchor at the
+// maximum point, labels used, diamond indenter (1141 GPa, 0.07), sample
+// ν = 0.3, β by indenter, ε = 0.75, windows 0.1–1 (loading) and 0.25–0.95
+// (unloading).
+int32_t asperity_indentation_default_options(struct AsperityIndentationOptions *options);
+
+// Fit a measured load–depth curve: `n` points of `depth` (m) and `load` (N),
+// optional `segments` (`ASPERITY_SEGMENT_*` per point, NULL to detect them),
+// `options` (NULL for the defaults). Writes κ, d with standard errors, the
+// Oliver–Pharr modulus and hardness and the validity flags into `result`
+// (see `indentation::analyze`). Errors: NULL pointers, n < 3, non-finite
+// values, unknown labels or selectors, no loading branch, d or κ not
+// identifiable (`ASPERITY_ERR_OUT_OF_DOMAIN`, with a message).
+int32_t asperity_indentation_fit(size_t n,
+                                 const double *depth,
+                                 const double *load,
+                                 const int32_t *segments,
+                                 const struct AsperityIndentationOptions *options,
+                                 struct AsperityIndentationResult *result);
+
+// The code of flag bit `bit` (0-based, e.g. `"kappa_above_one"` for bit 1) as
+// a static NUL-terminated string; NULL for a bit without a flag. Do not free.
+const char *asperity_indentation_flag_name(uint32_t bit);
+
+// Depth (m) at load `load` (N) by Borodich rescaling (3-13):
+// `δ = λ^{(2−κ)/s} (P/P₁)^{d/s} δ₁`, `s = 2 + κ(d − 1)`, from the known point
+// (P₁, δ₁); λ = B/B₁ (spheres R₁/R, cones tan γ₁/tan γ).
+int32_t asperity_rescaling_depth(double kappa,
+                                 double d,
+                                 double lambda,
+                                 double load,
+                                 double known_load,
+                                 double known_depth,
+                                 double *depth);
+
+// Contact radius (m) at load `load` (N) by rescaling (3-14):
+// `a = λ^{−κ/s} (P/P₁)^{1/s} a₁`.
+int32_t asperity_rescaling_radius(double kappa,
+                                  double d,
+                                  double lambda,
+                                  double load,
+                                  double known_load,
+                                  double known_radius,
+                                  double *radius);
+
+// Load (N) at depth `depth` (m) by rescaling (3-24):
+// `P = λ^{(κ−2)/d} (δ/δ₁)^{s/d} P₁`.
+int32_t asperity_rescaling_load(double kappa,
+                                double d,
+                                double lambda,
+                                double depth,
+                                double known_load,
+                                double known_depth,
+                                double *load);
+
+// λ for spheres, `R₁/R` (3-15).
+int32_t asperity_rescaling_lambda_spheres(double known_radius,
+                                          double radius,
+                                          double *lambda);
+
+// λ for cones, `tan γ₁/tan γ` (3-16), half-angles in rad.
+int32_t asperity_rescaling_lambda_cones(double known_half_angle,
+                                        double half_angle,
+                                        double *lambda);
+
+// κ from the loading log–log slope and d: `κ = (d m_l − 2)/(d − 1)`
+// ((3-20), (3-26)); out of domain for a cone (d = 1).
+int32_t asperity_rescaling_kappa_from_slope(double loading_slope,
+                                            double d,
+                                            double *kappa);
+
+// d from the elastic unloading slope: `d = 1/(m_u − 1)`, m_u > 1.
+int32_t asperity_rescaling_d_from_unloading_slope(double unloading_slope,
+                                                  double *d);
+
+// d from the loading slope and a known κ: `d = (2 − κ)/(m_l − κ)`.
+int32_t asperity_rescaling_d_from_loading_slope(double loading_slope,
+                                                double kappa,
+                                                double *d);
+
+// Galanov effective unloading radius (3-22): `R₂ = R₁ (P₂/P₁)² (δ₁/δ₂)³`.
+int32_t asperity_galanov_unloading_radius(double r1,
+                                          double p1,
+                                          double delta1,
+                                          double p2,
+                                          double delta2,
+                                          double *r2);
+
+// Radius of the deformed medium (3-23): `R_medium = R R₂/(R₂ − R)`, R₂ > R.
+int32_t asperity_galanov_medium_radius(double radius,
+                                       double unloading_radius,
+                                       double *medium_radius);
+
+// Brinell hardness (2-7), `2P/(πD(D − √(D² − d²)))` (Pa).
+int32_t asperity_hardness_brinell(double load,
+                                  double ball_diameter,
+                                  double imprint_diameter,
+                                  double *hardness);
+
+// Meyer hardness (2-8), `4P/(πd²)` (Pa).
+int32_t asperity_hardness_meyer(double load,
+                                double imprint_diameter,
+                                double *hardness);
+
+// Ludwik hardness (2-10), `4P/(√2 π d²)` (Pa).
+int32_t asperity_hardness_ludwik(double load,
+                                 double imprint_diameter,
+                                 double *hardness);
+
+// Vickers hardness (2-12), `2P sin 68°/d²` (Pa), mean diagonal d.
+int32_t asperity_hardness_vickers(double load,
+                                  double mean_diagonal,
+                                  double *hardness);
 
 // Load-controlled pull-off force (N, negative: tensile) of an elastic sphere
 // of radius `radius` (m) and contact modulus `e_star` (Pa) under the

@@ -20,6 +20,7 @@
 //!   Maugis parameters.
 //! * [`contact`]: the laws, one file each, all implementing
 //!   [`contact::NormalContact`].
+//! * [`rescaling`] and [`indentation`]: Borodich rescaling, Galanov shapes, κ and d from measured curves, Oliver–Pharr, hardness numbers.
 //! * [`error`]: the error type; every fallible call returns
 //!   [`error::Result`].
 //! * `ffi`: the C ABI (thin translation only; see `include/asperity.h`).
@@ -36,7 +37,9 @@
 pub mod contact;
 pub mod error;
 pub mod ffi;
+pub mod indentation;
 pub mod material;
+pub mod rescaling;
 
 pub use contact::{Control, ContactState, NormalContact, NormalLaw, NormalResponse};
 pub use error::{Error, Result};

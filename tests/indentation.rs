@@ -1,0 +1,588 @@
+//! Indentation analysis: synthetic curves with known κ, d, E*, H; the measured
+//! curves of `../shared/data/indentation` (skipped with a reason when absent);
+//! hardness numbers; extremes (κ → 0, κ = 1, d → 1, large d, noise, negative
+//! depths, non-monotonic loading, too few points, a single segment).
+
+use approx::assert_relative_eq;
+use asperity::indentation::*;
+use asperity::Error;
+use std::path::PathBuf;
+
+fn data_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/data/indentation")
+}
+
+/// Read a data file, or print why the test is skipped and return None.
+fn data(name: &str) -> Option<Curve> {
+    let p = data_dir().join(name);
+    if !p.exists() {
+        println!(
+            "SKIPPED: {} is not present (measured data live outside the project)",
+            p.display()
+        );
+        return None;
+    }
+    Some(Curve::read(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display())))
+}
+
+/// Deterministic pseudo-random noise in [−1, 1].
+fn noise(i: usize, seed: u64) -> f64 {
+    let mut x = (i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ seed;
+    x ^= x >> 33;
+    x = x.wrapping_mul(0xff51_afd7_ed55_8ccd);
+    x ^= x >> 33;
+    (x as f64 / u64::MAX as f64) * 2.0 - 1.0
+}
+
+/// A synthetic test: loading `P = P₁(h/h₁)^{(2+κ(d−1))/d}` to (h₁, P₁), a hold,
+/// then elastic unloading `P = α(h − h_f)^{(d+1)/d}` with the stiffness that a
+/// reduced modulus `er` gives on the quadratic area `c0 h_c²` (β = 1).
+struct Synthetic {
+    curve: Curve,
+    h_f: f64,
+}
+
+fn synthetic(kappa: f64, d: f64, er: f64, c0: f64, n: usize, rel_noise: f64) -> Synthetic {
+    let (h1, p1) = (1e-6, 0.1);
+    let ml = (2.0 + kappa * (d - 1.0)) / d;
+    let m = (d + 1.0) / d;
+    // Choose S from E_r and A(h_c) consistently: solve h_c = h1 − 0.75 P1/S,
+    // S = 2 E_r √(A/π) by fixed point.
+    let mut s = 2.0 * er * (c0 * h1 * h1 / std::f64::consts::PI).sqrt();
+    for _ in 0..200 {
+        let hc = h1 - 0.75 * p1 / s;
+        s = 2.0 * er * (c0 * hc * hc / std::f64::consts::PI).sqrt();
+    }
+    let h_f = h1 - m * p1 / s;
+    let alpha = p1 / (h1 - h_f).powf(m);
+    let mut depth = Vec::new();
+    let mut load = Vec::new();
+    let mut seg = Vec::new();
+    for i in 1..=n {
+        let h = h1 * i as f64 / n as f64;
+        depth.push(h);
+        load.push(p1 * (h / h1).powf(ml) * (1.0 + rel_noise * noise(i, 1)));
+        seg.push(Segment::Loading);
+    }
+    for _ in 0..5 {
+        depth.push(h1);
+        load.push(p1);
+        seg.push(Segment::Hold);
+    }
+    for i in 1..=n {
+        let pp = p1 * (1.0 - 0.95 * i as f64 / n as f64);
+        let h = h_f + (pp / alpha).powf(1.0 / m);
+        depth.push(h);
+        load.push(pp * (1.0 + rel_noise * noise(i, 2)));
+        seg.push(Segment::Unloading);
+    }
+    Synthetic {
+        curve: Curve::new(depth, load).unwrap().with_segments(seg).unwrap(),
+        h_f,
+    }
+}
+
+fn quadratic(c0: f64) -> IndentationOptions {
+    IndentationOptions {
+        area: Some(AreaFunction::Quadratic { c0 }),
+        beta: Some(1.0),
+        e_indenter: f64::INFINITY,
+        ..Default::default()
+    }
+}
+
+#[test]
+fn synthetic_curve_recovers_kappa_d_modulus() {
+    for (kappa, d) in [
+        (0.3, 2.0),
+        (1.25, 4.17),
+        (0.8, 1.5),
+        (1.0, 3.0),
+        (0.05, 2.5),
+    ] {
+        let s = synthetic(kappa, d, 70e9, 24.5, 400, 0.0);
+        let r = analyze(&s.curve, &quadratic(24.5)).unwrap();
+        assert_relative_eq!(r.d, d, max_relative = 1e-5);
+        assert_relative_eq!(r.kappa, kappa, epsilon = 1e-5);
+        let op = r.unloading.as_ref().unwrap();
+        assert_relative_eq!(op.fit.final_depth, s.h_f, max_relative = 1e-6);
+        assert_relative_eq!(r.reduced_modulus.unwrap(), 70e9, max_relative = 1e-5);
+        assert!(
+            r.kappa_stderr < 1e-5 && r.d_stderr < 1e-4,
+            "{kappa} {d}: {} {}",
+            r.kappa_stderr,
+            r.d_stderr
+        );
+        // Rigid indenter: the sample modulus is E_r (1 − ν²).
+        assert_relative_eq!(
+            r.sample_modulus.unwrap(),
+            70e9 * (1.0 - 0.09),
+            max_relative = 1e-5
+        );
+        assert_eq!(r.flags.contains(&"kappa_above_one"), kappa > 1.0);
+        assert_eq!(r.flags.contains(&"d_above_three"), d > 3.0);
+        assert!(r.flags.contains(&"sharp_indenter"));
+    }
+}
+
+#[test]
+fn noisy_curve_gives_honest_uncertainty() {
+    let (kappa, d) = (0.5, 2.0);
+    let s = synthetic(kappa, d, 100e9, 24.5, 300, 0.01);
+    let r = analyze(&s.curve, &quadratic(24.5)).unwrap();
+    // Within 4 standard errors, and the errors are not zero.
+    assert!(r.kappa_stderr > 0.0 && r.d_stderr > 0.0);
+    assert!(
+        (r.kappa - kappa).abs() < 4.0 * r.kappa_stderr + 1e-3,
+        "κ = {} ± {}",
+        r.kappa,
+        r.kappa_stderr
+    );
+    assert!(
+        (r.d - d).abs() < 4.0 * r.d_stderr + 1e-3,
+        "d = {} ± {}",
+        r.d,
+        r.d_stderr
+    );
+    let er = r.reduced_modulus.unwrap();
+    let se = r.reduced_modulus_stderr.unwrap();
+    assert!(
+        se > 0.0 && (er - 100e9).abs() < 4.0 * se + 1e7,
+        "E_r = {er} ± {se}"
+    );
+    let json = r.to_json();
+    assert!(!json.contains("NaN") && !json.contains("null,\"hardness"));
+}
+
+#[test]
+fn sphere_takes_d_equal_two_and_gives_kappa() {
+    // Taljat-like: κ = 0.112 on a sphere.
+    let s = synthetic(0.112, 2.0, 150e9, 1.0, 200, 0.0);
+    let opts = IndentationOptions {
+        indenter: Indenter::Sphere { radius: 0.788e-3 },
+        e_indenter: f64::INFINITY,
+        ..Default::default()
+    };
+    let r = analyze(&s.curve, &opts).unwrap();
+    assert_eq!(r.d, 2.0);
+    assert_eq!(r.d_stderr, 0.0);
+    assert_relative_eq!(r.loading.slope, 1.056, epsilon = 1e-9);
+    assert_relative_eq!(r.kappa, 0.112, epsilon = 1e-9);
+    assert!(!r.flags.contains(&"sharp_indenter"));
+}
+
+#[test]
+fn readers() {
+    let csv = "# comment\n# more\ntime_s,depth_m,load_N,segment\n0,1e-9,1e-6,loading\n1,2e-9,3e-6,unloading\n";
+    let c = Curve::parse(csv).unwrap();
+    assert_eq!(c.depth, vec![1e-9, 2e-9]);
+    assert_eq!(c.load, vec![1e-6, 3e-6]);
+    assert_eq!(
+        c.segments.as_ref().unwrap(),
+        &vec![Segment::Loading, Segment::Unloading]
+    );
+    assert_eq!(c.time.as_ref().unwrap(), &vec![0.0, 1.0]);
+    let two = "# depth load\ndepth load\n1e-9 1e-6\n2e-9, 3e-6\n3e-9;4e-6\n";
+    let c = Curve::parse(two).unwrap();
+    assert_eq!(c.len(), 3);
+    assert!(c.segments.is_none());
+    assert!(matches!(
+        Curve::parse("1 2\nx y\n"),
+        Err(ReadError::Parse { line: 2, .. })
+    ));
+    assert!(matches!(
+        Curve::parse("time_s,depth_m,load_N,segment\n0,1,2,bogus\n"),
+        Err(ReadError::Parse { .. })
+    ));
+    assert!(matches!(
+        Curve::read("/nonexistent/file.csv"),
+        Err(ReadError::Io(_))
+    ));
+}
+
+#[test]
+fn hardness_numbers() {
+    // Meyer: 4P/(πd²); Ludwik = Meyer/√2; Vickers 1.8544 P/d².
+    assert_relative_eq!(
+        meyer_hardness(1.0, 1.0).unwrap(),
+        4.0 / std::f64::consts::PI
+    );
+    assert_relative_eq!(
+        ludwik_hardness(1.0, 1.0).unwrap(),
+        4.0 / std::f64::consts::PI / 2f64.sqrt()
+    );
+    assert_relative_eq!(vickers_hardness(1.0, 1.0).unwrap(), 1.854_4, epsilon = 1e-4);
+    // Brinell → Meyer for a shallow impression; at d = D it is the hemisphere.
+    let b = brinell_hardness(1.0, 10e-3, 1e-5).unwrap();
+    assert_relative_eq!(b, meyer_hardness(1.0, 1e-5).unwrap(), max_relative = 1e-6);
+    assert_relative_eq!(
+        brinell_hardness(1.0, 2.0, 2.0).unwrap(),
+        1.0 / (2.0 * std::f64::consts::PI)
+    );
+    assert!(brinell_hardness(1.0, 1.0, 2.0).is_err());
+    // BASh with β = 1: S = 2E*a.
+    let a = 1e-6;
+    let er =
+        reduced_modulus_from_stiffness(2.0 * 70e9 * a, std::f64::consts::PI * a * a, 1.0).unwrap();
+    assert_relative_eq!(er, 70e9, max_relative = 1e-12);
+    assert_relative_eq!(sample_modulus(70e9, 0.0, f64::INFINITY, 0.0).unwrap(), 70e9);
+    assert!(sample_modulus(2000e9, 0.2, 1141e9, 0.07).is_err());
+}
+
+// ---------------------------------------------------------------------------
+// Measured data
+
+struct Case {
+    file: &'static str,
+    nu_sample: f64,
+    indenter: Indenter,
+    area: Option<Vec<f64>>,
+    instrument: Option<(f64, f64)>,
+}
+
+fn cases() -> Vec<Case> {
+    vec![
+        Case {
+            file: "NiAl_berkovich_agilent_test001.csv",
+            nu_sample: 0.3,
+            indenter: Indenter::Berkovich,
+            area: Some(vec![27.3136, 152.6988585, -494.1823171]),
+            instrument: Some((140.55e9, 3.852e9)),
+        },
+        Case {
+            file: "fused_silica_berkovich_agilent_calibration_test001.csv",
+            nu_sample: 0.18,
+            indenter: Indenter::Berkovich,
+            area: Some(vec![27.3136, 152.6988585, -494.1823171]),
+            instrument: Some((76.318e9, 9.784e9)),
+        },
+        Case {
+            file: "fused_silica_berkovich_XP_test001.csv",
+            nu_sample: 0.18,
+            indenter: Indenter::Berkovich,
+            area: Some(vec![24.6954, 395.7700812, -16.13158277]),
+            instrument: Some((76.015e9, 9.817e9)),
+        },
+        Case {
+            file: "steel_hysitron_RobinSteel0000LC.csv",
+            nu_sample: 0.3,
+            indenter: Indenter::Unknown,
+            area: None,
+            instrument: None,
+        },
+    ]
+}
+
+fn options(c: &Case) -> IndentationOptions {
+    IndentationOptions {
+        indenter: c.indenter,
+        area: c
+            .area
+            .clone()
+            .map(|coefficients| AreaFunction::NanoSuite { coefficients }),
+        nu_sample: c.nu_sample,
+        ..Default::default()
+    }
+}
+
+#[test]
+fn measured_curves_table() {
+    println!(
+        "{:<56} {:>16} {:>16} {:>16} {:>16} {:>16} {:>8} {:>8}  flags",
+        "file", "kappa", "d", "E_r GPa", "E GPa", "H GPa", "m", "h_f nm"
+    );
+    for c in cases() {
+        let Some(curve) = data(c.file) else { continue };
+        let r = analyze(&curve, &options(&c)).unwrap_or_else(|e| panic!("{}: {e}", c.file));
+        let op = r.unloading.as_ref().expect("unloading");
+        println!(
+            "{:<56} {:>7.3} ± {:<6.3} {:>7.3} ± {:<6.3} {:>7.2} ± {:<6.2} {:>7.2} ± {:<6.2} {:>7.3} ± {:<6.3} {:>8.3} {:>8.1}  {}",
+            c.file,
+            r.kappa,
+            r.kappa_stderr,
+            r.d,
+            r.d_stderr,
+            r.reduced_modulus.unwrap() / 1e9,
+            r.reduced_modulus_stderr.unwrap() / 1e9,
+            r.sample_modulus.unwrap_or(0.0) / 1e9,
+            r.sample_modulus_stderr.unwrap_or(0.0) / 1e9,
+            r.hardness.unwrap() / 1e9,
+            r.hardness_stderr.unwrap() / 1e9,
+            op.fit.exponent,
+            op.fit.final_depth * 1e9,
+            r.flags.join(",")
+        );
+        println!(
+            "    loading slope {:.4} ± {:.4} (R² {:.5}, n {}), unloading R² {:.6} n {}, S = {:.4e} N/m, h_c = {:.1} nm, A = {:.4e} m², E_r(BASh) = {:.2} GPa, P_max = {:.4e} N, h_max = {:.1} nm, segments {:?}",
+            r.loading.slope,
+            r.loading.slope_stderr,
+            r.loading.r_squared,
+            r.loading.n_points,
+            op.fit.r_squared,
+            op.fit.n_points,
+            op.stiffness,
+            op.contact_depth * 1e9,
+            op.contact_area,
+            op.reduced_modulus_bash / 1e9,
+            op.peak_load,
+            op.peak_depth * 1e9,
+            r.segmentation
+        );
+        if let Some((e, h)) = c.instrument {
+            println!(
+                "    instrument (CSM average 100-200 nm): E = {:.2} GPa, H = {:.3} GPa; ours/instrument: E {:.3}, H {:.3}",
+                e / 1e9,
+                h / 1e9,
+                r.sample_modulus.unwrap() / e,
+                r.hardness.unwrap() / h
+            );
+        }
+        // Detection without labels finds nearly the same segments.
+        let det = segment(&curve, false).unwrap();
+        println!("    detected segments {:?}", det);
+        let r2 = analyze(
+            &curve,
+            &IndentationOptions {
+                use_labels: false,
+                ..options(&c)
+            },
+        )
+        .unwrap();
+        println!(
+            "    unlabelled: kappa {:.3} ± {:.3}, d {:.3} ± {:.3}, E_r {:.2} GPa, H {:.3} GPa",
+            r2.kappa,
+            r2.kappa_stderr,
+            r2.d,
+            r2.d_stderr,
+            r2.reduced_modulus.unwrap() / 1e9,
+            r2.hardness.unwrap() / 1e9
+        );
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Extremes: every case gives a finite result with an honest uncertainty or a
+// clear error.
+
+fn assert_finite(r: &IndentationResult) {
+    for v in [
+        r.kappa,
+        r.kappa_stderr,
+        r.d,
+        r.d_stderr,
+        r.loading.slope,
+        r.loading.slope_stderr,
+    ] {
+        assert!(v.is_finite(), "{v}");
+    }
+    for v in [r.reduced_modulus, r.hardness, r.sample_modulus]
+        .into_iter()
+        .flatten()
+    {
+        assert!(v.is_finite() && v > 0.0);
+    }
+    let json = r.to_json();
+    assert!(!json.contains("NaN") && !json.contains("inf"));
+}
+
+#[test]
+fn json_has_the_promised_fields() {
+    let s = synthetic(0.5, 2.0, 70e9, 24.5, 100, 0.0);
+    let r = analyze(&s.curve, &IndentationOptions::default()).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&r.to_json()).unwrap();
+    for k in [
+        "kappa",
+        "kappa_stderr",
+        "d",
+        "d_stderr",
+        "reduced_modulus",
+        "hardness",
+    ] {
+        assert!(v[k].is_number(), "{k} missing or not a number");
+    }
+    assert!(v["flags"].as_array().unwrap().iter().all(|f| f.is_string()));
+    assert!(v["flags"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|f| f == "sharp_indenter"));
+    assert_eq!(r.flag_mask() & (1 << 5), 1 << 5);
+}
+
+#[test]
+fn kappa_zero_and_one_and_d_extremes() {
+    for (kappa, d) in [
+        (0.0, 2.0),
+        (1.0, 2.0),
+        (0.5, 1.05),
+        (0.5, 20.0),
+        (1.0, 60.0),
+    ] {
+        let s = synthetic(kappa, d, 70e9, 24.5, 300, 0.0);
+        let r =
+            analyze(&s.curve, &quadratic(24.5)).unwrap_or_else(|e| panic!("κ {kappa} d {d}: {e}"));
+        assert_finite(&r);
+        assert!((r.d - d).abs() < 1e-3 * d, "κ {kappa} d {d}: got d {}", r.d);
+        assert!(
+            (r.kappa - kappa).abs() < 1e-3,
+            "κ {kappa} d {d}: got κ {}",
+            r.kappa
+        );
+    }
+    // d → 1 with noise: κ finite, its error large and flagged, never NaN.
+    let s = synthetic(0.5, 1.02, 70e9, 24.5, 300, 0.005);
+    let r = analyze(&s.curve, &quadratic(24.5)).unwrap();
+    assert_finite(&r);
+    assert!(
+        r.kappa_stderr > 0.25 && r.flags.contains(&"kappa_poorly_constrained"),
+        "{} ± {}",
+        r.kappa,
+        r.kappa_stderr
+    );
+    // A cone with d given exactly: κ is not identifiable: a clear error.
+    let opts = IndentationOptions {
+        known_d: Some(1.0),
+        ..quadratic(24.5)
+    };
+    assert!(matches!(
+        analyze(&s.curve, &opts),
+        Err(Error::OutOfDomain { name: "d", .. })
+    ));
+    // κ given instead: d from the loading slope.
+    let s = synthetic(0.3, 1.5, 70e9, 24.5, 300, 0.0);
+    let opts = IndentationOptions {
+        known_kappa: Some(0.3),
+        ..quadratic(24.5)
+    };
+    let r = analyze(&s.curve, &opts).unwrap();
+    assert_relative_eq!(r.d, 1.5, max_relative = 1e-6);
+    assert_eq!(r.d_source, Source::Loading);
+}
+
+#[test]
+fn negative_depths_and_non_monotonic_loading() {
+    let s = synthetic(0.4, 2.0, 70e9, 24.5, 300, 0.0);
+    let reference = analyze(&s.curve, &quadratic(24.5)).unwrap();
+    // Prepend an approach with negative depths and loads around zero.
+    let mut depth: Vec<f64> = (0..50).map(|i| -1e-8 + 2e-10 * i as f64).collect();
+    let mut load: Vec<f64> = (0..50).map(|i| 1e-7 * noise(i, 9)).collect();
+    let mut seg = vec![Segment::Approach; 50];
+    depth.extend(&s.curve.depth);
+    load.extend(&s.curve.load);
+    seg.extend(s.curve.segments.clone().unwrap());
+    let c = Curve::new(depth.clone(), load.clone())
+        .unwrap()
+        .with_segments(seg)
+        .unwrap();
+    let r = analyze(&c, &quadratic(24.5)).unwrap();
+    assert_relative_eq!(r.kappa, reference.kappa, epsilon = 1e-9);
+    // Unlabelled: the approach lands in the loading segment and is excluded
+    // from the logarithms (non-positive values).
+    let c = Curve::new(depth, load).unwrap();
+    let r = analyze(&c, &quadratic(24.5)).unwrap();
+    assert_finite(&r);
+    assert!((r.kappa - 0.4).abs() < 1e-3 && (r.d - 2.0).abs() < 1e-3);
+    // Non-monotonic loading: load dips (a pop-in and noise) in the loading branch.
+    let mut c = s.curve.clone();
+    for i in (100..300).step_by(7) {
+        c.load[i] *= 0.97;
+        c.depth[i] *= 1.01;
+    }
+    let r = analyze(&c, &quadratic(24.5)).unwrap();
+    assert_finite(&r);
+    assert!(r.kappa_stderr > 0.0 && (r.kappa - 0.4).abs() < 4.0 * r.kappa_stderr + 0.02);
+}
+
+#[test]
+fn too_few_points_and_single_segments() {
+    // Two points: an error.
+    let c = Curve::new(vec![1e-7, 2e-7], vec![1e-3, 3e-3]).unwrap();
+    assert!(matches!(
+        analyze(&c, &IndentationOptions::default()),
+        Err(Error::OutOfDomain { .. })
+    ));
+    assert!(analyze(&Curve::default(), &IndentationOptions::default()).is_err());
+    // Loading only, sharp indenter, nothing known: d cannot be found.
+    let h: Vec<f64> = (1..=50).map(|i| i as f64 * 1e-8).collect();
+    let p: Vec<f64> = h.iter().map(|x| 1e9 * x.powf(1.8)).collect();
+    let c = Curve::new(h.clone(), p.clone())
+        .unwrap()
+        .with_segments(vec![Segment::Loading; 50])
+        .unwrap();
+    let e = analyze(&c, &IndentationOptions::default()).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::OutOfDomain {
+                name: "unloading_points",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    // Loading only on a sphere: κ = 2m − 2 with no modulus, flagged.
+    let opts = IndentationOptions {
+        indenter: Indenter::Sphere { radius: 1e-5 },
+        ..Default::default()
+    };
+    let r = analyze(&c, &opts).unwrap();
+    assert_relative_eq!(r.kappa, 2.0 * 1.8 - 2.0, epsilon = 1e-9);
+    assert!(r.reduced_modulus.is_none() && r.flags.contains(&"no_unloading"));
+    assert_finite(&r);
+    // Unloading only: no loading branch.
+    let c = Curve::new(h, p)
+        .unwrap()
+        .with_segments(vec![Segment::Unloading; 50])
+        .unwrap();
+    assert!(matches!(
+        analyze(&c, &IndentationOptions::default()),
+        Err(Error::OutOfDomain {
+            name: "loading_points",
+            ..
+        })
+    ));
+    // Unloading with 4 points in the window: the fit refuses, the analysis
+    // reports no_unloading for a sphere.
+    let s = synthetic(0.4, 2.0, 70e9, 24.5, 6, 0.0);
+    let r = analyze(&s.curve, &opts).unwrap();
+    assert!(r.flags.contains(&"no_unloading") || r.unloading.as_ref().unwrap().fit.n_points >= 5);
+    // Invalid options are errors.
+    let bad = IndentationOptions {
+        nu_sample: 0.7,
+        ..Default::default()
+    };
+    assert!(analyze(&s.curve, &bad).is_err());
+    let bad = IndentationOptions {
+        unloading_window: [0.9, 0.5],
+        ..Default::default()
+    };
+    let s = synthetic(0.4, 2.0, 70e9, 24.5, 100, 0.0);
+    assert!(matches!(
+        analyze(&s.curve, &bad),
+        Err(Error::InvalidArgument {
+            name: "unloading_window",
+            ..
+        })
+    ));
+}
+
+#[test]
+fn measured_window_sensitivity() {
+    // The Oliver–Pharr numbers depend on the unloading window: print it.
+    for c in cases() {
+        let Some(curve) = data(c.file) else { continue };
+        for w in [[0.25, 0.95], [0.5, 0.95], [0.2, 1.0]] {
+            let o = IndentationOptions {
+                unloading_window: w,
+                ..options(&c)
+            };
+            let r = analyze(&curve, &o).unwrap();
+            let u = r.unloading.as_ref().unwrap();
+            println!(
+                "{:<56} window {:?}: m {:.3} ± {:.3}, d {:.2} ± {:.2}, E_r {:.2} GPa, E {:.2} GPa, H {:.3} GPa",
+                c.file, w, u.fit.exponent, u.fit.exponent_stderr, r.d, r.d_stderr,
+                r.reduced_modulus.unwrap() / 1e9, r.sample_modulus.unwrap_or(0.0) / 1e9, r.hardness.unwrap() / 1e9
+            );
+        }
+    }
+}
