@@ -1,7 +1,8 @@
 //! Convergence study of the numerical Lennard-Jones sphere (issue §3).
 //!
-//! `cargo run --release --example lj_convergence [NMAX]` (default NMAX = 1024;
-//! 4096 takes minutes: dense LU of order N).
+//! `cargo run --release --example lj_convergence [NMAX] [MU,MU,...]` (default
+//! NMAX = 1024 and μ ∈ {0.1, 1, 3}; 2048 and 4096 take minutes: dense LU of
+//! order N; the whole-curve norm stops at N = 1024).
 //!
 //! For each μ and N = 32, 64, …, NMAX it prints the load-controlled pull-off
 //! `P̄_c` (edge-concentrated mesh, [`LjSphere::pull_off`]), the successive
@@ -19,13 +20,17 @@ fn main() {
         .nth(1)
         .and_then(|s| s.parse().ok())
         .unwrap_or(1024);
+    let mus: Vec<f64> = std::env::args()
+        .nth(2)
+        .map(|s| s.split(',').filter_map(|v| v.parse().ok()).collect())
+        .unwrap_or_else(|| vec![0.1, 1.0, 3.0]);
     let mut ns = vec![];
     let mut n = 32;
     while n <= nmax {
         ns.push(n);
         n *= 2;
     }
-    for mu in [0.1, 1.0, 3.0] {
+    for &mu in &mus {
         let sp = LjSphere::from_tabor(mu).unwrap();
         let lam = asperity::material::maugis_over_tabor() * mu;
         let md = -MaugisDugdale::from_maugis_parameter(1.0, 1.0, 1.0, lam)

@@ -320,3 +320,27 @@ fn dimensional_wrapper_and_ffi() {
     };
     assert!(st < 0);
 }
+
+#[test]
+#[ignore = "release only: about 3 s in release (cargo test --release --test lj_sphere -- --ignored)"]
+fn pull_off_at_mu_3_between_jkr_and_mu_1() {
+    // The pseudo-arclength continuation passes the fold of h̄₀ (≈ 1.02 at
+    // ᾱ ≈ −5) that stalled the central-gap continuation.
+    let p3 = -LjSphere::from_tabor(3.0)
+        .unwrap()
+        .pull_off(256)
+        .unwrap()
+        .force;
+    let p1 = -LjSphere::from_tabor(1.0)
+        .unwrap()
+        .pull_off(256)
+        .unwrap()
+        .force;
+    assert!(p3 < p1 && p3 > 1.5, "μ = 3: {p3}, μ = 1: {p1}");
+    let lam = asperity::material::maugis_over_tabor() * 3.0;
+    let md = -MaugisDugdale::from_maugis_parameter(1.0, 1.0, 1.0, lam)
+        .unwrap()
+        .load_pull_off_point()
+        .p_bar;
+    assert!(p3 > md && p3 < 1.06 * md, "LJ {p3} MD {md}");
+}

@@ -67,32 +67,73 @@
 //! faer's partial-pivoting LU, steps capped at 0.5 in `ln h̄` and a
 //! backtracking line search on `‖F‖₂`. Single solves
 //! ([`LjSolver::solve_at_central_gap`], [`LjSolver::solve_at_approach`])
-//! refactor every iteration (quadratic convergence); the continuation
-//! ([`LjSolver::curve`], [`LjSolver::sweep`]) keeps the factorisation while
-//! the iteration contracts by at least 4× per step and refactors otherwise
-//! (chord–Newton), with a secant predictor from the previous two solutions.
-//! The residual is the max-norm of `F` in units of z₀; a solve stops below
-//! [`LjOptions::tolerance`] or returns [`Error::NotConverged`] with its
-//! iterations and residual, never a wrong number.
+//! refactor every iteration (quadratic convergence); [`LjSolver::sweep`]
+//! keeps the factorisation while the iteration contracts by at least 4× per
+//! step and refactors otherwise (chord–Newton). The residual is the max-norm
+//! of `F` in units of z₀; a solve stops below [`LjOptions::tolerance`] or
+//! returns [`Error::NotConverged`] with its iterations and residual, never a
+//! wrong number.
+//!
+//! # Pseudo-arclength continuation
+//!
+//! [`LjSolver::curve`] and [`LjSolver::pull_off_with`] follow the path in
+//! the unknowns `X = (y, ᾱ)` with one extra equation, the hyperplane
+//! `⟨T_k, X − X_k⟩_M = σ` normal to the unit tangent `T_k` of the last point
+//! (metric `M`: weight `1/N` on each log-gap, 1 on ᾱ). The bordered
+//! `(N+1)×(N+1)` system `[J 1; (M T_k)ᵀ]` is regular through the folds of
+//! both ᾱ (jump-in, jump-out) and h̄₀, and is factored by faer's LU; the
+//! factorisation is reused across steps (chord Newton) and the border row of
+//! the current step, which differs from the factored one, is applied by a
+//! rank-one Sherman–Morrison correction (one extra dot product per solve).
+//! The factorisation is refreshed when a solve contracted by less than a
+//! factor 0.08 per iteration. The tangent comes from the same
+//! factorisation (`[J 1; (M T_k)ᵀ] T = e_{N+1}`). The predictor is the
+//! quadratic extrapolation through the last three points in the path
+//! parameter. The step `σ` adapts to a target distance in the scaled
+//! `(ᾱ, P̄, h̄₀)` plane (about [`LjOptions::target_points`] points) and to a
+//! largest log-gap change of 0.1 per step. Special points — turning points
+//! of ᾱ (`dᾱ/ds = 0`) and the force minimum (`dP̄/ds = 0`, the derivative by
+//! central differences along the exact tangent) — are roots along the path,
+//! refined by the Illinois method in the step length from the bracketing
+//! sample, with exact tangents (fresh factorisations).
 //!
 //! # The curve
 //!
 //! [`LjSolver::curve`] starts far from the surface (where the rigid solution
-//! is an excellent guess) and marches `h̄₀` down with adaptive steps (a target
-//! arc length in the scaled `(ᾱ, P̄)` plane) until `P̄ ≥`
-//! [`LjOptions::max_force`] (the Hertz regime). Turning points of `ᾱ(h̄₀)`
-//! are the jump-in (local maximum of ᾱ: the approach can increase no
-//! further on the outer branch) and jump-out (local minimum: on retraction
-//! the contact branch ends); both and the load-controlled pull-off (minimum
-//! of `P̄`) are refined by golden-section search in `h̄₀` to 1e-7. The
-//! hysteresis energy is the area of the displacement-controlled loop (outer
+//! is an excellent guess, at prescribed h̄₀) and follows the path by
+//! pseudo-arclength continuation until `P̄ ≥` [`LjOptions::max_force`] (the
+//! Hertz regime). Turning points of ᾱ along the path are the jump-in (local
+//! maximum of ᾱ: the approach can increase no further on the outer branch)
+//! and jump-out (local minimum: on retraction the contact branch ends); both
+//! and the load-controlled pull-off (minimum of `P̄`) are refined as roots of
+//! `dᾱ/ds` and `dP̄/ds`. The hysteresis energy is the area of the
+//! displacement-controlled loop (outer
 //! branch up to the jump-in, jump at fixed ᾱ, contact branch back down to the
 //! jump-out, jump back), `∮ P̄ dᾱ` in units of `πRΔγ z₀`.
 
+// Index loops mirror the matrix algebra; options are built by field
+// assignment (documented pattern); NaN-aware `!(x < y)` is intended.
+#![allow(
+    clippy::needless_range_loop,
+    clippy::field_reassign_with_default,
+    clippy::neg_cmp_op_on_partial_ord
+)]
+
+use crate::contact::MaugisDugdale;
 use crate::error::{check, Error, Result};
 use core::f64::consts::PI;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::{MatMut, MatRef};
+
+mod path;
+use path::{BWork, State};
+
+/// Chord-Newton contraction factor above which the continuation refactors
+/// the Jacobian before the next step.
+const RHO_REFRESH: f64 = 0.15;
+
+/// Target of the largest log-gap change per continuation step.
+const DY_STEP: f64 = 0.1;
 
 /// `(8/3)` of the Lennard-Jones 3-9 law.
 const LJ_C: f64 = 8.0 / 3.0;
@@ -490,6 +531,17 @@ struct Work {
 }
 
 impl Work {
+    /// Without the n×n Jacobian (allocated on first use).
+    fn new_small(n: usize) -> Self {
+        let mut w = Self::new(0);
+        for v in [
+            &mut w.h, &mut w.p, &mut w.dp, &mut w.ap, &mut w.f, &mut w.d, &mut w.yt,
+        ] {
+            *v = vec![0.0; n];
+        }
+        w
+    }
+
     fn new(n: usize) -> Self {
         Self {
             h: vec![0.0; n],
@@ -759,6 +811,9 @@ impl LjSolver {
     fn factor(&self, gap_mode: bool, w: &mut Work) -> bool {
         let n = self.n();
         let k = self.k;
+        if w.jac.len() != n * n {
+            w.jac = vec![0.0; n * n];
+        }
         for j in 0..n {
             let qj = k * w.dp[j] * w.h[j];
             let col = &self.a[j * n..(j + 1) * n];
@@ -890,17 +945,33 @@ impl LjSolver {
     /// Central gap, approach, force and contact radius of the state in `w`
     /// (after a converged `residual`).
     fn observe(&self, mode: Mode, w: &Work) -> (f64, f64, f64, f64) {
-        let n = self.n();
-        let k = self.k;
-        let u0 = -k * (dot(&self.a0, &w.p) + self.tail0);
+        let u0 = -self.k * (dot(&self.a0, &w.p) + self.tail0);
         let (h0, al) = match mode {
             Mode::Gap(h0) => (h0, 1.0 + u0 - h0),
             Mode::Approach(al) => (1.0 + u0 - al, al),
         };
+        let (force, a) = self.force_radius(&w.h, &w.p, h0);
+        (h0, al, force, a)
+    }
+
+    /// Central gap, force and contact radius at log-gaps `y` and approach
+    /// `al` (not necessarily an equilibrium; for derivatives along a path).
+    fn observe_y(&self, y: &[f64], al: f64) -> (f64, f64, f64) {
+        let h: Vec<f64> = y.iter().map(|v| v.exp()).collect();
+        let p: Vec<f64> = h.iter().map(|&v| lj_pressure(v).0).collect();
+        let h0 = 1.0 - self.k * (dot(&self.a0, &p) + self.tail0) - al;
+        let (f, a) = self.force_radius(&h, &p, h0);
+        (h0, f, a)
+    }
+
+    /// Force (NaN where the grid does not resolve the edge zone) and contact
+    /// radius of the gaps `h`, pressures `p` at the nodes and central gap `h0`.
+    fn force_radius(&self, h: &[f64], p: &[f64], h0: f64) -> (f64, f64) {
+        let n = self.n();
         // Force: Gauss on cells with quadratic w̄ = h − r²/2, plus the tail.
         let mut s = 0.0;
         for &(r, wr, i0, l) in &self.quad {
-            let wb = |i: usize| w.h[i] - 0.5 * self.mesh.x[i] * self.mesh.x[i];
+            let wb = |i: usize| h[i] - 0.5 * self.mesh.x[i] * self.mesh.x[i];
             let (w0, w1, w2) = (wb(i0), wb(i0 + 1), wb(i0 + 2));
             // Quadratic, limited to the range of its nodes (no overshoot
             // where an unresolved edge zone makes the profile jump).
@@ -910,7 +981,7 @@ impl LjSolver {
         }
         let l = self.opts.outer_radius;
         let xl = self.mesh.x[n - 1];
-        let hl = 0.5 * l * l + (w.h[n - 1] - 0.5 * xl * xl);
+        let hl = 0.5 * l * l + (h[n - 1] - 0.5 * xl * xl);
         let tail = -(16.0 / 3.0) * (0.5 * hl.powi(-2) - 0.125 * hl.powi(-8));
         let mut force = -2.0 * s + tail;
         // Resolution check: the cell-sum force of the piecewise-constant
@@ -918,26 +989,77 @@ impl LjSolver {
         // a resolved grid; by O(1) when the edge zone, of width ~μ^{-3/2},
         // falls between nodes; 10 % flags the latter).
         let cells: f64 = (0..n)
-            .map(|j| w.p[j] * (self.mesh.c[j + 1].powi(2) - self.mesh.c[j].powi(2)))
+            .map(|j| p[j] * (self.mesh.c[j + 1].powi(2) - self.mesh.c[j].powi(2)))
             .sum();
         if (-cells + tail - force).abs() > 0.1 * force.abs().max(1.0) {
             force = f64::NAN;
         }
-        // Contact radius: first crossing of h = 1 from the centre.
-        let mut a = 0.0;
-        if h0 < 1.0 {
-            let (mut rp, mut hp) = (0.0, h0);
-            for i in 0..n {
-                let (r, h) = (self.mesh.x[i], w.h[i]);
-                if h >= 1.0 {
-                    a = rp + (r - rp) * (1.0 - hp) / (h - hp);
-                    break;
+        (force, self.contact_radius_of(h, h0))
+    }
+
+    /// Contact radius: the first root of `h̄(r) = 1` from the centre, on the
+    /// C¹ piecewise-cubic Hermite interpolant of `w̄ = h̄ − r²/2` through the
+    /// centre (`h̄₀`, slope 0) and the nodes (slopes of the local parabolas),
+    /// so that it varies continuously differentiably along the path (also
+    /// when the root crosses a node); 0 when `h̄₀ ≥ 1`.
+    fn contact_radius_of(&self, h: &[f64], h0: f64) -> f64 {
+        if !(h0 < 1.0) {
+            return 0.0;
+        }
+        let n = self.n();
+        let x = &self.mesh.x;
+        // Node k: k = 0 is the centre, k ≥ 1 is node k − 1.
+        let r = |k: usize| if k == 0 { 0.0 } else { x[k - 1] };
+        let wv = |k: usize| {
+            if k == 0 {
+                h0
+            } else {
+                h[k - 1] - 0.5 * x[k - 1] * x[k - 1]
+            }
+        };
+        let slope = |k: usize| {
+            if k == 0 {
+                return 0.0;
+            }
+            let km = k - 1;
+            let kp = (k + 1).min(n);
+            if kp == k {
+                return (wv(k) - wv(km)) / (r(k) - r(km));
+            }
+            deriv3([r(km), r(k), r(kp)], [wv(km), wv(k), wv(kp)], r(k))
+        };
+        for k in 0..n {
+            let (ra, rb) = (r(k), r(k + 1));
+            let (ha, hb) = (wv(k) + 0.5 * ra * ra - 1.0, wv(k + 1) + 0.5 * rb * rb - 1.0);
+            if ha < 0.0 && hb >= 0.0 {
+                let (ma, mb) = (slope(k), slope(k + 1));
+                let (wa, wb) = (wv(k), wv(k + 1));
+                let d = rb - ra;
+                let f = |t: f64| {
+                    let rr = ra + t * d;
+                    hermite01(wa, ma * d, wb, mb * d, t) + 0.5 * rr * rr - 1.0
+                };
+                // Bisection to full precision (the cubic is cheap).
+                let (mut lo, mut hi) = (0.0f64, 1.0f64);
+                for _ in 0..60 {
+                    let mid = 0.5 * (lo + hi);
+                    if f(mid) < 0.0 {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
                 }
-                rp = r;
-                hp = h;
+                // One secant polish.
+                let (flo, fhi) = (f(lo), f(hi));
+                let t = if fhi != flo {
+                    (lo - flo * (hi - lo) / (fhi - flo)).clamp(lo, hi)
+                } else {
+                    0.5 * (lo + hi)
+                };
+                return ra + t * d;
             }
         }
-        (h0, al, force, a)
+        0.0
     }
 
     fn rigid_guess(&self, h0: f64) -> Vec<f64> {
@@ -1131,123 +1253,224 @@ impl LjSolver {
     /// The whole force–approach curve (see the module documentation).
     pub fn curve(&self) -> Result<LjCurve> {
         let o = self.opts;
-        let mut m = Marcher::start(self, o.start_gap)?;
-        let mut pts = vec![m.point()?];
-        let mut ys = vec![m.y.clone()];
-        // Scales of the (ᾱ, P̄) plane for the arc-length step.
-        let al_end = (0.75 * PI * (o.max_force.max(0.0) + 2.0)).powf(2.0 / 3.0) * self.mu.max(0.05);
-        let sa = o.start_gap + al_end;
-        let sp = o.max_force.max(0.0) + 2.5;
-        let ds_target = 2.2 / o.target_points.max(10) as f64;
-        // Last step in (h̄₀, ᾱ); the first one goes down in h̄₀.
-        let mut step = (-0.01 * o.start_gap, 0.0f64);
+        let (states, mut bw) = self.path_march(o.max_force, o.target_points, &|_| false)?;
+        self.finish_path(states, &mut bw)
+    }
+
+    /// Scales of the `(ᾱ, P̄)` plane for the step control.
+    fn plane_scales(&self, max_force: f64) -> (f64, f64) {
+        let o = &self.opts;
+        let al_end = (0.75 * PI * (max_force.max(0.0) + 2.0)).powf(2.0 / 3.0) * self.mu.max(0.05);
+        (o.start_gap + al_end, max_force.max(0.0) + 2.5)
+    }
+
+    /// Pseudo-arclength march from the start gap until `P̄ ≥ max_force` or
+    /// `stop(states)`, with steps adapted to about `target` points along the
+    /// scaled `(ᾱ, P̄, h̄₀)` path (chord Newton, factorisations reused).
+    fn path_march(
+        &self,
+        max_force: f64,
+        target: usize,
+        stop: &dyn Fn(&[State]) -> bool,
+    ) -> Result<(Vec<State>, BWork)> {
+        let o = self.opts;
+        let mut bw = BWork::new(self.n());
+        let st0 = self.path_start(o.start_gap, &mut bw, false)?;
+        let (sa, sp) = self.plane_scales(max_force);
+        let ds_target = 2.2 / target.max(10) as f64;
+        let qdist = |a: &LjPoint, b: &LjPoint| {
+            (((a.approach - b.approach) / sa).powi(2)
+                + ((a.force - b.force) / sp).powi(2)
+                + ((a.central_gap - b.central_gap) / sa).powi(2))
+            .sqrt()
+        };
+        let mut states = vec![st0];
+        let mut sigma = 0.01 * o.start_gap;
         let mut guard = 0usize;
+        let mut fails = 0u32;
         loop {
             guard += 1;
-            if guard > 50 * o.target_points.max(10) {
-                return Err(Error::NotConverged {
-                    what: "LJ sphere curve continuation (too many steps)",
-                    iterations: m.w.iterations.min(u32::MAX as u64) as u32,
-                    residual: m.w.max_residual,
-                });
-            }
-            let last = *pts.last().unwrap();
-            if last.force >= o.max_force {
+            let last = states.last().unwrap();
+            if last.pt.force >= max_force || stop(&states) {
                 break;
             }
-            if last.central_gap + step.0 < 0.05 {
+            if guard > 50 * target.max(10) {
+                return Err(Error::NotConverged {
+                    what: "LJ sphere curve continuation (too many steps)",
+                    iterations: bw.w.iterations.min(u32::MAX as u64) as u32,
+                    residual: bw.w.max_residual,
+                });
+            }
+            if last.h0 < 0.05 {
                 return Err(Error::OutOfDomain {
                     name: "max_force",
-                    value: o.max_force,
+                    value: max_force,
                     reason: "not reached before the central gap fell below 0.05 z0",
                 });
             }
-            m.advance(step)?;
-            let p = m.point()?;
-            let ds = (((p.approach - last.approach) / sa).powi(2)
-                + ((p.force - last.force) / sp).powi(2)
-                + ((p.central_gap - last.central_gap) / sa).powi(2))
-            .sqrt();
-            if ds > 3.0 * ds_target {
-                // Too long a step: go back and retry shorter.
-                let y_last = ys.last().unwrap().clone();
-                m.set(&last, &y_last);
-                let f = (0.8 * ds_target / ds).max(0.05);
-                step = (f * step.0, f * step.1);
-                continue;
+            // Quadratic extrapolation through the last three states (in the
+            // path parameter) as the predictor; the tangent alone at first.
+            let guess = if states.len() >= 3 && fails == 0 {
+                let k = states.len();
+                let (a, b, c) = (&states[k - 3], &states[k - 2], &states[k - 1]);
+                let x = c.s + sigma;
+                let w0 = (x - b.s) * (x - c.s) / ((a.s - b.s) * (a.s - c.s));
+                let w1 = (x - a.s) * (x - c.s) / ((b.s - a.s) * (b.s - c.s));
+                let w2 = (x - a.s) * (x - b.s) / ((c.s - a.s) * (c.s - b.s));
+                if w0.is_finite() && w1.is_finite() && w2.is_finite() {
+                    let y = (0..self.n())
+                        .map(|i| w0 * a.y[i] + w1 * b.y[i] + w2 * c.y[i])
+                        .collect();
+                    Some((y, w0 * a.al + w1 * b.al + w2 * c.al))
+                } else {
+                    None
+                }
+            } else {
+                None
+            };
+            // Chord Newton: refresh the factorisation when the last solve
+            // contracted poorly (cheaper than the extra iterations).
+            if bw.rho > RHO_REFRESH {
+                bw.invalidate();
             }
-            pts.push(p);
-            ys.push(m.y.clone());
-            let f = if ds > 0.0 { ds_target / ds } else { 2.0 };
-            let f = f.clamp(0.5, 2.0);
-            step = (
-                f * (p.central_gap - last.central_gap),
-                f * (p.approach - last.approach),
-            );
-            // Never more than a fifth of the remaining central gap at once.
-            let cap = 0.2 * p.central_gap;
-            if step.0.abs() > cap {
-                let g = cap / step.0.abs();
-                step = (g * step.0, g * step.1);
+            match self.path_step(last, sigma, guess, &mut bw, false) {
+                Err(e) => {
+                    if is_unresolved(&e) {
+                        // Smaller steps cannot help an under-resolved grid.
+                        return Err(e);
+                    }
+                    bw.invalidate();
+                    sigma *= 0.5;
+                    fails += 1;
+                    if fails > 40 || sigma < 1e-12 {
+                        return Err(e);
+                    }
+                }
+                Ok(st) => {
+                    // Distance in the scaled (ᾱ, P̄, h̄₀) plane, and the
+                    // largest change of a log-gap (the profile must not
+                    // move by more than ~DY_STEP per step, or Newton leaves
+                    // its basin where the contact forms).
+                    let ds = qdist(&last.pt, &st.pt);
+                    let dy =
+                        st.y.iter()
+                            .zip(&last.y)
+                            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+                    let ratio = (ds / ds_target).max(dy / DY_STEP);
+                    if ratio > 3.0 {
+                        sigma *= (0.8 / ratio).max(0.05);
+                        continue;
+                    }
+                    fails = 0;
+                    let f = if ratio > 0.0 { 1.0 / ratio } else { 2.0 };
+                    sigma *= f.clamp(0.5, 2.0);
+                    states.push(st);
+                }
             }
         }
-        self.finish_curve(pts, ys, m)
+        Ok((states, bw))
     }
 
-    fn finish_curve(
+    /// The state `st` again, with its tangent and derivatives exact.
+    fn exactify(&self, st: &State, bw: &mut BWork) -> Result<State> {
+        let mut y = st.y.clone();
+        let mut al = st.al;
+        self.bnewton(&path::Con::Approach(st.al), &mut y, &mut al, bw, true)?;
+        let t = self.tangent(bw, &st.t, true)?;
+        self.make_state(&y, al, t, st.s, bw, true)
+    }
+
+    /// Refine the root of `phi` in the sample interval `[i, i + 1]` of
+    /// `states` (or a neighbouring interval when the exact signs say so).
+    fn refine_between(
         &self,
-        mut pts: Vec<LjPoint>,
-        mut ys: Vec<Vec<f64>>,
-        mut m: Marcher<'_>,
-    ) -> Result<LjCurve> {
-        // Turning points of ᾱ(h̄₀): sign changes of Δᾱ along the curve.
-        let mut turns: Vec<(usize, bool)> = Vec::new(); // (index of the extreme sample, is_max)
-        for i in 1..pts.len() - 1 {
-            let d1 = pts[i].approach - pts[i - 1].approach;
-            let d2 = pts[i + 1].approach - pts[i].approach;
-            if d1 > 0.0 && d2 <= 0.0 {
+        states: &[State],
+        i: usize,
+        bw: &mut BWork,
+        phi: &dyn Fn(&State) -> f64,
+    ) -> Result<State> {
+        let n = states.len();
+        let mut cands = vec![i];
+        if i > 0 {
+            cands.push(i - 1);
+        }
+        if i + 2 < n {
+            cands.push(i + 1);
+        }
+        for a in cands {
+            let l = self.exactify(&states[a], bw)?;
+            let r = self.exactify(&states[a + 1], bw)?;
+            if phi(&l) * phi(&r) <= 0.0 {
+                return self.path_root(&l, &r, bw, phi);
+            }
+        }
+        self.exactify(&states[i], bw)
+    }
+
+    /// The sample interval holding the force minimum: `[i−1, i]` or `[i, i+1]`
+    /// around the smallest sample `i` (by the parabola through the three).
+    fn min_interval(states: &[State]) -> Option<usize> {
+        let n = states.len();
+        let i = (0..n).min_by(|&a, &b| states[a].pt.force.total_cmp(&states[b].pt.force))?;
+        if i == 0 || i + 1 >= n {
+            return None;
+        }
+        Some(if states[i - 1].pt.force < states[i + 1].pt.force {
+            i - 1
+        } else {
+            i
+        })
+    }
+
+    fn finish_path(&self, states: Vec<State>, bw: &mut BWork) -> Result<LjCurve> {
+        let n_al = self.n();
+        let ta = |s: &State| s.t[n_al];
+        // Turning points of ᾱ along the path: sign changes of dᾱ/ds.
+        let mut turns: Vec<(usize, bool)> = Vec::new();
+        for i in 0..states.len() - 1 {
+            let (a, b) = (ta(&states[i]), ta(&states[i + 1]));
+            if a > 0.0 && b <= 0.0 {
                 turns.push((i, true));
-            } else if d1 < 0.0 && d2 >= 0.0 && !turns.is_empty() {
+            } else if a < 0.0 && b >= 0.0 && !turns.is_empty() {
                 turns.push((i, false));
             }
         }
+        let mut extra: Vec<State> = Vec::new();
         let mut jump_in = None;
         let mut jump_out = None;
         if turns.len() >= 2 && turns[0].1 && !turns[1].1 {
-            let (i1, i2) = (turns[0].0, turns[1].0);
-            let t1 = m.refine(&pts, &ys, i1, true, |p| -p.approach)?;
-            let t2 = m.refine(&pts, &ys, i2, true, |p| p.approach)?;
-            jump_in = Some(t1);
-            jump_out = Some(t2);
+            let t1 = self.refine_between(&states, turns[0].0, bw, &ta)?;
+            let t2 = self.refine_between(&states, turns[1].0, bw, &ta)?;
+            jump_in = Some(t1.pt);
+            jump_out = Some(t2.pt);
+            extra.push(t1);
+            extra.push(t2);
         }
-        // Load-controlled pull-off.
-        let imin = (0..pts.len())
-            .min_by(|&a, &b| pts[a].force.total_cmp(&pts[b].force))
-            .unwrap();
-        let po = if imin > 0 && imin + 1 < pts.len() {
-            {
-                let dh = (pts[imin + 1].central_gap - pts[imin - 1].central_gap).abs();
-                let da = (pts[imin + 1].approach - pts[imin - 1].approach).abs();
-                m.refine(&pts, &ys, imin, dh >= da, |p| p.force)?
+        let po = match Self::min_interval(&states) {
+            Some(i) => {
+                let p = self.refine_between(&states, i, bw, &|s| s.df)?;
+                extra.push(p.clone());
+                p.pt
             }
-        } else {
-            pts[imin]
+            None => {
+                states
+                    .iter()
+                    .min_by(|a, b| a.pt.force.total_cmp(&b.pt.force))
+                    .unwrap()
+                    .pt
+            }
         };
-        // Insert refined points, keep the order by decreasing h̄₀.
-        for q in [jump_in, jump_out, Some(po)].into_iter().flatten() {
-            let pos = pts
-                .iter()
-                .position(|p| p.central_gap < q.central_gap)
-                .unwrap_or(pts.len());
-            if pos > 0 && pts[pos - 1].central_gap == q.central_gap {
+        let mut all = states;
+        for e in extra {
+            let pos = all.iter().position(|p| p.s > e.s).unwrap_or(all.len());
+            if pos > 0 && all[pos - 1].s == e.s {
                 continue;
             }
-            pts.insert(pos, q);
-            ys.insert(pos, Vec::new());
+            all.insert(pos, e);
         }
-        // Stiffness dP̄/dᾱ by 3-point differences in h̄₀.
-        let n = pts.len();
-        let mut st = vec![0.0; n];
+        // Stiffness dP̄/dᾱ by 3-point differences along the path.
+        let n = all.len();
+        let mut pts: Vec<LjPoint> = all.iter().map(|s| s.pt).collect();
         for i in 0..n {
             let (a, b, c) = if i == 0 {
                 (0, 1, 2)
@@ -1256,23 +1479,26 @@ impl LjSolver {
             } else {
                 (i - 1, i, i + 1)
             };
-            let xs = [pts[a].central_gap, pts[b].central_gap, pts[c].central_gap];
-            let x = pts[i].central_gap;
+            let xs = [all[a].s, all[b].s, all[c].s];
+            let x = all[i].s;
             let dfa = deriv3(xs, [pts[a].force, pts[b].force, pts[c].force], x);
             let daa = deriv3(xs, [pts[a].approach, pts[b].approach, pts[c].approach], x);
-            st[i] = dfa / daa;
+            pts[i].stiffness = if all[i].df.is_finite() {
+                all[i].df / all[i].t[n_al]
+            } else {
+                dfa / daa
+            };
         }
-        for (p, s) in pts.iter_mut().zip(st) {
-            p.stiffness = s;
-        }
-        let find = |q: &LjPoint| pts.iter().position(|p| p.central_gap == q.central_gap);
+        let find = |q: &LjPoint| {
+            pts.iter().position(|p| {
+                p == q || (p.central_gap == q.central_gap && p.approach == q.approach)
+            })
+        };
         let mut hyst = 0.0;
         let mut pull_disp = None;
         if let (Some(t1), Some(t2)) = (jump_in, jump_out) {
             let (i1, i2) = (find(&t1).unwrap(), find(&t2).unwrap());
-            // Outer branch: from where ᾱ = ᾱ_out (before i1) up to i1.
             let outer = integrate_from_level(&pts[..=i1], t2.approach, false);
-            // Contact branch: from i2 up to where ᾱ = ᾱ_in (after i2).
             let inner = integrate_from_level(&pts[i2..], t1.approach, true);
             match (outer, inner) {
                 (Some(o), Some(inr)) => hyst = (o - inr).abs(),
@@ -1295,58 +1521,81 @@ impl LjSolver {
             pull_off_load,
             pull_off_displacement: pull_disp,
             hysteresis_energy: hyst,
-            iterations: m.w.iterations,
-            factorizations: m.w.factorizations,
-            max_residual: m.w.max_residual,
+            iterations: bw.w.iterations,
+            factorizations: bw.w.factorizations,
+            max_residual: bw.w.max_residual,
             n_grid: self.n(),
         })
     }
 
-    /// Load-controlled pull-off with the edge-concentrated mesh: a coarse
-    /// (N = 64) curve locates the minimum of P̄ and its contact radius, the
-    /// mesh concentrates half the cells within `±w` of that radius
-    /// (`w = clamp(μ^{-3/2}, 0.1, 1)`, the width of the edge zone), and a
-    /// golden-section search in `h̄₀` (to 1e-7) on the fine grid finds the
-    /// minimum of P̄.
+    /// Load-controlled pull-off with the edge-concentrated mesh: the contact
+    /// radius at pull-off is located on a coarse (N = 64) curve for μ ≤ 1,
+    /// or taken from Maugis–Dugdale at λ = 1.157μ above; the mesh
+    /// concentrates half the cells within `±w` of that radius
+    /// (`w = clamp(2μ^{-3/2}, 0.1, 1)`, about the width of the edge zone);
+    /// the pseudo-arclength continuation runs from far to just past the
+    /// minimum of P̄, which is then refined as the zero of dP̄/ds (Illinois
+    /// method, exact tangents).
     pub fn pull_off_with(sphere: &LjSphere, options: LjOptions) -> Result<LjPullOff> {
-        let mut co = options;
-        co.n_grid = 64;
-        co.target_points = 60;
-        co.max_force = 1.0;
-        co.edge_fraction = 0.0;
-        let coarse = LjSolver::new(sphere, co)?;
-        let cc = coarse.curve()?;
-        let po = cc.pull_off_load;
         let mu = sphere.mu;
+        let a_po = if mu <= 1.0 {
+            let mut co = options;
+            co.n_grid = 64;
+            co.target_points = 60;
+            co.max_force = 1.0;
+            co.edge_fraction = 0.0;
+            let coarse = LjSolver::new(sphere, co)?;
+            coarse.curve()?.pull_off_load.contact_radius
+        } else {
+            let lam = crate::material::maugis_over_tabor() * mu;
+            let md = MaugisDugdale::from_maugis_parameter(1.0, 1.0, 1.0, lam)?;
+            md.load_pull_off_point().a_bar * (0.75 * PI).cbrt() * mu.sqrt()
+        };
         let mut o = options;
         o.max_force = 1.0;
         o.edge_fraction = 0.5;
-        o.edge_radius = po.contact_radius;
-        o.edge_width = mu.powf(-1.5).clamp(0.1, 1.0);
+        o.edge_radius = a_po;
+        o.edge_width = (2.0 * mu.powf(-1.5)).clamp(0.1, 1.0);
         let s = LjSolver::new(sphere, o)?;
-        // March from far to just above the coarse minimum, then search.
-        let span = 0.1 * (1.0 + (po.central_gap - 1.0).abs()).min(1.0);
-        let hi = po.central_gap + span;
-        let lo = (po.central_gap - span).max(0.3);
-        let start = s.opts.start_gap.max(hi + 1.0);
-        let mut m = Marcher::start(&s, start)?;
-        let nsteps = 40;
-        for i in 1..=nsteps {
-            let t = i as f64 / nsteps as f64;
-            m.step_to(start + (hi - start) * t)?;
-        }
-        let best = m.golden(true, lo, hi, |p| p.force)?;
+        let stop = |st: &[State]| {
+            let n = st.len();
+            if n < 4 {
+                return false;
+            }
+            let imin = (0..n)
+                .min_by(|&a, &b| st[a].pt.force.total_cmp(&st[b].pt.force))
+                .unwrap();
+            // Past the minimum on the contact branch: the last point in
+            // contact and stable, the minimum in contact, a rise after it.
+            let last = &st[n - 1];
+            imin + 2 < n
+                && st[imin].pt.contact_radius > 0.0
+                && last.pt.contact_radius > 0.0
+                && last.t[last.t.len() - 1] > 0.0
+                && last.pt.force > st[imin].pt.force + 0.02
+        };
+        let (states, mut bw) = s.path_march(1.0, 80, &stop)?;
+        let best = match Self::min_interval(&states) {
+            Some(i) => s.refine_between(&states, i, &mut bw, &|st| st.df)?,
+            None => {
+                return Err(Error::NotConverged {
+                    what: "LJ sphere pull-off: no force minimum along the continuation",
+                    iterations: bw.w.iterations.min(u32::MAX as u64) as u32,
+                    residual: bw.w.max_residual,
+                })
+            }
+        };
+        let p = best.pt;
         Ok(LjPullOff {
-            force: best.force,
-            approach: best.approach,
-            central_gap: best.central_gap,
-            contact_radius: best.contact_radius,
-            iterations: m.w.iterations,
-            max_residual: m.w.max_residual,
+            force: p.force,
+            approach: p.approach,
+            central_gap: p.central_gap,
+            contact_radius: p.contact_radius,
+            iterations: bw.w.iterations,
+            max_residual: bw.w.max_residual,
             n_grid: s.n(),
         })
     }
-
     /// Largest `dᾱ/dh̄₀` over the curve (by the continuation's samples and a
     /// local refinement): negative when ᾱ decreases monotonically with h̄₀
     /// (no S-shape), positive when the curve is S-shaped (unstable branch
@@ -1541,73 +1790,11 @@ impl<'a> Marcher<'a> {
         self.mode = Mode::Gap(p.central_gap);
         self.s.residual(self.mode, &self.y, &mut self.w);
     }
+}
 
-    /// Minimise `g(point)` between the neighbours of sample `i`, in h̄₀
-    /// (`gap`) or ᾱ.
-    fn refine(
-        &mut self,
-        pts: &[LjPoint],
-        ys: &[Vec<f64>],
-        i: usize,
-        gap: bool,
-        g: impl Fn(&LjPoint) -> f64,
-    ) -> Result<LjPoint> {
-        let v = |p: &LjPoint| if gap { p.central_gap } else { p.approach };
-        let (x0, x1) = (v(&pts[i - 1]), v(&pts[i + 1]));
-        self.set(&pts[i - 1], &ys[i - 1]);
-        self.golden(gap, x0.min(x1), x0.max(x1), g)
-    }
-
-    /// Golden-section minimisation of `g` over h̄₀ (`gap`) or ᾱ in
-    /// `[lo, hi]` (to 1e-7), continuing from the current state (which
-    /// should sit near the interval).
-    fn golden(
-        &mut self,
-        gap: bool,
-        lo: f64,
-        hi: f64,
-        g: impl Fn(&LjPoint) -> f64,
-    ) -> Result<LjPoint> {
-        let r = 0.5 * (5f64.sqrt() - 1.0);
-        let (mut a, mut b) = (lo, hi);
-        let mut x1 = b - r * (b - a);
-        let mut x2 = a + r * (b - a);
-        let cur = if gap { self.h0 } else { self.al };
-        // Visit the nearer interior point first.
-        let (first, second) = if (cur - x2).abs() < (cur - x1).abs() {
-            (x2, x1)
-        } else {
-            (x1, x2)
-        };
-        self.step(gap, first)?;
-        let pf = self.point()?;
-        self.step(gap, second)?;
-        let ps = self.point()?;
-        let (mut p1, mut p2) = if first == x1 { (pf, ps) } else { (ps, pf) };
-        let (mut f1, mut f2) = (g(&p1), g(&p2));
-        while b - a > 1e-7 {
-            if f1 < f2 {
-                b = x2;
-                x2 = x1;
-                p2 = p1;
-                f2 = f1;
-                x1 = b - r * (b - a);
-                self.step(gap, x1)?;
-                p1 = self.point()?;
-                f1 = g(&p1);
-            } else {
-                a = x1;
-                x1 = x2;
-                p1 = p2;
-                f1 = f2;
-                x2 = a + r * (b - a);
-                self.step(gap, x2)?;
-                p2 = self.point()?;
-                f2 = g(&p2);
-            }
-        }
-        Ok(if f1 < f2 { p1 } else { p2 })
-    }
+/// Whether `e` is the error of [`unresolved`].
+fn is_unresolved(e: &Error) -> bool {
+    matches!(e, Error::NotConverged { what, .. } if what.starts_with("LJ sphere: the grid"))
 }
 
 /// The error of a state whose edge zone the grid does not resolve.
@@ -1626,6 +1813,17 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 
 fn norm2(a: &[f64]) -> f64 {
     a.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// Cubic Hermite on [0, 1] with end values `y0`, `y1` and end slopes (per
+/// unit t) `m0`, `m1`.
+fn hermite01(y0: f64, m0: f64, y1: f64, m1: f64, t: f64) -> f64 {
+    let t2 = t * t;
+    let t3 = t2 * t;
+    (2.0 * t3 - 3.0 * t2 + 1.0) * y0
+        + (t3 - 2.0 * t2 + t) * m0
+        + (-2.0 * t3 + 3.0 * t2) * y1
+        + (t3 - t2) * m1
 }
 
 /// Derivative at `x` of the parabola through three points.

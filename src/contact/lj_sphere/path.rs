@@ -1,0 +1,521 @@
+//! Pseudo-arclength continuation of the Lennard-Jones sphere: the unknowns
+//! are the log-gaps `y` and the approach `ᾱ`, the extra equation a
+//! constraint (a hyperplane normal to the tangent, a prescribed approach or a
+//! prescribed central gap), and the bordered `(N+1)×(N+1)` Newton system is
+//! factored by faer's LU. The border row changes from step to step; a
+//! rank-one (Sherman–Morrison) correction applies the current row to the
+//! stored factorisation, so chord iterations stay exact in the constraint.
+
+// Index loops mirror the matrix algebra.
+#![allow(clippy::needless_range_loop)]
+
+use super::*;
+
+/// The extra equation of the bordered system.
+#[derive(Debug, Clone)]
+pub(super) enum Con {
+    /// `row · (y, ᾱ) = c`.
+    Plane { row: Vec<f64>, c: f64 },
+    /// `ᾱ = value`.
+    Approach(f64),
+    /// `h̄₀ = value`.
+    Gap(f64),
+}
+
+/// Scratch of the bordered Newton iteration.
+pub(super) struct BWork {
+    pub(super) w: Work,
+    jac: Vec<f64>,
+    lu: Option<PartialPivLu<f64>>,
+    row_lu: Vec<f64>,
+    z: Vec<f64>,
+    x: Vec<f64>,
+    row: Vec<f64>,
+    yt: Vec<f64>,
+    g: f64,
+    /// Worst contraction factor of the chord iterations of the last solve.
+    pub(super) rho: f64,
+}
+
+impl BWork {
+    /// Forget the factorisation (after a failed solve).
+    pub(super) fn invalidate(&mut self) {
+        self.lu = None;
+    }
+
+    pub(super) fn new(n: usize) -> Self {
+        Self {
+            w: Work::new_small(n),
+            jac: Vec::new(),
+            lu: None,
+            row_lu: vec![0.0; n + 1],
+            z: vec![0.0; n + 1],
+            x: vec![0.0; n + 1],
+            row: vec![0.0; n + 1],
+            yt: vec![0.0; n],
+            g: 0.0,
+            rho: 0.0,
+        }
+    }
+}
+
+/// A converged state on the path with its tangent.
+#[derive(Debug, Clone)]
+pub(super) struct State {
+    pub(super) y: Vec<f64>,
+    pub(super) al: f64,
+    /// Unit tangent (metric [`LjSolver::metric_y`] on y, 1 on ᾱ), `N+1`.
+    pub(super) t: Vec<f64>,
+    /// Path parameter (cumulative arclength in the metric).
+    pub(super) s: f64,
+    pub(super) pt: LjPoint,
+    /// dP̄/ds along `t` (NaN unless computed).
+    pub(super) df: f64,
+    /// d(radius)/ds along `t` (NaN unless computed; for the path's
+    /// derivatives, e.g. a tabulated law).
+    #[allow(dead_code)]
+    pub(super) da: f64,
+    /// h̄₀ of the state.
+    pub(super) h0: f64,
+}
+
+impl LjSolver {
+    /// Metric weight of one log-gap in the arclength (ᾱ has weight 1).
+    pub(super) fn metric_y(&self) -> f64 {
+        1.0 / self.n() as f64
+    }
+
+    fn con_value(&self, con: &Con, y: &[f64], al: f64, w: &Work) -> f64 {
+        let n = self.n();
+        match con {
+            Con::Plane { row, c } => dot(&row[..n], y) + row[n] * al - c,
+            Con::Approach(a) => al - a,
+            Con::Gap(h) => 1.0 - self.k * (dot(&self.a0, &w.p) + self.tail0) - al - h,
+        }
+    }
+
+    fn con_row(&self, con: &Con, w: &Work, out: &mut [f64]) {
+        let n = self.n();
+        match con {
+            Con::Plane { row, .. } => out.copy_from_slice(row),
+            Con::Approach(_) => {
+                out.iter_mut().for_each(|v| *v = 0.0);
+                out[n] = 1.0;
+            }
+            Con::Gap(_) => {
+                for j in 0..n {
+                    out[j] = -self.k * self.a0[j] * w.dp[j] * w.h[j];
+                }
+                out[n] = -1.0;
+            }
+        }
+    }
+
+    /// Residual of the bordered system; max-norm of (F, g).
+    fn bres(&self, con: &Con, y: &[f64], al: f64, bw: &mut BWork) -> f64 {
+        let r = self.residual(Mode::Approach(al), y, &mut bw.w);
+        let g = self.con_value(con, y, al, &bw.w);
+        bw.g = g;
+        let m = r.max(g.abs());
+        if m.is_finite() {
+            m
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// Factor the bordered Jacobian at the state in `bw.w` with border row
+    /// `bw.row`.
+    fn bfactor(&self, bw: &mut BWork) -> bool {
+        let n = self.n();
+        let m = n + 1;
+        if bw.jac.len() != m * m {
+            bw.jac = vec![0.0; m * m];
+        }
+        let k = self.k;
+        for j in 0..n {
+            let qj = k * bw.w.dp[j] * bw.w.h[j];
+            let col = &self.a[j * n..(j + 1) * n];
+            let jc = &mut bw.jac[j * m..(j + 1) * m];
+            for i in 0..n {
+                jc[i] = col[i] * qj;
+            }
+            jc[j] += bw.w.h[j];
+            jc[n] = bw.row[j];
+        }
+        {
+            let jc = &mut bw.jac[n * m..];
+            jc[..n].iter_mut().for_each(|v| *v = 1.0);
+            jc[n] = bw.row[n];
+        }
+        if bw.jac.iter().any(|v| !v.is_finite()) {
+            return false;
+        }
+        let lu = PartialPivLu::new(MatRef::from_column_major_slice(&bw.jac, m, m));
+        bw.z.iter_mut().for_each(|v| *v = 0.0);
+        bw.z[n] = 1.0;
+        lu.solve_in_place(MatMut::from_column_major_slice_mut(&mut bw.z, m, 1));
+        bw.lu = Some(lu);
+        bw.row_lu.copy_from_slice(&bw.row);
+        bw.w.factorizations += 1;
+        true
+    }
+
+    /// Solve the bordered system with the stored factorisation and the
+    /// current border row `bw.row` (rank-one correction), in place in `bw.x`.
+    fn bsolve(&self, bw: &mut BWork) -> bool {
+        let m = self.n() + 1;
+        let Some(lu) = &bw.lu else { return false };
+        lu.solve_in_place(MatMut::from_column_major_slice_mut(&mut bw.x, m, 1));
+        let mut dz = 0.0;
+        let mut dx = 0.0;
+        for i in 0..m {
+            let d = bw.row[i] - bw.row_lu[i];
+            dz += d * bw.z[i];
+            dx += d * bw.x[i];
+        }
+        if dx != 0.0 {
+            let f = dx / (1.0 + dz);
+            if !f.is_finite() {
+                return false;
+            }
+            for i in 0..m {
+                bw.x[i] -= f * bw.z[i];
+            }
+        }
+        bw.x.iter().all(|v| v.is_finite())
+    }
+
+    /// Bordered Newton (full: refactor every iteration; else chord with
+    /// refresh when the contraction is poor).
+    pub(super) fn bnewton(
+        &self,
+        con: &Con,
+        y: &mut [f64],
+        al: &mut f64,
+        bw: &mut BWork,
+        full: bool,
+    ) -> Result<(u32, f64)> {
+        let n = self.n();
+        let tol = self.opts.tolerance;
+        let maxit = self.opts.max_iterations;
+        let what = "LJ sphere continuation (bordered Newton)";
+        let mut r = self.bres(con, y, *al, bw);
+        let mut it = 0u32;
+        let mut fresh = false;
+        let mut need = full || bw.lu.is_none();
+        bw.rho = 0.0;
+        let fail = |bw: &mut BWork, it: u32, r: f64| {
+            bw.w.iterations += it as u64;
+            Err(Error::NotConverged {
+                what,
+                iterations: it,
+                residual: r,
+            })
+        };
+        while r > tol {
+            if it >= maxit || !r.is_finite() {
+                return fail(bw, it, r);
+            }
+            it += 1;
+            let mut row = core::mem::take(&mut bw.row);
+            self.con_row(con, &bw.w, &mut row);
+            bw.row = row;
+            if need {
+                if !self.bfactor(bw) {
+                    return fail(bw, it, r);
+                }
+                fresh = true;
+                need = full;
+            }
+            for i in 0..n {
+                bw.x[i] = -bw.w.f[i];
+            }
+            bw.x[n] = -bw.g;
+            if !self.bsolve(bw) {
+                bw.lu = None;
+                if fresh {
+                    return fail(bw, it, r);
+                }
+                need = true;
+                continue;
+            }
+            let dmax = bw.x[..n].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            let mut lam = if dmax > 0.5 { 0.5 / dmax } else { 1.0 };
+            let r2 = (norm2(&bw.w.f).powi(2) + bw.g * bw.g).sqrt();
+            let mut yt = core::mem::take(&mut bw.yt);
+            let mut accepted = false;
+            let mut rt = r;
+            let mut alt = *al;
+            for _ in 0..12 {
+                for i in 0..n {
+                    yt[i] = y[i] + lam * bw.x[i];
+                }
+                alt = *al + lam * bw.x[n];
+                rt = self.bres(con, &yt, alt, bw);
+                let rt2 = (norm2(&bw.w.f).powi(2) + bw.g * bw.g).sqrt();
+                if rt.is_finite() && rt2 <= (1.0 - 1e-4 * lam) * r2 {
+                    accepted = true;
+                    break;
+                }
+                lam *= 0.5;
+            }
+            if accepted {
+                y.copy_from_slice(&yt);
+                *al = alt;
+                bw.yt = yt;
+                if !fresh {
+                    bw.rho = bw.rho.max(rt / r);
+                }
+                if !full && (rt > 0.25 * r || lam < 1.0) {
+                    need = true;
+                }
+                fresh = false;
+                r = rt;
+            } else {
+                bw.yt = yt;
+                r = self.bres(con, y, *al, bw);
+                if fresh && r <= 1e2 * tol {
+                    break;
+                }
+                if fresh {
+                    return fail(bw, it, r);
+                }
+                need = true;
+            }
+        }
+        bw.w.iterations += it as u64;
+        bw.w.max_residual = bw.w.max_residual.max(r);
+        Ok((it, r))
+    }
+
+    /// Tangent at the converged state in `bw.w`, oriented along `prev`
+    /// (`N+1`, unit in the metric); `exact` refactors the Jacobian first.
+    pub(super) fn tangent(&self, bw: &mut BWork, prev: &[f64], exact: bool) -> Result<Vec<f64>> {
+        let n = self.n();
+        let my = self.metric_y();
+        for i in 0..n {
+            bw.row[i] = my * prev[i];
+        }
+        bw.row[n] = prev[n];
+        if (exact || bw.lu.is_none()) && !self.bfactor(bw) {
+            return Err(unresolved(0, f64::NAN));
+        }
+        bw.x.iter_mut().for_each(|v| *v = 0.0);
+        bw.x[n] = 1.0;
+        if !self.bsolve(bw) {
+            return Err(unresolved(0, f64::NAN));
+        }
+        let mut t = bw.x.clone();
+        let nn = (my * t[..n].iter().map(|v| v * v).sum::<f64>() + t[n] * t[n]).sqrt();
+        let sgn = if my * dot(&t[..n], &prev[..n]) + t[n] * prev[n] >= 0.0 {
+            1.0
+        } else {
+            -1.0
+        };
+        t.iter_mut().for_each(|v| *v *= sgn / nn);
+        Ok(t)
+    }
+
+    /// The state from a converged `bw.w` (after `bnewton`) with tangent `t`;
+    /// `derivs` adds dP̄/ds and da/ds by central differences along `t`.
+    pub(super) fn make_state(
+        &self,
+        y: &[f64],
+        al: f64,
+        t: Vec<f64>,
+        s: f64,
+        bw: &BWork,
+        derivs: bool,
+    ) -> Result<State> {
+        let (h0, _, force, a) = self.observe(Mode::Approach(al), &bw.w);
+        if !force.is_finite() {
+            return Err(unresolved(
+                bw.w.iterations.min(u32::MAX as u64) as u32,
+                bw.w.max_residual,
+            ));
+        }
+        let (mut df, mut da) = (f64::NAN, f64::NAN);
+        if derivs {
+            let n = self.n();
+            let e = 1e-6;
+            let mut yp = vec![0.0; n];
+            let mut vals = [(0.0, 0.0); 2];
+            for (q, sg) in [1.0, -1.0].into_iter().enumerate() {
+                for i in 0..n {
+                    yp[i] = y[i] + sg * e * t[i];
+                }
+                let (_, f, aa) = self.observe_y(&yp, al + sg * e * t[n]);
+                vals[q] = (f, aa);
+            }
+            df = (vals[0].0 - vals[1].0) / (2.0 * e);
+            da = (vals[0].1 - vals[1].1) / (2.0 * e);
+            if a == 0.0 {
+                da = 0.0;
+            }
+        }
+        Ok(State {
+            y: y.to_vec(),
+            al,
+            t,
+            s,
+            pt: LjPoint {
+                central_gap: h0,
+                approach: al,
+                force,
+                contact_radius: a,
+                stiffness: f64::NAN,
+            },
+            df,
+            da,
+            h0,
+        })
+    }
+
+    /// First state of a path: prescribed central gap `h0`, rigid guess,
+    /// tangent towards increasing approach.
+    pub(super) fn path_start(&self, h0: f64, bw: &mut BWork, derivs: bool) -> Result<State> {
+        let mut y = self.rigid_guess(h0);
+        let mut al = 1.0 - h0;
+        self.bnewton(&Con::Gap(h0), &mut y, &mut al, bw, true)?;
+        let n = self.n();
+        // Border row e_ᾱ: the tangent has t_ᾱ = 1 before normalisation.
+        let mut prev = vec![0.0; n + 1];
+        prev[n] = 1.0;
+        let t = self.tangent(bw, &prev, true)?;
+        self.make_state(&y, al, t, 0.0, bw, derivs)
+    }
+
+    /// Step of length `sigma` (projected on the tangent) from `from`, with the
+    /// predictor `from + sigma·t` or the given guess.
+    pub(super) fn path_step(
+        &self,
+        from: &State,
+        sigma: f64,
+        guess: Option<(Vec<f64>, f64)>,
+        bw: &mut BWork,
+        exact: bool,
+    ) -> Result<State> {
+        let n = self.n();
+        let my = self.metric_y();
+        let mut row = vec![0.0; n + 1];
+        for i in 0..n {
+            row[i] = my * from.t[i];
+        }
+        row[n] = from.t[n];
+        let c = dot(&row[..n], &from.y) + row[n] * from.al + sigma;
+        let (mut y, mut al) = guess.unwrap_or_else(|| {
+            (
+                from.y
+                    .iter()
+                    .zip(&from.t)
+                    .map(|(a, b)| a + sigma * b)
+                    .collect(),
+                from.al + sigma * from.t[n],
+            )
+        });
+        self.bnewton(&Con::Plane { row, c }, &mut y, &mut al, bw, exact)?;
+        let t = self.tangent(bw, &from.t, exact)?;
+        let dist = {
+            let dy: f64 = y.iter().zip(&from.y).map(|(a, b)| (a - b).powi(2)).sum();
+            (my * dy + (al - from.al).powi(2)).sqrt()
+        };
+        self.make_state(&y, al, t, from.s + dist, bw, exact)
+    }
+
+    /// As [`LjSolver::path_step`] with a chord solve from the current
+    /// factorisation and an exact tangent and derivatives after it.
+    fn path_step_exact_tangent(
+        &self,
+        from: &State,
+        sigma: f64,
+        guess: (Vec<f64>, f64),
+        bw: &mut BWork,
+    ) -> Result<State> {
+        let n = self.n();
+        let my = self.metric_y();
+        let mut row = vec![0.0; n + 1];
+        for i in 0..n {
+            row[i] = my * from.t[i];
+        }
+        row[n] = from.t[n];
+        let c = dot(&row[..n], &from.y) + row[n] * from.al + sigma;
+        let (mut y, mut al) = guess;
+        let con = Con::Plane { row, c };
+        if self.bnewton(&con, &mut y, &mut al, bw, false).is_err() {
+            bw.invalidate();
+            let (y0, a0) = (from.y.clone(), from.al);
+            y = y0;
+            al = a0;
+            self.bnewton(&con, &mut y, &mut al, bw, true)?;
+        }
+        let t = self.tangent(bw, &from.t, true)?;
+        let dist = {
+            let dy: f64 = y.iter().zip(&from.y).map(|(a, b)| (a - b).powi(2)).sum();
+            (my * dy + (al - from.al).powi(2)).sqrt()
+        };
+        self.make_state(&y, al, t, from.s + dist, bw, true)
+    }
+
+    /// The state between `l` and `r` (neighbours on the path) where
+    /// `phi(state)` changes sign, by the Illinois method on the step length
+    /// from `l`. Tangents and derivatives are exact.
+    pub(super) fn path_root(
+        &self,
+        l: &State,
+        r: &State,
+        bw: &mut BWork,
+        phi: &dyn Fn(&State) -> f64,
+    ) -> Result<State> {
+        let n = self.n();
+        let my = self.metric_y();
+        let proj = |x: &State| {
+            my * dot(&l.t[..n], &x.y) + l.t[n] * x.al - my * dot(&l.t[..n], &l.y) - l.t[n] * l.al
+        };
+        let sr = proj(r);
+        let (mut a, mut fa) = (0.0, phi(l));
+        let (mut b, mut fb) = (sr, phi(r));
+        if fa == 0.0 {
+            return Ok(l.clone());
+        }
+        if fb == 0.0 {
+            return Ok(r.clone());
+        }
+        let mut best: Option<State> = None;
+        for _ in 0..60 {
+            let sig = (a * fb - b * fa) / (fb - fa);
+            let sig = if sig.is_finite() && (sig - a) * (sig - b) < 0.0 {
+                sig
+            } else {
+                0.5 * (a + b)
+            };
+            let th = sig / sr;
+            let guess = (
+                l.y.iter()
+                    .zip(&r.y)
+                    .map(|(p, q)| p + th * (q - p))
+                    .collect(),
+                l.al + th * (r.al - l.al),
+            );
+            let st = self.path_step_exact_tangent(l, sig, guess, bw)?;
+            let f = phi(&st);
+            if f * fb < 0.0 {
+                a = b;
+                fa = fb;
+            } else {
+                fa *= 0.5;
+            }
+            b = sig;
+            fb = f;
+            best = Some(st);
+            if f == 0.0 || (a - b).abs() < 1e-12 * sr.abs() {
+                break;
+            }
+        }
+        best.ok_or(Error::NotConverged {
+            what: "LJ sphere special point",
+            iterations: 0,
+            residual: f64::NAN,
+        })
+    }
+}
