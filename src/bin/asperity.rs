@@ -55,6 +55,39 @@ enum Command {
         #[arg(long)]
         svg: Option<PathBuf>,
     },
+    /// Fit a measured indentation curve: κ and d (Borodich), reduced modulus
+    /// and hardness (Oliver–Pharr), validity flags; plot data and fits.
+    Indent {
+        /// The curve: CSV `time_s,depth_m,load_N,segment` (`#` comments) or
+        /// two columns depth (m), load (N).
+        file: PathBuf,
+        /// sphere:radius=R (m) | cone:half_angle=DEG | berkovich | vickers |
+        /// cube-corner | unknown.
+        #[arg(long, default_value = "berkovich")]
+        indenter: String,
+        /// Area-function coefficients C0,C1,C2,… (NanoSuite convention: h_c in
+        /// nm, A in nm²); the ideal area of the indenter when absent.
+        #[arg(long, value_delimiter = ',')]
+        area: Option<Vec<f64>>,
+        /// Indenter Young's modulus (Pa).
+        #[arg(long, default_value_t = 1141e9)]
+        e_indenter: f64,
+        /// Indenter Poisson's ratio.
+        #[arg(long, default_value_t = 0.07)]
+        nu_indenter: f64,
+        /// Sample Poisson's ratio.
+        #[arg(long, default_value_t = 0.3)]
+        nu_sample: f64,
+        /// Ignore the file's segment labels and detect the segments.
+        #[arg(long)]
+        detect_segments: bool,
+        /// Print one JSON object instead of the report.
+        #[arg(long)]
+        json: bool,
+        /// Write an SVG plot of the data with the fitted curves.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+    },
     /// The numerical Lennard-Jones sphere: full force–approach curve, jump
     /// points, pull-off and hysteresis.
     Lj {
@@ -159,6 +192,27 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
                 )?;
             }
         }
+        Command::Indent {
+            file,
+            indenter,
+            area,
+            e_indenter,
+            nu_indenter,
+            nu_sample,
+            detect_segments,
+            json,
+            svg,
+        } => indent(
+            &file,
+            &indenter,
+            area,
+            e_indenter,
+            nu_indenter,
+            nu_sample,
+            detect_segments,
+            json,
+            svg,
+        )?,
         Command::Lj {
             sphere: s,
             grid,
@@ -222,6 +276,134 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
                 )?;
             }
         }
+    }
+    Ok(())
+}
+
+#[allow(clippy::too_many_arguments)]
+fn indent(
+    file: &PathBuf,
+    indenter: &str,
+    area: Option<Vec<f64>>,
+    e_indenter: f64,
+    nu_indenter: f64,
+    nu_sample: f64,
+    detect_segments: bool,
+    json: bool,
+    svg: Option<PathBuf>,
+) -> Result<(), Box<dyn Error>> {
+    use asperity::indentation::{analyze, AreaFunction, Curve, IndentationOptions, Indenter};
+    // Accept `sphere:radius=1e-6` and `cone:half_angle=70.3` as well as the
+    // short `sphere:1e-6`, `cone:70.3`.
+    let spec = indenter.replace("radius=", "").replace("half_angle=", "");
+    let ind = Indenter::parse(&spec).ok_or_else(|| {
+        format!("unknown indenter `{indenter}`: sphere:radius=R | cone:half_angle=DEG | berkovich | vickers | cube-corner | unknown")
+    })?;
+    let bar = indicatif::ProgressBar::new_spinner();
+    bar.set_message(format!("reading {}", file.display()));
+    bar.enable_steady_tick(std::time::Duration::from_millis(120));
+    let curve = Curve::read(file)?;
+    bar.set_message(format!("fitting {} points", curve.len()));
+    let options = IndentationOptions {
+        indenter: ind,
+        area: area.map(|coefficients| AreaFunction::NanoSuite { coefficients }),
+        e_indenter,
+        nu_indenter,
+        nu_sample,
+        use_labels: !detect_segments,
+        ..IndentationOptions::default()
+    };
+    let r = analyze(&curve, &options)?;
+    bar.finish_and_clear();
+    if json {
+        println!("{}", r.to_json());
+    } else {
+        let gpa = |x: Option<f64>, e: Option<f64>| match (x, e) {
+            (Some(x), Some(e)) => format!("{:.3} ± {:.3} GPa", x / 1e9, e / 1e9),
+            (Some(x), None) => format!("{:.3} GPa", x / 1e9),
+            _ => "n/a (no unloading)".to_string(),
+        };
+        println!(
+            "{}: {} points, segments {}",
+            file.display(),
+            curve.len(),
+            if r.segmentation.from_labels {
+                "from the file's labels"
+            } else {
+                "detected"
+            }
+        );
+        println!(
+            "  kappa (hardening index)  {:.4} ± {:.4}  ({:?})",
+            r.kappa, r.kappa_stderr, r.kappa_source
+        );
+        println!(
+            "  d (bluntness index)      {:.4} ± {:.4}  ({:?})",
+            r.d, r.d_stderr, r.d_source
+        );
+        println!(
+            "  loading slope            {:.4} ± {:.4}  (R² {:.5})",
+            r.loading.slope, r.loading.slope_stderr, r.loading.r_squared
+        );
+        println!(
+            "  reduced modulus E_r      {}",
+            gpa(r.reduced_modulus, r.reduced_modulus_stderr)
+        );
+        println!(
+            "  sample modulus E         {}",
+            gpa(r.sample_modulus, r.sample_modulus_stderr)
+        );
+        println!(
+            "  hardness H               {}",
+            gpa(r.hardness, r.hardness_stderr)
+        );
+        if r.flag_details.is_empty() {
+            println!("  flags: none");
+        }
+        for f in &r.flag_details {
+            println!("  flag {}: {}", f.code, f.message);
+        }
+    }
+    if let Some(p) = svg {
+        let to_nm = |h: f64| h * 1e9;
+        let to_mn = |p: f64| p * 1e3;
+        let data: Vec<(f64, f64)> = curve
+            .depth
+            .iter()
+            .zip(&curve.load)
+            .map(|(&h, &p)| (to_nm(h), to_mn(p)))
+            .collect();
+        let mut series: Vec<Series> = vec![("data".into(), data)];
+        let lf = &r.loading;
+        let [l0, l1] = r.segmentation.loading;
+        let hmax = curve.depth[l0..l1.max(l0 + 1).min(curve.len())]
+            .iter()
+            .cloned()
+            .fold(0.0, f64::max);
+        let fit: Vec<(f64, f64)> = (1..=100)
+            .map(|i| {
+                let h = hmax * i as f64 / 100.0;
+                (
+                    to_nm(h),
+                    to_mn(lf.reference_load * (h / lf.reference_depth).powf(lf.slope)),
+                )
+            })
+            .collect();
+        series.push((format!("loading fit, slope {:.3}", lf.slope), fit));
+        if let Some(op) = &r.unloading {
+            let u = &op.fit;
+            let fit: Vec<(f64, f64)> = (0..=100)
+                .map(|i| {
+                    let h = u.final_depth + (op.peak_depth - u.final_depth) * i as f64 / 100.0;
+                    (
+                        to_nm(h),
+                        to_mn(u.prefactor * (h - u.final_depth).max(0.0).powf(u.exponent)),
+                    )
+                })
+                .collect();
+            series.push((format!("unloading fit, m = {:.3}", u.exponent), fit));
+        }
+        plot(&p, "Indentation", "depth / nm", "load / mN", &series)?;
     }
     Ok(())
 }
