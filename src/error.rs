@@ -69,7 +69,11 @@ impl fmt::Display for Error {
             Error::UnknownSelector { name, value } => {
                 write!(f, "unknown value {value} for `{name}`")
             }
-            Error::OutOfDomain { name, value, reason } => {
+            Error::OutOfDomain {
+                name,
+                value,
+                reason,
+            } => {
                 write!(f, "out of domain: `{name}` = {value:e}: {reason}")
             }
             Error::NotConverged {
@@ -143,6 +147,20 @@ pub mod check {
                 name,
                 value,
                 bound: "in [0, 0.5]",
+            })
+        }
+    }
+
+    /// A cone or pyramid half-angle (rad), strictly between 0 and π/2.
+    #[inline]
+    pub fn half_angle(name: &'static str, value: f64) -> Result<f64> {
+        if value > 0.0 && value < core::f64::consts::FRAC_PI_2 {
+            Ok(value)
+        } else {
+            Err(Error::InvalidArgument {
+                name,
+                value,
+                bound: "in (0, pi/2) rad",
             })
         }
     }

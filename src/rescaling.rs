@@ -201,21 +201,9 @@ pub fn lambda_spheres(known_radius: f64, radius: f64) -> Result<f64> {
 
 /// λ for cones (3-16): `λ = tan γ₁/tan γ`, half-angles in rad, in (0, π/2).
 pub fn lambda_cones(known_half_angle: f64, half_angle: f64) -> Result<f64> {
-    let g1 = check_half_angle("known_half_angle", known_half_angle)?;
-    let g = check_half_angle("half_angle", half_angle)?;
+    let g1 = check::half_angle("known_half_angle", known_half_angle)?;
+    let g = check::half_angle("half_angle", half_angle)?;
     Ok(g1.tan() / g.tan())
-}
-
-fn check_half_angle(name: &'static str, g: f64) -> Result<f64> {
-    if g > 0.0 && g < core::f64::consts::FRAC_PI_2 {
-        Ok(g)
-    } else {
-        Err(Error::InvalidArgument {
-            name,
-            value: g,
-            bound: "in (0, pi/2) rad",
-        })
-    }
 }
 
 /// The shape scale λ = B/B₁ that carries the known point `(P₁, δ₁)` into the
@@ -315,7 +303,7 @@ pub fn unloading_radius(radius: f64, medium_radius: f64) -> Result<f64> {
 /// an indenter of half-angle γ_i unloading from an imprint of half-angle
 /// γ_f > γ_i (rad; γ_f = π/2 is a flat and gives `cot γ_i`).
 pub fn galanov_cone_coefficient(indenter_half_angle: f64, imprint_half_angle: f64) -> Result<f64> {
-    let gi = check_half_angle("indenter_half_angle", indenter_half_angle)?;
+    let gi = check::half_angle("indenter_half_angle", indenter_half_angle)?;
     if !(imprint_half_angle > gi && imprint_half_angle <= core::f64::consts::FRAC_PI_2) {
         return Err(Error::InvalidArgument {
             name: "imprint_half_angle",
@@ -330,7 +318,7 @@ pub fn galanov_cone_coefficient(indenter_half_angle: f64, imprint_half_angle: f6
 /// `B_eff` measured on unloading (2-18): `cot γ_f = cot γ_i − B_eff`,
 /// `0 < B_eff ≤ cot γ_i`.
 pub fn galanov_imprint_half_angle(indenter_half_angle: f64, effective_b: f64) -> Result<f64> {
-    let gi = check_half_angle("indenter_half_angle", indenter_half_angle)?;
+    let gi = check::half_angle("indenter_half_angle", indenter_half_angle)?;
     let cot_i = gi.cos() / gi.sin();
     let b = check::positive("effective_b", effective_b)?;
     if b > cot_i {

@@ -382,12 +382,7 @@ impl NormalContact for JkrPowerPunch {
     /// Displacement-controlled step: jump-in at δ = 0, jump-out below δ_c.
     fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
         let delta = check_delta(delta)?;
-        let stays = if old.in_contact != 0 {
-            delta >= self.critical_delta
-        } else {
-            delta >= 0.0
-        };
-        if !stays {
+        if !super::stays_in_contact(old, delta, self.critical_delta) {
             return Ok(out_of_contact(delta));
         }
         let r = self.on_branch(delta)?;

@@ -101,12 +101,7 @@ impl NormalContact for Kendall {
     #[inline]
     fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
         let delta = check_delta(delta)?;
-        let stays = if old.in_contact != 0 {
-            delta >= self.critical_delta
-        } else {
-            delta >= 0.0
-        };
-        if !stays {
+        if !super::stays_in_contact(old, delta, self.critical_delta) {
             return Ok(out_of_contact(delta));
         }
         // δ ≥ δ_c implies P ≥ P_c; the clamp only removes rounding at δ_c, so

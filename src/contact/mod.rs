@@ -286,6 +286,18 @@ pub(crate) fn out_of_contact(delta: f64) -> (NormalResponse, ContactState) {
     )
 }
 
+/// The hysteresis rule of the laws whose contact forms at δ = 0 and breaks
+/// at a critical (negative) overlap: out of contact (or fresh) the surfaces
+/// touch once δ ≥ 0; in contact they stay together down to `critical_delta`.
+#[inline]
+pub(crate) fn stays_in_contact(old: &ContactState, delta: f64, critical_delta: f64) -> bool {
+    if old.in_contact != 0 {
+        delta >= critical_delta
+    } else {
+        delta >= 0.0
+    }
+}
+
 /// Error for a load below what a law can sustain.
 #[inline]
 pub(crate) fn below_pull_off(force: f64) -> Error {

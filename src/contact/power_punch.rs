@@ -93,7 +93,7 @@ impl PowerPunch {
 
     /// A cone of half-angle `half_angle` (rad, in (0, π/2)): `d = 1`, `B = cot γ`.
     pub fn cone(half_angle: f64, e_star: f64) -> Result<Self> {
-        let g = check_half_angle("half_angle", half_angle)?;
+        let g = check::half_angle("half_angle", half_angle)?;
         Self::new(1.0 / g.tan(), 1.0, e_star)
     }
 
@@ -107,7 +107,7 @@ impl PowerPunch {
         imprint_half_angle: f64,
         e_star: f64,
     ) -> Result<Self> {
-        let gi = check_half_angle("indenter_half_angle", indenter_half_angle)?;
+        let gi = check::half_angle("indenter_half_angle", indenter_half_angle)?;
         if !(imprint_half_angle > gi && imprint_half_angle <= core::f64::consts::FRAC_PI_2) {
             return Err(Error::InvalidArgument {
                 name: "imprint_half_angle",
@@ -135,18 +135,6 @@ impl PowerPunch {
     #[inline]
     pub fn radius_at_delta(&self, delta: f64) -> f64 {
         (delta * self.inverse_depth_coefficient).powf(self.inverse_d)
-    }
-}
-
-fn check_half_angle(name: &'static str, g: f64) -> Result<f64> {
-    if g > 0.0 && g < core::f64::consts::FRAC_PI_2 {
-        Ok(g)
-    } else {
-        Err(Error::InvalidArgument {
-            name,
-            value: g,
-            bound: "in (0, pi/2) rad",
-        })
     }
 }
 
