@@ -11,11 +11,61 @@
 //! then a whole-curve error norm: the max over 40 central gaps spanning the
 //! curve of |P̄_N(h̄₀) − P̄_2N(h̄₀)|, with its order. Finally the S-curve
 //! onset μ by bisection on the sign of the largest dᾱ/dh̄₀.
+
+// Options are built by changing a default, field by field, for readability.
+#![allow(clippy::field_reassign_with_default)]
 use asperity::contact::lj_sphere::{LjOptions, LjSolver, LjSphere};
 use asperity::contact::MaugisDugdale;
 use std::time::Instant;
 
+/// `lj_convergence curve MU N` / `lj_convergence pulloff MU N`: one run,
+/// timed (for quick checks of a single case).
+fn single(kind: &str, mu: f64, n: usize) {
+    let sp = LjSphere::from_tabor(mu).unwrap();
+    let t = Instant::now();
+    if kind == "curve" {
+        let mut o = LjOptions::default();
+        o.n_grid = n;
+        let c = LjSolver::new(&sp, o).and_then(|s| s.curve());
+        let dt = t.elapsed();
+        match c {
+            Ok(c) => println!(
+                "curve μ = {mu}, N = {n}: {:.1?}, {} points, {} iterations, {} LU, max residual {:.1e}, pull-off {:.7} (a = {:.4}), jump-in {:?}, jump-out {:?}, hysteresis {:.5}",
+                dt,
+                c.points.len(),
+                c.iterations,
+                c.factorizations,
+                c.max_residual,
+                c.pull_off_load.force,
+                c.pull_off_load.contact_radius,
+                c.jump_in.map(|p| (p.approach, p.force)),
+                c.jump_out.map(|p| (p.approach, p.force)),
+                c.hysteresis_energy
+            ),
+            Err(e) => println!("curve μ = {mu}, N = {n}: {dt:.1?} error: {e}"),
+        }
+    } else {
+        match sp.pull_off(n) {
+            Ok(po) => println!(
+                "pull-off μ = {mu}, N = {n}: {:.1?}, P̄ = {:.8}, a = {:.5}, {} iterations",
+                t.elapsed(),
+                po.force,
+                po.contact_radius,
+                po.iterations
+            ),
+            Err(e) => println!("pull-off μ = {mu}, N = {n}: {:.1?} error: {e}", t.elapsed()),
+        }
+    }
+}
+
 fn main() {
+    let a1 = std::env::args().nth(1).unwrap_or_default();
+    if a1 == "curve" || a1 == "pulloff" {
+        let mu: f64 = std::env::args().nth(2).unwrap().parse().unwrap();
+        let n: usize = std::env::args().nth(3).unwrap().parse().unwrap();
+        single(&a1, mu, n);
+        return;
+    }
     let nmax: usize = std::env::args()
         .nth(1)
         .and_then(|s| s.parse().ok())

@@ -2,6 +2,9 @@
 //! matrix, Newton convergence, pull-off against Maugis–Dugdale, S-shape,
 //! Hertz limit, error paths.
 
+// Options are built by changing a default, field by field, for readability.
+#![allow(clippy::field_reassign_with_default)]
+
 use asperity::contact::lj_sphere::{
     disk_displacement, rigid_force_bar, LjOptions, LjSolver, LjSphere,
 };
@@ -343,4 +346,50 @@ fn pull_off_at_mu_3_between_jkr_and_mu_1() {
         .load_pull_off_point()
         .p_bar;
     assert!(p3 > md && p3 < 1.06 * md, "LJ {p3} MD {md}");
+}
+
+#[test]
+fn curve_at_mu_1e_3_is_finite_and_continuous() {
+    // Nearly rigid: the curve follows the Derjaguin force of the rigid
+    // sphere from far away into contact, every output finite.
+    let mut o = LjOptions::default();
+    o.n_grid = 64;
+    o.target_points = 120;
+    o.max_force = 2.0;
+    let c = LjSolver::new(&LjSphere::from_tabor(1e-3).unwrap(), o)
+        .unwrap()
+        .curve()
+        .unwrap();
+    assert!(c.points.len() > 50);
+    for w in c.points.windows(2) {
+        let (a, b) = (&w[0], &w[1]);
+        assert!(a.force.is_finite() && a.approach.is_finite() && a.contact_radius.is_finite());
+        assert!((b.force - a.force).abs() < 0.25, "jump {a:?} → {b:?}");
+        assert!((b.approach - a.approach).abs() < 0.5);
+    }
+    assert!((c.pull_off_load.force + 2.0).abs() < 2e-3, "{}", c.pull_off_load.force);
+    assert!(c.jump_in.is_none());
+}
+
+#[test]
+#[ignore = "release only: about 1 s in release (cargo test --release --test lj_sphere -- --ignored)"]
+fn curve_at_mu_3_on_256_cells_with_the_moving_band() {
+    // The fixed mesh needed N = 768 at μ = 3; the moving edge band resolves
+    // the neck and the contact edge at N = 256.
+    let mut o = LjOptions::default();
+    o.n_grid = 256;
+    let c = LjSolver::new(&LjSphere::from_tabor(3.0).unwrap(), o)
+        .unwrap()
+        .curve()
+        .unwrap();
+    assert!(c.points.len() >= 200);
+    for w in c.points.windows(2) {
+        assert!(w[0].force.is_finite() && w[1].force.is_finite());
+        assert!((w[1].force - w[0].force).abs() < 1.0);
+    }
+    let (ji, jo) = (c.jump_in.unwrap(), c.jump_out.unwrap());
+    assert!(ji.approach > jo.approach);
+    let p = -c.pull_off_load.force;
+    assert!((p - 1.551).abs() < 2e-3, "{p}");
+    assert!(c.points.last().unwrap().force >= 10.0);
 }

@@ -165,6 +165,7 @@ pub(crate) trait Pointwise: NormalContact {
 /// # Safety
 /// The pointers of `b` must satisfy the contract of [`RawBatch`].
 #[inline]
+#[allow(clippy::needless_range_loop)] // index loops over parallel arrays vectorise
 pub(crate) unsafe fn eval_pointwise<L: Pointwise>(
     law: &L,
     b: &RawBatch,

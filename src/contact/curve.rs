@@ -54,6 +54,7 @@
 //! tolerance asked of the table: the table builder picks its knots among the
 //! points and measures its error on the points it leaves out.
 
+use super::lj_sphere::{LjOptions, LjSolver, LjSphere};
 use super::{MaugisDugdale, NormalContact};
 use crate::error::{Error, Result};
 use core::f64::consts::PI;
@@ -498,6 +499,84 @@ impl EquilibriumCurve {
         Ok(curve)
     }
 }
+
+impl EquilibriumCurve {
+    /// Sample the equilibrium path of a Lennard-Jones sphere (the numerical
+    /// solver of [`super::lj_sphere`] with `n_grid` cells, 0 = the converged
+    /// default grid, and otherwise default options: the same discrete model
+    /// as `lj.solver(n_grid)`), via
+    /// [`LjSolver::path_samples`]: neighbouring
+    /// points interpolate each other to `tolerance/8` (cubic Hermite along
+    /// the continuation's path parameter), with the jump-in and jump-out
+    /// turning points, the load-controlled pull-off, the zero of the force
+    /// and the contact-onset corner exact.
+    ///
+    /// Reduced units are the sphere's: Δ = ᾱ = α/z₀ (origin 0, where the
+    /// undeformed apex sits at z₀; scale z₀), `F = P/(πRΔγ)`, radius
+    /// `a/√(Rz₀)`. The far tail is [`FarTail::RigidLennardJones`] (the path
+    /// starts at the central gap `6 + 4√μ`, where the rigid law is exact to
+    /// O(μ^{3/2} h̄₀⁻⁴)), checked on exact points out to ten times that gap;
+    /// the deep tail is Hertz, `F = 4/(3π μ^{3/2}) x^{3/2}`, `radius = x^{1/2}`
+    /// with `x = Δ − delta_zero` and a fitted correction, checked on the
+    /// continuation up to three times the last point's force
+    /// ([`LjOptions::max_force`]).
+    ///
+    /// Errors: [`Error::InvalidArgument`] for a tolerance outside
+    /// [1e-10, 0.1], a grid in `1..16` or a rigid sphere (μ = 0); the
+    /// solver's errors.
+    pub fn from_lj_sphere(lj: &LjSphere, n_grid: usize, tolerance: f64) -> Result<Self> {
+        let tol =
+            crate::error::check::in_range("tolerance", tolerance, 1e-10, 0.1, "in [1e-10, 0.1]")?;
+        let mu = lj.tabor();
+        if mu.is_nan() || mu <= 0.0 {
+            return Err(bad(
+                "tabor_parameter",
+                mu,
+                "> 0 (a rigid sphere never comes into contact)",
+            ));
+        }
+        // The default model of `lj.solver(n_grid)` (the start gap changes
+        // only where the continuation begins): far enough that the rigid
+        // law, fitted to the first point, is exact to a quarter of the
+        // tolerance beyond it (the elastic correction of the attraction is
+        // ≈ 20 μ^{3/2} h̄₀⁻⁴ relative, measured at μ = 1).
+        let o = LjOptions {
+            n_grid,
+            start_gap: (6.0 + 4.0 * mu.sqrt()).max((80.0 * mu.powf(1.5) / tol).powf(0.25)),
+            ..LjOptions::default()
+        };
+        let solver = LjSolver::new(lj, o)?;
+        let s = solver.path_samples(tol)?;
+        let curve = EquilibriumCurve {
+            source: format!(
+                "Lennard-Jones sphere: R = {:e} m, E* = {:e} Pa, w = {:e} J/m^2, z0 = {:e} m \
+                 (mu = {mu:e}), N = {}; sampled to {tol:e}",
+                lj.radius,
+                lj.e_star,
+                lj.work_of_adhesion,
+                lj.z0,
+                solver.nodes().len()
+            ),
+            approach_origin: 0.0,
+            approach_scale: lj.z0,
+            force_scale: lj.force_scale(),
+            radius_scale: lj.radius_scale(),
+            points: s.points,
+            far_tail: FarTail::RigidLennardJones,
+            deep_tail: DeepTail::Hertz {
+                force_coefficient: 4.0 / (3.0 * PI * mu.powf(1.5)),
+                radius_coefficient: 1.0,
+                delta_zero: LJ_DELTA_ZERO,
+            },
+            tail_checks: s.tail_checks,
+        };
+        curve.validate()?;
+        Ok(curve)
+    }
+}
+
+/// Hertz origin of the Lennard-Jones deep tail (reduced approach).
+const LJ_DELTA_ZERO: f64 = 0.0;
 
 /// A contact-branch point of Maugis–Dugdale as a path point along t = 1/s.
 fn contact_path_point(

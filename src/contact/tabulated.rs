@@ -81,7 +81,7 @@
 
 use super::curve::{exact_f64, exact_vec, DeepTail, EquilibriumCurve, FarTail, PathPoint};
 use super::{
-    below_pull_off, check_delta, check_force, finite_response, ContactState, Control,
+    below_pull_off, check_delta, check_force, finite_response, ContactState, Control, LjSphere,
     MaugisDugdale, NormalContact, NormalResponse,
 };
 use crate::error::{Error, Result};
@@ -578,11 +578,16 @@ impl TabulatedLaw {
         }
         // Displacement-controlled pull-off: where contact is lost going back
         // along the last piece (radius reaching 0), or its start.
+        // With a Lennard-Jones far tail the force stays continuous where the
+        // radius reaches 0, and the contact is lost at the jump-out turning
+        // point when there is one (the start of the last piece).
         let mut disp_idx = lp0;
-        for i in (lp0..=lp1).rev() {
-            if p[i].radius == 0.0 {
-                disp_idx = i;
-                break;
+        if !(matches!(curve.far_tail, FarTail::RigidLennardJones) && lp0 > 0) {
+            for i in (lp0..=lp1).rev() {
+                if p[i].radius == 0.0 {
+                    disp_idx = i;
+                    break;
+                }
             }
         }
         let force_floor = 1e-3 * p[load_idx].force.abs().max(f64::MIN_POSITIVE);
@@ -607,7 +612,9 @@ impl TabulatedLaw {
             return Err(bad("curve", 0.0, "a curve with a stable piece"));
         }
         let mut branches = Vec::new();
-        let mut seg_data: Vec<(SegmentData, Vec<(f64, f64, f64)>)> = Vec::new();
+        // Skipped points with the branch of their segment (stable branches may
+        // overlap in Δ: the far branch and the contact branch of an S-curve).
+        let mut seg_data: Vec<(usize, Vec<(f64, f64, f64)>)> = Vec::new();
         for (k, bp) in branch_pieces.iter().enumerate() {
             let lo = if k == 0 {
                 None
@@ -674,8 +681,8 @@ impl TabulatedLaw {
                         force_floor,
                         radius_floor,
                     )?;
-                    segments.push(sd.clone());
-                    seg_data.push((sd, skipped));
+                    segments.push(sd);
+                    seg_data.push((k, skipped));
                 }
             }
             branches.push(BranchData { lo, hi, segments });
@@ -746,10 +753,9 @@ impl TabulatedLaw {
         let mut table = Self::from_data(data)?;
         // Measure the final table on every skipped point and tail check.
         let mut worst = 0.0f64;
-        for (_, skipped) in &seg_data {
+        for (k, skipped) in &seg_data {
             for &(x, fe, ae) in skipped {
-                let k = table.branch_containing(x);
-                let (ft, at, _) = table.on_branch(k, x);
+                let (ft, at, _) = table.on_branch(*k, x);
                 worst = worst.max(measure(ft, fe, at, ae, force_floor, radius_floor));
             }
         }
@@ -762,6 +768,7 @@ impl TabulatedLaw {
                 continue;
             };
             let (ft, at, _) = table.on_branch(k, c.delta);
+
             worst = worst.max(measure(
                 ft,
                 c.force,
@@ -956,6 +963,18 @@ impl TabulatedLaw {
     /// then [`TabulatedLaw::from_curve`].
     pub fn from_maugis_dugdale(md: &MaugisDugdale, tolerance: f64) -> Result<Self> {
         let curve = EquilibriumCurve::from_maugis_dugdale(md, tolerance)?;
+        Self::from_curve(&curve, tolerance)
+    }
+
+    /// Build a table for a Lennard-Jones sphere on `n_grid` cells (0 = the
+    /// converged default grid, [`LjSphere::converged_default_grid`]): the
+    /// curve of [`EquilibriumCurve::from_lj_sphere`] sampled for
+    /// `tolerance`, then [`TabulatedLaw::from_curve`]. The table reproduces
+    /// `lj.solver(n_grid)` (the same discrete model) within `tolerance` in
+    /// the error measure of the module documentation, jumps at the solver's
+    /// turning points and pulls off at its force minimum.
+    pub fn from_lj_sphere(lj: &LjSphere, n_grid: usize, tolerance: f64) -> Result<Self> {
+        let curve = EquilibriumCurve::from_lj_sphere(lj, n_grid, tolerance)?;
         Self::from_curve(&curve, tolerance)
     }
 
@@ -1250,14 +1269,6 @@ impl TabulatedLaw {
     }
 
     // ---------------------------------------------------------- evaluation
-
-    /// The branch containing x searched from branch 0 (for measurements).
-    fn branch_containing(&self, x: f64) -> usize {
-        (0..self.branches.len())
-            .rev()
-            .find(|&k| x >= self.branches[k].lo && x <= self.branches[k].hi)
-            .unwrap_or(0)
-    }
 
     #[cold]
     fn jump_forward(&self, k: usize, x: f64) -> usize {

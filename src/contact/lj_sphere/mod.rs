@@ -26,7 +26,11 @@
 //!   geometric growth beyond (the pressure decays as `r̄⁻⁶`), and an optional
 //!   concentration of cells (`B > 0`) in a band of width `w` around an
 //!   expected contact edge `a_e` (used by the pull-off solver, whose edge
-//!   is known in advance). The collocation node `x_j` of cell `j` is the image
+//!   is known in advance). For μ > 1 the curve and the pull-off use a
+//!   **moving edge band** instead: the band follows the edge along the
+//!   continuation, with a remesh (new band, influence matrix rebuilt, state
+//!   transferred and re-converged) whenever the edge leaves the band's inner
+//!   half (module `remesh`). The collocation node `x_j` of cell `j` is the image
 //!   of the cell's `ξ`-midpoint, so the scheme is second order on the smooth
 //!   map ([`LjSolver::mesh`]).
 //! * **Pressure** piecewise constant on each cell, `p̄_j = p̄(h̄(x_j))`.
@@ -87,15 +91,17 @@
 //! rank-one Sherman–Morrison correction (one extra dot product per solve).
 //! The factorisation is refreshed when a solve contracted by less than a
 //! factor 0.08 per iteration. The tangent comes from the same
-//! factorisation (`[J 1; (M T_k)ᵀ] T = e_{N+1}`). The predictor is the
-//! quadratic extrapolation through the last three points in the path
-//! parameter. The step `σ` adapts to a target distance in the scaled
+//! factorisation (`[J 1; (M T_k)ᵀ] T = e_{N+1}`), refined by a few
+//! residual-correction sweeps against the true Jacobian (`O(N²)` each; a
+//! fresh factorisation only when they do not contract), so tangents are
+//! exact to ~1e-9 relative. The predictor is the cubic Hermite
+//! extrapolation through the last two points with their tangents. The step `σ` adapts to a target distance in the scaled
 //! `(ᾱ, P̄, h̄₀)` plane (about [`LjOptions::target_points`] points) and to a
 //! largest log-gap change of 0.1 per step. Special points — turning points
 //! of ᾱ (`dᾱ/ds = 0`) and the force minimum (`dP̄/ds = 0`, the derivative by
 //! central differences along the exact tangent) — are roots along the path,
 //! refined by the Illinois method in the step length from the bracketing
-//! sample, with exact tangents (fresh factorisations).
+//! sample, with exact (refined) tangents from the current factorisation.
 //!
 //! # The curve
 //!
@@ -126,7 +132,11 @@ use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::{MatMut, MatRef};
 
 mod path;
+mod remesh;
+mod sample;
 use path::{BWork, State};
+use remesh::{SegCache, Track};
+pub use sample::LjPathSamples;
 
 /// Chord-Newton contraction factor above which the continuation refactors
 /// the Jacobian before the next step.
@@ -388,6 +398,17 @@ pub struct LjPoint {
     /// `dP̄/dᾱ` along the curve (3-point finite differences in `h̄₀`; infinite
     /// magnitude at a turning point, negative on the unstable branch).
     pub stiffness: f64,
+    /// `dᾱ/ds` along the continuation's unit tangent (`s` the pseudo-arclength
+    /// of [`LjSolver::curve`], metric `1/N` on each log-gap and 1 on ᾱ): 0 at
+    /// a turning point, negative on the unstable branch; NaN when not computed
+    /// (points of [`LjSolver::sweep`]).
+    pub d_approach: f64,
+    /// `dP̄/ds` along the same tangent (central differences along the exact
+    /// tangent); NaN when not computed.
+    pub d_force: f64,
+    /// `d(contact radius)/ds` along the same tangent (0 out of contact); NaN
+    /// when not computed.
+    pub d_radius: f64,
 }
 
 /// The force–approach curve and its characteristic points.
@@ -1253,8 +1274,9 @@ impl LjSolver {
     /// The whole force–approach curve (see the module documentation).
     pub fn curve(&self) -> Result<LjCurve> {
         let o = self.opts;
-        let (states, mut bw) = self.path_march(o.max_force, o.target_points, &|_| false)?;
-        self.finish_path(states, &mut bw)
+        let (states, mut bw, track) =
+            self.path_march_tracked(o.max_force, o.target_points, &|_| false, true)?;
+        self.finish_path_tracked(states, &track, &mut bw)
     }
 
     /// Scales of the `(ᾱ, P̄)` plane for the step control.
@@ -1273,9 +1295,37 @@ impl LjSolver {
         target: usize,
         stop: &dyn Fn(&[State]) -> bool,
     ) -> Result<(Vec<State>, BWork)> {
+        let (states, bw, _) = self.path_march_tracked(max_force, target, stop, false)?;
+        Ok((states, bw))
+    }
+
+    /// [`LjSolver::path_march`], with the moving edge band of
+    /// [`LjSolver::band_plan`] when `adaptive` (module `remesh`): the states
+    /// then live on the meshes of their segments in the returned track.
+    fn path_march_tracked(
+        &self,
+        max_force: f64,
+        target: usize,
+        stop: &dyn Fn(&[State]) -> bool,
+        adaptive: bool,
+    ) -> Result<(Vec<State>, BWork, Track)> {
         let o = self.opts;
+        let plan = if adaptive { self.band_plan() } else { None };
+        let mut track = Track {
+            plan,
+            bands: vec![0.0],
+            seg: vec![0],
+            remeshes: 0,
+        };
+        let mut cur: Option<LjSolver> = match plan {
+            Some(pl) => Some(self.rebanded(0.0, pl)?),
+            None => None,
+        };
         let mut bw = BWork::new(self.n());
-        let st0 = self.path_start(o.start_gap, &mut bw, false)?;
+        let st0 = cur
+            .as_ref()
+            .unwrap_or(self)
+            .path_start(o.start_gap, &mut bw, false)?;
         let (sa, sp) = self.plane_scales(max_force);
         let ds_target = 2.2 / target.max(10) as f64;
         let qdist = |a: &LjPoint, b: &LjPoint| {
@@ -1290,6 +1340,7 @@ impl LjSolver {
         let mut fails = 0u32;
         loop {
             guard += 1;
+            let sv: &LjSolver = cur.as_ref().unwrap_or(self);
             let last = states.last().unwrap();
             if last.pt.force >= max_force || stop(&states) {
                 break;
@@ -1310,18 +1361,21 @@ impl LjSolver {
             }
             // Quadratic extrapolation through the last three states (in the
             // path parameter) as the predictor; the tangent alone at first.
-            let guess = if states.len() >= 3 && fails == 0 {
-                let k = states.len();
-                let (a, b, c) = (&states[k - 3], &states[k - 2], &states[k - 1]);
-                let x = c.s + sigma;
-                let w0 = (x - b.s) * (x - c.s) / ((a.s - b.s) * (a.s - c.s));
-                let w1 = (x - a.s) * (x - c.s) / ((b.s - a.s) * (b.s - c.s));
-                let w2 = (x - a.s) * (x - b.s) / ((c.s - a.s) * (c.s - b.s));
-                if w0.is_finite() && w1.is_finite() && w2.is_finite() {
-                    let y = (0..self.n())
-                        .map(|i| w0 * a.y[i] + w1 * b.y[i] + w2 * c.y[i])
+            let k = states.len();
+            // Cubic Hermite extrapolation through the last two states with
+            // their tangents (refined to the true Jacobian, see
+            // `LjSolver::tangent`) as the predictor; the tangent alone at
+            // first and after a failure or a remesh.
+            let guess = if k >= 2 && fails == 0 && track.seg[k - 2] == track.seg[k - 1] {
+                let (b, c) = (&states[k - 2], &states[k - 1]);
+                let d = c.s - b.s;
+                let th = 1.0 + sigma / d;
+                if th.is_finite() && d > 0.0 {
+                    let n = self.n();
+                    let y = (0..n)
+                        .map(|i| hermite01(b.y[i], d * b.t[i], c.y[i], d * c.t[i], th))
                         .collect();
-                    Some((y, w0 * a.al + w1 * b.al + w2 * c.al))
+                    Some((y, hermite01(b.al, d * b.t[n], c.al, d * c.t[n], th)))
                 } else {
                     None
                 }
@@ -1333,9 +1387,9 @@ impl LjSolver {
             if bw.rho > RHO_REFRESH {
                 bw.invalidate();
             }
-            match self.path_step(last, sigma, guess, &mut bw, false) {
+            match sv.path_step(last, sigma, guess, &mut bw, false) {
                 Err(e) => {
-                    if is_unresolved(&e) {
+                    if is_unresolved(&e) && plan.is_none() {
                         // Smaller steps cannot help an under-resolved grid.
                         return Err(e);
                     }
@@ -1364,19 +1418,49 @@ impl LjSolver {
                     fails = 0;
                     let f = if ratio > 0.0 { 1.0 / ratio } else { 2.0 };
                     sigma *= f.clamp(0.5, 2.0);
+                    // Moving band: remesh when the edge zone leaves the
+                    // inner half of the band.
+                    let seg = *track.seg.last().unwrap();
+                    let centre = if plan.is_some() {
+                        sv.edge_marker(&st.y)
+                    } else {
+                        0.0
+                    };
+                    let moved = plan.map(|(w, _)| (centre - track.bands[seg]).abs() > 0.5 * w);
+                    let dir = (centre - track.bands[seg]).signum();
                     states.push(st);
+                    track.seg.push(seg);
+                    if let (Some(true), Some(pl)) = (moved, plan) {
+                        let a_e = (centre + 0.3 * pl.0 * dir).max(0.0);
+                        let new = sv.rebanded(a_e, pl)?;
+                        let moved_st = sv.transfer(states.last().unwrap(), &new, &mut bw)?;
+                        track.bands.push(a_e);
+                        track.seg.push(seg + 1);
+                        track.remeshes += 1;
+                        states.push(moved_st);
+                        cur = Some(new);
+                    }
                 }
             }
         }
-        Ok((states, bw))
+        Ok((states, bw, track))
     }
 
     /// The state `st` again, with its tangent and derivatives exact.
     fn exactify(&self, st: &State, bw: &mut BWork) -> Result<State> {
         let mut y = st.y.clone();
         let mut al = st.al;
-        self.bnewton(&path::Con::Approach(st.al), &mut y, &mut al, bw, true)?;
-        let t = self.tangent(bw, &st.t, true)?;
+        if self
+            .bnewton(&path::Con::Approach(st.al), &mut y, &mut al, bw, false)
+            .is_err()
+        {
+            bw.invalidate();
+            y.copy_from_slice(&st.y);
+            al = st.al;
+            self.bnewton(&path::Con::Approach(st.al), &mut y, &mut al, bw, true)?;
+        }
+        // Tangent refined against the true Jacobian (`LjSolver::tangent`).
+        let t = self.tangent(bw, &st.t, false)?;
         self.make_state(&y, al, t, st.s, bw, true)
     }
 
@@ -1385,6 +1469,8 @@ impl LjSolver {
     fn refine_between(
         &self,
         states: &[State],
+        track: &Track,
+        cache: &mut SegCache,
         i: usize,
         bw: &mut BWork,
         phi: &dyn Fn(&State) -> f64,
@@ -1398,13 +1484,24 @@ impl LjSolver {
             cands.push(i + 1);
         }
         for a in cands {
-            let l = self.exactify(&states[a], bw)?;
-            let r = self.exactify(&states[a + 1], bw)?;
+            if !track.same(a) {
+                continue;
+            }
+            if track.plan.is_some() {
+                bw.invalidate();
+            }
+            let sv = self.seg_solver(track, track.seg[a], cache)?;
+            let l = sv.exactify(&states[a], bw)?;
+            let r = sv.exactify(&states[a + 1], bw)?;
             if phi(&l) * phi(&r) <= 0.0 {
-                return self.path_root(&l, &r, bw, phi);
+                return sv.path_root(&l, &r, bw, phi);
             }
         }
-        self.exactify(&states[i], bw)
+        if track.plan.is_some() {
+            bw.invalidate();
+        }
+        self.seg_solver(track, track.seg[i], cache)?
+            .exactify(&states[i], bw)
     }
 
     /// The sample interval holding the force minimum: `[i−1, i]` or `[i, i+1]`
@@ -1422,7 +1519,28 @@ impl LjSolver {
         })
     }
 
+    /// The curve from the states of a march on the fixed mesh.
+    #[allow(dead_code)]
     fn finish_path(&self, states: Vec<State>, bw: &mut BWork) -> Result<LjCurve> {
+        let track = Track {
+            plan: None,
+            bands: vec![0.0],
+            seg: vec![0; states.len()],
+            remeshes: 0,
+        };
+        self.finish_path_tracked(states, &track, bw)
+    }
+
+    /// The curve from the states of a (moving-band) march: special points
+    /// refined on the meshes of their segments; of the two copies of a
+    /// remeshed state the one on the old mesh is dropped.
+    fn finish_path_tracked(
+        &self,
+        states: Vec<State>,
+        track: &Track,
+        bw: &mut BWork,
+    ) -> Result<LjCurve> {
+        let mut cache: SegCache = None;
         let n_al = self.n();
         let ta = |s: &State| s.t[n_al];
         // Turning points of ᾱ along the path: sign changes of dᾱ/ds.
@@ -1439,8 +1557,8 @@ impl LjSolver {
         let mut jump_in = None;
         let mut jump_out = None;
         if turns.len() >= 2 && turns[0].1 && !turns[1].1 {
-            let t1 = self.refine_between(&states, turns[0].0, bw, &ta)?;
-            let t2 = self.refine_between(&states, turns[1].0, bw, &ta)?;
+            let t1 = self.refine_between(&states, track, &mut cache, turns[0].0, bw, &ta)?;
+            let t2 = self.refine_between(&states, track, &mut cache, turns[1].0, bw, &ta)?;
             jump_in = Some(t1.pt);
             jump_out = Some(t2.pt);
             extra.push(t1);
@@ -1448,7 +1566,7 @@ impl LjSolver {
         }
         let po = match Self::min_interval(&states) {
             Some(i) => {
-                let p = self.refine_between(&states, i, bw, &|s| s.df)?;
+                let p = self.refine_between(&states, track, &mut cache, i, bw, &|s| s.df)?;
                 extra.push(p.clone());
                 p.pt
             }
@@ -1460,7 +1578,13 @@ impl LjSolver {
                     .pt
             }
         };
-        let mut all = states;
+        let ns = states.len();
+        let mut all: Vec<State> = states
+            .into_iter()
+            .enumerate()
+            .filter(|(i, _)| *i + 1 == ns || track.same(*i))
+            .map(|(_, st)| st)
+            .collect();
         for e in extra {
             let pos = all.iter().position(|p| p.s > e.s).unwrap_or(all.len());
             if pos > 0 && all[pos - 1].s == e.s {
@@ -1553,9 +1677,15 @@ impl LjSolver {
         };
         let mut o = options;
         o.max_force = 1.0;
-        o.edge_fraction = 0.5;
-        o.edge_radius = a_po;
-        o.edge_width = (2.0 * mu.powf(-1.5)).clamp(0.1, 1.0);
+        // μ > 1: the moving edge band (module `remesh`) follows the edge
+        // from the neck to the pull-off; μ ≤ 1: a fixed band at the pull-off
+        // radius of the coarse curve.
+        let adaptive = mu > 1.0 && options.edge_fraction == 0.0;
+        if !adaptive {
+            o.edge_fraction = 0.5;
+            o.edge_radius = a_po;
+            o.edge_width = (2.0 * mu.powf(-1.5)).clamp(0.1, 1.0);
+        }
         let s = LjSolver::new(sphere, o)?;
         let stop = |st: &[State]| {
             let n = st.len();
@@ -1574,9 +1704,10 @@ impl LjSolver {
                 && last.t[last.t.len() - 1] > 0.0
                 && last.pt.force > st[imin].pt.force + 0.02
         };
-        let (states, mut bw) = s.path_march(1.0, 80, &stop)?;
+        let (states, mut bw, track) = s.path_march_tracked(1.0, 80, &stop, adaptive)?;
+        let mut cache: SegCache = None;
         let best = match Self::min_interval(&states) {
-            Some(i) => s.refine_between(&states, i, &mut bw, &|st| st.df)?,
+            Some(i) => s.refine_between(&states, &track, &mut cache, i, &mut bw, &|st| st.df)?,
             None => {
                 return Err(Error::NotConverged {
                     what: "LJ sphere pull-off: no force minimum along the continuation",
@@ -1699,12 +1830,6 @@ impl<'a> Marcher<'a> {
             match self.step_limited(g, target, if g == gap { 8 } else { 40 }) {
                 Ok(()) => return Ok(()),
                 Err(e) => {
-                    if std::env::var("LJDBG").is_ok() {
-                        eprintln!(
-                            "adv fail g={g} h0={} al={} step={:?} {e}",
-                            self.h0, self.al, step
-                        );
-                    }
                     err = Some(e)
                 }
             }
@@ -1778,6 +1903,9 @@ impl<'a> Marcher<'a> {
             force: f,
             contact_radius: a,
             stiffness: f64::NAN,
+            d_approach: f64::NAN,
+            d_force: f64::NAN,
+            d_radius: f64::NAN,
         })
     }
 
