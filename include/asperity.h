@@ -71,6 +71,24 @@
 // Surface law: exponential, `range` = decay length ℓ (m).
 #define ASPERITY_SURFACE_LAW_EXPONENTIAL 3
 
+// Fidelity: DMT.
+#define ASPERITY_FIDELITY_DMT 0
+
+// Fidelity: tabulated Maugis–Dugdale.
+#define ASPERITY_FIDELITY_TABULATED_MAUGIS_DUGDALE 1
+
+// Fidelity: tabulated Lennard-Jones sphere.
+#define ASPERITY_FIDELITY_TABULATED_LENNARD_JONES 2
+
+// Fidelity: JKR.
+#define ASPERITY_FIDELITY_JKR 3
+
+// Fidelity: Maugis–Dugdale (λ = 1.157 μ).
+#define ASPERITY_FIDELITY_MAUGIS_DUGDALE 4
+
+// Fidelity: the full numerical Lennard-Jones sphere.
+#define ASPERITY_FIDELITY_LENNARD_JONES 5
+
 // Segment label: not assigned.
 #define ASPERITY_SEGMENT_UNKNOWN 0
 
@@ -446,6 +464,37 @@ typedef struct AsperityNormalResponse {
     int32_t reserved;
 } AsperityNormalResponse;
 
+// One model measured against the converged Lennard-Jones sphere.
+typedef struct AsperityFidelityAssessment {
+    // One of `ASPERITY_FIDELITY_*`.
+    int32_t law;
+    // Reserved, 0.
+    int32_t reserved;
+    // |P_c,model − P_c,LJ| (N), load-controlled pull-off.
+    double pull_off_error;
+    // Largest force difference over a displacement-controlled approach and
+    // retraction (N).
+    double curve_error;
+    // Time per evaluation on this machine (s).
+    double cost_per_call;
+    // One-time construction time (s).
+    double build_time;
+} AsperityFidelityAssessment;
+
+// The advisor's answer.
+typedef struct AsperityFidelityAdvice {
+    // The cheapest model within the tolerance (`ASPERITY_FIDELITY_*`).
+    int32_t choice;
+    // Reference grid size of the Lennard-Jones solution.
+    int32_t reference_grid;
+    // Tabor parameter μ.
+    double tabor;
+    // Load-controlled pull-off of the reference (N, negative).
+    double reference_pull_off;
+    // Every model, cheapest first (index = `ASPERITY_FIDELITY_*`).
+    struct AsperityFidelityAssessment assessments[6];
+} AsperityFidelityAdvice;
+
 // Options of `asperity_indentation_fit`. Fill with
 // `asperity_indentation_default_options` and change what you need.
 typedef struct AsperityIndentationOptions {
@@ -562,6 +611,8 @@ typedef struct AsperityIndentationResult {
     // 1 when the segments came from the labels.
     int32_t segments_from_labels;
 } AsperityIndentationResult;
+
+
 
 #ifdef __cplusplus
 extern "C" {
@@ -716,6 +767,18 @@ int32_t asperity_pull_off_force(const struct AsperityNormalLaw *law,
 // tolerances.
 int32_t asperity_law_length_scale(const struct AsperityNormalLaw *law,
                                   double *length);
+
+// The cheapest adhesive-sphere model whose pull-off and force–approach
+// errors against the converged Lennard-Jones sphere are within
+// `force_tolerance` (N): radius R (m), contact modulus E* (Pa), work of
+// adhesion w (J/m²), equilibrium separation z₀ (m). Runs the Lennard-Jones
+// solver (milliseconds to seconds); not for a hot path.
+int32_t asperity_fidelity_advise(double radius,
+                                 double e_star,
+                                 double work_of_adhesion,
+                                 double z0,
+                                 double force_tolerance,
+                                 struct AsperityFidelityAdvice *out);
 
 // Fill `options` with the defaults: Berkovich, ideal area, anchor at the
 // maximum point, labels used, diamond indenter (1141 GPa, 0.07), sample

@@ -21,6 +21,8 @@
 //! * [`contact`]: the laws, one file each, all implementing
 //!   [`contact::NormalContact`].
 //! * [`rescaling`] and [`indentation`]: Borodich rescaling, Galanov shapes, κ and d from measured curves, Oliver–Pharr, hardness numbers.
+//! * [`fidelity`]: the cheapest adhesive-sphere model within a force
+//!   tolerance, measured against the converged Lennard-Jones sphere.
 //! * [`error`]: the error type; every fallible call returns
 //!   [`error::Result`].
 //! * `ffi`: the C ABI (thin translation only; see `include/asperity.h`).
@@ -37,6 +39,7 @@
 pub mod contact;
 pub mod error;
 pub mod ffi;
+pub mod fidelity;
 pub mod indentation;
 pub mod material;
 pub mod rescaling;

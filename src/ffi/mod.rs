@@ -9,6 +9,7 @@
 #![allow(clippy::missing_safety_doc)]
 
 pub mod contact;
+pub mod fidelity;
 pub mod indentation;
 pub mod lj_sphere;
 pub mod material;
