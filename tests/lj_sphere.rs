@@ -325,7 +325,6 @@ fn dimensional_wrapper_and_ffi() {
 }
 
 #[test]
-#[ignore = "release only: about 3 s in release (cargo test --release --test lj_sphere -- --ignored)"]
 fn pull_off_at_mu_3_between_jkr_and_mu_1() {
     // The pseudo-arclength continuation passes the fold of h̄₀ (≈ 1.02 at
     // ᾱ ≈ −5) that stalled the central-gap continuation.
@@ -372,7 +371,6 @@ fn curve_at_mu_1e_3_is_finite_and_continuous() {
 }
 
 #[test]
-#[ignore = "release only: about 1 s in release (cargo test --release --test lj_sphere -- --ignored)"]
 fn curve_at_mu_3_on_256_cells_with_the_moving_band() {
     // The fixed mesh needed N = 768 at μ = 3; the moving edge band resolves
     // the neck and the contact edge at N = 256.

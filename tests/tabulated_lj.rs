@@ -202,7 +202,6 @@ fn check(mu: f64, n: usize, samples: usize, verbose: bool) -> TabulatedLaw {
 }
 
 #[test]
-#[ignore]
 fn s_shaped_mu_1_matches_solver_coarse_grid() {
     check(1.0, 96, 30, false);
 }
@@ -213,8 +212,7 @@ fn small_mu_matches_solver_coarse_grid() {
 }
 
 #[test]
-#[ignore]
-fn mu_0_1_0_5_1_at_n128_release() {
+fn mu_0_1_0_5_1_at_n128() {
     for mu in [0.1, 0.5, 1.0] {
         check(mu, 128, 400, true);
     }
