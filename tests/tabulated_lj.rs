@@ -2,11 +2,9 @@
 //! grid and mesh), jump and pull-off points against `LjSolver::curve`,
 //! hysteresis, far tail, storage and the C constructor.
 //!
-//! Debug runs use μ = 0.1 at N = 64 (μ = 1 at N = 96 takes ~100 s unoptimised
-//! and is ignored);
-//! `cargo test --release --test tabulated_lj -- --ignored --nocapture` runs
-//! μ ∈ {0.1, 0.5, 1} at N = 128 with dense comparisons and prints sizes,
-//! errors and build times.
+//! Cases: μ = 0.1 at N = 64, μ = 1 at N = 96, and μ ∈ {0.1, 0.5, 1} at
+//! N = 128 with dense comparisons (`-- --nocapture` prints sizes, errors and
+//! build times); about 6 s with the optimised test profile.
 
 use asperity::contact::curve::EquilibriumCurve;
 use asperity::contact::lj_sphere::{rigid_force_bar, LjSolution, LjSolver, LjSphere};
