@@ -203,7 +203,7 @@ impl AsperityNormalLaw {
     }
 }
 
-fn control_of(control: i32) -> Result<Control> {
+pub(crate) fn control_of(control: i32) -> Result<Control> {
     match control {
         ASPERITY_CONTROL_LOAD => Ok(Control::Load),
         ASPERITY_CONTROL_DISPLACEMENT => Ok(Control::Displacement),
@@ -480,17 +480,25 @@ pub unsafe extern "C" fn asperity_normal_eval(
     guard(|| {
         let law = input(law, "law")?;
         let out = output(out, "out")?;
-        let old = if old_state.is_null() {
-            ContactState::default()
-        } else {
-            old_state.read()
-        };
+        let old = read_state(old_state);
         with_law!(law, l => eval_one(l, delta, &old, new_state, out))
     })
 }
 
+/// The caller's old state, or a fresh one for NULL.
 #[inline(always)]
-unsafe fn eval_one<L: NormalContact>(
+pub(crate) unsafe fn read_state(old_state: *const ContactState) -> ContactState {
+    if old_state.is_null() {
+        ContactState::default()
+    } else {
+        old_state.read()
+    }
+}
+
+/// One evaluation written through the C ABI's out-pointers, with the
+/// finiteness guarantee; shared by every scalar `*_eval` export.
+#[inline(always)]
+pub(crate) unsafe fn eval_one<L: NormalContact>(
     law: &L,
     delta: f64,
     old: &ContactState,

@@ -9,8 +9,7 @@
 
 use super::{guard, input, output, Failure};
 use crate::contact::{
-    ContactState, Control, LjSphere, MaugisDugdale, NormalContact, NormalResponse, RawBatch,
-    TabulatedLaw,
+    ContactState, LjSphere, MaugisDugdale, NormalContact, NormalResponse, RawBatch, TabulatedLaw,
 };
 use crate::error::Error;
 use std::ffi::c_char;
@@ -19,17 +18,6 @@ use std::ffi::c_char;
 /// `asperity_table_new_*` or `asperity_table_from_json`, release it with
 /// `asperity_table_free`. Safe to share between threads.
 pub struct AsperityTable(TabulatedLaw);
-
-fn control_of(control: i32) -> crate::error::Result<Control> {
-    match control {
-        super::contact::ASPERITY_CONTROL_LOAD => Ok(Control::Load),
-        super::contact::ASPERITY_CONTROL_DISPLACEMENT => Ok(Control::Displacement),
-        v => Err(Error::UnknownSelector {
-            name: "control",
-            value: v as i64,
-        }),
-    }
-}
 
 unsafe fn emit(
     out: *mut *mut AsperityTable,
@@ -113,17 +101,8 @@ pub unsafe extern "C" fn asperity_table_eval(
     guard(|| {
         let t = &input(table, "table")?.0;
         let out = output(out, "out")?;
-        let old = if old_state.is_null() {
-            ContactState::default()
-        } else {
-            old_state.read()
-        };
-        let (r, s) = t.eval(delta, &old)?;
-        *out = r;
-        if !new_state.is_null() {
-            new_state.write(s);
-        }
-        Ok(())
+        let old = super::contact::read_state(old_state);
+        super::contact::eval_one(t, delta, &old, new_state, out)
     })
 }
 
@@ -190,7 +169,7 @@ pub unsafe extern "C" fn asperity_table_pull_off_force(
 ) -> i32 {
     guard(|| {
         let t = &input(table, "table")?.0;
-        let c = control_of(control)?;
+        let c = super::contact::control_of(control)?;
         *output(force, "force")? = t.pull_off_force(c)?;
         Ok(())
     })
