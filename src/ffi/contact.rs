@@ -485,6 +485,30 @@ pub unsafe extern "C" fn asperity_normal_eval(
     })
 }
 
+/// The arrays of a C batch call, with the required ones checked for NULL.
+#[inline]
+pub(crate) unsafe fn raw_batch(
+    n: usize,
+    delta: *const f64,
+    old_state: *const ContactState,
+    new_state: *mut ContactState,
+    force: *mut f64,
+    contact_radius: *mut f64,
+    stiffness: *mut f64,
+) -> Result<RawBatch> {
+    input(delta, "delta")?;
+    output(force, "force")?;
+    Ok(RawBatch {
+        n,
+        delta,
+        old_state,
+        new_state,
+        force,
+        contact_radius,
+        stiffness,
+    })
+}
+
 /// The caller's old state, or a fresh one for NULL.
 #[inline(always)]
 pub(crate) unsafe fn read_state(old_state: *const ContactState) -> ContactState {
@@ -551,9 +575,7 @@ pub unsafe extern "C" fn asperity_normal_eval_batch(
             // Still reject an invalid kind.
             return law.to_law().map(|_| ()).map_err(Into::into);
         }
-        input(delta, "delta")?;
-        output(force, "force")?;
-        let b = RawBatch {
+        let b = raw_batch(
             n,
             delta,
             old_state,
@@ -561,7 +583,7 @@ pub unsafe extern "C" fn asperity_normal_eval_batch(
             force,
             contact_radius,
             stiffness,
-        };
+        )?;
         with_law!(law, l => l.eval_batch_raw(&b).map_err(|e| Failure::at(e.index, e.error)))
     })
 }

@@ -9,7 +9,7 @@
 
 use super::{guard, input, output, Failure};
 use crate::contact::{
-    ContactState, LjSphere, MaugisDugdale, NormalContact, NormalResponse, RawBatch, TabulatedLaw,
+    ContactState, LjSphere, MaugisDugdale, NormalContact, NormalResponse, TabulatedLaw,
 };
 use crate::error::Error;
 use std::ffi::c_char;
@@ -127,9 +127,7 @@ pub unsafe extern "C" fn asperity_table_eval_batch(
         if n == 0 {
             return Ok(());
         }
-        input(delta, "delta")?;
-        output(force, "force")?;
-        let b = RawBatch {
+        let b = super::contact::raw_batch(
             n,
             delta,
             old_state,
@@ -137,7 +135,7 @@ pub unsafe extern "C" fn asperity_table_eval_batch(
             force,
             contact_radius,
             stiffness,
-        };
+        )?;
         t.eval_batch_raw(&b)
             .map_err(|e| Failure::at(e.index, e.error))
     })
