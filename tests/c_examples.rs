@@ -329,8 +329,13 @@ fn run(name: &str, linkage: Linkage) -> Run {
         Some(Err(e)) => panic!("{e}"),
         Some(Ok(b)) => b.clone(),
     };
-    let stdout_path = bin.with_extension("stdout");
-    let stderr_path = bin.with_extension("stderr");
+    // One pair of output files per run: two tests may run the same binary
+    // at once (each example's own test and the catch-all), and shared files
+    // would truncate each other.
+    static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let k = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let stdout_path = bin.with_extension(format!("{k}.stdout"));
+    let stderr_path = bin.with_extension(format!("{k}.stderr"));
     let mut child = Command::new(&bin)
         .stdin(Stdio::null())
         .stdout(std::fs::File::create(&stdout_path).unwrap())
@@ -921,6 +926,7 @@ fn every_example_compiles_and_links_both_ways() {
 fn every_other_example_runs() {
     let known = [
         "batch_and_errors",
+        "indentation_fit",
         "jkr_hysteresis",
         "pull_off_table",
         "tabulated_threads",
