@@ -22,7 +22,14 @@ fn main() -> Result<(), asperity::Error> {
     println!("Pull-off force / (pi w R) against the Maugis parameter (R = 1 um, E* = 1 GPa, w = 0.05 J/m^2)");
     println!(
         "{:>10} {:>10} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}",
-        "lambda", "sigma0/Pa", "DMT load", "MD load", "JKR load", "DMT displ", "MD displ", "JKR displ"
+        "lambda",
+        "sigma0/Pa",
+        "DMT load",
+        "MD load",
+        "JKR load",
+        "DMT displ",
+        "MD displ",
+        "JKR displ"
     );
     for i in 0..=16 {
         let lambda = 10f64.powf(-2.0 + 0.25 * i as f64);
@@ -39,7 +46,14 @@ fn main() -> Result<(), asperity::Error> {
         let d = row(Control::Displacement)?;
         println!(
             "{:>10.4} {:>10.3e} {:>12.5} {:>12.5} {:>12.5} {:>12.5} {:>12.5} {:>12.5}",
-            lambda, sigma_for(lambda), l[0], l[1], l[2], d[0], d[1], d[2]
+            lambda,
+            sigma_for(lambda),
+            l[0],
+            l[1],
+            l[2],
+            d[0],
+            d[1],
+            d[2]
         );
     }
 
@@ -49,7 +63,10 @@ fn main() -> Result<(), asperity::Error> {
     let len = md.length_scale();
     println!();
     println!("Maugis-Dugdale force-approach cycle, lambda = 2 (delta in units of (pi^2 w^2 R/K^2)^(1/3) = {len:.4e} m)");
-    println!("{:>6} {:>10} {:>14} {:>14} {:>4}", "step", "delta", "force/(pi w R)", "a/m", "on");
+    println!(
+        "{:>6} {:>10} {:>14} {:>14} {:>4}",
+        "step", "delta", "force/(pi w R)", "a/m", "on"
+    );
     let mut state = ContactState::default();
     let n = 40;
     let path = (0..=n)

@@ -44,5 +44,5 @@ pub mod indentation;
 pub mod material;
 pub mod rescaling;
 
-pub use contact::{Control, ContactState, NormalContact, NormalLaw, NormalResponse};
+pub use contact::{ContactState, Control, NormalContact, NormalLaw, NormalResponse};
 pub use error::{Error, Result};

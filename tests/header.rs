@@ -5,8 +5,8 @@ use std::path::PathBuf;
 
 fn generate() -> String {
     let crate_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let config = cbindgen::Config::from_file(crate_dir.join("cbindgen.toml"))
-        .expect("cbindgen.toml parses");
+    let config =
+        cbindgen::Config::from_file(crate_dir.join("cbindgen.toml")).expect("cbindgen.toml parses");
     // The version macros come from Cargo.toml, never from a hand-kept copy.
     let version = format!(
         "\n#define ASPERITY_VERSION_MAJOR {}\n#define ASPERITY_VERSION_MINOR {}\n#define ASPERITY_VERSION_PATCH {}\n",
@@ -47,14 +47,23 @@ fn header_names_are_prefixed() {
         let t = line.trim_start();
         if let Some(rest) = t.strip_prefix("#define ") {
             let name = rest.split_whitespace().next().unwrap();
-            assert!(name.starts_with("ASPERITY_"), "macro `{name}` lacks the ASPERITY_ prefix");
+            assert!(
+                name.starts_with("ASPERITY_"),
+                "macro `{name}` lacks the ASPERITY_ prefix"
+            );
         }
         if t.starts_with("typedef struct") || t.starts_with("typedef union") {
             let name = t.split_whitespace().nth(2).unwrap();
-            assert!(name.starts_with("Asperity"), "type `{name}` lacks the Asperity prefix");
+            assert!(
+                name.starts_with("Asperity"),
+                "type `{name}` lacks the Asperity prefix"
+            );
         }
         if let Some(i) = t.find("asperity_") {
-            if t.starts_with("int32_t ") || t.starts_with("const char *") || t.starts_with("size_t ") {
+            if t.starts_with("int32_t ")
+                || t.starts_with("const char *")
+                || t.starts_with("size_t ")
+            {
                 assert!(i > 0);
             }
         }

@@ -366,7 +366,11 @@ fn curve_at_mu_1e_3_is_finite_and_continuous() {
         assert!((b.force - a.force).abs() < 0.25, "jump {a:?} → {b:?}");
         assert!((b.approach - a.approach).abs() < 0.5);
     }
-    assert!((c.pull_off_load.force + 2.0).abs() < 2e-3, "{}", c.pull_off_load.force);
+    assert!(
+        (c.pull_off_load.force + 2.0).abs() < 2e-3,
+        "{}",
+        c.pull_off_load.force
+    );
     assert!(c.jump_in.is_none());
 }
 

@@ -13,8 +13,8 @@ pub mod fidelity;
 pub mod indentation;
 pub mod lj_sphere;
 pub mod material;
-pub mod tabulated;
 mod status;
+pub mod tabulated;
 
 pub use status::*;
 

@@ -1829,9 +1829,7 @@ impl<'a> Marcher<'a> {
             let target = if g { self.h0 + d } else { self.al + d };
             match self.step_limited(g, target, if g == gap { 8 } else { 40 }) {
                 Ok(()) => return Ok(()),
-                Err(e) => {
-                    err = Some(e)
-                }
+                Err(e) => err = Some(e),
             }
         }
         Err(err.unwrap_or(Error::NotConverged {
