@@ -975,6 +975,10 @@ int32_t asperity_hamaker_work_of_adhesion(double hamaker,
                                           double separation,
                                           double *work_of_adhesion);
 
+// A static, NUL-terminated description of a status code; "unknown status"
+// for a value that is not one. Do not free.
+const char *asperity_status_string(int32_t status);
+
 // Build the table of a Maugis–Dugdale sphere: radius (m), E* (Pa), work of
 // adhesion (J/m²), Dugdale stress σ₀ (Pa), relative `tolerance` in
 // [1e-10, 0.1] (1e-4 is the default of the Rust API) in the error measure of
@@ -1065,10 +1069,6 @@ int32_t asperity_table_to_json(const struct AsperityTable *table,
 int32_t asperity_table_from_json(const char *json,
                                  size_t len,
                                  struct AsperityTable **out);
-
-// A static, NUL-terminated description of a status code; "unknown status"
-// for a value that is not one. Do not free.
-const char *asperity_status_string(int32_t status);
 
 #ifdef __cplusplus
 }  // extern "C"
