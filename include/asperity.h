@@ -635,11 +635,11 @@ int32_t asperity_law_hertz(double radius,
                            double e_star,
                            struct AsperityNormalLaw *out);
 
-// Galanov effective sphere: a sphere of radius `sphere_radius` (m) in a
-// spherical crater of radius `crater_radius` (m, INFINITY for a flat),
-// `1/R = 1/R_s − 1/R_c` (thesis (2-19)).
-int32_t asperity_law_sphere_in_crater(double sphere_radius,
-                                      double crater_radius,
+// Galanov effective sphere: a sphere of radius `radius` (m) in a spherical
+// crater (the deformed medium) of radius `medium_radius` (m, INFINITY for a
+// flat), `1/R = 1/R_s − 1/R_medium` (thesis (2-19), (3-23)).
+int32_t asperity_law_sphere_in_crater(double radius,
+                                      double medium_radius,
                                       double e_star,
                                       struct AsperityNormalLaw *out);
 

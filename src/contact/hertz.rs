@@ -14,7 +14,7 @@ use super::{
     check_delta, check_force, stateless, BatchError, ContactState, Control, NormalContact,
     NormalResponse, RawBatch,
 };
-use crate::error::{check, Error, Result};
+use crate::error::{check, Result};
 
 /// Hertz sphere.
 #[repr(C)]
@@ -36,21 +36,16 @@ impl Hertz {
         })
     }
 
-    /// Galanov's effective shape for a sphere of radius `sphere_radius` pressed
-    /// into a spherical crater of radius `crater_radius` (m) (thesis (2-19)):
-    /// `1/R_eff = 1/R_sphere − 1/R_crater`. `crater_radius = +∞` is a flat. The
-    /// crater must be flatter than the sphere (`crater_radius > sphere_radius`).
-    pub fn sphere_in_crater(sphere_radius: f64, crater_radius: f64, e_star: f64) -> Result<Self> {
-        let rs = check::positive("sphere_radius", sphere_radius)?;
-        if crater_radius.is_nan() || crater_radius <= rs {
-            return Err(Error::InvalidArgument {
-                name: "crater_radius",
-                value: crater_radius,
-                bound: "> sphere_radius (+inf for a flat)",
-            });
-        }
-        let inv = 1.0 / rs - 1.0 / crater_radius;
-        Self::new(1.0 / inv, e_star)
+    /// Galanov's effective shape for a sphere of radius `radius` pressed into a
+    /// spherical crater (the deformed medium) of radius `medium_radius` (m)
+    /// (thesis (2-19), (3-23)): `1/R_eff = 1/R − 1/R_medium`, computed by
+    /// [`crate::rescaling::unloading_radius`]. `medium_radius = +∞` is a flat;
+    /// the crater must be flatter than the sphere (`medium_radius > radius`).
+    pub fn sphere_in_crater(radius: f64, medium_radius: f64, e_star: f64) -> Result<Self> {
+        Self::new(
+            crate::rescaling::unloading_radius(radius, medium_radius)?,
+            e_star,
+        )
     }
 
     /// Contact radius under load `force` ≥ 0 (N): `a = (3PR/(4E*))^{1/3}` (1-15).

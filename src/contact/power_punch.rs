@@ -15,7 +15,7 @@
 use super::{
     check_delta, check_force, stateless, ContactState, Control, NormalContact, NormalResponse,
 };
-use crate::error::{check, Error, Result};
+use crate::error::{check, Result};
 
 /// Half-angle (rad) of the cone with the projected area of a Berkovich pyramid
 /// at equal depth: 70.3° (thesis §3.6.2).
@@ -107,16 +107,9 @@ impl PowerPunch {
         imprint_half_angle: f64,
         e_star: f64,
     ) -> Result<Self> {
-        let gi = check::half_angle("indenter_half_angle", indenter_half_angle)?;
-        if !(imprint_half_angle > gi && imprint_half_angle <= core::f64::consts::FRAC_PI_2) {
-            return Err(Error::InvalidArgument {
-                name: "imprint_half_angle",
-                value: imprint_half_angle,
-                bound: "in (indenter_half_angle, pi/2]",
-            });
-        }
-        let cot_f = imprint_half_angle.cos() / imprint_half_angle.sin();
-        Self::new(1.0 / gi.tan() - cot_f, 1.0, e_star)
+        let b =
+            crate::rescaling::galanov_cone_coefficient(indenter_half_angle, imprint_half_angle)?;
+        Self::new(b, 1.0, e_star)
     }
 
     /// Overlap at contact radius `a` (m): `δ = D(d) B a^d` (1-19).

@@ -243,20 +243,20 @@ pub unsafe extern "C" fn asperity_law_hertz(
     build(out, || Ok(NormalLaw::Hertz(Hertz::new(radius, e_star)?)))
 }
 
-/// Galanov effective sphere: a sphere of radius `sphere_radius` (m) in a
-/// spherical crater of radius `crater_radius` (m, INFINITY for a flat),
-/// `1/R = 1/R_s − 1/R_c` (thesis (2-19)).
+/// Galanov effective sphere: a sphere of radius `radius` (m) in a spherical
+/// crater (the deformed medium) of radius `medium_radius` (m, INFINITY for a
+/// flat), `1/R = 1/R_s − 1/R_medium` (thesis (2-19), (3-23)).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_law_sphere_in_crater(
-    sphere_radius: f64,
-    crater_radius: f64,
+    radius: f64,
+    medium_radius: f64,
     e_star: f64,
     out: *mut AsperityNormalLaw,
 ) -> i32 {
     build(out, || {
         Ok(NormalLaw::Hertz(Hertz::sphere_in_crater(
-            sphere_radius,
-            crater_radius,
+            radius,
+            medium_radius,
             e_star,
         )?))
     })
