@@ -21,6 +21,8 @@
 //! * [`contact`]: the laws, one file each, all implementing
 //!   [`contact::NormalContact`].
 //! * [`rescaling`] and [`indentation`]: Borodich rescaling, Galanov shapes, κ and d from measured curves, Oliver–Pharr, hardness numbers.
+//! * [`surface`]: profiles and maps, ISO 4287 parameters, ACF/PSD, generators.
+//! * [`statistics`]: Zhuravlev, Greenwood–Williamson and Kragelsky models.
 //! * [`fidelity`]: the cheapest adhesive-sphere model within a force
 //!   tolerance, measured against the converged Lennard-Jones sphere.
 //! * [`error`]: the error type; every fallible call returns
@@ -43,6 +45,8 @@ pub mod fidelity;
 pub mod indentation;
 pub mod material;
 pub mod rescaling;
+pub mod statistics;
+pub mod surface;
 
 pub use contact::{ContactState, Control, NormalContact, NormalLaw, NormalResponse};
 pub use error::{Error, Result};
