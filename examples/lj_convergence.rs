@@ -128,7 +128,7 @@ fn main() {
         let mut prev_e: Option<f64> = None;
         println!("\n| N | whole-curve max |ΔP̄| vs N/2 | order |");
         println!("|---|---|---|");
-        for &n in ns.iter().filter(|&&n| n <= 1024) {
+        for &n in ns.iter().filter(|&&n| n <= 2048) {
             let mut o = LjOptions::default();
             o.n_grid = n;
             o.max_force = 2.0;

@@ -6,7 +6,7 @@
 #![allow(clippy::field_reassign_with_default)]
 
 use asperity::contact::lj_sphere::{
-    disk_displacement, rigid_force_bar, LjOptions, LjSolver, LjSphere,
+    disk_displacement, rigid_force_bar, LjCurve, LjOptions, LjSolver, LjSphere,
 };
 use asperity::contact::MaugisDugdale;
 use asperity::Error;
@@ -60,7 +60,8 @@ fn kernel_quadrature(q: impl Fn(f64) -> f64, r: f64, smax: f64) -> f64 {
     // Landen form of the kernel: (s/r)K(s/r) for s < r, K(r/s) for s > r.
     let kern = |s: f64| {
         let (f, k) = if s < r { (s / r, s / r) } else { (1.0, r / s) };
-        q(s) * f * ellip::ellipk(k * k).unwrap()
+        // k² rounds to 1 within an ulp of s = r: stay just below.
+        q(s) * f * ellip::ellipk((k * k).min(1.0 - 1e-16)).unwrap()
     };
     let seg = |a: f64, b: f64| -> f64 {
         let (c, h) = (0.5 * (a + b), 0.5 * (b - a));
@@ -73,7 +74,8 @@ fn kernel_quadrature(q: impl Fn(f64) -> f64, r: f64, smax: f64) -> f64 {
     // Left of r: [0, r) graded towards r.
     let mut edges = vec![0.0];
     let mut d = r;
-    while d > 1e-14 * r.max(1.0) {
+    // Down to 1e-12 r: the log-singular rest contributes ~1e-11 relative.
+    while d > 1e-12 * r.max(1.0) {
         d *= 0.3;
         edges.push(r - d);
     }
@@ -82,7 +84,7 @@ fn kernel_quadrature(q: impl Fn(f64) -> f64, r: f64, smax: f64) -> f64 {
     }
     // Right of r, graded away from r up to smax.
     let mut a = r;
-    let mut d = 1e-14 * r.max(1.0);
+    let mut d = 1e-12 * r.max(1.0);
     while a < smax {
         let b = (r + d).min(smax);
         total += seg(a, b);
@@ -131,7 +133,8 @@ fn gauss16() -> (Vec<f64>, Vec<f64>) {
 #[test]
 fn influence_matrix_matches_direct_quadrature() {
     // Smooth test pressure q(s) = (1 + s²)^{-3}; the piecewise-constant
-    // discretisation is second order: at N = 400 the error is ~1e-4.
+    // discretisation is second order: at N = 400 the error is ~1e-4 in the
+    // uniform region and 4e-4 at the outer nodes (cells grow geometrically).
     let q = |s: f64| (1.0 + s * s).powi(-3);
     let s = solver(1.0, 400);
     let qn: Vec<f64> = s.nodes().iter().map(|&x| q(x)).collect();
@@ -140,9 +143,13 @@ fn influence_matrix_matches_direct_quadrature() {
     let mut worst = 0.0f64;
     for (i, &x) in s.nodes().iter().enumerate().step_by(37) {
         let exact = kernel_quadrature(q, x, l);
+        assert!(
+            exact.is_finite() && exact > 0.0,
+            "reference at {x}: {exact}"
+        );
         worst = worst.max((u[i] - exact).abs() / exact.abs());
     }
-    assert!(worst < 3e-4, "relative error {worst}");
+    assert!(worst < 5e-4, "relative error {worst}");
     // And the error falls with N (second order: ×16 per ×4 in N; assert ×4).
     let s2 = solver(1.0, 100);
     let qn2: Vec<f64> = s2.nodes().iter().map(|&x| q(x)).collect();
@@ -151,6 +158,10 @@ fn influence_matrix_matches_direct_quadrature() {
     let mut worst100 = 0.0f64;
     for (i, &x) in s2.nodes().iter().enumerate().step_by(9) {
         let exact = kernel_quadrature(q, x, l2);
+        assert!(
+            exact.is_finite() && exact > 0.0,
+            "reference at {x}: {exact}"
+        );
         worst100 = worst100.max((u2[i] - exact).abs() / exact.abs());
     }
     assert!(worst < worst100 / 4.0, "N=400 {worst}, N=100 {worst100}");
@@ -374,24 +385,113 @@ fn curve_at_mu_1e_3_is_finite_and_continuous() {
     assert!(c.jump_in.is_none());
 }
 
+/// The JKR limit of the displacement-controlled jump-out approach,
+/// `δ_c/z₀ = −(3/4)π^{2/3}μ`, and force `P̄ = −5/6`.
+fn jkr_jump_out(mu: f64) -> (f64, f64) {
+    (
+        -0.75 * core::f64::consts::PI.powf(2.0 / 3.0) * mu,
+        -5.0 / 6.0,
+    )
+}
+
+/// Every point finite, the force continuous between neighbours, the curve
+/// reaching the Hertz regime; the contact branch monotone in ᾱ.
+fn check_large_mu_curve(c: &LjCurve) {
+    assert!(c.points.len() >= 200, "{} points", c.points.len());
+    for w in c.points.windows(2) {
+        let (a, b) = (&w[0], &w[1]);
+        for v in [a.force, a.approach, a.contact_radius, a.central_gap] {
+            assert!(v.is_finite(), "{a:?}");
+        }
+        assert!((b.force - a.force).abs() < 1.0, "jump {a:?} → {b:?}");
+    }
+    assert!(c.points.last().unwrap().force >= 10.0);
+    // After the jump-out the approach grows (the branch is stable under
+    // displacement control); after the load-controlled pull-off the
+    // stiffness dP̄/dᾱ is positive too (stable under load control). Between
+    // the two it is negative, as in JKR.
+    let jo = c.jump_out.unwrap();
+    let i = c
+        .points
+        .iter()
+        .position(|p| p.approach == jo.approach)
+        .unwrap();
+    for w in c.points[i..].windows(2) {
+        assert!(
+            w[1].approach > w[0].approach,
+            "ᾱ falls after the jump-out: {w:?}"
+        );
+    }
+    let po = c.pull_off_load;
+    let k = c
+        .points
+        .iter()
+        .position(|p| p.approach == po.approach)
+        .unwrap();
+    assert!(k > i, "pull-off before the jump-out");
+    for p in &c.points[k + 1..] {
+        assert!(
+            p.stiffness > 0.0,
+            "load-unstable point after the pull-off: {p:?}"
+        );
+    }
+}
+
 #[test]
-fn curve_at_mu_3_on_256_cells_with_the_moving_band() {
-    // The fixed mesh needed N = 768 at μ = 3; the moving edge band resolves
-    // the neck and the contact edge at N = 256.
+fn curve_at_mu_3_on_256_cells_with_the_edge_continuation() {
+    // The fixed mesh needed N = 768 at μ = 3; the edge continuation
+    // resolves the neck and the contact edge at N = 256.
     let mut o = LjOptions::default();
     o.n_grid = 256;
     let c = LjSolver::new(&LjSphere::from_tabor(3.0).unwrap(), o)
         .unwrap()
         .curve()
         .unwrap();
-    assert!(c.points.len() >= 200);
-    for w in c.points.windows(2) {
-        assert!(w[0].force.is_finite() && w[1].force.is_finite());
-        assert!((w[1].force - w[0].force).abs() < 1.0);
-    }
+    check_large_mu_curve(&c);
     let (ji, jo) = (c.jump_in.unwrap(), c.jump_out.unwrap());
     assert!(ji.approach > jo.approach);
     let p = -c.pull_off_load.force;
+    // Richardson estimate 1.5511 (BENCHMARKS.md §3); N = 256 is within 2e-3.
     assert!((p - 1.551).abs() < 2e-3, "{p}");
-    assert!(c.points.last().unwrap().force >= 10.0);
+}
+
+#[test]
+fn curves_at_mu_10_and_30_approach_jkr() {
+    // Above μ ≈ 3 a mesh fixed in r needs O(μ²) continuation steps (the
+    // edge zone, ~μ^{-3/2} wide, crosses every cell); the edge continuation
+    // follows the marker radius on meshes moving with the edge.
+    for (mu, po_tol) in [(10.0, 0.015), (30.0, 0.006)] {
+        let mut o = LjOptions::default();
+        o.n_grid = 256;
+        let c = LjSolver::new(&LjSphere::from_tabor(mu).unwrap(), o)
+            .unwrap()
+            .curve()
+            .unwrap();
+        check_large_mu_curve(&c);
+        let p = -c.pull_off_load.force;
+        // Pull-off tends to 1.5 (JKR) from above; Maugis–Dugdale at
+        // λ = 1.157μ is the reference within a few per cent.
+        let lam = asperity::material::maugis_over_tabor() * mu;
+        let md = -MaugisDugdale::from_maugis_parameter(1.0, 1.0, 1.0, lam)
+            .unwrap()
+            .load_pull_off_point()
+            .p_bar;
+        assert!((p - 1.5).abs() < po_tol, "μ = {mu}: pull-off {p}");
+        assert!((p - md).abs() < 0.02 * md, "μ = {mu}: LJ {p} MD {md}");
+        // Displacement-controlled jump-out near JKR's (the cohesive zone
+        // shifts it by O(μ^{-1/2}) relative).
+        let (dj, fj) = jkr_jump_out(mu);
+        let jo = c.jump_out.unwrap();
+        assert!(
+            (jo.approach - dj).abs() < 0.05 * dj.abs(),
+            "μ = {mu}: jump-out at {} (JKR {dj})",
+            jo.approach
+        );
+        assert!(
+            (jo.force - fj).abs() < 0.05,
+            "μ = {mu}: jump-out force {}",
+            jo.force
+        );
+        assert!(c.hysteresis_energy > 0.0 && c.hysteresis_energy.is_finite());
+    }
 }

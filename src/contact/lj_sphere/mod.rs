@@ -125,17 +125,15 @@
     clippy::neg_cmp_op_on_partial_ord
 )]
 
-use crate::contact::MaugisDugdale;
 use crate::error::{check, Error, Result};
 use core::f64::consts::PI;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::{MatMut, MatRef};
 
 mod path;
-mod remesh;
+mod edge;
 mod sample;
 use path::{BWork, State};
-use remesh::{SegCache, Track};
 pub use sample::LjPathSamples;
 
 /// Chord-Newton contraction factor above which the continuation refactors
@@ -325,7 +323,8 @@ pub struct LjOptions {
     /// The curve stops once `P/(πRΔγ)` reaches this compressive load.
     pub max_force: f64,
     /// Central gap `h̄₀` (units of z₀) the curve starts from; 0 = automatic
-    /// (`6 + 4√μ`, far enough that the rigid solution is accurate).
+    /// (`max(6 + 4√μ, 6 + 2μ)`: the rigid solution is accurate there, and
+    /// it lies beyond the jump-out approach).
     pub start_gap: f64,
     /// Target number of points of the curve (the arc-length step is chosen
     /// for it; the actual count is within a few tens of per cent).
@@ -493,25 +492,35 @@ impl Mesh {
         };
         let total = phi(l);
         let inv = |target: f64| -> f64 {
+            // Newton safeguarded by bisection: a Newton step must land in
+            // the bracket, and the bracket must halve every two steps (Newton
+            // can cycle around the inflections of the tanh band).
             let (mut lo, mut hi) = (0.0f64, l);
             let mut r = l * target / total;
-            for _ in 0..200 {
+            let mut width = hi - lo;
+            for k in 0..400 {
                 let f = phi(r) - target;
                 if f > 0.0 {
                     hi = r;
                 } else {
                     lo = r;
                 }
+                if f == 0.0 || hi - lo <= 1e-15 * (1.0 + r) {
+                    return r;
+                }
                 let mut rn = r - f / dphi(r);
-                if !(rn > lo && rn < hi) {
+                if (rn - r).abs() <= 1e-16 * (1.0 + r) {
+                    return rn;
+                }
+                if !(rn > lo && rn < hi) || (k % 2 == 1 && hi - lo > 0.5 * width) {
                     rn = 0.5 * (lo + hi);
                 }
-                if (rn - r).abs() <= 1e-15 * (1.0 + r) {
-                    return rn;
+                if k % 2 == 1 {
+                    width = hi - lo;
                 }
                 r = rn;
             }
-            r
+            0.5 * (lo + hi)
         };
         let nf = n as f64;
         let mut c: Vec<f64> = (0..=n).map(|j| inv(total * j as f64 / nf)).collect();
@@ -519,6 +528,27 @@ impl Mesh {
         c[n] = l;
         let x = (0..n).map(|j| inv(total * (j as f64 + 0.5) / nf)).collect();
         Mesh { x, c }
+    }
+}
+
+/// A special point of the path.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Special {
+    /// Local maximum of the approach (jump-in).
+    ApproachMax,
+    /// Local minimum of the approach (jump-out).
+    ApproachMin,
+    /// Minimum of the force (load-controlled pull-off).
+    ForceMin,
+}
+
+impl Special {
+    /// The path derivative whose zero is the point: `dᾱ/ds` or `dP̄/ds`.
+    fn phi(self, st: &path::State) -> f64 {
+        match self {
+            Special::ApproachMax | Special::ApproachMin => st.t[st.t.len() - 1],
+            Special::ForceMin => st.df,
+        }
     }
 }
 
@@ -666,7 +696,10 @@ impl LjSolver {
             check::positive("edge_width", o.edge_width)?;
         }
         if o.start_gap == 0.0 {
-            o.start_gap = 6.0 + 4.0 * mu.sqrt();
+            // Far enough that the rigid solution is accurate, and (μ > 1)
+            // beyond the jump-out approach ≈ −(3/4)π^{2/3}μ (JKR), so that
+            // the outer branch spans the hysteresis loop.
+            o.start_gap = (6.0 + 4.0 * mu.sqrt()).max(6.0 + 2.0 * mu);
         }
         let n = o.n_grid;
         let mesh = Mesh::new(
@@ -1274,9 +1307,19 @@ impl LjSolver {
     /// The whole force–approach curve (see the module documentation).
     pub fn curve(&self) -> Result<LjCurve> {
         let o = self.opts;
-        let (states, mut bw, track) =
-            self.path_march_tracked(o.max_force, o.target_points, &|_| false, true)?;
-        self.finish_path_tracked(states, &track, &mut bw)
+        if let Some(plan) = self.band_plan() {
+            return self.edge_curve(plan);
+        }
+        let (states, mut bw) = self.path_march(o.max_force, o.target_points, &|_| false)?;
+        let samples = states.clone();
+        let mut c =
+            self.finish_curve(states, &mut |i, sp| {
+                self.refine_between(&samples, i, &mut bw, &|st| sp.phi(st))
+            })?;
+        c.iterations = bw.w.iterations;
+        c.factorizations = bw.w.factorizations;
+        c.max_residual = bw.w.max_residual;
+        Ok(c)
     }
 
     /// Scales of the `(ᾱ, P̄)` plane for the step control.
@@ -1295,37 +1338,9 @@ impl LjSolver {
         target: usize,
         stop: &dyn Fn(&[State]) -> bool,
     ) -> Result<(Vec<State>, BWork)> {
-        let (states, bw, _) = self.path_march_tracked(max_force, target, stop, false)?;
-        Ok((states, bw))
-    }
-
-    /// [`LjSolver::path_march`], with the moving edge band of
-    /// [`LjSolver::band_plan`] when `adaptive` (module `remesh`): the states
-    /// then live on the meshes of their segments in the returned track.
-    fn path_march_tracked(
-        &self,
-        max_force: f64,
-        target: usize,
-        stop: &dyn Fn(&[State]) -> bool,
-        adaptive: bool,
-    ) -> Result<(Vec<State>, BWork, Track)> {
         let o = self.opts;
-        let plan = if adaptive { self.band_plan() } else { None };
-        let mut track = Track {
-            plan,
-            bands: vec![0.0],
-            seg: vec![0],
-            remeshes: 0,
-        };
-        let mut cur: Option<LjSolver> = match plan {
-            Some(pl) => Some(self.rebanded(0.0, pl)?),
-            None => None,
-        };
         let mut bw = BWork::new(self.n());
-        let st0 = cur
-            .as_ref()
-            .unwrap_or(self)
-            .path_start(o.start_gap, &mut bw, false)?;
+        let st0 = self.path_start(o.start_gap, &mut bw, false)?;
         let (sa, sp) = self.plane_scales(max_force);
         let ds_target = 2.2 / target.max(10) as f64;
         let qdist = |a: &LjPoint, b: &LjPoint| {
@@ -1340,7 +1355,6 @@ impl LjSolver {
         let mut fails = 0u32;
         loop {
             guard += 1;
-            let sv: &LjSolver = cur.as_ref().unwrap_or(self);
             let last = states.last().unwrap();
             if last.pt.force >= max_force || stop(&states) {
                 break;
@@ -1366,7 +1380,7 @@ impl LjSolver {
             // their tangents (refined to the true Jacobian, see
             // `LjSolver::tangent`) as the predictor; the tangent alone at
             // first and after a failure or a remesh.
-            let guess = if k >= 2 && fails == 0 && track.seg[k - 2] == track.seg[k - 1] {
+            let guess = if k >= 2 && fails == 0 {
                 let (b, c) = (&states[k - 2], &states[k - 1]);
                 let d = c.s - b.s;
                 let th = 1.0 + sigma / d;
@@ -1387,9 +1401,9 @@ impl LjSolver {
             if bw.rho > RHO_REFRESH {
                 bw.invalidate();
             }
-            match sv.path_step(last, sigma, guess, &mut bw, false) {
+            match self.path_step(last, sigma, guess, &mut bw, false) {
                 Err(e) => {
-                    if is_unresolved(&e) && plan.is_none() {
+                    if is_unresolved(&e) {
                         // Smaller steps cannot help an under-resolved grid.
                         return Err(e);
                     }
@@ -1418,32 +1432,11 @@ impl LjSolver {
                     fails = 0;
                     let f = if ratio > 0.0 { 1.0 / ratio } else { 2.0 };
                     sigma *= f.clamp(0.5, 2.0);
-                    // Moving band: remesh when the edge zone leaves the
-                    // inner half of the band.
-                    let seg = *track.seg.last().unwrap();
-                    let centre = if plan.is_some() {
-                        sv.edge_marker(&st.y)
-                    } else {
-                        0.0
-                    };
-                    let moved = plan.map(|(w, _)| (centre - track.bands[seg]).abs() > 0.5 * w);
-                    let dir = (centre - track.bands[seg]).signum();
                     states.push(st);
-                    track.seg.push(seg);
-                    if let (Some(true), Some(pl)) = (moved, plan) {
-                        let a_e = (centre + 0.3 * pl.0 * dir).max(0.0);
-                        let new = sv.rebanded(a_e, pl)?;
-                        let moved_st = sv.transfer(states.last().unwrap(), &new, &mut bw)?;
-                        track.bands.push(a_e);
-                        track.seg.push(seg + 1);
-                        track.remeshes += 1;
-                        states.push(moved_st);
-                        cur = Some(new);
-                    }
                 }
             }
         }
-        Ok((states, bw, track))
+        Ok((states, bw))
     }
 
     /// The state `st` again, with its tangent and derivatives exact.
@@ -1464,13 +1457,12 @@ impl LjSolver {
         self.make_state(&y, al, t, st.s, bw, true)
     }
 
-    /// Refine the root of `phi` in the sample interval `[i, i + 1]` of
-    /// `states` (or a neighbouring interval when the exact signs say so).
+    /// Refine the root of `phi` in the sample interval `[i, i + 1]` of the
+    /// fixed-mesh `states` (or a neighbouring interval when the exact signs
+    /// say so).
     fn refine_between(
         &self,
         states: &[State],
-        track: &Track,
-        cache: &mut SegCache,
         i: usize,
         bw: &mut BWork,
         phi: &dyn Fn(&State) -> f64,
@@ -1484,24 +1476,13 @@ impl LjSolver {
             cands.push(i + 1);
         }
         for a in cands {
-            if !track.same(a) {
-                continue;
-            }
-            if track.plan.is_some() {
-                bw.invalidate();
-            }
-            let sv = self.seg_solver(track, track.seg[a], cache)?;
-            let l = sv.exactify(&states[a], bw)?;
-            let r = sv.exactify(&states[a + 1], bw)?;
+            let l = self.exactify(&states[a], bw)?;
+            let r = self.exactify(&states[a + 1], bw)?;
             if phi(&l) * phi(&r) <= 0.0 {
-                return sv.path_root(&l, &r, bw, phi);
+                return self.path_root(&l, &r, bw, phi);
             }
         }
-        if track.plan.is_some() {
-            bw.invalidate();
-        }
-        self.seg_solver(track, track.seg[i], cache)?
-            .exactify(&states[i], bw)
+        self.exactify(&states[i], bw)
     }
 
     /// The sample interval holding the force minimum: `[i−1, i]` or `[i, i+1]`
@@ -1519,28 +1500,16 @@ impl LjSolver {
         })
     }
 
-    /// The curve from the states of a march on the fixed mesh.
-    #[allow(dead_code)]
-    fn finish_path(&self, states: Vec<State>, bw: &mut BWork) -> Result<LjCurve> {
-        let track = Track {
-            plan: None,
-            bands: vec![0.0],
-            seg: vec![0; states.len()],
-            remeshes: 0,
-        };
-        self.finish_path_tracked(states, &track, bw)
-    }
-
-    /// The curve from the states of a (moving-band) march: special points
-    /// refined on the meshes of their segments; of the two copies of a
-    /// remeshed state the one on the old mesh is dropped.
-    fn finish_path_tracked(
+    /// The curve from the states of a march, ordered along the path (their
+    /// `s` increasing): turning points of ᾱ and the force minimum located
+    /// by sign changes and refined by `refine(i, special)` (the special point
+    /// around the sample interval `[i, i + 1]`). Solver statistics are left
+    /// at 0 for the caller.
+    fn finish_curve(
         &self,
         states: Vec<State>,
-        track: &Track,
-        bw: &mut BWork,
+        refine: &mut dyn FnMut(usize, Special) -> Result<State>,
     ) -> Result<LjCurve> {
-        let mut cache: SegCache = None;
         let n_al = self.n();
         let ta = |s: &State| s.t[n_al];
         // Turning points of ᾱ along the path: sign changes of dᾱ/ds.
@@ -1556,9 +1525,13 @@ impl LjSolver {
         let mut extra: Vec<State> = Vec::new();
         let mut jump_in = None;
         let mut jump_out = None;
-        if turns.len() >= 2 && turns[0].1 && !turns[1].1 {
-            let t1 = self.refine_between(&states, track, &mut cache, turns[0].0, bw, &ta)?;
-            let t2 = self.refine_between(&states, track, &mut cache, turns[1].0, bw, &ta)?;
+        // Jump-in: the first maximum of ᾱ; jump-out: the last minimum, where
+        // the stable contact branch begins (at large μ the unstable branch
+        // between them can fold twice more as the neck forms).
+        let last_min = turns.iter().rposition(|t| !t.1);
+        if let (Some(&(i1, true)), Some(k)) = (turns.first(), last_min) {
+            let t1 = refine(i1, Special::ApproachMax)?;
+            let t2 = refine(turns[k].0, Special::ApproachMin)?;
             jump_in = Some(t1.pt);
             jump_out = Some(t2.pt);
             extra.push(t1);
@@ -1566,7 +1539,7 @@ impl LjSolver {
         }
         let po = match Self::min_interval(&states) {
             Some(i) => {
-                let p = self.refine_between(&states, track, &mut cache, i, bw, &|s| s.df)?;
+                let p = refine(i, Special::ForceMin)?;
                 extra.push(p.clone());
                 p.pt
             }
@@ -1578,13 +1551,7 @@ impl LjSolver {
                     .pt
             }
         };
-        let ns = states.len();
-        let mut all: Vec<State> = states
-            .into_iter()
-            .enumerate()
-            .filter(|(i, _)| *i + 1 == ns || track.same(*i))
-            .map(|(_, st)| st)
-            .collect();
+        let mut all = states;
         for e in extra {
             let pos = all.iter().position(|p| p.s > e.s).unwrap_or(all.len());
             if pos > 0 && all[pos - 1].s == e.s {
@@ -1645,9 +1612,9 @@ impl LjSolver {
             pull_off_load,
             pull_off_displacement: pull_disp,
             hysteresis_energy: hyst,
-            iterations: bw.w.iterations,
-            factorizations: bw.w.factorizations,
-            max_residual: bw.w.max_residual,
+            iterations: 0,
+            factorizations: 0,
+            max_residual: 0.0,
             n_grid: self.n(),
         })
     }
@@ -1662,28 +1629,25 @@ impl LjSolver {
     /// method, exact tangents).
     pub fn pull_off_with(sphere: &LjSphere, options: LjOptions) -> Result<LjPullOff> {
         let mu = sphere.mu;
-        let a_po = if mu <= 1.0 {
+        let mut o = options;
+        o.max_force = 1.0;
+        if mu > 1.0 && options.edge_fraction == 0.0 {
+            // The edge continuation (module `edge`) follows the edge from
+            // the neck to the pull-off.
+            let s = LjSolver::new(sphere, o)?;
+            if let Some(plan) = s.band_plan() {
+                return s.edge_pull_off(plan);
+            }
+        }
+        if options.edge_fraction == 0.0 {
+            // A fixed band at the pull-off radius of a coarse curve.
             let mut co = options;
             co.n_grid = 64;
             co.target_points = 60;
             co.max_force = 1.0;
-            co.edge_fraction = 0.0;
             let coarse = LjSolver::new(sphere, co)?;
-            coarse.curve()?.pull_off_load.contact_radius
-        } else {
-            let lam = crate::material::maugis_over_tabor() * mu;
-            let md = MaugisDugdale::from_maugis_parameter(1.0, 1.0, 1.0, lam)?;
-            md.load_pull_off_point().a_bar * (0.75 * PI).cbrt() * mu.sqrt()
-        };
-        let mut o = options;
-        o.max_force = 1.0;
-        // μ > 1: the moving edge band (module `remesh`) follows the edge
-        // from the neck to the pull-off; μ ≤ 1: a fixed band at the pull-off
-        // radius of the coarse curve.
-        let adaptive = mu > 1.0 && options.edge_fraction == 0.0;
-        if !adaptive {
             o.edge_fraction = 0.5;
-            o.edge_radius = a_po;
+            o.edge_radius = coarse.curve()?.pull_off_load.contact_radius;
             o.edge_width = (2.0 * mu.powf(-1.5)).clamp(0.1, 1.0);
         }
         let s = LjSolver::new(sphere, o)?;
@@ -1704,10 +1668,9 @@ impl LjSolver {
                 && last.t[last.t.len() - 1] > 0.0
                 && last.pt.force > st[imin].pt.force + 0.02
         };
-        let (states, mut bw, track) = s.path_march_tracked(1.0, 80, &stop, adaptive)?;
-        let mut cache: SegCache = None;
+        let (states, mut bw) = s.path_march(1.0, 80, &stop)?;
         let best = match Self::min_interval(&states) {
-            Some(i) => s.refine_between(&states, &track, &mut cache, i, &mut bw, &|st| st.df)?,
+            Some(i) => s.refine_between(&states, i, &mut bw, &|st| Special::ForceMin.phi(st))?,
             None => {
                 return Err(Error::NotConverged {
                     what: "LJ sphere pull-off: no force minimum along the continuation",
@@ -1727,6 +1690,7 @@ impl LjSolver {
             n_grid: s.n(),
         })
     }
+
     /// Largest `dᾱ/dh̄₀` over the curve (by the continuation's samples and a
     /// local refinement): negative when ᾱ decreases monotonically with h̄₀
     /// (no S-shape), positive when the curve is S-shaped (unstable branch

@@ -474,7 +474,7 @@ impl LjSolver {
             let dy: f64 = y.iter().zip(&from.y).map(|(a, b)| (a - b).powi(2)).sum();
             (my * dy + (al - from.al).powi(2)).sqrt()
         };
-        self.make_state(&y, al, t, from.s + dist, bw, exact)
+        self.make_state(&y, al, t, from.s + dist, bw, true)
     }
 
     /// As [`LjSolver::path_step`] with a chord solve from the current

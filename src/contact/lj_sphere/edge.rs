@@ -1,0 +1,612 @@
+//! Edge continuation for μ > 1: the contact branch followed in the radius of
+//! its edge zone, on a mesh that moves with the edge.
+//!
+//! # Why
+//!
+//! Above μ ≈ 1 the edge (cohesive) zone has width `~μ^{-3/2}` (units of
+//! `√(Rz₀)`), while the contact radius travels from 0 (neck formation) to
+//! `~3μ^{1/2}` (at `P̄ = 10`). On any mesh fixed in `r`, the log-gap of a
+//! node changes by `O(1)` whenever the edge passes it, so a continuation in
+//! the nodal unknowns advances the edge by a fraction of the zone width per
+//! step: `O(μ²)` steps (≈ 10⁴ at μ = 10, 10⁶ at μ = 100).
+//!
+//! # How
+//!
+//! The curve is split at the moment the edge zone has formed:
+//!
+//! 1. **Neck phase** (fixed mesh, half the cells in a band of half-width `w`
+//!    at the centre): pseudo-arclength continuation from far away through the
+//!    jump-in until the edge marker `m` (first crossing of the peak-attraction
+//!    gap `h̄ = 3^{1/6}` from the centre, [`LjSolver::edge_marker`]) reaches
+//!    `0.75 w`.
+//! 2. **Edge phase**: the marker itself is the continuation parameter. For
+//!    each `m` the mesh puts its band (half the cells, half-width
+//!    `w = clamp(N μ^{-3/2}/16, 0.01, 2)`) centred on `m`, the influence
+//!    matrix is rebuilt (`O(N²)` closed-form elliptic integrals) and the
+//!    bordered system `[J 1; c(m)ᵀ 0]` is solved by chord Newton, with the
+//!    extra equation `ln h̄(m) = ln 3^{1/6}` (`c(m)`: linear interpolation
+//!    between the two nodes around `m`). Meshes of different `m` have their
+//!    nodes at the same positions relative to the band, so the predictor is
+//!    the secant extrapolation of the last two solutions **node by node**,
+//!    which moves the edge profile with the edge: steps in `m` are many
+//!    zone widths long. The marker grows monotonically along the branch
+//!    (neck → jump-out → pull-off → Hertz regime), as the contact radius of
+//!    JKR and Maugis–Dugdale does.
+//!
+//! The edge-phase path derivatives are taken along the family of solutions
+//! on the moving meshes, by 3-point differences in `m`: smooth, unlike the
+//! tangent of one fixed mesh, which oscillates where the edge zone crosses
+//! its cells ("lattice trapping" of the discrete problem). Turning points of
+//! ᾱ and the force minimum are refined as extrema in `m` (Brent's method);
+//! the marker grows monotonically along the branch, so an extremum in `m`
+//! is one along the path.
+
+use super::path::{BWork, Con, State};
+use super::*;
+
+/// `ln 3^{1/6}`: the log-gap of the peak of the Lennard-Jones attraction.
+pub(super) const MARK: f64 = 0.183_102_048_111_638_9;
+
+/// One state of the edge phase: marker radius and the state on the mesh
+/// banded at it.
+#[derive(Debug, Clone)]
+pub(super) struct EdgeState {
+    pub(super) m: f64,
+    pub(super) st: State,
+}
+
+/// The two phases of a large-μ continuation.
+pub(super) struct EdgePath {
+    /// Solver of the neck phase (band at the centre).
+    pub(super) neck_solver: LjSolver,
+    /// Neck-phase states (on `neck_solver`'s mesh).
+    pub(super) neck: Vec<State>,
+    /// Edge-phase states, by increasing marker.
+    pub(super) edge: Vec<EdgeState>,
+    pub(super) bw: BWork,
+    /// Band plan `(w, fraction)`.
+    pub(super) plan: (f64, f64),
+}
+
+impl LjSolver {
+    /// The band plan `(w, fraction)` of the edge continuation: `None` for
+    /// μ ≤ 1 (the fixed mesh resolves the edge zone at N ≥ 64) or when the
+    /// options fix a band.
+    pub(super) fn band_plan(&self) -> Option<(f64, f64)> {
+        if self.mu <= 1.0 || self.opts.edge_fraction > 0.0 {
+            return None;
+        }
+        let e = self.mu.powf(-1.5);
+        let w = (self.n() as f64 * e / 16.0).clamp(0.01, 2.0);
+        Some((w, 0.5))
+    }
+
+    /// The edge marker: the first crossing of `h̄ = 3^{1/6}` (the peak of the
+    /// attraction, inside the edge zone) from the centre, by linear
+    /// interpolation of the log-gap between nodes; 0 when `h̄₀` is above it.
+    /// It also follows the edge of the flat neck that forms at `h̄ ≈ 1.01`
+    /// before contact at large μ, where the contact radius is still 0.
+    pub(super) fn edge_marker(&self, y: &[f64]) -> f64 {
+        let x = &self.mesh.x;
+        if y[0] >= MARK {
+            return 0.0;
+        }
+        for i in 1..y.len() {
+            if y[i] >= MARK {
+                let t = (MARK - y[i - 1]) / (y[i] - y[i - 1]);
+                return x[i - 1] + t * (x[i] - x[i - 1]);
+            }
+        }
+        x[x.len() - 1]
+    }
+
+    /// This solver with its band moved to `a_e` (same N, L, r_f).
+    pub(super) fn rebanded(&self, a_e: f64, plan: (f64, f64)) -> Result<LjSolver> {
+        let mut o = self.opts;
+        o.edge_radius = a_e.max(0.0);
+        o.edge_width = plan.0;
+        o.edge_fraction = plan.1;
+        LjSolver::new(&LjSphere::from_tabor(self.mu)?, o)
+    }
+
+    /// Border row `c(m)` of the marker equation on this mesh: linear
+    /// interpolation weights of the log-gap at `m` (`N+1`, 0 on ᾱ).
+    fn marker_row(&self, m: f64) -> Vec<f64> {
+        let x = &self.mesh.x;
+        let n = x.len();
+        let mut row = vec![0.0; n + 1];
+        let i = x.partition_point(|&v| v <= m).clamp(1, n - 1) - 1;
+        let t = (m - x[i]) / (x[i + 1] - x[i]);
+        row[i] = 1.0 - t;
+        row[i + 1] = t;
+        row
+    }
+
+    /// Linear interpolation of node values `v` of this mesh at the radii
+    /// `to` (constant beyond the end nodes).
+    fn interp_at(&self, v: &[f64], to: &[f64]) -> Vec<f64> {
+        let x = &self.mesh.x;
+        let n = x.len();
+        to.iter()
+            .map(|&r| {
+                if r <= x[0] {
+                    return v[0];
+                }
+                if r >= x[n - 1] {
+                    return v[n - 1];
+                }
+                let j = x.partition_point(|&q| q <= r) - 1;
+                let t = (r - x[j]) / (x[j + 1] - x[j]);
+                v[j] + t * (v[j + 1] - v[j])
+            })
+            .collect()
+    }
+
+    /// The equilibrium with the marker at `m`, on the mesh banded at `m`,
+    /// from the guess `(y, al)` (node values of that mesh). Its tangent and
+    /// path derivatives are left for [`derivs_in_m`].
+    fn edge_solve(
+        &self,
+        m: f64,
+        plan: (f64, f64),
+        mut y: Vec<f64>,
+        mut al: f64,
+        s: f64,
+        bw: &mut BWork,
+    ) -> Result<EdgeState> {
+        let sv = self.rebanded(m, plan)?;
+        let row = sv.marker_row(m);
+        bw.invalidate();
+        // Full Newton: the mesh (and the Jacobian) is new at every marker.
+        sv.bnewton(&Con::Plane { row, c: MARK }, &mut y, &mut al, bw, true)?;
+        let n = sv.n();
+        let st = sv.make_state(&y, al, vec![0.0; n + 1], s, bw, false)?;
+        Ok(EdgeState { m, st })
+    }
+
+    /// The neck and edge phases from far away until `P̄ ≥ max_force` or
+    /// `stop(edge-phase states)` (see the module documentation).
+    pub(super) fn edge_march(
+        &self,
+        plan: (f64, f64),
+        max_force: f64,
+        target: usize,
+        stop: &dyn Fn(&[EdgeState]) -> bool,
+    ) -> Result<EdgePath> {
+        let (w, _) = plan;
+        let m_switch = 0.75 * w;
+        let neck_solver = self.rebanded(0.0, plan)?;
+        let ns = &neck_solver;
+        let (neck, mut bw) = ns.path_march(max_force, target, &|st: &[State]| {
+            ns.edge_marker(&st[st.len() - 1].y) >= m_switch
+        })?;
+        let last = neck.last().unwrap();
+        let mut edge: Vec<EdgeState> = Vec::new();
+        if last.pt.force >= max_force {
+            return Ok(EdgePath {
+                neck_solver,
+                neck,
+                edge,
+                bw,
+                plan,
+            });
+        }
+        // First edge state: the last neck state moved to the banded mesh
+        // (interpolation of w̄ = h̄ − r̄²/2, exact for a rigid profile).
+        let m0 = ns.edge_marker(&last.y);
+        let probe = self.rebanded(m0, plan)?;
+        let xn = &ns.mesh.x;
+        let wb: Vec<f64> = (0..xn.len())
+            .map(|i| last.y[i].exp() - 0.5 * xn[i] * xn[i])
+            .collect();
+        let y0: Vec<f64> = ns
+            .interp_at(&wb, &probe.mesh.x)
+            .iter()
+            .zip(&probe.mesh.x)
+            .map(|(v, x)| (v + 0.5 * x * x).max(1e-3).ln())
+            .collect();
+        // Re-converged at the same approach (the marker of a neck that has
+        // just formed is a poor parameter: the gap there is nearly flat),
+        // then the marker of the result is the first edge parameter.
+        let mut y0 = y0;
+        let mut al0 = last.al;
+        bw.invalidate();
+        probe.bnewton(&Con::Approach(last.al), &mut y0, &mut al0, &mut bw, true)?;
+        let m0 = probe.edge_marker(&y0);
+        let st0 = probe.make_state(&y0, al0, vec![0.0; y0.len() + 1], last.s, &bw, false)?;
+        let e0 = EdgeState { m: m0, st: st0 };
+        edge.push(e0);
+        let (sa, sp) = self.plane_scales(max_force);
+        let ds_target = 2.2 / target.max(10) as f64;
+        let qdist = |a: &LjPoint, b: &LjPoint| {
+            (((a.approach - b.approach) / sa).powi(2)
+                + ((a.force - b.force) / sp).powi(2)
+                + ((a.central_gap - b.central_gap) / sa).powi(2))
+            .sqrt()
+        };
+        let mut dm = 0.5 * w;
+        let mut fails = 0u32;
+        let mut guard = 0usize;
+        loop {
+            let k = edge.len();
+            let cur = &edge[k - 1];
+            if cur.st.pt.force >= max_force || stop(&edge) {
+                break;
+            }
+            guard += 1;
+            if guard > 20 * target.max(10) {
+                return Err(Error::NotConverged {
+                    what: "LJ sphere edge continuation (too many steps)",
+                    iterations: bw.w.iterations.min(u32::MAX as u64) as u32,
+                    residual: bw.w.max_residual,
+                });
+            }
+            let m = cur.m + dm;
+            // Secant predictor node by node (meshes banded at the markers).
+            let (y, al) = if k >= 2 && fails == 0 {
+                let prev = &edge[k - 2];
+                let th = dm / (cur.m - prev.m);
+                (
+                    cur.st
+                        .y
+                        .iter()
+                        .zip(&prev.st.y)
+                        .map(|(a, b)| a + th * (a - b))
+                        .collect(),
+                    cur.st.al + th * (cur.st.al - prev.st.al),
+                )
+            } else {
+                (cur.st.y.clone(), cur.st.al)
+            };
+            match self.edge_solve(m, plan, y, al, 0.0, &mut bw) {
+                Err(e) => {
+                    dm *= 0.5;
+                    fails += 1;
+                    if fails > 30 || dm < 1e-9 * (1.0 + cur.m) {
+                        return Err(e);
+                    }
+                }
+                Ok(mut es) => {
+                    let ds = qdist(&cur.st.pt, &es.st.pt);
+                    let ratio = ds / ds_target;
+                    if ratio > 3.0 {
+                        dm *= (0.8 / ratio).max(0.05);
+                        continue;
+                    }
+                    fails = 0;
+                    es.st.s = cur.st.s + ds;
+                    let f = if ratio > 0.0 { 1.0 / ratio } else { 2.0 };
+                    dm *= f.clamp(0.5, 2.0);
+                    // The band must not jump past the zone it resolves.
+                    dm = dm.min(4.0 * w + 0.5 * m);
+                    edge.push(es);
+                }
+            }
+        }
+        derivs_in_m(&mut edge, self.metric_y());
+        Ok(EdgePath {
+            neck_solver,
+            neck,
+            edge,
+            bw,
+            plan,
+        })
+    }
+
+    /// The extremum of `sign·value(state)` over the marker radius in
+    /// `[lo.m, hi.m]`, bracketed by the interior sample `mid` (Brent's
+    /// minimisation: parabolic steps with golden-section safeguards).
+    fn edge_extremum(
+        &self,
+        lo: &EdgeState,
+        mid: &EdgeState,
+        hi: &EdgeState,
+        plan: (f64, f64),
+        bw: &mut BWork,
+        value: &dyn Fn(&State) -> f64,
+    ) -> Result<Vec<EdgeState>> {
+        const CGOLD: f64 = 0.381_966_011_250_105_1;
+        let samples = [lo.clone(), mid.clone(), hi.clone()];
+        let guess = |m: f64| {
+            // Node-by-node interpolation between the bracketing samples.
+            let k = if m <= samples[1].m { 0 } else { 1 };
+            let (l, r) = (&samples[k], &samples[k + 1]);
+            let th = (m - l.m) / (r.m - l.m);
+            let y: Vec<f64> =
+                l.st.y
+                    .iter()
+                    .zip(&r.st.y)
+                    .map(|(p, q)| p + th * (q - p))
+                    .collect();
+            (
+                y,
+                l.st.al + th * (r.st.al - l.st.al),
+                l.st.s + th * (r.st.s - l.st.s),
+            )
+        };
+        let (mut a, mut b) = (lo.m, hi.m);
+        let (mut x, mut w, mut v) = (mid.m, mid.m, mid.m);
+        let fx0 = value(&mid.st);
+        let (mut fx, mut fw, mut fv) = (fx0, fx0, fx0);
+        let (mut d, mut e) = (0.0f64, 0.0f64);
+        let mut evals: Vec<EdgeState> = Vec::new();
+        for _ in 0..60 {
+            let xm = 0.5 * (a + b);
+            let tol1 = 1e-9 * x.abs() + 1e-12;
+            let tol2 = 2.0 * tol1;
+            if (x - xm).abs() <= tol2 - 0.5 * (b - a) {
+                break;
+            }
+            let mut golden = true;
+            if e.abs() > tol1 {
+                let r = (x - w) * (fx - fv);
+                let mut q = (x - v) * (fx - fw);
+                let mut p = (x - v) * q - (x - w) * r;
+                q = 2.0 * (q - r);
+                if q > 0.0 {
+                    p = -p;
+                }
+                q = q.abs();
+                let etemp = e;
+                e = d;
+                if p.abs() < (0.5 * q * etemp).abs() && p > q * (a - x) && p < q * (b - x) {
+                    d = p / q;
+                    let u = x + d;
+                    if u - a < tol2 || b - u < tol2 {
+                        d = tol1.copysign(xm - x);
+                    }
+                    golden = false;
+                }
+            }
+            if golden {
+                e = if x >= xm { a - x } else { b - x };
+                d = CGOLD * e;
+            }
+            let u = if d.abs() >= tol1 {
+                x + d
+            } else {
+                x + tol1.copysign(d)
+            };
+            let (y, al, s) = guess(u);
+            let es = match self.edge_solve(u, plan, y, al, s, bw) {
+                Ok(es) => es,
+                Err(_) => {
+                    // From the nearest sample instead of the interpolation.
+                    let near = samples
+                        .iter()
+                        .chain(evals.iter())
+                        .min_by(|p, q| (p.m - u).abs().total_cmp(&(q.m - u).abs()))
+                        .unwrap();
+                    self.edge_solve(u, plan, near.st.y.clone(), near.st.al, s, bw)?
+                }
+            };
+            let fu = value(&es.st);
+            evals.push(es);
+            if fu <= fx {
+                if u >= x {
+                    a = x;
+                } else {
+                    b = x;
+                }
+                (v, fv, w, fw, x, fx) = (w, fw, x, fx, u, fu);
+            } else {
+                if u < x {
+                    a = u;
+                } else {
+                    b = u;
+                }
+                if fu <= fw || w == x {
+                    (v, fv, w, fw) = (w, fw, u, fu);
+                } else if fu <= fv || v == x || v == w {
+                    (v, fv) = (u, fu);
+                }
+            }
+        }
+        let _ = (v, fv);
+        evals.push(mid.clone());
+        evals.sort_by(|p, q| p.m.total_cmp(&q.m));
+        Ok(evals)
+    }
+}
+
+/// Path derivatives of the edge-phase states by 3-point differences in the
+/// marker radius `m` (the family of solutions on meshes moving with the
+/// edge, smooth in `m`; the tangent of a single fixed mesh is not, where the
+/// edge crosses its cells). The unit tangent uses the node-by-node log-gap
+/// differences with the continuation's metric.
+fn derivs_in_m(edge: &mut [EdgeState], my: f64) {
+    let n = edge.len();
+    if n < 3 {
+        return;
+    }
+    let mut out = Vec::with_capacity(n);
+    for i in 0..n {
+        let (a, b, c) = if i == 0 {
+            (0, 1, 2)
+        } else if i + 1 == n {
+            (n - 3, n - 2, n - 1)
+        } else {
+            (i - 1, i, i + 1)
+        };
+        let xs = [edge[a].m, edge[b].m, edge[c].m];
+        let x = edge[i].m;
+        let d =
+            |f: &dyn Fn(&EdgeState) -> f64| deriv3(xs, [f(&edge[a]), f(&edge[b]), f(&edge[c])], x);
+        let dal = d(&|e| e.st.al);
+        let df = d(&|e| e.st.pt.force);
+        let da = d(&|e| e.st.pt.contact_radius);
+        let ny = edge[i].st.y.len();
+        let dy: Vec<f64> = (0..ny).map(|k| d(&|e| e.st.y[k])).collect();
+        out.push((dal, df, da, dy));
+    }
+    for (e, (dal, df, da, dy)) in edge.iter_mut().zip(out) {
+        let nrm = (my * dy.iter().map(|v| v * v).sum::<f64>() + dal * dal).sqrt();
+        let ny = dy.len();
+        let mut t: Vec<f64> = dy.into_iter().map(|v| v / nrm).collect();
+        t.push(dal / nrm);
+        e.st.t = t;
+        e.st.df = df / nrm;
+        e.st.da = da / nrm;
+        e.st.pt.d_approach = e.st.t[ny];
+        e.st.pt.d_force = e.st.df;
+        e.st.pt.d_radius = e.st.da;
+    }
+}
+
+impl EdgePath {
+    /// Number of neck states kept in the combined path (the last one is
+    /// dropped when the edge phase starts: the first edge state is the same
+    /// equilibrium on the banded mesh).
+    fn kept(&self) -> usize {
+        self.neck.len() - usize::from(!self.edge.is_empty())
+    }
+
+    /// The combined path: kept neck states, then the edge states.
+    fn states(&self) -> Vec<State> {
+        let mut v: Vec<State> = self.neck[..self.kept()].to_vec();
+        v.extend(self.edge.iter().map(|e| e.st.clone()));
+        v
+    }
+
+    /// The special point around the interval `[i, i + 1]` of the combined
+    /// path: a root of its path derivative in the neck phase, an extremum in
+    /// the marker radius in the edge phase (with its derivatives from the
+    /// evaluations around it; the extremised one is 0).
+    fn refine(&mut self, base: &LjSolver, i: usize, sp: Special) -> Result<State> {
+        let kept = self.kept();
+        if i < kept {
+            // Within the neck phase (the dropped last neck state closes the
+            // interval that ends on the first edge state).
+            return self
+                .neck_solver
+                .refine_between(&self.neck, i, &mut self.bw, &|st| sp.phi(st));
+        }
+        let j = i - kept;
+        let n = self.edge.len();
+        let sign = if sp == Special::ApproachMax {
+            -1.0
+        } else {
+            1.0
+        };
+        let value = |st: &State| match sp {
+            Special::ForceMin => st.pt.force,
+            _ => sign * st.al,
+        };
+        // The extreme sample among j-1..=j+2, bracketed by its neighbours.
+        let lo = j.saturating_sub(1);
+        let hi = (j + 2).min(n - 1);
+        let k = (lo..=hi)
+            .min_by(|&p, &q| value(&self.edge[p].st).total_cmp(&value(&self.edge[q].st)))
+            .unwrap_or(j);
+        if k == 0 || k + 1 >= n {
+            return Ok(self.edge[k].st.clone());
+        }
+        let (l, mid, r) = (
+            self.edge[k - 1].clone(),
+            self.edge[k].clone(),
+            self.edge[k + 1].clone(),
+        );
+        let mut evals = base.edge_extremum(&l, &mid, &r, self.plan, &mut self.bw, &value)?;
+        let best = (0..evals.len())
+            .min_by(|&p, &q| value(&evals[p].st).total_cmp(&value(&evals[q].st)))
+            .unwrap();
+        let mut around = vec![l];
+        around.append(&mut evals);
+        around.push(r);
+        derivs_in_m(&mut around, base.metric_y());
+        let mut st = around[best + 1].st.clone();
+        let n_al = st.t.len() - 1;
+        match sp {
+            Special::ForceMin => {
+                st.df = 0.0;
+                st.pt.d_force = 0.0;
+            }
+            _ => {
+                st.t[n_al] = 0.0;
+                st.pt.d_approach = 0.0;
+            }
+        }
+        Ok(st)
+    }
+}
+
+impl LjSolver {
+    /// [`LjSolver::curve`] by the edge continuation (μ > 1).
+    pub(super) fn edge_curve(&self, plan: (f64, f64)) -> Result<LjCurve> {
+        let o = self.opts;
+        let mut path = self.edge_march(plan, o.max_force, o.target_points, &|_| false)?;
+        let states = path.states();
+        let mut c = self.finish_curve(states, &mut |i, sp| path.refine(self, i, sp))?;
+        c.iterations = path.bw.w.iterations;
+        c.factorizations = path.bw.w.factorizations;
+        c.max_residual = path.bw.w.max_residual;
+        Ok(c)
+    }
+
+    /// Load-controlled pull-off by the edge continuation (μ > 1): the march
+    /// stops once the force has risen past its minimum, which is then
+    /// refined as the zero of dP̄/ds.
+    pub(super) fn edge_pull_off(&self, plan: (f64, f64)) -> Result<LjPullOff> {
+        // Past the minimum on the contact branch: the force has risen after
+        // its edge-phase minimum and the approach grows (stable branch).
+        let stop = |e: &[EdgeState]| {
+            let n = e.len();
+            let f = |i: usize| e[i].st.pt.force;
+            let imin = (0..n).min_by(|&a, &b| f(a).total_cmp(&f(b))).unwrap_or(0);
+            n >= 3 && imin + 2 < n && f(n - 1) > f(imin) + 0.02 && e[n - 1].st.al > e[n - 2].st.al
+        };
+        let mut path = self.edge_march(plan, 1.0, 80, &stop)?;
+        let states = path.states();
+        let Some(i) = Self::min_interval(&states) else {
+            return Err(Error::NotConverged {
+                what: "LJ sphere pull-off: no force minimum along the continuation",
+                iterations: path.bw.w.iterations.min(u32::MAX as u64) as u32,
+                residual: path.bw.w.max_residual,
+            });
+        };
+        let best = path.refine(self, i, Special::ForceMin)?;
+        let p = best.pt;
+        Ok(LjPullOff {
+            force: p.force,
+            approach: p.approach,
+            central_gap: p.central_gap,
+            contact_radius: p.contact_radius,
+            iterations: path.bw.w.iterations,
+            max_residual: path.bw.w.max_residual,
+            n_grid: self.n(),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The mesh map is inverted exactly for any band position: nodes
+    /// strictly inside their cells, cells increasing. (Newton alone cycled
+    /// around the inflections of a narrow band and returned a node outside
+    /// its cell for some band centres.)
+    #[test]
+    fn banded_meshes_are_ordered_for_every_band_centre() {
+        for mu in [1.5f64, 3.0, 30.0, 100.0] {
+            for n in [64usize, 256] {
+                let rf = 1.0 + 1.2 * jkr_radius_estimate(mu, 10.0);
+                let l = (3.0 * rf).max(20.0);
+                let w = (n as f64 * mu.powf(-1.5) / 16.0).clamp(0.01, 2.0);
+                for k in 0..300 {
+                    let a_e = 0.0731 * k as f64;
+                    let m = Mesh::new(n, rf, l, a_e, w, 0.5);
+                    for j in 0..n {
+                        assert!(
+                            m.c[j] < m.x[j] && m.x[j] < m.c[j + 1],
+                            "mu {mu} n {n} a_e {a_e}: node {j} = {} outside [{}, {}]",
+                            m.x[j],
+                            m.c[j],
+                            m.c[j + 1]
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
