@@ -211,6 +211,13 @@
 // A bug in the library (a caught panic). The message says where.
 #define ASPERITY_ERR_INTERNAL -5
 
+// A file could not be read (not found, no permission, not text).
+#define ASPERITY_ERR_IO -6
+
+// A text file or buffer does not have the expected format; the message gives
+// the line.
+#define ASPERITY_ERR_PARSE -7
+
 // An immutable tabulated contact law (opaque). Create it with
 // `asperity_table_new_*` or `asperity_table_from_json`, release it with
 // `asperity_table_free`. Safe to share between threads.

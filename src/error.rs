@@ -54,6 +54,21 @@ pub enum Error {
         /// Residual reached (in the solver's own scaled units).
         residual: f64,
     },
+    /// Reading a file failed (not found, permission denied, not UTF-8 text, …).
+    Io {
+        /// What was being read (e.g. `"profile file"`).
+        what: &'static str,
+        /// The operating system's error kind.
+        kind: std::io::ErrorKind,
+    },
+    /// A text file or buffer does not have the expected format.
+    Parse {
+        /// What was expected (e.g. `"two numeric columns x, z"`).
+        what: &'static str,
+        /// 1-based line number of the offending line (0 when the problem is
+        /// the text as a whole, e.g. too few lines).
+        line: u64,
+    },
 }
 
 /// `Result` with the library's [`Error`].
@@ -84,6 +99,9 @@ impl fmt::Display for Error {
                 f,
                 "not converged: {what} after {iterations} iterations (residual {residual:e})"
             ),
+            Error::Io { what, kind } => write!(f, "cannot read {what}: {kind}"),
+            Error::Parse { what, line: 0 } => write!(f, "parse error: {what}"),
+            Error::Parse { what, line } => write!(f, "parse error at line {line}: {what}"),
         }
     }
 }

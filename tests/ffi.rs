@@ -408,7 +408,7 @@ fn status_strings() {
         (ASPERITY_ERR_OUT_OF_DOMAIN, "out of domain"),
         (ASPERITY_ERR_INTERNAL, "internal error"),
         (1, "unknown status"),
-        (-6, "unknown status"),
+        (-8, "unknown status"),
         (i32::MIN, "unknown status"),
         (i32::MAX, "unknown status"),
     ];

@@ -17,6 +17,11 @@ pub const ASPERITY_ERR_NOT_CONVERGED: i32 = -3;
 pub const ASPERITY_ERR_OUT_OF_DOMAIN: i32 = -4;
 /// A bug in the library (a caught panic). The message says where.
 pub const ASPERITY_ERR_INTERNAL: i32 = -5;
+/// A file could not be read (not found, no permission, not text).
+pub const ASPERITY_ERR_IO: i32 = -6;
+/// A text file or buffer does not have the expected format; the message gives
+/// the line.
+pub const ASPERITY_ERR_PARSE: i32 = -7;
 
 pub(crate) fn status_of(e: &Error) -> i32 {
     match e {
@@ -26,6 +31,8 @@ pub(crate) fn status_of(e: &Error) -> i32 {
         }
         Error::NotConverged { .. } => ASPERITY_ERR_NOT_CONVERGED,
         Error::OutOfDomain { .. } => ASPERITY_ERR_OUT_OF_DOMAIN,
+        Error::Io { .. } => ASPERITY_ERR_IO,
+        Error::Parse { .. } => ASPERITY_ERR_PARSE,
     }
 }
 
@@ -40,6 +47,8 @@ pub extern "C" fn asperity_status_string(status: i32) -> *const c_char {
         ASPERITY_ERR_NOT_CONVERGED => "not converged\0",
         ASPERITY_ERR_OUT_OF_DOMAIN => "out of domain\0",
         ASPERITY_ERR_INTERNAL => "internal error\0",
+        ASPERITY_ERR_IO => "i/o error\0",
+        ASPERITY_ERR_PARSE => "parse error\0",
         _ => "unknown status\0",
     };
     s.as_ptr().cast()

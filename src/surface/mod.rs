@@ -1,3 +1,96 @@
 //! Surface profiles and maps: readers, form removal and filtering, ISO 4287
 //! parameters, autocorrelation and power spectral density, generators and the
 //! representative elementary pattern (thesis sections 1.5, 1.7).
+//!
+//! ## Data
+//!
+//! * [`Profile`]: a line scan sampled at a uniform spacing `dx` (m), heights in
+//!   m. [`Topography`]: a map on a uniform `dx` × `dy` grid.
+//! * [`read`]: text readers for `x,z` line scans and `x,y,z` or gridded maps
+//!   (comma, semicolon or whitespace separated, `#` comments), with an
+//!   explicit policy for slightly irregular spacing ([`Spacing`]).
+//! * [`Form`] / [`MapForm`]: least-squares form removal (mean, linear,
+//!   quadratic; mean, plane, quadratic for maps).
+//!
+//! ## Analysis
+//!
+//! * [`filter`]: the ISO 16610-21 Gaussian mean-line filter.
+//! * [`iso`]: ISO 4287 profile parameters (Rp, Rv, Rz, Rc, Rt, Ra, Rq, Rsk,
+//!   Rku, RSm, RΔq) averaged over sampling lengths, the material-ratio
+//!   (Abbott–Firestone) curve, and areal Sa, Sq, Ssk, Sku, Sp, Sv, Sz, Sdq.
+//! * [`spectral`]: autocorrelation (thesis 1-6, 1-8) and one-sided power
+//!   spectral density (1-7) normalised so that Parseval holds exactly,
+//!   spectral moments and Nayak's bandwidth, the power-law (Hurst) fit.
+//! * [`peaks`](mod@peaks): peaks of profiles (3-point) and summits of maps (8-neighbour)
+//!   with finite-difference curvatures.
+//! * [`pattern`]: Pepelyshev's representative elementary pattern (thesis
+//!   1.5.4) by the two-sample Kolmogorov–Smirnov statistic, in O(n log n).
+//!
+//! ## Synthesis
+//!
+//! * [`generate`]: seeded Weierstrass–Mandelbrot profiles, self-affine Gaussian
+//!   profiles and maps by Fourier filtering, and the Cantor–Borodich profile
+//!   (two descendants) with the three-descendant Warren–Krajcinovic variant
+//!   (thesis 1.5.3, 5.4.2).
+//! * [`fractal`]: box-counting dimension of a profile's graph.
+//!
+//! Every function that works on a [`Profile`] has a slice form
+//! (`heights: &[f64], dx: f64`) so that callers holding plain arrays (the C
+//! ABI) need not build one.
+
+mod fft;
+pub mod filter;
+pub mod fractal;
+pub mod generate;
+pub mod iso;
+pub mod pattern;
+pub mod peaks;
+pub mod profile;
+pub mod read;
+pub mod spectral;
+
+pub use filter::{
+    gaussian_filter, gaussian_mean_line, gaussian_transmission, FilterEnds, FilteredProfile,
+};
+pub use fractal::{box_counting_dimension, BoxCounting};
+pub use generate::{CantorBorodich, SelfAffine, WeierstrassMandelbrot};
+pub use iso::{
+    areal_parameters, areal_parameters_grid, roughness_parameters, ArealParameters,
+    MaterialRatioCurve, ParameterOptions, RoughnessParameters,
+};
+pub use pattern::{ks_statistics, ks_two_sample, representative_pattern, RepresentativePattern};
+pub use peaks::{peaks, summits, summits_grid, Peak, PeakStatistics, Summit};
+pub use profile::{remove_form, Form, MapForm, Profile, Topography};
+pub use read::{parse_profile, parse_topography, read_profile, read_topography, Spacing};
+pub use spectral::{
+    acf, default_fit_band, hurst_fit, psd, psd_hurst_exponent, psd_windowed, Acf, HurstFit, Psd,
+    PsdPlan, SpectralMoments, Window,
+};
+
+use crate::error::{Error, Result};
+
+/// Checks that `heights` has at least `min_len` values and that all are
+/// finite. `bound` is the length condition as text, e.g. `">= 8 points"`.
+pub(crate) fn check_heights(heights: &[f64], min_len: usize, bound: &'static str) -> Result<()> {
+    if heights.len() < min_len {
+        return Err(Error::InvalidArgument {
+            name: "heights.len()",
+            value: heights.len() as f64,
+            bound,
+        });
+    }
+    if let Some(&v) = heights.iter().find(|v| !v.is_finite()) {
+        return Err(Error::InvalidArgument {
+            name: "heights",
+            value: v,
+            bound: "finite",
+        });
+    }
+    Ok(())
+}
+
+/// Arithmetic mean (callers guarantee a non-empty slice).
+#[inline]
+pub(crate) fn mean(h: &[f64]) -> f64 {
+    h.iter().sum::<f64>() / h.len() as f64
+}

@@ -1,0 +1,543 @@
+//! ISO 4287 profile parameters (thesis 1.5.1), the material-ratio
+//! (Abbott–Firestone) curve, and areal parameters of maps (ISO 25178-2).
+//!
+//! Conventions, for a profile z_j, j = 0..n, spacing dx:
+//!
+//! * Heights are measured from the mean line. The profile is taken as given
+//!   (filter or form-remove it first: [`super::gaussian_filter`],
+//!   [`super::remove_form`]); the mean line is its least-squares level over
+//!   the evaluation length, z̄ = mean(z), and Z(x) = z − z̄.
+//! * Sampling lengths: with [`ParameterOptions::sampling_length`] = l, the
+//!   evaluation length is the first ⌊n·dx / l⌋ whole sampling lengths of
+//!   m = round(l/dx) samples (a remainder at the end is ignored); Rp, Rv, Rz,
+//!   Rc, Ra, Rq, Rsk, Rku, RSm and RΔq are computed in each sampling length and
+//!   averaged (ISO 4287 §4, ISO 4288 §4.1). Rt is over the evaluation length.
+//!   Without a sampling length the whole profile is one sampling length.
+//! * Integrals over a sampling length are sample means (each sample stands
+//!   for one interval dx), e.g. Rq = √((1/m) Σ Z_j²) for (1-5).
+//! * Profile elements (Rc, RSm): a peak (the profile above the mean line
+//!   between two crossings) with the valley that follows it. Peaks or valleys
+//!   lower than the height discrimination (default 10 % of Rz of the sampling
+//!   length) or narrower than the width discrimination (default 1 % of the
+//!   sampling length) count as part of the preceding valley or peak (ISO 4287
+//!   §3.2.8–3.2.9). Elements cut by a sampling-length boundary are ignored.
+//!   Rc and RSm are averaged over the sampling lengths that hold at least one
+//!   element, and are `None` when none does.
+//! * Local slopes dZ/dX for RΔq use the seven-point formula
+//!   dZ/dX_j = (Z_{j+3} − 9Z_{j+2} + 45Z_{j+1} − 45Z_{j−1} + 9Z_{j−2} −
+//!   Z_{j−3}) / (60 dx), with the 5- and 3-point central formulas within
+//!   three samples of the ends and one-sided differences at the end points.
+
+use super::{check_heights, mean, Topography};
+use crate::error::{check, Error, Result};
+use serde::{Deserialize, Serialize};
+
+/// ISO 4287 parameters of a profile (all lengths in m, slopes and shape
+/// factors dimensionless). Serialised with the ISO symbols as names (`Rp`,
+/// `Rv`, …, `RDq` for RΔq).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct RoughnessParameters {
+    /// Maximum profile peak height Rp = max Z within a sampling length (m).
+    #[serde(rename = "Rp")]
+    pub rp: f64,
+    /// Maximum profile valley depth Rv = −min Z within a sampling length (m).
+    #[serde(rename = "Rv")]
+    pub rv: f64,
+    /// Maximum height Rz = Rp + Rv within a sampling length (m).
+    #[serde(rename = "Rz")]
+    pub rz: f64,
+    /// Mean height of profile elements Rc = (1/m) Σ Zt_i (m); `None` when no
+    /// complete element (a peak and the adjacent valley, both above the
+    /// height and width discriminations) lies in any sampling length.
+    #[serde(rename = "Rc")]
+    pub rc: Option<f64>,
+    /// Total height Rt = max Z − min Z over the evaluation length (m); Rt ≥ Rz.
+    #[serde(rename = "Rt")]
+    pub rt: f64,
+    /// Arithmetic mean deviation Ra = (1/l) ∫ |Z| dx (m).
+    #[serde(rename = "Ra")]
+    pub ra: f64,
+    /// Root-mean-square deviation Rq = √((1/l) ∫ Z² dx) (m), thesis (1-5).
+    #[serde(rename = "Rq")]
+    pub rq: f64,
+    /// Skewness Rsk = (1/Rq³)(1/l) ∫ Z³ dx.
+    #[serde(rename = "Rsk")]
+    pub rsk: f64,
+    /// Kurtosis Rku = (1/Rq⁴)(1/l) ∫ Z⁴ dx (3 for a Gaussian, 1.5 for a sine).
+    #[serde(rename = "Rku")]
+    pub rku: f64,
+    /// Mean width of profile elements RSm = (1/m) Σ Xs_i (m); `None` as for
+    /// [`Self::rc`].
+    #[serde(rename = "RSm")]
+    pub rsm: Option<f64>,
+    /// Root-mean-square slope RΔq = √((1/l) ∫ (dZ/dX)² dx) (dimensionless).
+    #[serde(rename = "RDq")]
+    pub rdq: f64,
+    /// Hurst exponent H of a power-law fit PSD ∝ q^{−(1+2H)} (see
+    /// [`super::psd_hurst_exponent`]); `None` when not requested, the profile
+    /// is too short, or the spectrum is not a power law over the fit band.
+    pub psd_hurst_exponent: Option<f64>,
+    /// Sampling length used (m).
+    pub sampling_length: f64,
+    /// Number of sampling lengths averaged.
+    pub sampling_lengths: usize,
+}
+
+/// Options of [`roughness_parameters`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParameterOptions {
+    /// Sampling length l (m); `None` = the whole profile is one sampling
+    /// length. ISO 4288 ties l to the cut-off: l = λc, 5 sampling lengths.
+    pub sampling_length: Option<f64>,
+    /// Height discrimination for profile elements (Rc, RSm), as a fraction of
+    /// Rz of the sampling length: ISO 4287 default 0.1.
+    pub height_discrimination: f64,
+    /// Width discrimination for profile elements, as a fraction of the
+    /// sampling length: ISO 4287 default 0.01.
+    pub width_discrimination: f64,
+    /// Fit the Hurst exponent (one extra FFT); default `true`.
+    pub hurst: bool,
+}
+
+impl Default for ParameterOptions {
+    fn default() -> Self {
+        Self {
+            sampling_length: None,
+            height_discrimination: 0.1,
+            width_discrimination: 0.01,
+            hurst: true,
+        }
+    }
+}
+
+/// Local slope dZ/dX at sample `i` of `z` (len `n`, spacing `dx`): 7-point
+/// formula, 5- and 3-point near the ends, one-sided at the end points.
+#[inline]
+pub(crate) fn slope_at(z: &[f64], i: usize, dx: f64) -> f64 {
+    let n = z.len();
+    if i >= 3 && i + 3 < n {
+        (z[i + 3] - 9.0 * z[i + 2] + 45.0 * z[i + 1] - 45.0 * z[i - 1] + 9.0 * z[i - 2] - z[i - 3])
+            / (60.0 * dx)
+    } else if i >= 2 && i + 2 < n {
+        (-z[i + 2] + 8.0 * z[i + 1] - 8.0 * z[i - 1] + z[i - 2]) / (12.0 * dx)
+    } else if i >= 1 && i + 1 < n {
+        (z[i + 1] - z[i - 1]) / (2.0 * dx)
+    } else if i == 0 {
+        (z[1] - z[0]) / dx
+    } else {
+        (z[n - 1] - z[n - 2]) / dx
+    }
+}
+
+/// Profile elements of one sampling length: mean width Xs (in samples) and
+/// mean height Zt, or `None` without a complete element. `seg − zbar` are
+/// the heights from the mean line; `hd` the height discrimination (m), `wd`
+/// the width discrimination (samples).
+///
+/// Runs between mean-line crossings (crossings interpolated linearly) are
+/// peaks (Z > 0) or valleys. The incomplete runs at both ends of the
+/// sampling length are ignored: ISO 4287 §3.2.3 (note) counts the leading
+/// one as a peak or valley, but an element cut by the sampling-length
+/// boundary would bias RSm low (a sine would not give RSm = Λ).
+/// A run lower than `hd` or narrower than `wd` is counted as part of the
+/// preceding peak or valley (ISO 4287 §3.2.8–3.2.9, Annex); an element is a
+/// peak with the valley that follows it.
+fn elements(seg: &[f64], zbar: f64, hd: f64, wd: f64) -> Option<(f64, f64)> {
+    #[derive(Clone, Copy)]
+    struct Part {
+        up: bool,
+        start: f64,
+        end: f64,
+        ext: f64,
+    }
+    let mut parts: Vec<Part> = Vec::new();
+    let mut prev = seg[0] - zbar;
+    let mut up = prev > 0.0;
+    let mut start: Option<f64> = None; // None while in the leading partial run
+    let mut ext = 0.0f64;
+    for (j, &z) in seg.iter().enumerate().skip(1) {
+        let dj = z - zbar;
+        let u = dj > 0.0;
+        if u != up {
+            let x = (j - 1) as f64 + prev / (prev - dj);
+            if let Some(s) = start {
+                let run = Part {
+                    up,
+                    start: s,
+                    end: x,
+                    ext,
+                };
+                if run.ext >= hd && run.end - run.start >= wd {
+                    match parts.last_mut() {
+                        Some(p) if p.up == run.up => {
+                            p.end = run.end;
+                            p.ext = p.ext.max(run.ext);
+                        }
+                        _ => parts.push(run),
+                    }
+                } else if let Some(p) = parts.last_mut() {
+                    p.end = run.end;
+                }
+            }
+            start = Some(x);
+            up = u;
+            ext = 0.0;
+        }
+        ext = ext.max(dj.abs());
+        prev = dj;
+    }
+    let (mut sx, mut sz, mut count) = (0.0, 0.0, 0usize);
+    let mut i = 0;
+    while i + 1 < parts.len() {
+        if parts[i].up && !parts[i + 1].up {
+            sx += parts[i + 1].end - parts[i].start;
+            sz += parts[i].ext + parts[i + 1].ext;
+            count += 1;
+            i += 2;
+        } else {
+            i += 1;
+        }
+    }
+    (count > 0).then(|| (sx / count as f64, sz / count as f64))
+}
+
+/// ISO 4287 parameters of the profile `heights` (m) sampled at `dx` (m); see
+/// the module docs for the mean line, sampling lengths and discretisation.
+/// With `options.hurst`, also [`super::psd_hurst_exponent`] of the whole
+/// profile.
+///
+/// Errors: `dx` not finite and > 0; fewer than 8 heights or non-finite ones;
+/// a sampling length shorter than 8·dx or longer than the profile;
+/// discrimination fractions outside [0, 1); heights constant within a
+/// sampling length ([`Error::OutOfDomain`]: Rsk and Rku divide by Rq).
+pub fn roughness_parameters(
+    heights: &[f64],
+    dx: f64,
+    options: &ParameterOptions,
+) -> Result<RoughnessParameters> {
+    check::positive("dx", dx)?;
+    check_heights(heights, 8, ">= 8 points")?;
+    check::in_range(
+        "height_discrimination",
+        options.height_discrimination,
+        0.0,
+        0.999_999,
+        "in [0, 1)",
+    )?;
+    check::in_range(
+        "width_discrimination",
+        options.width_discrimination,
+        0.0,
+        0.999_999,
+        "in [0, 1)",
+    )?;
+    let n = heights.len();
+    let (m, count) = match options.sampling_length {
+        None => (n, 1),
+        Some(l) => {
+            check::positive("sampling_length", l)?;
+            let m = (l / dx).round();
+            if m < 8.0 {
+                return Err(Error::InvalidArgument {
+                    name: "sampling_length",
+                    value: l,
+                    bound: ">= 8 * dx",
+                });
+            }
+            let m = m as usize;
+            if m > n {
+                return Err(Error::InvalidArgument {
+                    name: "sampling_length",
+                    value: l,
+                    bound: "<= profile length n*dx",
+                });
+            }
+            (m, n / m)
+        }
+    };
+    let ev = &heights[..m * count];
+    let zbar = mean(ev);
+    let (mut rp, mut rv, mut rz, mut ra, mut rq, mut rsk, mut rku, mut rdq) =
+        (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    let (mut rc_sum, mut rsm_sum, mut n_elem) = (0.0, 0.0, 0usize);
+    let (mut zmax, mut zmin) = (f64::NEG_INFINITY, f64::INFINITY);
+    let ne = ev.len();
+    for s in 0..count {
+        let (first, last) = (s * m, (s + 1) * m);
+        let seg = &ev[first..last];
+        let (mut s1, mut s2, mut s3, mut s4) = (0.0, 0.0, 0.0, 0.0);
+        let (mut hi, mut lo) = (f64::NEG_INFINITY, f64::INFINITY);
+        for &z in seg {
+            let v = z - zbar;
+            let v2 = v * v;
+            s1 += v.abs();
+            s2 += v2;
+            s3 += v2 * v;
+            s4 += v2 * v2;
+            hi = hi.max(v);
+            lo = lo.min(v);
+        }
+        let mf = m as f64;
+        let q = (s2 / mf).sqrt();
+        if hi == lo {
+            return Err(Error::OutOfDomain {
+                name: "heights",
+                value: seg[0],
+                reason: "constant heights (Rq = 0): Rsk and Rku divide by Rq",
+            });
+        }
+        zmax = zmax.max(hi);
+        zmin = zmin.min(lo);
+        rp += hi;
+        rv += -lo;
+        rz += hi - lo;
+        ra += s1 / mf;
+        rq += q;
+        rsk += s3 / mf / (q * q * q);
+        rku += s4 / mf / (q * q * q * q);
+        // Slopes: the evaluation length supplies neighbours across sampling
+        // lengths; the lower-order stencils apply only at its two ends.
+        let a = first.max(3).min(last);
+        let b = last.min(ne.saturating_sub(3)).max(a);
+        let mut sd = 0.0;
+        for i in (first..a).chain(b..last) {
+            let g = slope_at(ev, i, dx);
+            sd += g * g;
+        }
+        if b > a {
+            let mut si = 0.0;
+            for w in ev[a - 3..b + 3].windows(7) {
+                let g = w[6] - 9.0 * w[5] + 45.0 * (w[4] - w[2]) + 9.0 * w[1] - w[0];
+                si += g * g;
+            }
+            sd += si / (60.0 * dx * 60.0 * dx);
+        }
+        rdq += (sd / mf).sqrt();
+        let hd = options.height_discrimination * (hi - lo);
+        let wd = options.width_discrimination * mf;
+        if let Some((xs, zt)) = elements(seg, zbar, hd, wd) {
+            rsm_sum += xs * dx;
+            rc_sum += zt;
+            n_elem += 1;
+        }
+    }
+    let c = count as f64;
+    let psd_hurst_exponent = if options.hurst {
+        super::psd_hurst_exponent(heights, dx)?
+    } else {
+        None
+    };
+    Ok(RoughnessParameters {
+        rp: rp / c,
+        rv: rv / c,
+        rz: rz / c,
+        rc: (n_elem > 0).then(|| rc_sum / n_elem as f64),
+        rt: zmax - zmin,
+        ra: ra / c,
+        rq: rq / c,
+        rsk: rsk / c,
+        rku: rku / c,
+        rsm: (n_elem > 0).then(|| rsm_sum / n_elem as f64),
+        rdq: rdq / c,
+        psd_hurst_exponent,
+        sampling_length: m as f64 * dx,
+        sampling_lengths: count,
+    })
+}
+
+/// The material-ratio (Abbott–Firestone) curve of a profile or map (ISO 4287
+/// §3.2.17–3.2.20, thesis Fig. 1-5): Rmr(c), the fraction of the evaluation
+/// length where the profile is at or above level c (measured from the mean
+/// line), and its inverse c(Rmr). Each sample stands for an equal length.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MaterialRatioCurve {
+    /// Heights from the mean line, sorted in decreasing order (m).
+    sorted: Vec<f64>,
+}
+
+impl MaterialRatioCurve {
+    /// The curve of `heights` (m). Errors: empty or non-finite heights.
+    pub fn new(heights: &[f64]) -> Result<Self> {
+        check_heights(heights, 1, ">= 1 point")?;
+        let zbar = mean(heights);
+        let mut sorted: Vec<f64> = heights.iter().map(|z| z - zbar).collect();
+        sorted.sort_unstable_by(|a, b| b.total_cmp(a));
+        Ok(Self { sorted })
+    }
+
+    /// Rmr(c) ∈ [0, 1]: fraction of samples with Z ≥ `level` (m, from the
+    /// mean line).
+    pub fn ratio_at(&self, level: f64) -> f64 {
+        let k = self.sorted.partition_point(|&z| z >= level);
+        k as f64 / self.sorted.len() as f64
+    }
+
+    /// c(Rmr) (m, from the mean line): the highest level whose material ratio
+    /// reaches `ratio` ∈ [0, 1] (the highest peak for 0, the deepest valley
+    /// for 1). Errors: `ratio` outside [0, 1].
+    pub fn level_at(&self, ratio: f64) -> Result<f64> {
+        check::in_range("ratio", ratio, 0.0, 1.0, "in [0, 1]")?;
+        let n = self.sorted.len();
+        let k = ((ratio * n as f64).ceil() as usize).clamp(1, n);
+        Ok(self.sorted[k - 1])
+    }
+
+    /// Profile section height difference Rδc = c(Rmr1) − c(Rmr2) (m), ISO 4287
+    /// §4.5.3. Errors: ratios outside [0, 1].
+    pub fn section_height(&self, rmr1: f64, rmr2: f64) -> Result<f64> {
+        Ok(self.level_at(rmr1)? - self.level_at(rmr2)?)
+    }
+
+    /// `points` (≥ 2) samples of the curve as (Rmr, c) pairs, Rmr from 0 to 1
+    /// in equal steps.
+    pub fn curve(&self, points: usize) -> Vec<(f64, f64)> {
+        let p = points.max(2);
+        (0..p)
+            .map(|i| {
+                let r = i as f64 / (p - 1) as f64;
+                (r, self.level_at(r).unwrap_or(0.0))
+            })
+            .collect()
+    }
+}
+
+/// Areal (ISO 25178-2) height parameters of a map, heights from the mean
+/// plane z̄ (remove a plane or quadric first with
+/// [`Topography::remove_form`]). Serialised with the ISO symbols (`Sdq`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ArealParameters {
+    /// Arithmetic mean height Sa = mean |Z| (m).
+    #[serde(rename = "Sa")]
+    pub sa: f64,
+    /// Root-mean-square height Sq = √(mean Z²) (m).
+    #[serde(rename = "Sq")]
+    pub sq: f64,
+    /// Skewness Ssk = mean Z³ / Sq³.
+    #[serde(rename = "Ssk")]
+    pub ssk: f64,
+    /// Kurtosis Sku = mean Z⁴ / Sq⁴.
+    #[serde(rename = "Sku")]
+    pub sku: f64,
+    /// Maximum peak height Sp = max Z (m).
+    #[serde(rename = "Sp")]
+    pub sp: f64,
+    /// Maximum pit depth Sv = −min Z (m).
+    #[serde(rename = "Sv")]
+    pub sv: f64,
+    /// Maximum height Sz = Sp + Sv (m).
+    #[serde(rename = "Sz")]
+    pub sz: f64,
+    /// Root-mean-square gradient Sdq = √(mean((∂Z/∂x)² + (∂Z/∂y)²)), slopes
+    /// by the seven-point formula along rows and columns (as for RΔq).
+    #[serde(rename = "Sdq")]
+    pub sdq: f64,
+}
+
+/// Areal parameters of a map; see [`ArealParameters`] and
+/// [`areal_parameters_grid`]. Errors: constant heights (Ssk, Sku divide by Sq).
+pub fn areal_parameters(t: &Topography) -> Result<ArealParameters> {
+    areal_parameters_grid(t.heights(), t.nx(), t.ny(), t.dx(), t.dy())
+}
+
+/// Areal parameters of a row-major `nx × ny` grid `heights` (m),
+/// `heights[j*nx + i] = z(x_i, y_j)`, spacings `dx`, `dy` (m) — the slice form
+/// of [`areal_parameters`].
+///
+/// Errors: `dx`, `dy` not finite and > 0; nx or ny < 2; `heights.len() !=
+/// nx*ny`; non-finite heights; constant heights ([`Error::OutOfDomain`]).
+pub fn areal_parameters_grid(
+    heights: &[f64],
+    nx: usize,
+    ny: usize,
+    dx: f64,
+    dy: f64,
+) -> Result<ArealParameters> {
+    check::positive("dx", dx)?;
+    check::positive("dy", dy)?;
+    if nx < 2 || ny < 2 || heights.len() != nx * ny {
+        return Err(Error::InvalidArgument {
+            name: "heights.len()",
+            value: heights.len() as f64,
+            bound: "== nx * ny with nx, ny >= 2",
+        });
+    }
+    check_heights(heights, 4, ">= 4 points")?;
+    let zbar = mean(heights);
+    let (mut s1, mut s2, mut s3, mut s4) = (0.0, 0.0, 0.0, 0.0);
+    let (mut hi, mut lo) = (f64::NEG_INFINITY, f64::INFINITY);
+    for &z in heights {
+        let v = z - zbar;
+        let v2 = v * v;
+        s1 += v.abs();
+        s2 += v2;
+        s3 += v2 * v;
+        s4 += v2 * v2;
+        hi = hi.max(v);
+        lo = lo.min(v);
+    }
+    let nf = heights.len() as f64;
+    let sq = (s2 / nf).sqrt();
+    if hi == lo {
+        return Err(Error::OutOfDomain {
+            name: "heights",
+            value: heights[0],
+            reason: "constant heights (Sq = 0): Ssk and Sku divide by Sq",
+        });
+    }
+    let mut g2 = 0.0;
+    for j in 0..ny {
+        let row = &heights[j * nx..(j + 1) * nx];
+        for i in 0..nx {
+            let g = slope_at(row, i, dx);
+            g2 += g * g;
+        }
+    }
+    let mut col = vec![0.0; ny];
+    for i in 0..nx {
+        for (j, c) in col.iter_mut().enumerate() {
+            *c = heights[j * nx + i];
+        }
+        for j in 0..ny {
+            let g = slope_at(&col, j, dy);
+            g2 += g * g;
+        }
+    }
+    Ok(ArealParameters {
+        sa: s1 / nf,
+        sq,
+        ssk: s3 / nf / (sq * sq * sq),
+        sku: s4 / nf / (sq * sq * sq * sq),
+        sp: hi,
+        sv: -lo,
+        sz: hi - lo,
+        sdq: (g2 / nf).sqrt(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn elements_of_a_sine() {
+        // 10 periods of 100 samples: complete elements span 100 samples.
+        let d: Vec<f64> = (0..1000)
+            .map(|j| (2.0 * core::f64::consts::PI * j as f64 / 100.0 + 0.3).sin())
+            .collect();
+        let (xs, zt) = elements(&d, 0.0, 0.2, 10.0).unwrap();
+        assert!((xs - 100.0).abs() < 1e-3, "{xs}");
+        assert!((zt - 2.0).abs() < 2e-3, "{zt}");
+    }
+
+    #[test]
+    fn small_wiggles_merge_into_the_preceding_part() {
+        // Peak, tiny dip below the line, peak, valley: one element.
+        let d = [
+            -1.0, 1.0, 2.0, 1.0, -0.01, 1.0, 2.0, 1.0, -1.0, -2.0, -1.0, 1.0, 2.0, -1.0,
+        ];
+        let (xs, zt) = elements(&d, 0.0, 0.2, 0.0).unwrap();
+        assert!((zt - 4.0).abs() < 1e-12);
+        // From the crossing at 0.5 to the crossing at 10.5.
+        assert!((xs - 10.0).abs() < 1e-12, "{xs}");
+    }
+}
