@@ -130,8 +130,8 @@ use core::f64::consts::PI;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::{MatMut, MatRef};
 
-mod path;
 mod edge;
+mod path;
 mod sample;
 use path::{BWork, State};
 pub use sample::LjPathSamples;
@@ -1312,10 +1312,9 @@ impl LjSolver {
         }
         let (states, mut bw) = self.path_march(o.max_force, o.target_points, &|_| false)?;
         let samples = states.clone();
-        let mut c =
-            self.finish_curve(states, &mut |i, sp| {
-                self.refine_between(&samples, i, &mut bw, &|st| sp.phi(st))
-            })?;
+        let mut c = self.finish_curve(states, &mut |i, sp| {
+            self.refine_between(&samples, i, &mut bw, &|st| sp.phi(st))
+        })?;
         c.iterations = bw.w.iterations;
         c.factorizations = bw.w.factorizations;
         c.max_residual = bw.w.max_residual;
