@@ -71,22 +71,10 @@ pub fn box_counting_dimension(heights: &[f64], dx: f64) -> Result<BoxCounting> {
         .zip(&counts)
         .map(|(e, c)| (-e.ln(), c.ln()))
         .collect();
-    let k = pts.len() as f64;
-    let mx = pts.iter().map(|p| p.0).sum::<f64>() / k;
-    let my = pts.iter().map(|p| p.1).sum::<f64>() / k;
-    let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
-    for &(x, y) in &pts {
-        sxx += (x - mx) * (x - mx);
-        sxy += (x - mx) * (y - my);
-        syy += (y - my) * (y - my);
-    }
+    let (dimension, _, r_squared) = super::spectral::line_fit(&pts);
     Ok(BoxCounting {
-        dimension: sxy / sxx,
-        r_squared: if syy > 0.0 {
-            sxy * sxy / (sxx * syy)
-        } else {
-            1.0
-        },
+        dimension,
+        r_squared,
         sizes,
         counts,
     })

@@ -229,22 +229,7 @@ impl LogBins {
                 reason: "fewer than 3 log bins with power between q_min and q_max",
             });
         }
-        let k = pts.len() as f64;
-        let mx = pts.iter().map(|p| p.0).sum::<f64>() / k;
-        let my = pts.iter().map(|p| p.1).sum::<f64>() / k;
-        let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
-        for &(x, y) in &pts {
-            sxx += (x - mx) * (x - mx);
-            sxy += (x - mx) * (y - my);
-            syy += (y - my) * (y - my);
-        }
-        let slope = sxy / sxx;
-        let icpt = my - slope * mx;
-        let r_squared = if syy > 0.0 {
-            sxy * sxy / (sxx * syy)
-        } else {
-            1.0
-        };
+        let (slope, icpt, r_squared) = line_fit(&pts);
         Ok(HurstFit {
             hurst: -(slope + 1.0) / 2.0,
             slope,
@@ -501,6 +486,27 @@ pub fn acf(heights: &[f64], dx: f64) -> Result<Acf> {
         }
     });
     Ok(Acf { dx, r })
+}
+
+/// Least-squares straight line through `(x, y)` points: `(slope, intercept,
+/// r²)` (r² = 1 when the y are constant). Callers guarantee ≥ 2 distinct x.
+pub(crate) fn line_fit(pts: &[(f64, f64)]) -> (f64, f64, f64) {
+    let k = pts.len() as f64;
+    let mx = pts.iter().map(|p| p.0).sum::<f64>() / k;
+    let my = pts.iter().map(|p| p.1).sum::<f64>() / k;
+    let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
+    for &(x, y) in pts {
+        sxx += (x - mx) * (x - mx);
+        sxy += (x - mx) * (y - my);
+        syy += (y - my) * (y - my);
+    }
+    let slope = sxy / sxx;
+    let r_squared = if syy > 0.0 {
+        sxy * sxy / (sxx * syy)
+    } else {
+        1.0
+    };
+    (slope, my - slope * mx, r_squared)
 }
 
 #[cfg(test)]

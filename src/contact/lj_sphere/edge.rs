@@ -216,14 +216,7 @@ impl LjSolver {
         let st0 = probe.make_state(&y0, al0, vec![0.0; y0.len() + 1], last.s, &bw, false)?;
         let e0 = EdgeState { m: m0, st: st0 };
         edge.push(e0);
-        let (sa, sp) = self.plane_scales(max_force);
-        let ds_target = 2.2 / target.max(10) as f64;
-        let qdist = |a: &LjPoint, b: &LjPoint| {
-            (((a.approach - b.approach) / sa).powi(2)
-                + ((a.force - b.force) / sp).powi(2)
-                + ((a.central_gap - b.central_gap) / sa).powi(2))
-            .sqrt()
-        };
+        let metric = self.step_metric(max_force, target);
         let mut dm = 0.5 * w;
         let mut fails = 0u32;
         let mut guard = 0usize;
@@ -267,8 +260,8 @@ impl LjSolver {
                     }
                 }
                 Ok(mut es) => {
-                    let ds = qdist(&cur.st.pt, &es.st.pt);
-                    let ratio = ds / ds_target;
+                    let ds = metric.dist(&cur.st.pt, &es.st.pt);
+                    let ratio = ds / metric.target;
                     if ratio > 3.0 {
                         dm *= (0.8 / ratio).max(0.05);
                         continue;
@@ -421,13 +414,7 @@ fn derivs_in_m(edge: &mut [EdgeState], my: f64) {
     }
     let mut out = Vec::with_capacity(n);
     for i in 0..n {
-        let (a, b, c) = if i == 0 {
-            (0, 1, 2)
-        } else if i + 1 == n {
-            (n - 3, n - 2, n - 1)
-        } else {
-            (i - 1, i, i + 1)
-        };
+        let (a, b, c) = stencil3(i, n);
         let xs = [edge[a].m, edge[b].m, edge[c].m];
         let x = edge[i].m;
         let d =
@@ -446,10 +433,9 @@ fn derivs_in_m(edge: &mut [EdgeState], my: f64) {
         t.push(dal / nrm);
         e.st.t = t;
         e.st.df = df / nrm;
-        e.st.da = da / nrm;
         e.st.pt.d_approach = e.st.t[ny];
         e.st.pt.d_force = e.st.df;
-        e.st.pt.d_radius = e.st.da;
+        e.st.pt.d_radius = da / nrm;
     }
 }
 

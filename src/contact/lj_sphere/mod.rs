@@ -26,11 +26,9 @@
 //!   geometric growth beyond (the pressure decays as `r̄⁻⁶`), and an optional
 //!   concentration of cells (`B > 0`) in a band of width `w` around an
 //!   expected contact edge `a_e` (used by the pull-off solver, whose edge
-//!   is known in advance). For μ > 1 the curve and the pull-off use a
-//!   **moving edge band** instead: the band follows the edge along the
-//!   continuation, with a remesh (new band, influence matrix rebuilt, state
-//!   transferred and re-converged) whenever the edge leaves the band's inner
-//!   half (module `remesh`). The collocation node `x_j` of cell `j` is the image
+//!   is known in advance). For μ > 1 the curve and the pull-off follow the
+//!   contact branch in the radius of its edge zone on meshes whose band
+//!   moves with the edge (module `edge`). The collocation node `x_j` of cell `j` is the image
 //!   of the cell's `ξ`-midpoint, so the scheme is second order on the smooth
 //!   map ([`LjSolver::mesh`]).
 //! * **Pressure** piecewise constant on each cell, `p̄_j = p̄(h̄(x_j))`.
@@ -1321,11 +1319,17 @@ impl LjSolver {
         Ok(c)
     }
 
-    /// Scales of the `(ᾱ, P̄)` plane for the step control.
-    fn plane_scales(&self, max_force: f64) -> (f64, f64) {
+    /// Step control of the marches: the distance between two points in the
+    /// scaled `(ᾱ, P̄, h̄₀)` space and the target distance per step for about
+    /// `target` points up to `P̄ = max_force`.
+    fn step_metric(&self, max_force: f64, target: usize) -> StepMetric {
         let o = &self.opts;
         let al_end = (0.75 * PI * (max_force.max(0.0) + 2.0)).powf(2.0 / 3.0) * self.mu.max(0.05);
-        (o.start_gap + al_end, max_force.max(0.0) + 2.5)
+        StepMetric {
+            sa: o.start_gap + al_end,
+            sp: max_force.max(0.0) + 2.5,
+            target: 2.2 / target.max(10) as f64,
+        }
     }
 
     /// Pseudo-arclength march from the start gap until `P̄ ≥ max_force` or
@@ -1340,14 +1344,7 @@ impl LjSolver {
         let o = self.opts;
         let mut bw = BWork::new(self.n());
         let st0 = self.path_start(o.start_gap, &mut bw, false)?;
-        let (sa, sp) = self.plane_scales(max_force);
-        let ds_target = 2.2 / target.max(10) as f64;
-        let qdist = |a: &LjPoint, b: &LjPoint| {
-            (((a.approach - b.approach) / sa).powi(2)
-                + ((a.force - b.force) / sp).powi(2)
-                + ((a.central_gap - b.central_gap) / sa).powi(2))
-            .sqrt()
-        };
+        let metric = self.step_metric(max_force, target);
         let mut states = vec![st0];
         let mut sigma = 0.01 * o.start_gap;
         let mut guard = 0usize;
@@ -1372,13 +1369,11 @@ impl LjSolver {
                     reason: "not reached before the central gap fell below 0.05 z0",
                 });
             }
-            // Quadratic extrapolation through the last three states (in the
-            // path parameter) as the predictor; the tangent alone at first.
             let k = states.len();
             // Cubic Hermite extrapolation through the last two states with
             // their tangents (refined to the true Jacobian, see
             // `LjSolver::tangent`) as the predictor; the tangent alone at
-            // first and after a failure or a remesh.
+            // first and after a failure.
             let guess = if k >= 2 && fails == 0 {
                 let (b, c) = (&states[k - 2], &states[k - 1]);
                 let d = c.s - b.s;
@@ -1418,12 +1413,12 @@ impl LjSolver {
                     // largest change of a log-gap (the profile must not
                     // move by more than ~DY_STEP per step, or Newton leaves
                     // its basin where the contact forms).
-                    let ds = qdist(&last.pt, &st.pt);
+                    let ds = metric.dist(&last.pt, &st.pt);
                     let dy =
                         st.y.iter()
                             .zip(&last.y)
                             .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-                    let ratio = (ds / ds_target).max(dy / DY_STEP);
+                    let ratio = (ds / metric.target).max(dy / DY_STEP);
                     if ratio > 3.0 {
                         sigma *= (0.8 / ratio).max(0.05);
                         continue;
@@ -1562,13 +1557,7 @@ impl LjSolver {
         let n = all.len();
         let mut pts: Vec<LjPoint> = all.iter().map(|s| s.pt).collect();
         for i in 0..n {
-            let (a, b, c) = if i == 0 {
-                (0, 1, 2)
-            } else if i + 1 == n {
-                (n - 3, n - 2, n - 1)
-            } else {
-                (i - 1, i, i + 1)
-            };
+            let (a, b, c) = stencil3(i, n);
             let xs = [all[a].s, all[b].s, all[c].s];
             let x = all[i].s;
             let dfa = deriv3(xs, [pts[a].force, pts[b].force, pts[c].force], x);
@@ -1902,6 +1891,33 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 
 fn norm2(a: &[f64]) -> f64 {
     a.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// Scaled distance between path points, and the target per step.
+struct StepMetric {
+    sa: f64,
+    sp: f64,
+    target: f64,
+}
+
+impl StepMetric {
+    fn dist(&self, a: &LjPoint, b: &LjPoint) -> f64 {
+        (((a.approach - b.approach) / self.sa).powi(2)
+            + ((a.force - b.force) / self.sp).powi(2)
+            + ((a.central_gap - b.central_gap) / self.sa).powi(2))
+        .sqrt()
+    }
+}
+
+/// The 3-point stencil around sample `i` of `n ≥ 3` (one-sided at the ends).
+fn stencil3(i: usize, n: usize) -> (usize, usize, usize) {
+    if i == 0 {
+        (0, 1, 2)
+    } else if i + 1 == n {
+        (n - 3, n - 2, n - 1)
+    } else {
+        (i - 1, i, i + 1)
+    }
 }
 
 /// Cubic Hermite on [0, 1] with end values `y0`, `y1` and end slopes (per

@@ -71,10 +71,6 @@ pub(super) struct State {
     pub(super) pt: LjPoint,
     /// dP̄/ds along `t` (NaN unless computed).
     pub(super) df: f64,
-    /// d(radius)/ds along `t` (NaN unless computed; for the path's
-    /// derivatives, e.g. a tabulated law).
-    #[allow(dead_code)]
-    pub(super) da: f64,
     /// h̄₀ of the state.
     pub(super) h0: f64,
 }
@@ -421,7 +417,6 @@ impl LjSolver {
                 d_radius: da,
             },
             df,
-            da,
             h0,
         })
     }
