@@ -4,7 +4,8 @@
 //! prescribed central gap), and the bordered `(N+1)×(N+1)` Newton system is
 //! factored by faer's LU. The border row changes from step to step; a
 //! rank-one (Sherman–Morrison) correction applies the current row to the
-//! stored factorisation, so chord iterations stay exact in the constraint.
+//! stored factorisation, so its solves stay exact in the constraint. A stale
+//! factorisation preconditions GMRES on the true Jacobian.
 
 // Index loops mirror the matrix algebra.
 #![allow(clippy::needless_range_loop)]
@@ -22,6 +23,24 @@ pub(super) enum Con {
     Gap(f64),
 }
 
+/// Relative residual to which a tangent is refined for the Hermite
+/// predictor of the march: its error only costs Newton iterations.
+pub(super) const PREDICTOR_RTOL: f64 = 1e-4;
+/// Relative residual of the tangents of special points and exact states,
+/// whose derivatives along the tangent locate extrema.
+pub(super) const EXACT_RTOL: f64 = 1e-12;
+
+/// Largest Krylov dimension of [`LjSolver::bgmres`] before the caller
+/// refactors instead.
+const GMRES_MAX: usize = 12;
+
+/// GMRES cycles of [`LjSolver::bgmres`], each checked by the true residual.
+const GMRES_CYCLES: usize = 3;
+
+/// Forcing term of the inexact Newton steps: relative residual of the
+/// GMRES solves with a stale factorisation.
+const NEWTON_ETA: f64 = 1e-3;
+
 /// Scratch of the bordered Newton iteration.
 pub(super) struct BWork {
     pub(super) w: Work,
@@ -33,8 +52,19 @@ pub(super) struct BWork {
     row: Vec<f64>,
     yt: Vec<f64>,
     g: f64,
-    /// Worst contraction factor of the chord iterations of the last solve.
-    pub(super) rho: f64,
+    /// Most GMRES iterations of one linear solve in the last Newton solve
+    /// (a measure of how stale the factorisation is).
+    pub(super) krylov: usize,
+    /// GMRES Krylov basis, `(GMRES_MAX+1)×(N+1)`.
+    kv: Vec<f64>,
+    /// GMRES preconditioned directions, `GMRES_MAX×(N+1)`.
+    kz: Vec<f64>,
+    /// Scratch of the Jacobian–vector product, `N`.
+    kq: Vec<f64>,
+    /// GMRES right-hand side, solution and true residual, `N+1` each.
+    kb: Vec<f64>,
+    kx: Vec<f64>,
+    kr: Vec<f64>,
 }
 
 impl BWork {
@@ -54,7 +84,13 @@ impl BWork {
             row: vec![0.0; n + 1],
             yt: vec![0.0; n],
             g: 0.0,
-            rho: 0.0,
+            krylov: 0,
+            kv: vec![0.0; (GMRES_MAX + 1) * (n + 1)],
+            kz: vec![0.0; GMRES_MAX * (n + 1)],
+            kq: vec![0.0; n],
+            kb: vec![0.0; n + 1],
+            kx: vec![0.0; n + 1],
+            kr: vec![0.0; n + 1],
         }
     }
 }
@@ -182,8 +218,175 @@ impl LjSolver {
         bw.x.iter().all(|v| v.is_finite())
     }
 
-    /// Bordered Newton (full: refactor every iteration; else chord with
-    /// refresh when the contraction is poor).
+    /// `out = J_b v`: the bordered Jacobian at the state in `bw.w` with
+    /// border row `bw.row`, applied to `v` (`N+1`).
+    fn bjac_apply(&self, w: &Work, row: &[f64], q: &mut [f64], v: &[f64], out: &mut [f64]) {
+        let n = self.n();
+        for j in 0..n {
+            q[j] = self.k * w.dp[j] * w.h[j] * v[j];
+        }
+        self.matvec(q, &mut out[..n]);
+        for i in 0..n {
+            out[i] += w.h[i] * v[i] + v[n];
+        }
+        out[n] = dot(row, v);
+    }
+
+    /// Solve `J_b x = b` (`b` in `bw.x` on entry, `x` there on success) by
+    /// GMRES right-preconditioned with the stored, possibly stale,
+    /// factorisation, to a *true* residual `‖b − J_b x‖₂ ≤ rtol‖b‖₂`: each
+    /// cycle's result is checked against the recomputed residual (rounding
+    /// makes GMRES's own estimate optimistic near 1e-12) and corrected by
+    /// another cycle, at most [`GMRES_CYCLES`]. Returns the total
+    /// iterations, or `None` when that does not suffice (the caller
+    /// refactors).
+    pub(super) fn bgmres(&self, bw: &mut BWork, rtol: f64) -> Option<usize> {
+        let m1 = self.n() + 1;
+        let mut b = core::mem::take(&mut bw.kb);
+        let mut x = core::mem::take(&mut bw.kx);
+        let mut r = core::mem::take(&mut bw.kr);
+        b.copy_from_slice(&bw.x);
+        x.iter_mut().for_each(|v| *v = 0.0);
+        r.copy_from_slice(&b);
+        let bn = norm2(&b);
+        let mut total = 0;
+        let mut ok = None;
+        for _ in 0..GMRES_CYCLES {
+            let rn = norm2(&r);
+            if !rn.is_finite() {
+                break;
+            }
+            if rn <= rtol * bn {
+                ok = Some(total);
+                break;
+            }
+            bw.x.copy_from_slice(&r);
+            let Some(k) = self.gmres_cycle(bw, rtol * bn / rn) else {
+                break;
+            };
+            total += k;
+            for (xi, di) in x.iter_mut().zip(&bw.x) {
+                *xi += di;
+            }
+            // True residual r = b − J_b x.
+            let mut q = core::mem::take(&mut bw.kq);
+            self.bjac_apply(&bw.w, &bw.row, &mut q, &x, &mut r);
+            bw.kq = q;
+            for (ri, bi) in r.iter_mut().zip(&b) {
+                *ri = bi - *ri;
+            }
+        }
+        if ok.is_some() {
+            bw.x.copy_from_slice(&x);
+        }
+        debug_assert_eq!(x.len(), m1);
+        bw.kb = b;
+        bw.kx = x;
+        bw.kr = r;
+        ok
+    }
+
+    /// One GMRES cycle (Saad & Schultz 1986; modified Gram–Schmidt, Givens
+    /// rotations) for `J_b x = b`, `b` in `bw.x`, right-preconditioned by the
+    /// stored factorisation, to the estimated residual `rtol‖b‖₂`. Each
+    /// iteration costs one Jacobian–vector product and one triangular solve;
+    /// the first is the chord step itself. Returns the iterations, or
+    /// `None` when [`GMRES_MAX`] do not suffice.
+    fn gmres_cycle(&self, bw: &mut BWork, rtol: f64) -> Option<usize> {
+        let m1 = self.n() + 1;
+        let beta = norm2(&bw.x);
+        if !beta.is_finite() {
+            return None;
+        }
+        if beta == 0.0 {
+            return Some(0);
+        }
+        let mut kv = core::mem::take(&mut bw.kv);
+        let mut kz = core::mem::take(&mut bw.kz);
+        let mut q = core::mem::take(&mut bw.kq);
+        for (v, b) in kv[..m1].iter_mut().zip(&bw.x) {
+            *v = b / beta;
+        }
+        let mut hh = [[0.0f64; GMRES_MAX]; GMRES_MAX + 1];
+        let mut cs = [0.0f64; GMRES_MAX];
+        let mut sn = [0.0f64; GMRES_MAX];
+        let mut g = [0.0f64; GMRES_MAX + 1];
+        g[0] = beta;
+        let mut done = None;
+        for j in 0..GMRES_MAX {
+            bw.x.copy_from_slice(&kv[j * m1..(j + 1) * m1]);
+            if !self.bsolve(bw) {
+                break;
+            }
+            kz[j * m1..(j + 1) * m1].copy_from_slice(&bw.x);
+            let (head, tail) = kv.split_at_mut((j + 1) * m1);
+            let wv = &mut tail[..m1];
+            self.bjac_apply(&bw.w, &bw.row, &mut q, &bw.x, wv);
+            for i in 0..=j {
+                let vi = &head[i * m1..(i + 1) * m1];
+                let hij = dot(wv, vi);
+                hh[i][j] = hij;
+                for (a, b) in wv.iter_mut().zip(vi) {
+                    *a -= hij * b;
+                }
+            }
+            let hn = norm2(wv);
+            hh[j + 1][j] = hn;
+            if hn > 0.0 {
+                wv.iter_mut().for_each(|a| *a /= hn);
+            }
+            for i in 0..j {
+                let t = cs[i] * hh[i][j] + sn[i] * hh[i + 1][j];
+                hh[i + 1][j] = -sn[i] * hh[i][j] + cs[i] * hh[i + 1][j];
+                hh[i][j] = t;
+            }
+            let d = hh[j][j].hypot(hh[j + 1][j]);
+            if !(d > 0.0) || !d.is_finite() {
+                break;
+            }
+            cs[j] = hh[j][j] / d;
+            sn[j] = hh[j + 1][j] / d;
+            hh[j][j] = d;
+            hh[j + 1][j] = 0.0;
+            g[j + 1] = -sn[j] * g[j];
+            g[j] *= cs[j];
+            if g[j + 1].abs() <= rtol * beta || hn == 0.0 {
+                done = Some(j + 1);
+                break;
+            }
+        }
+        let ok = if let Some(k) = done {
+            let mut yk = [0.0f64; GMRES_MAX];
+            for i in (0..k).rev() {
+                let mut s = g[i];
+                for l in i + 1..k {
+                    s -= hh[i][l] * yk[l];
+                }
+                yk[i] = s / hh[i][i];
+            }
+            bw.x.iter_mut().for_each(|v| *v = 0.0);
+            for (i, &c) in yk[..k].iter().enumerate() {
+                for (x, z) in bw.x.iter_mut().zip(&kz[i * m1..(i + 1) * m1]) {
+                    *x += c * z;
+                }
+            }
+            bw.x.iter().all(|v| v.is_finite())
+        } else {
+            false
+        };
+        bw.kv = kv;
+        bw.kz = kz;
+        bw.kq = q;
+        if ok {
+            done
+        } else {
+            None
+        }
+    }
+
+    /// Bordered Newton (full: refactor every iteration; else inexact Newton
+    /// by GMRES preconditioned with the stored factorisation, refreshed
+    /// when GMRES fails or a step needs a line search).
     pub(super) fn bnewton(
         &self,
         con: &Con,
@@ -200,7 +403,7 @@ impl LjSolver {
         let mut it = 0u32;
         let mut fresh = false;
         let mut need = full || bw.lu.is_none();
-        bw.rho = 0.0;
+        bw.krylov = 0;
         let fail = |bw: &mut BWork, it: u32, r: f64| {
             bw.w.iterations += it as u64;
             Err(Error::NotConverged {
@@ -228,7 +431,21 @@ impl LjSolver {
                 bw.x[i] = -bw.w.f[i];
             }
             bw.x[n] = -bw.g;
-            if !self.bsolve(bw) {
+            // A fresh factorisation solves directly; a stale one
+            // preconditions GMRES on the true Jacobian (inexact Newton with
+            // forcing term NEWTON_ETA).
+            let solved = if fresh {
+                self.bsolve(bw)
+            } else {
+                match self.bgmres(bw, NEWTON_ETA) {
+                    Some(k) => {
+                        bw.krylov = bw.krylov.max(k);
+                        true
+                    }
+                    None => false,
+                }
+            };
+            if !solved {
                 bw.lu = None;
                 if fresh {
                     return fail(bw, it, r);
@@ -260,10 +477,7 @@ impl LjSolver {
                 y.copy_from_slice(&yt);
                 *al = alt;
                 bw.yt = yt;
-                if !fresh {
-                    bw.rho = bw.rho.max(rt / r);
-                }
-                if !full && (rt > 0.25 * r || lam < 1.0) {
+                if !full && lam < 1.0 {
                     need = true;
                 }
                 fresh = false;
@@ -286,8 +500,16 @@ impl LjSolver {
     }
 
     /// Tangent at the converged state in `bw.w`, oriented along `prev`
-    /// (`N+1`, unit in the metric); `exact` refactors the Jacobian first.
-    pub(super) fn tangent(&self, bw: &mut BWork, prev: &[f64], exact: bool) -> Result<Vec<f64>> {
+    /// (`N+1`, unit in the metric); `exact` refactors the Jacobian first,
+    /// otherwise the stale factorisation's tangent is refined against the
+    /// true Jacobian to relative residual `rtol` (refactoring if that fails).
+    pub(super) fn tangent(
+        &self,
+        bw: &mut BWork,
+        prev: &[f64],
+        exact: bool,
+        rtol: f64,
+    ) -> Result<Vec<f64>> {
         let n = self.n();
         let my = self.metric_y();
         for i in 0..n {
@@ -299,60 +521,21 @@ impl LjSolver {
         }
         bw.x.iter_mut().for_each(|v| *v = 0.0);
         bw.x[n] = 1.0;
-        if !self.bsolve(bw) {
+        if exact && !self.bsolve(bw) {
             return Err(unresolved(0, f64::NAN));
         }
-        let mut t = bw.x.clone();
-        if !exact {
-            // Iterative refinement against the true bordered Jacobian at
-            // this state (O(N²) per sweep): the stale factorisation gives a
-            // tangent accurate to the chord contraction; a few sweeps make
-            // it exact to ~1e-9 relative (for the Hermite predictor and
-            // the refined special points).
-            let mut jt = vec![0.0; n + 1];
-            let mut q = vec![0.0; n];
-            let tn = t.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-            let mut prev_r = f64::INFINITY;
-            let mut done = false;
-            for _ in 0..16 {
-                for j in 0..n {
-                    q[j] = self.k * bw.w.dp[j] * bw.w.h[j] * t[j];
-                }
-                self.matvec(&q, &mut jt[..n]);
-                let mut rmax = 0.0f64;
-                for i in 0..n {
-                    let r = -(jt[i] + bw.w.h[i] * t[i] + t[n]);
-                    bw.x[i] = r;
-                    rmax = rmax.max(r.abs());
-                }
-                let r = 1.0 - dot(&bw.row[..n], &t[..n]) - bw.row[n] * t[n];
-                bw.x[n] = r;
-                rmax = rmax.max(r.abs());
-                if rmax <= 1e-9 * tn {
-                    done = true;
-                    break;
-                }
-                if !(rmax < 0.5 * prev_r) || !self.bsolve(bw) {
-                    break;
-                }
-                prev_r = rmax;
-                for i in 0..=n {
-                    t[i] += bw.x[i];
-                }
+        if !exact && self.bgmres(bw, rtol).is_none() {
+            // The stale factorisation is too poor a preconditioner: refactor.
+            if !self.bfactor(bw) {
+                return Err(unresolved(0, f64::NAN));
             }
-            if !done {
-                // The stale factorisation is too poor: refactor.
-                if !self.bfactor(bw) {
-                    return Err(unresolved(0, f64::NAN));
-                }
-                bw.x.iter_mut().for_each(|v| *v = 0.0);
-                bw.x[n] = 1.0;
-                if !self.bsolve(bw) {
-                    return Err(unresolved(0, f64::NAN));
-                }
-                t.copy_from_slice(&bw.x);
+            bw.x.iter_mut().for_each(|v| *v = 0.0);
+            bw.x[n] = 1.0;
+            if !self.bsolve(bw) {
+                return Err(unresolved(0, f64::NAN));
             }
         }
+        let mut t = bw.x.clone();
         let nn = (my * t[..n].iter().map(|v| v * v).sum::<f64>() + t[n] * t[n]).sqrt();
         let sgn = if my * dot(&t[..n], &prev[..n]) + t[n] * prev[n] >= 0.0 {
             1.0
@@ -431,7 +614,7 @@ impl LjSolver {
         // Border row e_ᾱ: the tangent has t_ᾱ = 1 before normalisation.
         let mut prev = vec![0.0; n + 1];
         prev[n] = 1.0;
-        let t = self.tangent(bw, &prev, true)?;
+        let t = self.tangent(bw, &prev, true, EXACT_RTOL)?;
         self.make_state(&y, al, t, 0.0, bw, derivs)
     }
 
@@ -464,7 +647,7 @@ impl LjSolver {
             )
         });
         self.bnewton(&Con::Plane { row, c }, &mut y, &mut al, bw, exact)?;
-        let t = self.tangent(bw, &from.t, exact)?;
+        let t = self.tangent(bw, &from.t, exact, PREDICTOR_RTOL)?;
         let dist = {
             let dy: f64 = y.iter().zip(&from.y).map(|(a, b)| (a - b).powi(2)).sum();
             (my * dy + (al - from.al).powi(2)).sqrt()
@@ -498,7 +681,7 @@ impl LjSolver {
             al = a0;
             self.bnewton(&con, &mut y, &mut al, bw, true)?;
         }
-        let t = self.tangent(bw, &from.t, false)?;
+        let t = self.tangent(bw, &from.t, false, EXACT_RTOL)?;
         let dist = {
             let dy: f64 = y.iter().zip(&from.y).map(|(a, b)| (a - b).powi(2)).sum();
             (my * dy + (al - from.al).powi(2)).sqrt()
@@ -568,3 +751,4 @@ impl LjSolver {
         })
     }
 }
+

@@ -435,6 +435,13 @@ impl LjSolver {
         let pm = 0.5 * (l.0 + r.0);
         let sig = |p: f64| if corner { p * p } else { p };
         let (sl, sr, sm) = (sig(l.0), sig(r.0), sig(pm));
+        if sr - sl < MIN_SAMPLE_STEP {
+            // Below the resolution of the converged states (Newton residual
+            // 1e-10): a midpoint would carry rounding noise, not the path
+            // (its approach may even step backwards). The interval is
+            // accepted as it is.
+            return Ok(());
+        }
         let th = (sm - sl) / (sr - sl);
         let guess = (
             l.1.y
@@ -481,6 +488,11 @@ impl LjSolver {
         self.bisect_chart(anchor, corner, m, r, c, bw, out, depth + 1)
     }
 }
+
+/// Smallest path-parameter interval `bisect_chart` subdivides: the
+/// converged states are accurate to ~1e-10, so the path is not resolved
+/// below this.
+const MIN_SAMPLE_STEP: f64 = 1e-8;
 
 fn my_dot(w: f64, a: &[f64], b: &[f64]) -> f64 {
     w * a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>()
