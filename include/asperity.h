@@ -218,6 +218,13 @@
 // the line.
 #define ASPERITY_ERR_PARSE -7
 
+// The slider of the hierarchical friction model (opaque): nested levels of
+// micro-rods and the nano-asperities on the finest rods' tips. Create it
+// with `asperity_slider_geometry_new` or
+// `asperity_slider_geometry_new_uniform`, release it with
+// `asperity_slider_geometry_free`. Immutable; safe to share between threads.
+typedef struct AsperitySliderGeometry AsperitySliderGeometry;
+
 // An immutable tabulated contact law (opaque). Create it with
 // `asperity_table_new_*` or `asperity_table_from_json`, release it with
 // `asperity_table_free`. Safe to share between threads.
@@ -501,6 +508,24 @@ typedef struct AsperityFidelityAdvice {
     // Every model, cheapest first (index = `ASPERITY_FIDELITY_*`).
     struct AsperityFidelityAssessment assessments[6];
 } AsperityFidelityAdvice;
+
+// The nano-asperities on the rod tips (thesis 6.2.1). Lengths in m.
+typedef struct AsperityNanoAsperities {
+    // Height of the van der Waals body h_vdW (m), > 0: the RMS of the AFM
+    // profile (thesis 5-15).
+    double h_vdw;
+    // Width of the van der Waals interaction domain w_vdW (m), > 0 (6-2).
+    double w_vdw;
+    // Height of the chemical tip on the body h_chem (m), >= 0.
+    double h_chem;
+    // Width of the chemical interaction domain w_chem (m), in [0, w_vdW].
+    double w_chem;
+    // Distance between nano-asperities (m), >= w_vdW (6-3).
+    double spacing;
+    // Nano-asperities on one square tip of the finest rods, >= 1, with
+    // per_rod * spacing^2 <= (rod width)^2.
+    size_t per_rod;
+} AsperityNanoAsperities;
 
 // Options of `asperity_indentation_fit`. Fill with
 // `asperity_indentation_default_options` and change what you need.
@@ -786,6 +811,70 @@ int32_t asperity_fidelity_advise(double radius,
                                  double z0,
                                  double force_tolerance,
                                  struct AsperityFidelityAdvice *out);
+
+// Build a slider from two measured profiles, heights from their mean
+// lines (remove form first): `micro_n` heights (m) of a profilometer profile
+// sampled at `micro_dx` (m), cut into rods by thesis (6-1), and `nano_n`
+// heights (m) of an AFM profile sampled at `nano_dx` (m), giving the
+// nano-asperities (5-15, 6-2, 6-3). `rod_widths` holds `n_levels` rod
+// widths (m), coarsest first, each the previous divided by an integer >= 2
+// (nested levels); one level is `n_levels` = 1. Writes a new handle to
+// `*out` (NULL on failure). Errors: NULL pointers, fewer than 8 heights,
+// non-finite values, widths that are not positive, wider than the micro
+// profile or do not nest, constant profiles, finest rods narrower than the
+// nano-asperity spacing.
+int32_t asperity_slider_geometry_new(const double *micro_heights,
+                                     size_t micro_n,
+                                     double micro_dx,
+                                     const double *nano_heights,
+                                     size_t nano_n,
+                                     double nano_dx,
+                                     const double *rod_widths,
+                                     size_t n_levels,
+                                     struct AsperitySliderGeometry **out);
+
+// Build a single-level slider from numbers: `rods` flat rods of
+// `rod_width` (m) at height 0, carrying `nano->per_rod` nano-asperities
+// each with the parameters `*nano` (the hand calculation of thesis 4.4: one
+// 13.5 µm rod, 100 nano-asperities, w_vdW = 430 nm, w_chem = 161 nm).
+// Writes a new handle to `*out` (NULL on failure).
+int32_t asperity_slider_geometry_new_uniform(double rod_width,
+                                             size_t rods,
+                                             const struct AsperityNanoAsperities *nano,
+                                             struct AsperitySliderGeometry **out);
+
+// Release a geometry; NULL is accepted and ignored.
+void asperity_slider_geometry_free(struct AsperitySliderGeometry *geometry);
+
+// The nano-asperity parameters of `geometry` and their number per rod tip.
+int32_t asperity_slider_geometry_nano(const struct AsperitySliderGeometry *geometry,
+                                      struct AsperityNanoAsperities *out);
+
+// The number of rod levels of `geometry` (>= 1; level 0 is the coarsest,
+// the last carries the nano-asperities).
+int32_t asperity_slider_geometry_level_count(const struct AsperitySliderGeometry *geometry,
+                                             size_t *count);
+
+// The number of rods of `level` (0 = coarsest).
+int32_t asperity_slider_geometry_rod_count(const struct AsperitySliderGeometry *geometry,
+                                           size_t level,
+                                           size_t *count);
+
+// The rod width (m) of `level` and, if `origin` is not NULL, the position
+// of the left side of its rod 0 (m); rod k spans
+// [origin + k*width, origin + (k+1)*width].
+int32_t asperity_slider_geometry_rod_width(const struct AsperitySliderGeometry *geometry,
+                                           size_t level,
+                                           double *width,
+                                           double *origin);
+
+// Copy the rod heights (m, from the micro profile's mean line, thesis 6-1)
+// of `level` into `heights`, which holds `len` values; `len` must be at
+// least the level's rod count (`asperity_slider_geometry_rod_count`).
+int32_t asperity_slider_geometry_rod_heights(const struct AsperitySliderGeometry *geometry,
+                                             size_t level,
+                                             double *heights,
+                                             size_t len);
 
 // Fill `options` with the defaults: Berkovich, ideal area, anchor at the
 // maximum point, labels used, diamond indenter (1141 GPa, 0.07), sample

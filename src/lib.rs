@@ -23,6 +23,8 @@
 //! * [`rescaling`] and [`indentation`]: Borodich rescaling, Galanov shapes, κ and d from measured curves, Oliver–Pharr, hardness numbers.
 //! * [`surface`]: profiles and maps, ISO 4287 parameters, ACF/PSD, generators.
 //! * [`statistics`]: Zhuravlev, Greenwood–Williamson and Kragelsky models.
+//! * [`friction`]: the slider geometry of the hierarchical friction model
+//!   (micro-rods and nano-asperities from measured profiles, thesis 6.2.1).
 //! * [`fidelity`]: the cheapest adhesive-sphere model within a force
 //!   tolerance, measured against the converged Lennard-Jones sphere.
 //! * [`error`]: the error type; every fallible call returns
@@ -42,6 +44,7 @@ pub mod contact;
 pub mod error;
 pub mod ffi;
 pub mod fidelity;
+pub mod friction;
 pub mod indentation;
 pub mod material;
 pub mod rescaling;

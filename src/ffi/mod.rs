@@ -10,6 +10,7 @@
 
 pub mod contact;
 pub mod fidelity;
+pub mod friction;
 pub mod indentation;
 pub mod lj_sphere;
 pub mod material;
