@@ -13,7 +13,9 @@ pub mod fidelity;
 pub mod indentation;
 pub mod lj_sphere;
 pub mod material;
+pub mod statistics;
 mod status;
+pub mod surface;
 pub mod tabulated;
 
 pub use status::*;
