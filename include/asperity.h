@@ -191,6 +191,22 @@
 // Pair rule of seed 001: `Δγ = (√γ₁ − √γ₂)²`.
 #define ASPERITY_PAIR_SEED001_DIFFERENCE 1
 
+// Summit heights: Gaussian of zero mean and standard deviation σ.
+#define ASPERITY_HEIGHTS_GAUSSIAN 1
+
+// Summit heights: exponential tail shifted to zero mean, standard deviation
+// (decay length) σ.
+#define ASPERITY_HEIGHTS_EXPONENTIAL 2
+
+// Deformation regime of a plasticity index ψ < 0.6: elastic.
+#define ASPERITY_REGIME_ELASTIC 0
+
+// Deformation regime 0.6 ≤ ψ ≤ 1: transitional.
+#define ASPERITY_REGIME_TRANSITIONAL 1
+
+// Deformation regime ψ > 1: plastic even at light loads.
+#define ASPERITY_REGIME_PLASTIC 2
+
 // Success.
 #define ASPERITY_OK 0
 
@@ -217,6 +233,38 @@
 // A text file or buffer does not have the expected format; the message gives
 // the line.
 #define ASPERITY_ERR_PARSE -7
+
+// Form removal before analysis: none (the heights as given; the mean line
+// is still their mean).
+#define ASPERITY_FORM_NONE 0
+
+// Form removal: the mean height.
+#define ASPERITY_FORM_MEAN 1
+
+// Form removal: the least-squares straight line (tilt).
+#define ASPERITY_FORM_LINEAR 2
+
+// Form removal: the least-squares parabola (tilt and curvature).
+#define ASPERITY_FORM_QUADRATIC 3
+
+// Gaussian filter ends: drop λc/2 at each end (ISO 4288 run-in/run-out).
+#define ASPERITY_FILTER_ENDS_DISCARD 0
+
+// Gaussian filter ends: keep every sample, kernel renormalised at the ends
+// (ISO 16610-28).
+#define ASPERITY_FILTER_ENDS_KEEP 1
+
+// PSD data window: none (rectangular; Parseval exact, m₀ = Rq²).
+#define ASPERITY_WINDOW_RECTANGULAR 0
+
+// PSD data window: periodic Hann, normalised by its mean square.
+#define ASPERITY_WINDOW_HANN 1
+
+// A Greenwood–Williamson surface over a measured or generated list of
+// summits (opaque). Create it with `asperity_gw_empirical_new`, release it
+// with `asperity_gw_empirical_free`. Immutable: safe to share between
+// threads.
+typedef struct AsperityGwEmpirical AsperityGwEmpirical;
 
 // The slider of the hierarchical friction model (opaque): nested levels of
 // micro-rods and the nano-asperities on the finest rods' tips. Create it
@@ -643,6 +691,191 @@ typedef struct AsperityIndentationResult {
     // 1 when the segments came from the labels.
     int32_t segments_from_labels;
 } AsperityIndentationResult;
+
+// A Greenwood–Williamson rough surface with parametric summit heights
+// (thesis (1-29), (1-30)), by value: N summits of radius R, heights of
+// standard deviation σ, against a flat with contact modulus E*. Two rough
+// surfaces reduce to one with 1/R = 1/R₁ + 1/R₂, σ² = σ₁² + σ₂².
+// An all-zero value is invalid (unknown distribution).
+typedef struct AsperityGwParams {
+    // `ASPERITY_HEIGHTS_GAUSSIAN` or `ASPERITY_HEIGHTS_EXPONENTIAL`.
+    int32_t distribution;
+    // Reserved, 0.
+    int32_t reserved;
+    // Number of summits N on the nominal area (summit density η times the
+    // nominal area A_n; dimensionless, > 0).
+    double summit_count;
+    // Summit radius R (m, > 0).
+    double radius;
+    // Standard deviation σ of the summit heights (m, > 0).
+    double sigma;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+} AsperityGwParams;
+
+// Response of a Greenwood–Williamson surface at one separation.
+typedef struct AsperityGwResponse {
+    // Total normal load P (N), ≥ 0, (1-29).
+    double load;
+    // Real contact area A (m²), ≥ 0, (1-30).
+    double area;
+    // Expected number of summits in contact (dimensionless).
+    double contacts;
+    // Normal stiffness −dP/dd (N/m), ≥ 0.
+    double stiffness;
+} AsperityGwResponse;
+
+// The separation that carries a given load, with the solver's report.
+typedef struct AsperitySeparation {
+    // Separation d (m).
+    double separation;
+    // |P(d)/P_target − 1| at `separation` (dimensionless).
+    double relative_residual;
+    // Newton/bisection iterations spent after bracketing.
+    uint32_t iterations;
+    // Reserved, 0.
+    uint32_t reserved;
+} AsperitySeparation;
+
+// Zhuravlev's pair of rough surfaces of spherical caps (thesis (1-23),
+// (1-24)), by value. Give either `cap_radius` (Zhuravlev's setting: both
+// surfaces carry caps of radius R, a pair has R_eff = R/2) with
+// `effective_radius` = 0, or `effective_radius` (1/R_eff = 1/R₁ + 1/R₂) with
+// `cap_radius` = 0.
+typedef struct AsperityZhuravlev {
+    // Cap radius R of both surfaces (m, > 0), or 0.
+    double cap_radius;
+    // Effective radius of a pair of caps (m, > 0), or 0.
+    double effective_radius;
+    // Contact modulus E* (Pa, > 0; E/(2(1−ν²)) for identical materials).
+    double e_star;
+    // Summit count N (> 0) that normalises the meeting probability.
+    double summit_count;
+} AsperityZhuravlev;
+
+// Load, real area and contacting pairs of Zhuravlev's model at one approach.
+typedef struct AsperityZhuravlevResponse {
+    // Total normal load P (N), (1-23).
+    double load;
+    // Real contact area S (m²), (1-24).
+    double area;
+    // Expected number of contacting pairs (dimensionless).
+    double contacts;
+} AsperityZhuravlevResponse;
+
+// Friction of Zhuravlev's model at one load ((1-27), (1-28)).
+typedef struct AsperityZhuravlevFriction {
+    // Approach x (m) that carries the load.
+    double approach;
+    // The load P (N).
+    double load;
+    // Real contact area S (m²).
+    double area;
+    // Friction force F = τS (N).
+    double friction_force;
+    // Coefficient of friction μ = F/P (dimensionless).
+    double coefficient;
+} AsperityZhuravlevFriction;
+
+// A summit density per unit depth n(ξ) (1/m) at depth `xi` (m, ≥ 0) below
+// the highest summit, for `asperity_zhuravlev_eval`; `user_data` is passed
+// through. It must return a finite value ≥ 0 and must not unwind.
+typedef double (*AsperitySummitDensity)(double xi,
+                                        void *user_data);
+
+// ISO 4287 parameters of a profile, its spectral moments and its Hurst
+// exponent, from `asperity_roughness_parameters`. Heights are measured from
+// the mean line of the evaluated profile (after form removal and filtering).
+typedef struct AsperityRoughness {
+    // Maximum profile peak height Rp (m), averaged over sampling lengths.
+    double rp;
+    // Maximum profile valley depth Rv (m).
+    double rv;
+    // Maximum height Rz = Rp + Rv within a sampling length (m).
+    double rz;
+    // Mean height of profile elements Rc (m); meaningful only when `has_rc`
+    // is 1 (0 otherwise).
+    double rc;
+    // Total height Rt over the evaluation length (m); Rt ≥ Rz.
+    double rt;
+    // Arithmetic mean deviation Ra (m).
+    double ra;
+    // Root-mean-square deviation Rq (m), thesis (1-5).
+    double rq;
+    // Skewness Rsk (dimensionless).
+    double rsk;
+    // Kurtosis Rku (dimensionless; 3 for a Gaussian, 1.5 for a sine).
+    double rku;
+    // Mean width of profile elements RSm (m); meaningful only when `has_rsm`
+    // is 1 (0 otherwise).
+    double rsm;
+    // Root-mean-square slope RΔq (dimensionless), seven-point slopes.
+    double rdq;
+    // Hurst exponent H of the power-law fit PSD ∝ q^{−(1+2H)} over the
+    // default band; meaningful only when `has_psd_hurst_exponent` is 1 (0
+    // otherwise: fewer than 128 samples, or the spectrum is not a power law
+    // with r² ≥ 0.9 and 0 ≤ H ≤ 1 there).
+    double psd_hurst_exponent;
+    // Spectral moment m₀ = ∫G dq (m²) of the evaluated profile (rectangular
+    // window): the height variance, Rq² when there is one sampling length.
+    double m0;
+    // Spectral moment m₂ = ∫q²G dq (dimensionless): the slope variance.
+    double m2;
+    // Spectral moment m₄ = ∫q⁴G dq (m⁻²): the curvature variance.
+    double m4;
+    // Nayak's bandwidth parameter α = m₀m₄/m₂² (dimensionless).
+    double nayak_alpha;
+    // Sampling length used (m).
+    double sampling_length;
+    // Number of sampling lengths averaged.
+    size_t sampling_lengths;
+    // Number of samples of the evaluated profile (fewer than `n` when the
+    // Gaussian filter discarded its ends).
+    size_t n_evaluated;
+    // Index in the input of the first evaluated sample.
+    size_t first_index;
+    // 1 when `rc` holds a value (a complete profile element was found).
+    int32_t has_rc;
+    // 1 when `rsm` holds a value.
+    int32_t has_rsm;
+    // 1 when `psd_hurst_exponent` holds a value.
+    int32_t has_psd_hurst_exponent;
+    // Reserved, 0.
+    int32_t reserved;
+} AsperityRoughness;
+
+// A power-law fit of a PSD, `G = A q^s`, from `asperity_profile_hurst_fit`.
+typedef struct AsperityHurstFit {
+    // Hurst exponent H = −(s + 1)/2 (dimensionless).
+    double hurst;
+    // Fitted log–log slope s (dimensionless).
+    double slope;
+    // Prefactor A (m³·(rad/m)^{−s}).
+    double prefactor;
+    // Coefficient of determination r² of the log–log fit.
+    double r_squared;
+    // Lower end of the fit band (rad/m).
+    double q_min;
+    // Upper end of the fit band (rad/m).
+    double q_max;
+    // Number of populated log bins fitted (10 per decade).
+    size_t bins;
+} AsperityHurstFit;
+
+// Statistics of the peaks of a profile (3-point maxima), from
+// `asperity_profile_peak_statistics`.
+typedef struct AsperityPeakStatistics {
+    // Number of peaks found.
+    size_t count;
+    // Peaks per metre of profile (1/m).
+    double density;
+    // Mean peak height above the mean line (m).
+    double mean_height;
+    // Standard deviation of the peak heights (m).
+    double height_std;
+    // Mean peak curvature (1/m); a mean radius is about 1/this.
+    double mean_curvature;
+} AsperityPeakStatistics;
 
 
 
@@ -1071,9 +1304,279 @@ int32_t asperity_hamaker_work_of_adhesion(double hamaker,
                                           double separation,
                                           double *work_of_adhesion);
 
+// Greenwood–Williamson load, real area, number of contacts and stiffness at
+// `separation` d (m, finite) (thesis (1-29), (1-30)).
+int32_t asperity_gw_eval(const struct AsperityGwParams *gw,
+                         double separation,
+                         struct AsperityGwResponse *out);
+
+// `asperity_gw_eval` for `n` separations `separation[i]` (m), writing
+// `load[i]` (N) and, where the array is not NULL, `area[i]` (m²),
+// `contacts[i]` and `stiffness[i]` (N/m). `separation` and `load` are
+// required (unless n = 0); inputs and outputs may be the same memory. On an
+// error at element i, elements before i are written and the message names i.
+int32_t asperity_gw_eval_batch(const struct AsperityGwParams *gw,
+                               size_t n,
+                               const double *separation,
+                               double *load,
+                               double *area,
+                               double *contacts,
+                               double *stiffness);
+
+// The separation (m) at which the surface carries `load` (N, finite, > 0):
+// the inverse of (1-29) by safeguarded Newton iteration.
+int32_t asperity_gw_separation_at_load(const struct AsperityGwParams *gw,
+                                       double load,
+                                       struct AsperitySeparation *out);
+
+// Plasticity index ψ = (E*/H)√(σ/R) (1-31) of the surface `gw` for the
+// hardness `hardness` H (Pa, > 0).
+int32_t asperity_gw_plasticity_index(const struct AsperityGwParams *gw,
+                                     double hardness,
+                                     double *psi);
+
+// Plasticity index of Greenwood & Williamson (1966), thesis (1-31):
+// ψ = (E*/H)√(σ/R) from the contact modulus `e_star` (Pa), the hardness
+// `hardness` (Pa), the standard deviation of the summit heights `sigma` (m)
+// and the summit radius `radius` (m), all finite and > 0.
+int32_t asperity_plasticity_index(double e_star,
+                                  double hardness,
+                                  double sigma,
+                                  double radius,
+                                  double *psi);
+
+// The deformation regime (`ASPERITY_REGIME_*`) of a plasticity index `psi`
+// (finite, ≥ 0): elastic below 0.6, plastic above 1 (GW 1966).
+int32_t asperity_deformation_regime(double psi,
+                                    int32_t *regime);
+
+// A Greenwood–Williamson surface over `n` ≥ 1 listed summits: heights
+// `heights[i]` (m, finite, any order, in the frame of the separations) and,
+// unless `radii` is NULL, each summit's radius `radii[i]` (m, > 0; then they
+// replace `radius` in the load, area and stiffness), `summit_count` N (> 0;
+// each listed summit stands for N/n), `radius` R (m, > 0) and the contact
+// modulus `e_star` (Pa, > 0). The arrays are copied. Writes a new handle to
+// `*out` (NULL on failure).
+int32_t asperity_gw_empirical_new(double summit_count,
+                                  double radius,
+                                  double e_star,
+                                  size_t n,
+                                  const double *heights,
+                                  const double *radii,
+                                  struct AsperityGwEmpirical **out);
+
+// Release an empirical Greenwood–Williamson surface; NULL is accepted.
+void asperity_gw_empirical_free(struct AsperityGwEmpirical *gw);
+
+// `asperity_gw_eval` for an empirical surface.
+int32_t asperity_gw_empirical_eval(const struct AsperityGwEmpirical *gw,
+                                   double separation,
+                                   struct AsperityGwResponse *out);
+
+// `asperity_gw_eval_batch` for an empirical surface.
+int32_t asperity_gw_empirical_eval_batch(const struct AsperityGwEmpirical *gw,
+                                         size_t n,
+                                         const double *separation,
+                                         double *load,
+                                         double *area,
+                                         double *contacts,
+                                         double *stiffness);
+
+// `asperity_gw_separation_at_load` for an empirical surface.
+int32_t asperity_gw_empirical_separation_at_load(const struct AsperityGwEmpirical *gw,
+                                                 double load,
+                                                 struct AsperitySeparation *out);
+
+// `asperity_gw_plasticity_index` for an empirical surface (σ of the listed
+// heights, the model's `radius`).
+int32_t asperity_gw_empirical_plasticity_index(const struct AsperityGwEmpirical *gw,
+                                               double hardness,
+                                               double *psi);
+
+// Zhuravlev's model with summit densities linear in depth, n_i(ξ) = α_i ξ
+// (`alpha1`, `alpha2` in m⁻², > 0), at the approach `approach` x (m, ≥ 0):
+// the closed forms P ∝ x^{11/2} (1-25), S ∝ x⁵ (1-26), pairs ∝ x⁴.
+int32_t asperity_zhuravlev_linear(const struct AsperityZhuravlev *model,
+                                  double alpha1,
+                                  double alpha2,
+                                  double approach,
+                                  struct AsperityZhuravlevResponse *out);
+
+// The approach x (m) that carries `load` (N, ≥ 0) with linear densities:
+// the inverse of (1-25).
+int32_t asperity_zhuravlev_approach_at_load_linear(const struct AsperityZhuravlev *model,
+                                                   double alpha1,
+                                                   double alpha2,
+                                                   double load,
+                                                   double *approach);
+
+// Friction of Zhuravlev's model at `load` (N, > 0) with linear densities and
+// interfacial shear strength `shear_strength` τ (Pa, ≥ 0): F = τS (1-27),
+// F ∝ P^{10/11} (1-28), μ = F/P.
+int32_t asperity_zhuravlev_friction_linear(const struct AsperityZhuravlev *model,
+                                           double alpha1,
+                                           double alpha2,
+                                           double load,
+                                           double shear_strength,
+                                           struct AsperityZhuravlevFriction *out);
+
+// Zhuravlev's model for any summit densities `n1`, `n2` (1/m, callbacks
+// called with the depth ξ ≥ 0 and `n1_data` / `n2_data`) at the approach
+// `approach` (m, ≥ 0), by Gauss–Legendre quadrature of `order` (4..=64)
+// points per dimension ((1-23), (1-24)). A callback value that is not
+// finite gives `ASPERITY_ERR_INVALID_ARGUMENT` naming `n1` or `n2`; a
+// negative integral `ASPERITY_ERR_OUT_OF_DOMAIN`. The callbacks are called
+// on the calling thread only.
+int32_t asperity_zhuravlev_eval(const struct AsperityZhuravlev *model,
+                                double approach,
+                                AsperitySummitDensity n1,
+                                void *n1_data,
+                                AsperitySummitDensity n2,
+                                void *n2_data,
+                                size_t order,
+                                struct AsperityZhuravlevResponse *out);
+
 // A static, NUL-terminated description of a status code; "unknown status"
 // for a value that is not one. Do not free.
 const char *asperity_status_string(int32_t status);
+
+// ISO 4287 parameters of the profile `heights` (`n` values, m) sampled at
+// `dx` (m):
+//
+// 1. `form` (one of `ASPERITY_FORM_*`) is removed by least squares;
+// 2. when `cutoff` λc (m) is not 0, the ISO 16610-21 Gaussian filter keeps
+//    the roughness profile and drops λc/2 at each end (λc ≥ 5·dx and
+//    shorter than the profile);
+// 3. the parameters are computed over sampling lengths of
+//    `sampling_length` (m; 0 = the whole evaluated profile is one; ISO 4288
+//    takes λc), with the ISO 4287 default discriminations (10 % of Rz, 1 %
+//    of the sampling length); m₀, m₂, m₄ and α over the whole evaluated
+//    profile; the Hurst exponent where a power law applies.
+//
+// Errors: NULL `heights` or `out`; fewer than 8 evaluated samples,
+// non-finite heights, `dx` not finite and > 0 (`ASPERITY_ERR_INVALID_ARGUMENT`,
+// the message names the argument); an unknown `form`; a bad `cutoff` or
+// `sampling_length`; constant heights (`ASPERITY_ERR_OUT_OF_DOMAIN`).
+int32_t asperity_roughness_parameters(size_t n,
+                                      const double *heights,
+                                      double dx,
+                                      int32_t form,
+                                      double cutoff,
+                                      double sampling_length,
+                                      struct AsperityRoughness *out);
+
+// `heights` (`n` values, m) minus their least-squares `form`
+// (`ASPERITY_FORM_*`; NONE copies), written to `out` (`n` values, m; may be
+// `heights` itself). Errors: NULL arrays, too few points for the form,
+// non-finite heights, an unknown `form`.
+int32_t asperity_profile_remove_form(size_t n,
+                                     const double *heights,
+                                     int32_t form,
+                                     double *out);
+
+// ISO 16610-21 Gaussian filter of `heights` (`n` values, m, spacing `dx` m)
+// with cut-off `cutoff` λc (m): writes the roughness profile to `roughness`
+// and, if not NULL, the mean line to `mean_line` (each needs room for `n`
+// values; either may be `heights` itself), the number of samples written to
+// `*n_out` and the index of the first one in the input to `*first_index`
+// (may be NULL). `ends` is `ASPERITY_FILTER_ENDS_DISCARD` (λc/2 dropped at
+// each end: `*n_out` is about n − λc/dx) or `ASPERITY_FILTER_ENDS_KEEP`
+// (`*n_out` = n). Errors: as `asperity_roughness_parameters` for `cutoff`.
+int32_t asperity_profile_gaussian_filter(size_t n,
+                                         const double *heights,
+                                         double dx,
+                                         double cutoff,
+                                         int32_t ends,
+                                         double *roughness,
+                                         double *mean_line,
+                                         size_t *n_out,
+                                         size_t *first_index);
+
+// The material-ratio (Abbott–Firestone) curve of `heights` (`n` values, m)
+// at `n_points` ≥ 2 equally spaced ratios Rmr = i/(n_points − 1):
+// `ratio[i]` (dimensionless, 0 … 1; may be NULL) and `level[i]`, the height
+// c(Rmr) above the mean line (m; the highest peak at 0, the deepest valley
+// at 1). Errors: NULL `heights` or `level`, `n_points` < 2, no or non-finite
+// heights.
+int32_t asperity_material_ratio_curve(size_t n,
+                                      const double *heights,
+                                      size_t n_points,
+                                      double *ratio,
+                                      double *level);
+
+// One-sided PSD G(q) (thesis 1-7; ∫G dq = Rq² for the rectangular window) of
+// `heights` (`n` ≥ 4 values, m, spacing `dx` m, mean removed) with `window`
+// (`ASPERITY_WINDOW_*`). Length rule: `n_q` must equal n/2 + 1 (integer
+// division); `q[k]` = k·2π/(n·dx) (rad/m; may be NULL) and `g[k]` (m³).
+int32_t asperity_profile_psd(size_t n,
+                             const double *heights,
+                             double dx,
+                             int32_t window,
+                             size_t n_q,
+                             double *q,
+                             double *g);
+
+// Power-law fit of the Hann-windowed PSD of `heights` (`n` values, m,
+// spacing `dx` m) over `q_min ≤ q ≤ q_max` (rad/m); `q_min` = `q_max` = 0
+// selects the default band (wavelengths from n·dx/4 down to 8·dx). Errors:
+// as `asperity_profile_psd`, a bad band, fewer than 3 populated bins
+// (`ASPERITY_ERR_OUT_OF_DOMAIN`).
+int32_t asperity_profile_hurst_fit(size_t n,
+                                   const double *heights,
+                                   double dx,
+                                   double q_min,
+                                   double q_max,
+                                   struct AsperityHurstFit *out);
+
+// Statistics of the peaks (3-point maxima, heights from the mean line,
+// curvature −z″) of `heights` (`n` ≥ 3 values, m, spacing `dx` m); the
+// density is per profile length n·dx.
+int32_t asperity_profile_peak_statistics(size_t n,
+                                         const double *heights,
+                                         double dx,
+                                         struct AsperityPeakStatistics *out);
+
+// A seeded Gaussian self-affine profile by Fourier filtering: `n` ≥ 4
+// samples at spacing `dx` (m) written to `heights`, Hurst exponent `hurst`
+// in [0, 1], root-mean-square height `rq` (m, matched to rounding),
+// `roll_off_wavelength` (m; 0 = none: a power law down to the lowest
+// harmonic) and `cutoff_wavelength` (m; 0 = none; shorter than the roll-off).
+// The same arguments and `seed` give the same heights (see
+// `surface::generate`).
+int32_t asperity_generate_self_affine(double hurst,
+                                      double rq,
+                                      double roll_off_wavelength,
+                                      double cutoff_wavelength,
+                                      double dx,
+                                      uint64_t seed,
+                                      size_t n,
+                                      double *heights);
+
+// The Weierstrass–Mandelbrot profile with random phases from `seed`: `n` ≥ 4
+// samples at spacing `dx` (m) written to `heights`, fractal dimension
+// `fractal_dimension` in (1, 2), frequency ratio `gamma` > 1, amplitude of
+// the longest term `amplitude` (m).
+int32_t asperity_generate_weierstrass_mandelbrot(double fractal_dimension,
+                                                 double gamma,
+                                                 double amplitude,
+                                                 double dx,
+                                                 uint64_t seed,
+                                                 size_t n,
+                                                 double *heights);
+
+// The Cantor–Borodich profile: `descendants` m = 2 (Borodich) or 3
+// (Warren–Krajcinovic; any m ≥ 2 is accepted), horizontal ratio `alpha` in
+// (0, 1/m), vertical ratio `beta` in (1/m, 1), first step `height` (m),
+// `levels` generations in 1..=40, sampled at `n` ≥ 2 points
+// x_j = j·length/n over [0, `length`) (m), written to `heights`.
+int32_t asperity_generate_cantor_borodich(uint32_t descendants,
+                                          double alpha,
+                                          double beta,
+                                          double height,
+                                          uint32_t levels,
+                                          double length,
+                                          size_t n,
+                                          double *heights);
 
 // Build the table of a Maugis–Dugdale sphere: radius (m), E* (Pa), work of
 // adhesion (J/m²), Dugdale stress σ₀ (Pa), relative `tolerance` in

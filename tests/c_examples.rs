@@ -928,6 +928,7 @@ fn every_other_example_runs() {
         "batch_and_errors",
         "indentation_fit",
         "jkr_hysteresis",
+        "profile_characterise",
         "pull_off_table",
         "tabulated_threads",
     ];
@@ -1047,4 +1048,93 @@ fn indentation_fit_static() {
 #[test]
 fn indentation_fit_shared() {
     check_indentation_fit(Linkage::Shared);
+}
+
+const SURFACE: &str = "surfaces (src/surface, src/ffi/surface.rs)";
+const GW: &str = "Greenwood–Williamson (src/statistics, src/ffi/statistics.rs)";
+
+/// `profile_characterise` without arguments: a seeded self-affine profile
+/// (H = 0.7, Rq = 1 µm, 2^14 points at 1 µm) generated, characterised and fed
+/// to Greenwood–Williamson through the C ABI.
+fn check_profile_characterise(linkage: Linkage) {
+    let r = run("profile_characterise", linkage);
+    let mut c = Report::new(&r);
+    c.exit_ok(SURFACE);
+    c.close(SURFACE, "generated", 1.0, 0.0);
+    c.close(SURFACE, "n", 16384.0, 0.0);
+    c.close(SURFACE, "dx", 1e-6, 1e-20);
+    // The generator scales to the requested Rq exactly (to rounding), and the
+    // ISO Rq of the whole profile (one sampling length) is that RMS.
+    let rq = c.get(SURFACE, "requested_rq").unwrap_or(f64::NAN);
+    c.close(SURFACE, "rq", rq, 1e-12 * rq);
+    // Parseval: m0 = Rq², and the printed PSD integrates to m0.
+    c.close(SURFACE, "m0", rq * rq, 1e-9 * rq * rq);
+    c.within(SURFACE, "psd_integral_rel_diff_m0", 0.0, 1e-12);
+    c.close(SURFACE, "psd_len", 8193.0, 0.0);
+    // One fit of a 2^14-point profile scatters by about ±0.03 around H.
+    let h = c.get(SURFACE, "requested_hurst").unwrap_or(f64::NAN);
+    c.close(SURFACE, "has_psd_hurst_exponent", 1.0, 0.0);
+    c.close(SURFACE, "psd_hurst_exponent", h, 0.1);
+    c.close(SURFACE, "hurst_fit", h, 0.1);
+    c.within(SURFACE, "hurst_fit_r_squared", 0.95, 1.0);
+    c.close(SURFACE, "hurst_fit_matches_parameters", 1.0, 0.0);
+    // Orderings that hold for any profile.
+    let get = |k: &str| r.checks.get(k).copied().unwrap_or(f64::NAN);
+    let (rp, rv, rz, rt, ra) = (get("rp"), get("rv"), get("rz"), get("rt"), get("ra"));
+    c.ok(SURFACE, rz <= rt * (1.0 + 1e-12), || {
+        format!("Rz = {rz:e} > Rt = {rt:e}")
+    });
+    c.ok(SURFACE, ((rp + rv) / rz - 1.0).abs() < 1e-12, || {
+        format!("Rp + Rv = {:e} ≠ Rz = {rz:e}", rp + rv)
+    });
+    c.ok(SURFACE, ra > 0.0 && ra <= get("rq"), || {
+        format!("Ra = {ra:e} not in (0, Rq]")
+    });
+    c.within(SURFACE, "nayak_alpha", 1.0, f64::INFINITY);
+    c.within(SURFACE, "rsk", -1.0, 1.0);
+    c.within(SURFACE, "rku", 1.0, 6.0);
+    c.close(SURFACE, "sampling_lengths", 1.0, 0.0);
+    c.close(SURFACE, "n_evaluated", 16384.0, 0.0);
+    // Gaussian filter at λc = L/8: λc/2 = 1024 samples dropped at each end,
+    // and the long wavelengths that carry most of the RMS removed.
+    c.close(SURFACE, "filtered_first_index", 1024.0, 0.0);
+    c.close(SURFACE, "filtered_n_evaluated", 16384.0 - 2048.0, 0.0);
+    c.within(SURFACE, "filtered_rq", 0.0, 0.5 * rq);
+    c.within(SURFACE, "peak_count", 100.0, 16384.0 / 2.0);
+    // Greenwood–Williamson over d = 1.5 … 4 σ_s.
+    c.close(GW, "gw_load_decreasing", 1.0, 0.0);
+    c.close(GW, "gw_area_decreasing", 1.0, 0.0);
+    c.close(GW, "gw_contacts_decreasing", 1.0, 0.0);
+    c.within(GW, "gw_load_last", f64::MIN_POSITIVE, f64::INFINITY);
+    c.close(GW, "gw_scalar_equals_batch", 1.0, 0.0);
+    c.within(GW, "gw_separation_rel_err", 0.0, 1e-9);
+    c.within(GW, "plasticity_index_rel_diff", 0.0, 1e-12);
+    let psi = get("plasticity_index");
+    let regime = if psi < 0.6 {
+        0.0
+    } else if psi <= 1.0 {
+        1.0
+    } else {
+        2.0
+    };
+    c.close(GW, "regime", regime, 0.0);
+    // Error paths.
+    c.close(FFI, "psd_wrong_length_status", -2.0, 0.0);
+    c.close(FFI, "psd_wrong_length_names_n_q", 1.0, 0.0);
+    c.close(FFI, "batch_error_status", -2.0, 0.0);
+    c.close(FFI, "batch_error_names_element", 1.0, 0.0);
+    c.close(FFI, "batch_error_names_separation", 1.0, 0.0);
+    c.close(FFI, "batch_error_written_before", 1.0, 0.0);
+    c.close(FFI, "batch_error_sentinel_after", 1.0, 0.0);
+    c.finish();
+}
+
+#[test]
+fn profile_characterise_static() {
+    check_profile_characterise(Linkage::Static);
+}
+
+#[test]
+fn profile_characterise_shared() {
+    check_profile_characterise(Linkage::Shared);
 }

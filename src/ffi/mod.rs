@@ -14,7 +14,9 @@ pub mod friction;
 pub mod indentation;
 pub mod lj_sphere;
 pub mod material;
+pub mod statistics;
 mod status;
+pub mod surface;
 pub mod tabulated;
 
 pub use status::*;
