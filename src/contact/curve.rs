@@ -60,54 +60,8 @@ use crate::error::{Error, Result};
 use core::f64::consts::PI;
 use serde::{Deserialize, Serialize};
 
-/// Exact (bit-preserving) serde for `f64`: written as the shortest decimal
-/// string that reads back to the same bits (serde_json's default number
-/// parser may be off by one unit in the last place, which would break
-/// bit-identical evaluation after a round trip).
-pub(crate) mod exact_f64 {
-    use serde::{de::Error as _, Deserialize, Deserializer, Serializer};
-
-    /// Serialise.
-    pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(&format!("{v:e}"))
-    }
-
-    /// Deserialise (a string; NaN and infinities are rejected).
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
-        let s = <std::borrow::Cow<'de, str>>::deserialize(d)?;
-        let v: f64 = s
-            .parse()
-            .map_err(|_| D::Error::custom(format!("`{s}` is not a number")))?;
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(D::Error::custom(format!("`{s}` is not finite")))
-        }
-    }
-}
-
-/// Exact serde for `Vec<f64>` (see [`exact_f64`]).
-pub(crate) mod exact_vec {
-    use serde::{ser::SerializeSeq, Deserialize, Deserializer, Serializer};
-
-    #[derive(Deserialize)]
-    struct E(#[serde(with = "super::exact_f64")] f64);
-
-    /// Serialise.
-    pub fn serialize<S: Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
-        let mut seq = s.serialize_seq(Some(v.len()))?;
-        for x in v {
-            seq.serialize_element(&format!("{x:e}"))?;
-        }
-        seq.end()
-    }
-
-    /// Deserialise.
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error> {
-        let v = Vec::<E>::deserialize(d)?;
-        Ok(v.into_iter().map(|e| e.0).collect())
-    }
-}
+pub(crate) use crate::serde_exact as exact_f64;
+pub(crate) use crate::serde_exact::vec as exact_vec;
 
 /// One point of an equilibrium path in reduced units, with derivatives along
 /// a path parameter t.

@@ -139,29 +139,11 @@ struct SegmentData {
 /// Serialised branch: a stable piece. `None` bounds are unbounded.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 struct BranchData {
-    #[serde(with = "opt_exact")]
+    #[serde(with = "crate::serde_exact::opt")]
     lo: Option<f64>,
-    #[serde(with = "opt_exact")]
+    #[serde(with = "crate::serde_exact::opt")]
     hi: Option<f64>,
     segments: Vec<SegmentData>,
-}
-
-mod opt_exact {
-    use serde::{Deserialize, Deserializer, Serializer};
-
-    #[derive(Deserialize)]
-    struct E(#[serde(with = "super::exact_f64")] f64);
-
-    pub fn serialize<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
-        match v {
-            Some(x) => s.serialize_some(&format!("{x:e}")),
-            None => s.serialize_none(),
-        }
-    }
-
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
-        Ok(Option::<E>::deserialize(d)?.map(|e| e.0))
-    }
 }
 
 /// Serialised far tail.

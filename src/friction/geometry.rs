@@ -148,79 +148,6 @@ fn check_profile(heights: &[f64], dx: f64, min_len: usize, names: Names) -> Resu
     Ok(())
 }
 
-/// Exact serde for the `f64` fields: written as the shortest decimal string
-/// that reads back to the same bits (serde_json's default number parser is
-/// not correctly rounded, so plain JSON numbers would not round-trip); read
-/// from such a string or from a plain JSON number (for hand-written files).
-/// Non-finite values are rejected.
-mod exact {
-    use serde::{ser::SerializeSeq, Deserialize, Deserializer, Serializer};
-
-    #[derive(Deserialize)]
-    #[serde(untagged)]
-    enum Num {
-        Number(f64),
-        Text(String),
-    }
-
-    #[derive(Deserialize)]
-    struct E(#[serde(with = "super::exact")] f64);
-
-    fn value<E: serde::de::Error>(n: Num) -> Result<f64, E> {
-        let v = match n {
-            Num::Number(v) => v,
-            Num::Text(s) => s
-                .trim()
-                .parse()
-                .map_err(|_| E::custom(format!("`{s}` is not a number")))?,
-        };
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(E::custom("a number is not finite"))
-        }
-    }
-
-    pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(&format!("{v:e}"))
-    }
-
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
-        value(Num::deserialize(d)?)
-    }
-
-    pub mod vec {
-        use super::*;
-
-        pub fn serialize<S: Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
-            let mut seq = s.serialize_seq(Some(v.len()))?;
-            for x in v {
-                seq.serialize_element(&format!("{x:e}"))?;
-            }
-            seq.end()
-        }
-
-        pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error> {
-            Ok(Vec::<E>::deserialize(d)?.into_iter().map(|e| e.0).collect())
-        }
-    }
-
-    pub mod opt {
-        use super::*;
-
-        pub fn serialize<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
-            match v {
-                Some(x) => s.serialize_some(&format!("{x:e}")),
-                None => s.serialize_none(),
-            }
-        }
-
-        pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
-            Ok(Option::<E>::deserialize(d)?.map(|e| e.0))
-        }
-    }
-}
-
 // ------------------------------------------------------------------ 5.6.1
 
 /// The asperity statistics of one profile used by the single-level
@@ -231,14 +158,14 @@ pub struct AsperityStatistics {
     /// Asperity height Rq = √((1/n) Σ Z_i²) (m), thesis (5-15), the RMS of
     /// the heights from the mean line (computed by
     /// [`roughness_parameters`] over the whole profile).
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub rq: f64,
     /// Asperity width d̄ = (1/n_d) Σ d_i (m), thesis (5-16, 5-17): the mean
     /// width at the Rq level of the asperities reaching it. d_i is the
     /// length of a run of the profile above Rq, its two ends interpolated
     /// linearly between samples. Runs cut by the ends of the profile have no
     /// known width and are left out; `None` when no complete run exists.
-    #[serde(with = "exact::opt")]
+    #[serde(with = "crate::serde_exact::lenient::opt")]
     pub mean_width: Option<f64>,
     /// n_d, the number of complete asperities at the Rq level averaged in
     /// [`Self::mean_width`].
@@ -248,10 +175,10 @@ pub struct AsperityStatistics {
     /// thesis writes s_i = Δz/Δx with 1/(n − 1); for a sampled profile both
     /// estimate the same RMS slope, the seven-point form with an error
     /// O(dx⁶) instead of O(dx²).
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub rdq: f64,
     /// Asperity spacing λ_a = 2π Rq / Δq (m), thesis (5-18).
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub spacing: f64,
 }
 
@@ -324,22 +251,22 @@ fn statistics_named(heights: &[f64], dx: f64, names: Names) -> Result<AsperitySt
 pub struct NanoAsperities {
     /// Height of the van der Waals slab h_vdW (m), > 0: the RMS of the nano
     /// profile about its mean line, thesis (5-15) (line 6753).
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub h_vdw: f64,
     /// Width of the van der Waals interaction domain w_vdW (m), > 0, thesis
     /// (6-2).
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub w_vdw: f64,
     /// Height of the chemical slab on top of the body h_chem (m), ≥ 0.
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub h_chem: f64,
     /// Width of the chemical interaction domain w_chem (m), 0 ≤ w_chem ≤
     /// w_vdW.
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub w_chem: f64,
     /// Distance between neighbouring nano-asperities λ (m), ≥ w_vdW, thesis
     /// (6-3).
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub spacing: f64,
 }
 
@@ -388,17 +315,17 @@ pub struct NanoAnalysis {
     pub n_mean: usize,
     /// A_vdW = dx Σ clamp(Z_i, 0, h_vdW) (m²): the material between the mean
     /// line and the h_vdW level.
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub area_vdw: f64,
     /// A_chem = dx Σ max(Z_i − h_vdW, 0) (m²): the material above the h_vdW
     /// level.
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub area_chem: f64,
     /// L_nano = n·dx (m), the length of the profile.
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub length: f64,
     /// Length of the profile above the h_vdW level, dx·#{Z_i > h_vdW} (m).
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     pub length_above_rms: f64,
 }
 
@@ -535,21 +462,21 @@ pub fn nano_per_rod(tip_width: f64, spacing: f64) -> Result<usize> {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(try_from = "RodLevelData")]
 pub struct RodLevel {
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     width: f64,
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     origin: f64,
-    #[serde(with = "exact::vec")]
+    #[serde(with = "crate::serde_exact::lenient::vec")]
     heights: Vec<f64>,
 }
 
 #[derive(Deserialize)]
 struct RodLevelData {
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     width: f64,
-    #[serde(with = "exact")]
+    #[serde(with = "crate::serde_exact::lenient")]
     origin: f64,
-    #[serde(with = "exact::vec")]
+    #[serde(with = "crate::serde_exact::lenient::vec")]
     heights: Vec<f64>,
 }
 
