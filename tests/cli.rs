@@ -1,21 +1,26 @@
-//! The `asperity` command (feature `cli`), built by this test in its own
-//! target directory and run as a user would: `curve` on a JKR-like sphere and
-//! `indent --json` on the measured fused-silica curve when
-//! `../shared/data/indentation` is present.
+//! The `asperity` command (feature `cli`), run as a user would: `curve` on a
+//! JKR-like sphere, `indent --json` on the measured fused-silica curve when
+//! `../shared/data/indentation` is present, and `profile` on a sine written
+//! here and on every measured profile in `../shared/data/profiles`.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Output};
 use std::sync::OnceLock;
 
 fn manifest() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// Build the binary once per test run; its own target dir keeps the
-/// library artifacts the C-example tests link against untouched.
+/// The binary: the one Cargo built for this test run
+/// (`cargo test --features cli`); otherwise built once per run in its own
+/// target directory, which keeps the library artifacts the C-example tests
+/// link against untouched.
 fn binary() -> &'static Path {
     static BIN: OnceLock<PathBuf> = OnceLock::new();
     BIN.get_or_init(|| {
+        if let Some(bin) = option_env!("CARGO_BIN_EXE_asperity") {
+            return PathBuf::from(bin);
+        }
         let target = manifest().join("target").join("cli-test");
         let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
         let out = Command::new(cargo)
@@ -152,4 +157,392 @@ fn bad_indenter_is_a_clear_error() {
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("unknown indenter `pyramid`"), "{err}");
+}
+
+// ------------------------------------------------------------------ profile
+
+/// A fresh scratch directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli-profile")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn profile(args: &[&str]) -> Output {
+    Command::new(binary())
+        .arg("profile")
+        .args(args)
+        .output()
+        .expect("run asperity profile")
+}
+
+fn profile_json(args: &[&str]) -> serde_json::Value {
+    let mut all = args.to_vec();
+    all.push("--json");
+    let out = profile(&all);
+    assert!(
+        out.status.success(),
+        "asperity profile {all:?} failed:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(text.trim().lines().count(), 1, "one JSON line: {text}");
+    serde_json::from_str(text.trim()).expect("one JSON object")
+}
+
+/// Writes `x,z` lines (m) with a header, as the shared line scans.
+fn write_profile(path: &Path, dx: f64, z: &[f64], x_offset: f64) {
+    use std::fmt::Write;
+    let mut s = String::from("x_m,z_m\n");
+    for (j, v) in z.iter().enumerate() {
+        writeln!(s, "{:.17e},{v:.17e}", (j as f64 + x_offset) * dx).unwrap();
+    }
+    std::fs::write(path, s).unwrap();
+}
+
+/// z = A sin(2πx/Λ) over `periods` whole periods of `per_period` samples,
+/// sampled at x = (j + ½)·dx (no sample sits exactly on a zero crossing).
+fn write_sine(path: &Path, a: f64, lambda: f64, periods: usize, per_period: usize) {
+    let dx = lambda / per_period as f64;
+    let z: Vec<f64> = (0..periods * per_period)
+        .map(|j| a * (2.0 * std::f64::consts::PI * (j as f64 + 0.5) * dx / lambda).sin())
+        .collect();
+    write_profile(path, dx, &z, 0.5);
+}
+
+fn num(v: &serde_json::Value, key: &str) -> f64 {
+    v.get(key)
+        .and_then(|x| x.as_f64())
+        .unwrap_or_else(|| panic!("`{key}` missing or not a number in {v}"))
+}
+
+fn assert_rel(got: f64, want: f64, tol: f64, what: &str) {
+    assert!(
+        ((got - want) / want).abs() <= tol,
+        "{what}: got {got:e}, want {want:e} (relative tolerance {tol:e})"
+    );
+}
+
+const ISO_KEYS: [&str; 11] = [
+    "Rp",
+    "Rv",
+    "Rz",
+    "Rt",
+    "Ra",
+    "Rq",
+    "Rsk",
+    "Rku",
+    "RSm",
+    "RDq",
+    "psd_hurst_exponent",
+];
+
+#[test]
+fn profile_json_of_a_sine_matches_closed_forms() {
+    let dir = scratch("sine");
+    let file = dir.join("sine.csv");
+    let (a, lambda, periods) = (2e-6, 50e-6, 8);
+    write_sine(&file, a, lambda, periods, 1000);
+    let v = profile_json(&[file.to_str().unwrap(), "--detrend", "none"]);
+    for key in ISO_KEYS.iter().chain(&[
+        "points",
+        "dx",
+        "length",
+        "m0",
+        "m2",
+        "m4",
+        "nayak_alpha",
+        "sampling_length",
+        "sampling_lengths",
+    ]) {
+        assert!(v.get(*key).is_some(), "missing `{key}` in {v}");
+    }
+    assert_eq!(v["kind"], "profile");
+    assert_eq!(v["detrend"], "none");
+    assert!(v["cutoff"].is_null());
+    assert_eq!(v["points"], 8000);
+    assert_eq!(v["sampling_lengths"], 1);
+    assert_rel(num(&v, "dx"), lambda / 1000.0, 1e-12, "dx");
+    assert_rel(num(&v, "length"), periods as f64 * lambda, 1e-12, "length");
+    let pi = std::f64::consts::PI;
+    // Sample means over whole periods: Rq, Rku and Rsk are exact. Ra, the
+    // mean of |z| at the midpoints of M = 500 samples per half period, is
+    // (2A/π)·(π/2M)/sin(π/2M) = (2A/π)(1 + 1.6e-6).
+    let m = 500.0;
+    assert_rel(num(&v, "Ra"), 2.0 * a / pi, 2e-6, "Ra = 2A/π");
+    let ra_sampled = a / (m * (pi / (2.0 * m)).sin());
+    assert_rel(num(&v, "Ra"), ra_sampled, 1e-12, "Ra of the samples");
+    assert_rel(num(&v, "Rq"), a / 2f64.sqrt(), 1e-12, "Rq = A/√2");
+    assert!(num(&v, "Rsk").abs() < 1e-12, "Rsk = {}", v["Rsk"]);
+    assert_rel(num(&v, "Rku"), 1.5, 1e-12, "Rku = 1.5");
+    assert_rel(
+        num(&v, "RDq"),
+        2f64.sqrt() * pi * a / lambda,
+        1e-7,
+        "RΔq = √2πA/Λ",
+    );
+    assert_rel(num(&v, "RSm"), lambda, 1e-10, "RSm = Λ");
+    // The samples nearest the crests are half a spacing off them.
+    let crest = 2.0 * a * (pi / (2.0 * m)).cos();
+    assert_rel(num(&v, "Rt"), crest, 1e-12, "Rt = 2A cos(π/2M)");
+    assert_rel(num(&v, "Rz"), crest, 1e-12, "Rz = Rt");
+    assert_rel(num(&v, "Rp"), num(&v, "Rv"), 1e-12, "Rp = Rv");
+    // A line spectrum is no power law.
+    assert!(v["psd_hurst_exponent"].is_null(), "{v}");
+    assert!(v["psd_fit"].is_null(), "{v}");
+    // Parseval: m0 = Rq²; a single line: m2 = Rq²(2π/Λ)², α = 1.
+    assert_rel(num(&v, "m0"), a * a / 2.0, 1e-10, "m0 = Rq²");
+    assert_rel(
+        num(&v, "m2"),
+        a * a / 2.0 * (2.0 * pi / lambda).powi(2),
+        1e-10,
+        "m2",
+    );
+    assert_rel(num(&v, "nayak_alpha"), 1.0, 1e-9, "Nayak α of a sine");
+    assert!(v["plots"].as_array().unwrap().is_empty());
+}
+
+#[test]
+fn profile_table_and_svg_plots() {
+    let dir = scratch("plots");
+    let file = dir.join("sine.csv");
+    write_sine(&file, 1e-7, 20e-6, 10, 200);
+    let prefix = dir.join("out");
+    let out = profile(&[
+        file.to_str().unwrap(),
+        "--detrend",
+        "none",
+        "--svg",
+        prefix.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let table = String::from_utf8(out.stdout).unwrap();
+    // Aligned rows `name value unit description`, heights in a common unit.
+    let row = |name: &str| -> Vec<String> {
+        table
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(name))
+            .unwrap_or_else(|| panic!("no `{name}` row in\n{table}"))
+            .split_whitespace()
+            .map(String::from)
+            .collect()
+    };
+    assert_eq!(row("Rq")[2], "nm", "{table}");
+    let rq: f64 = row("Rq")[1].parse().unwrap();
+    assert!((rq - 70.71).abs() < 0.01, "Rq = {rq} nm\n{table}");
+    assert_eq!(row("RSm")[2], "µm", "{table}");
+    let col = |name: &str| {
+        table
+            .lines()
+            .find(|l| l.trim_start().starts_with(name))
+            .unwrap()
+            .find(" nm")
+            .unwrap()
+    };
+    assert_eq!(col("Ra "), col("Rq "), "value columns aligned:\n{table}");
+    let labels: [(&str, &[&str]); 4] = [
+        (
+            "-profile.svg",
+            &["position x / µm", "height z / nm", "mean line"],
+        ),
+        ("-acf.svg", &["lag δ / µm", "ACF R(δ) / R(0)"]),
+        ("-psd.svg", &["wavenumber q / (rad/m)", "PSD G(q) / m³"]),
+        (
+            "-material-ratio.svg",
+            &[
+                "material ratio Rmr / %",
+                "height c (from the mean line) / nm",
+            ],
+        ),
+    ];
+    for (suffix, wanted) in labels {
+        let path = dir.join(format!("out{suffix}"));
+        let svg = std::fs::read_to_string(&path)
+            .unwrap_or_else(|e| panic!("{}: {e}\n{table}", path.display()));
+        assert!(
+            svg.starts_with("<svg"),
+            "{suffix}: {}",
+            &svg[..80.min(svg.len())]
+        );
+        assert!(svg.trim_end().ends_with("</svg>"), "{suffix} not closed");
+        for w in wanted {
+            assert!(svg.contains(w), "{suffix} lacks the label `{w}`");
+        }
+        assert!(table.contains(path.to_str().unwrap()), "{table}");
+    }
+    // A directory as PREFIX: the file's stem inside it.
+    let v = profile_json(&[file.to_str().unwrap(), "--svg", dir.to_str().unwrap()]);
+    let plots: Vec<&str> = v["plots"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p.as_str().unwrap())
+        .collect();
+    assert_eq!(plots.len(), 4, "{plots:?}");
+    assert!(plots[0].ends_with("sine-profile.svg"), "{plots:?}");
+    assert!(plots.iter().all(|p| Path::new(p).exists()));
+}
+
+#[test]
+fn profile_of_a_long_self_affine_scan_fits_hurst_and_decimates_plots() {
+    use asperity::surface::SelfAffine;
+    let dir = scratch("large");
+    let file = dir.join("self_affine.csv");
+    let n = 200_000;
+    let dx = 1e-8;
+    let p = SelfAffine::new(0.8, 1e-7)
+        .unwrap()
+        .profile(n, dx, 7)
+        .unwrap();
+    write_profile(&file, dx, p.heights(), 0.0);
+    let prefix = dir.join("sa");
+    let v = profile_json(&[file.to_str().unwrap(), "--svg", prefix.to_str().unwrap()]);
+    assert_eq!(v["points"], n);
+    // One fit scatters by a few hundredths (tests/surface.rs); this seed
+    // gives 0.750.
+    let h = num(&v, "psd_hurst_exponent");
+    assert!((h - 0.8).abs() < 0.1, "H = {h}");
+    assert!(v["psd_fit"]["r_squared"].as_f64().unwrap() > 0.9, "{v}");
+    assert_rel(num(&v, "Rq").powi(2), num(&v, "m0"), 1e-9, "Rq² = m0");
+    for suffix in [
+        "-profile.svg",
+        "-acf.svg",
+        "-psd.svg",
+        "-material-ratio.svg",
+    ] {
+        let path = dir.join(format!("sa{suffix}"));
+        let size = std::fs::metadata(&path).unwrap().len();
+        // 200 000 points drawn one by one would take several MB.
+        assert!(size < 300_000, "{suffix}: {size} bytes, not decimated");
+    }
+    let psd = std::fs::read_to_string(dir.join("sa-psd.svg")).unwrap();
+    assert!(
+        psd.contains("power law G ∝ q^"),
+        "the fitted power law is drawn"
+    );
+}
+
+fn assert_fails(args: &[&str], message: &str) {
+    let out = profile(args);
+    assert!(!out.status.success(), "{args:?} succeeded");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains(message),
+        "{args:?}: stderr `{err}` lacks `{message}`"
+    );
+    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
+    assert!(err.starts_with("asperity: "), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn profile_errors_are_one_line_messages() {
+    let dir = scratch("errors");
+    let missing = dir.join("missing.csv");
+    assert_fails(&[missing.to_str().unwrap()], "cannot read");
+    let garbage = dir.join("garbage.csv");
+    std::fs::write(&garbage, "x_m,z_m\n0,1e-9\n1e-6,oops\n").unwrap();
+    assert_fails(&[garbage.to_str().unwrap()], "line 3");
+    std::fs::write(&garbage, [0xffu8, 0xfe, 0x00, 0x41]).unwrap();
+    assert_fails(&[garbage.to_str().unwrap()], "cannot read");
+    // 8 periods of 50 µm = 400 µm.
+    let sine = dir.join("sine.csv");
+    write_sine(&sine, 1e-6, 50e-6, 8, 100);
+    let s = sine.to_str().unwrap();
+    assert_fails(&[s, "--cutoff", "1e-3"], "--cutoff");
+    assert_fails(&[s, "--cutoff", "4e-4", "--json"], "--cutoff");
+    // Longer than half the profile: no sampling length λc is left.
+    assert_fails(&[s, "--cutoff", "2.5e-4"], "too long");
+    assert_fails(&[s, "--cutoff", "-1e-4"], "cutoff");
+    // Maps have no Gaussian cut-off.
+    let map = dir.join("map.csv");
+    std::fs::write(&map, "# dx_m=1e-6\n1e-9,2e-9,0\n0,3e-9,1e-9\n2e-9,0,1e-9\n").unwrap();
+    assert_fails(
+        &[map.to_str().unwrap(), "--cutoff", "1e-5"],
+        "line scans only",
+    );
+    // With a valid cut-off the sampling length is λc.
+    let v = profile_json(&[s, "--cutoff", "1e-4"]);
+    assert_rel(num(&v, "sampling_length"), 1e-4, 1e-9, "sampling length λc");
+    assert_eq!(v["sampling_lengths"], 3, "400 µm − λc = 300 µm: 3 λc");
+    // Unknown detrend: clap's own error, non-zero.
+    let out = profile(&[s, "--detrend", "cubic"]);
+    assert!(!out.status.success());
+}
+
+#[test]
+fn profile_on_every_measured_profile() {
+    let dir = manifest().join("..").join("shared/data/profiles");
+    let Ok(entries) = std::fs::read_dir(&dir) else {
+        println!("SKIPPED: {} not present", dir.display());
+        return;
+    };
+    let mut files: Vec<PathBuf> = entries
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "csv"))
+        .collect();
+    files.sort();
+    if files.is_empty() {
+        println!("SKIPPED: no .csv profile in {}", dir.display());
+        return;
+    }
+    let out = scratch("measured");
+    for file in &files {
+        let f = file.to_str().unwrap();
+        let v = profile_json(&[f]);
+        if v["kind"] == "map" {
+            for key in [
+                "Sa", "Sq", "Ssk", "Sku", "Sp", "Sv", "Sz", "Sdq", "nx", "ny",
+            ] {
+                assert!(v.get(key).is_some(), "{f}: missing `{key}`");
+            }
+            assert_rel(num(&v, "Sz"), num(&v, "Sp") + num(&v, "Sv"), 1e-12, "Sz");
+            let plain = profile_json(&[f, "--detrend", "none"]);
+            assert!(
+                num(&plain, "Sq") > num(&v, "Sq"),
+                "{f}: levelling lowers Sq"
+            );
+            let prefix = out.join(file.file_stem().unwrap());
+            let p = profile_json(&[f, "--svg", prefix.to_str().unwrap()]);
+            assert_eq!(p["plots"].as_array().unwrap().len(), 1, "{p}");
+            continue;
+        }
+        assert_eq!(v["kind"], "profile", "{f}");
+        for detrend in ["none", "linear", "quadratic"] {
+            let v = profile_json(&[f, "--detrend", detrend]);
+            for key in ISO_KEYS
+                .iter()
+                .chain(&["m0", "m2", "m4", "nayak_alpha", "points"])
+            {
+                assert!(v.get(*key).is_some(), "{f}: missing `{key}`");
+            }
+            assert!(num(&v, "Rz") <= num(&v, "Rt"), "{f} {detrend}: Rz > Rt");
+            assert_rel(
+                num(&v, "Rq").powi(2),
+                num(&v, "m0"),
+                1e-9,
+                &format!("{f} {detrend}: Rq² = m0"),
+            );
+            assert!(num(&v, "nayak_alpha") >= 1.0, "{f} {detrend}: α < 1");
+        }
+        // ISO 4288-like: five cut-offs in the profile, roughness profile.
+        let length = num(&v, "length");
+        let lc = format!("{:e}", length / 6.0);
+        let r = profile_json(&[f, "--detrend", "quadratic", "--cutoff", &lc]);
+        assert!(num(&r, "Rz") <= num(&r, "Rt"), "{f} cut-off: Rz > Rt");
+        assert!(r["sampling_lengths"].as_u64().unwrap() >= 4, "{r}");
+        assert!(
+            num(&r, "Rq") < num(&v, "Rq"),
+            "{f}: the filter removes waviness"
+        );
+        let prefix = out.join(file.file_stem().unwrap());
+        profile_json(&[f, "--svg", prefix.to_str().unwrap()]);
+    }
 }

@@ -2,13 +2,16 @@
 //!
 //! Built with `cargo build --release --features cli`. Every subcommand calls
 //! the public Rust API like any other user; tables go to stdout (or CSV/JSON
-//! files), plots to SVG.
+//! files), plots to SVG. One module per subcommand that needs more than a
+//! few lines (`profile.rs`).
 
 use asperity::contact::{Dmt, Jkr, LjSphere, MaugisDugdale, NormalContact};
 use asperity::{ContactState, Control};
 use clap::{Parser, Subcommand};
 use std::error::Error;
 use std::path::PathBuf;
+
+mod profile;
 
 #[derive(Parser)]
 #[command(
@@ -88,6 +91,9 @@ enum Command {
         #[arg(long)]
         svg: Option<PathBuf>,
     },
+    /// ISO 4287 parameters, spectrum and plots of a measured line scan (or the
+    /// areal parameters of a height map).
+    Profile(profile::ProfileArgs),
     /// The numerical Lennard-Jones sphere: full force–approach curve, jump
     /// points, pull-off and hysteresis.
     Lj {
@@ -166,10 +172,11 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
                         .map(|i| lo + (hi - lo) * i as f64 / points as f64),
                 )
                 .collect();
-            let mut series: Vec<Series> = Vec::new();
-            series.push(("DMT".into(), cycle(&dmt, &path)?));
-            series.push(("JKR".into(), cycle(&jkr, &path)?));
-            series.push(("Maugis-Dugdale".into(), cycle(&md, &path)?));
+            let series: Vec<Series> = vec![
+                ("DMT".into(), cycle(&dmt, &path)?),
+                ("JKR".into(), cycle(&jkr, &path)?),
+                ("Maugis-Dugdale".into(), cycle(&md, &path)?),
+            ];
             if let Some(p) = csv {
                 write_csv(&p, &series, "delta_m", "force_N")?;
             }
@@ -213,6 +220,7 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
             json,
             svg,
         )?,
+        Command::Profile(args) => profile::run(&args)?,
         Command::Lj {
             sphere: s,
             grid,

@@ -1,0 +1,848 @@
+//! `asperity profile FILE`: ISO 4287 parameters, spectrum and plots of a
+//! measured line scan, or the ISO 25178 height parameters of a map.
+//!
+//! Everything physical comes from `asperity::surface`: reading, form
+//! removal, the Gaussian filter, the parameters, ACF, PSD, spectral moments,
+//! the power-law fit and the material-ratio curve. This module only chooses
+//! what to call, formats the results and draws them.
+
+use asperity::surface::{
+    hurst_fit, parse_profile, parse_topography, psd_windowed, FilterEnds, Form, HurstFit, MapForm,
+    MaterialRatioCurve, ParameterOptions, Profile, RoughnessParameters, Spacing, Topography,
+    Window,
+};
+use clap::{Args, ValueEnum};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use serde_json::{json, Value};
+use std::error::Error;
+use std::path::{Path, PathBuf};
+
+type Res<T> = Result<T, Box<dyn Error>>;
+
+/// Form removed by least squares before the analysis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Detrend {
+    /// Nothing: heights are taken about their mean.
+    None,
+    /// The mean height (the parameters are the same as with `none`; the
+    /// plotted profile is centred).
+    Mean,
+    /// A least-squares straight line (a plane for maps): ISO practice.
+    Linear,
+    /// A least-squares parabola (a quadric for maps): tilt and bow.
+    Quadratic,
+}
+
+impl Detrend {
+    fn name(self) -> &'static str {
+        match self {
+            Detrend::None => "none",
+            Detrend::Mean => "mean",
+            Detrend::Linear => "linear",
+            Detrend::Quadratic => "quadratic",
+        }
+    }
+}
+
+/// Arguments of `asperity profile`.
+#[derive(Args)]
+pub struct ProfileArgs {
+    /// A line scan (two columns `x z` in m, one optional header line) or a
+    /// height map (a grid with `# dx_m=` metadata, or `x y z` triplets), in
+    /// metres; comma, semicolon or whitespace separated, `#` comments.
+    file: PathBuf,
+    /// Print one JSON object (SI units, ISO names Rp … RDq) instead of the
+    /// table.
+    #[arg(long)]
+    json: bool,
+    /// Form removed by least squares before the analysis (for maps: linear
+    /// is a plane, quadratic a quadric).
+    #[arg(long, value_enum, default_value_t = Detrend::Linear)]
+    detrend: Detrend,
+    /// Cut-off wavelength λc (m) of the ISO 16610-21 Gaussian filter: the
+    /// parameters are those of the roughness profile (profile minus the
+    /// Gaussian mean line), λc/2 is discarded at each end and the sampling
+    /// length is λc (ISO 4288). Line scans only.
+    #[arg(long, value_name = "METRES", allow_hyphen_values = true)]
+    cutoff: Option<f64>,
+    /// Write SVG plots PREFIX-profile.svg, PREFIX-acf.svg, PREFIX-psd.svg and
+    /// PREFIX-material-ratio.svg (maps: the material ratio only). If PREFIX
+    /// is a directory, the file's stem is used inside it.
+    #[arg(long, value_name = "PREFIX")]
+    svg: Option<PathBuf>,
+}
+
+/// Runs `asperity profile`.
+pub fn run(args: &ProfileArgs) -> Res<()> {
+    let file = &args.file;
+    let text = std::fs::read_to_string(file)
+        .map_err(|e| format!("cannot read {}: {e}", file.display()))?;
+    let bar = indicatif::ProgressBar::new_spinner();
+    bar.set_message(format!("reading {}", file.display()));
+    bar.enable_steady_tick(std::time::Duration::from_millis(120));
+    // A line scan never parses as a map (a map needs `dx_m` metadata or three
+    // columns), but a two-column grid with metadata would parse as a line
+    // scan: try the map first.
+    let data = match parse_topography(&text, Spacing::Tolerant) {
+        Ok(t) => Data::Map(t),
+        Err(map_err) => match parse_profile(&text, Spacing::Tolerant) {
+            Ok(p) => Data::Line(p),
+            Err(line_err) => {
+                bar.finish_and_clear();
+                return Err(format!(
+                    "{}: not a line scan ({line_err}) nor a height map ({map_err})",
+                    file.display()
+                )
+                .into());
+            }
+        },
+    };
+    drop(text);
+    bar.set_message("analysing");
+    let result = match data {
+        Data::Line(p) => line_scan(args, p, &bar),
+        Data::Map(t) => map(args, t, &bar),
+    };
+    bar.finish_and_clear();
+    result
+}
+
+enum Data {
+    Line(Profile),
+    Map(Topography),
+}
+
+/// Everything computed for a line scan.
+struct LineAnalysis {
+    /// The profile as read (m).
+    raw: Profile,
+    /// The analysed profile: form removed, and with a cut-off the roughness
+    /// profile on the retained samples (m).
+    analysed: Profile,
+    /// Index in `raw` of the first analysed sample.
+    first: usize,
+    /// Samples of `analysed` in the evaluation length (whole sampling
+    /// lengths).
+    evaluated: usize,
+    params: RoughnessParameters,
+    m0: f64,
+    m2: f64,
+    m4: f64,
+    nayak_alpha: f64,
+    correlation_length: Option<f64>,
+    fit: Option<HurstFit>,
+}
+
+fn analyse_line(raw: Profile, detrend: Detrend, cutoff: Option<f64>) -> Res<LineAnalysis> {
+    let detrended = match detrend {
+        Detrend::None => raw.clone(),
+        Detrend::Mean => raw.remove_form(Form::Mean)?,
+        Detrend::Linear => raw.remove_form(Form::Linear)?,
+        Detrend::Quadratic => raw.remove_form(Form::Quadratic)?,
+    };
+    let (analysed, first) = match cutoff {
+        None => (detrended, 0),
+        Some(lc) => {
+            let f = detrended
+                .gaussian_filter(lc, FilterEnds::Discard)
+                .map_err(|e| {
+                    format!(
+                        "--cutoff {lc:e} m (profile length {}): {e}",
+                        length_text(raw.length())
+                    )
+                })?;
+            if f.roughness.length() < lc {
+                return Err(format!(
+                    "--cutoff {lc:e} m is too long for this profile ({}): after discarding \
+                     λc/2 at each end {} remain, less than one sampling length λc; the \
+                     profile must be at least 2λc long",
+                    length_text(raw.length()),
+                    length_text(f.roughness.length())
+                )
+                .into());
+            }
+            (f.roughness, f.first_index)
+        }
+    };
+    let options = ParameterOptions {
+        sampling_length: cutoff,
+        ..ParameterOptions::default()
+    };
+    let params = analysed.parameters(&options)?;
+    let dx = analysed.dx();
+    let evaluated = params.sampling_lengths * (params.sampling_length / dx).round() as usize;
+    let moments = analysed.psd()?.moments();
+    let correlation_length = analysed
+        .acf()?
+        .correlation_length(std::f64::consts::E.recip())?;
+    // The fit behind psd_hurst_exponent, for its band and prefactor.
+    let fit = match params.psd_hurst_exponent {
+        Some(_) => Some(hurst_fit(analysed.heights(), dx, None)?),
+        None => None,
+    };
+    Ok(LineAnalysis {
+        raw,
+        analysed,
+        first,
+        evaluated,
+        params,
+        m0: moments.m0,
+        m2: moments.m2,
+        m4: moments.m4,
+        nayak_alpha: moments.nayak_alpha(),
+        correlation_length,
+        fit,
+    })
+}
+
+fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> Res<()> {
+    let a = analyse_line(raw, args.detrend, args.cutoff)?;
+    let plots = match &args.svg {
+        Some(prefix) => {
+            bar.set_message("plotting");
+            line_plots(&plot_prefix(prefix, &args.file), &a, args)?
+        }
+        None => Vec::new(),
+    };
+    bar.finish_and_clear();
+    let p = &a.params;
+    if args.json {
+        let mut v = serde_json::to_value(p)?;
+        let o = v
+            .as_object_mut()
+            .ok_or("RoughnessParameters is not a JSON object")?;
+        let extra = json!({
+            "file": args.file.display().to_string(),
+            "kind": "profile",
+            "detrend": args.detrend.name(),
+            "cutoff": args.cutoff,
+            "points_read": a.raw.len(),
+            "points": a.analysed.len(),
+            "dx": a.analysed.dx(),
+            "x0": a.analysed.x0(),
+            "length": a.analysed.length(),
+            "evaluation_length": p.sampling_length * p.sampling_lengths as f64,
+            "spacing_deviation": a.raw.spacing_deviation(),
+            "m0": a.m0,
+            "m2": a.m2,
+            "m4": a.m4,
+            "nayak_alpha": a.nayak_alpha,
+            "correlation_length_1e": a.correlation_length,
+            "psd_fit": a.fit,
+            "plots": plots,
+        });
+        if let Value::Object(extra) = extra {
+            o.extend(extra);
+        }
+        println!("{v}");
+        return Ok(());
+    }
+    let (hs, hu) = length_unit(p.rt);
+    let h = |v: f64| (sig(v / hs, 4), hu);
+    let opt_h = |v: Option<f64>| v.map_or(("n/a".to_string(), ""), h);
+    let len = |v: f64| {
+        let (s, u) = length_unit(v);
+        (sig(v / s, 4), u)
+    };
+    let num = |v: f64| (sig(v, 4), "");
+    let sci = |v: f64, u: &'static str| (format!("{v:.4e}"), u);
+    println!(
+        "{}: line scan, {} points, dx = {}, length {}{}",
+        args.file.display(),
+        a.raw.len(),
+        length_text(a.raw.dx()),
+        length_text(a.raw.length()),
+        if a.raw.spacing_deviation() > 1e-3 {
+            format!(
+                " (positions up to {:.2} dx off the uniform grid)",
+                a.raw.spacing_deviation()
+            )
+        } else {
+            String::new()
+        }
+    );
+    let filter = match args.cutoff {
+        Some(lc) => format!(
+            "Gaussian cut-off λc = {} (roughness profile, {} points after discarding λc/2 at each end)",
+            length_text(lc),
+            a.analysed.len()
+        ),
+        None => "no cut-off".to_string(),
+    };
+    println!("detrend {}, {filter}", args.detrend.name());
+    println!(
+        "evaluation length {} = {} sampling length{} of {}",
+        length_text(p.sampling_length * p.sampling_lengths as f64),
+        p.sampling_lengths,
+        if p.sampling_lengths == 1 { "" } else { "s" },
+        length_text(p.sampling_length)
+    );
+    let rows: Vec<(&str, (String, &str), &str)> = vec![
+        ("Rp", h(p.rp), "maximum peak height"),
+        ("Rv", h(p.rv), "maximum valley depth"),
+        ("Rz", h(p.rz), "maximum height Rp + Rv"),
+        ("Rc", opt_h(p.rc), "mean height of profile elements"),
+        ("Rt", h(p.rt), "total height (evaluation length)"),
+        ("Ra", h(p.ra), "arithmetic mean deviation"),
+        ("Rq", h(p.rq), "root-mean-square deviation"),
+        ("Rsk", num(p.rsk), "skewness"),
+        ("Rku", num(p.rku), "kurtosis"),
+        (
+            "RSm",
+            p.rsm.map_or(("n/a".to_string(), ""), len),
+            "mean width of profile elements",
+        ),
+        ("RDq", num(p.rdq), "root-mean-square slope RΔq"),
+        (
+            "psd_hurst_exponent",
+            p.psd_hurst_exponent.map_or(("n/a".to_string(), ""), num),
+            match &a.fit {
+                Some(_) => "Hurst exponent H of the PSD power law",
+                None => "no power law: fewer than 128 points, or fit r² < 0.9 or H outside [0, 1]",
+            },
+        ),
+        ("m0", sci(a.m0, "m²"), "spectral moment: height variance"),
+        ("m2", sci(a.m2, ""), "spectral moment: slope variance"),
+        (
+            "m4",
+            sci(a.m4, "m⁻²"),
+            "spectral moment: curvature variance",
+        ),
+        (
+            "nayak_alpha",
+            num(a.nayak_alpha),
+            "Nayak bandwidth m0 m4 / m2²",
+        ),
+        (
+            "correlation_length_1e",
+            a.correlation_length.map_or(("n/a".to_string(), ""), len),
+            "lag where the ACF falls to 1/e",
+        ),
+    ];
+    print_rows(&rows);
+    if let Some(f) = &a.fit {
+        println!(
+            "PSD power law G = A q^{:.4} over q = {:.3e} … {:.3e} rad/m ({} bins, r² = {:.4})",
+            f.slope, f.q_min, f.q_max, f.bins, f.r_squared
+        );
+    }
+    for p in &plots {
+        println!("wrote {p}");
+    }
+    Ok(())
+}
+
+fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<()> {
+    if let Some(lc) = args.cutoff {
+        return Err(format!(
+            "--cutoff {lc:e} m: {} is a height map ({} × {}); the Gaussian cut-off applies to line scans only",
+            args.file.display(),
+            t.nx(),
+            t.ny()
+        )
+        .into());
+    }
+    let t = match args.detrend {
+        Detrend::None => t,
+        Detrend::Mean => t.remove_form(MapForm::Mean)?,
+        Detrend::Linear => t.remove_form(MapForm::Plane)?,
+        Detrend::Quadratic => t.remove_form(MapForm::Quadratic)?,
+    };
+    let s = t.parameters()?;
+    let plots = match &args.svg {
+        Some(prefix) => {
+            bar.set_message("plotting");
+            let path = suffixed(&plot_prefix(prefix, &args.file), "-material-ratio.svg");
+            material_ratio_plot(&path, t.heights())?;
+            vec![path.display().to_string()]
+        }
+        None => Vec::new(),
+    };
+    bar.finish_and_clear();
+    if args.json {
+        let mut v = serde_json::to_value(s)?;
+        let o = v
+            .as_object_mut()
+            .ok_or("ArealParameters is not a JSON object")?;
+        let extra = json!({
+            "file": args.file.display().to_string(),
+            "kind": "map",
+            "detrend": args.detrend.name(),
+            "points": t.heights().len(),
+            "nx": t.nx(),
+            "ny": t.ny(),
+            "dx": t.dx(),
+            "dy": t.dy(),
+            "plots": plots,
+        });
+        if let Value::Object(extra) = extra {
+            o.extend(extra);
+        }
+        println!("{v}");
+        return Ok(());
+    }
+    println!(
+        "{}: height map, {} × {} points, dx = {}, dy = {}, {} × {}",
+        args.file.display(),
+        t.nx(),
+        t.ny(),
+        length_text(t.dx()),
+        length_text(t.dy()),
+        length_text(t.nx() as f64 * t.dx()),
+        length_text(t.ny() as f64 * t.dy())
+    );
+    println!(
+        "detrend {}{}",
+        args.detrend.name(),
+        match args.detrend {
+            Detrend::Linear => " (plane)",
+            Detrend::Quadratic => " (quadric)",
+            _ => "",
+        }
+    );
+    let (hs, hu) = length_unit(s.sz);
+    let h = |v: f64| (sig(v / hs, 4), hu);
+    let num = |v: f64| (sig(v, 4), "");
+    let rows: Vec<(&str, (String, &str), &str)> = vec![
+        ("Sa", h(s.sa), "arithmetic mean height"),
+        ("Sq", h(s.sq), "root-mean-square height"),
+        ("Ssk", num(s.ssk), "skewness"),
+        ("Sku", num(s.sku), "kurtosis"),
+        ("Sp", h(s.sp), "maximum peak height"),
+        ("Sv", h(s.sv), "maximum pit depth"),
+        ("Sz", h(s.sz), "maximum height Sp + Sv"),
+        ("Sdq", num(s.sdq), "root-mean-square gradient"),
+    ];
+    print_rows(&rows);
+    for p in &plots {
+        println!("wrote {p}");
+    }
+    Ok(())
+}
+
+fn print_rows(rows: &[(&str, (String, &str), &str)]) {
+    for (name, (value, unit), what) in rows {
+        println!("  {name:<22} {value:>12} {unit:<4} {what}");
+    }
+}
+
+// ---------------------------------------------------------------- formatting
+
+/// Scale and unit that show a length of magnitude `v` (m) with one to three
+/// integer digits.
+fn length_unit(v: f64) -> (f64, &'static str) {
+    let a = v.abs();
+    if a >= 1.0 {
+        (1.0, "m")
+    } else if a >= 1e-3 {
+        (1e-3, "mm")
+    } else if a >= 1e-6 {
+        (1e-6, "µm")
+    } else if a >= 1e-9 {
+        (1e-9, "nm")
+    } else {
+        (1e-12, "pm")
+    }
+}
+
+/// `v` with `digits` (≥ 1) significant digits: fixed notation, scientific
+/// below 10⁻³ and from 10⁶.
+fn sig(v: f64, digits: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    // The decimal exponent after rounding (99.999 → 1.000e2).
+    let s = format!("{v:.*e}", digits - 1);
+    let e: i32 = s[s.find('e').map_or(s.len(), |i| i + 1)..]
+        .parse()
+        .unwrap_or(0);
+    if !(-3..6).contains(&e) {
+        return s;
+    }
+    let dec = (digits as i32 - 1 - e).max(0) as usize;
+    format!("{v:.dec$}")
+}
+
+/// A length with 4 significant digits and a suitable unit, e.g. `1.500 mm`.
+fn length_text(v: f64) -> String {
+    let (s, u) = length_unit(v);
+    format!("{} {u}", sig(v / s, 4))
+}
+
+// --------------------------------------------------------------------- plots
+
+/// Pixel columns of a plot: decimation keeps at most two points per column.
+const COLUMNS: usize = 1000;
+
+fn plot_prefix(prefix: &Path, file: &Path) -> PathBuf {
+    if prefix.is_dir() {
+        prefix.join(file.file_stem().unwrap_or(file.as_os_str()))
+    } else {
+        prefix.to_path_buf()
+    }
+}
+
+fn suffixed(prefix: &Path, suffix: &str) -> PathBuf {
+    let mut s = prefix.as_os_str().to_owned();
+    s.push(suffix);
+    PathBuf::from(s)
+}
+
+/// Min/max decimation for plotting: of `pts` (x increasing), keeps in each of
+/// `COLUMNS` equal bins of x (of ln x with `log_x`) only the lowest and the
+/// highest point, in their original order, so that the polyline through them
+/// draws the same envelope as the polyline through all points.
+fn decimate(pts: &[(f64, f64)], log_x: bool) -> Vec<(f64, f64)> {
+    if pts.len() <= 2 * COLUMNS {
+        return pts.to_vec();
+    }
+    let t = |x: f64| if log_x { x.ln() } else { x };
+    let t0 = t(pts[0].0);
+    let span = t(pts[pts.len() - 1].0) - t0;
+    if span.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+        return pts.to_vec();
+    }
+    let column = |x: f64| (((t(x) - t0) / span * COLUMNS as f64) as usize).min(COLUMNS - 1);
+    let mut out = Vec::with_capacity(2 * COLUMNS + 2);
+    let flush = |out: &mut Vec<(f64, f64)>, lo: usize, hi: usize| {
+        let (a, b) = (lo.min(hi), lo.max(hi));
+        out.push(pts[a]);
+        if b != a {
+            out.push(pts[b]);
+        }
+    };
+    let (mut current, mut lo, mut hi) = (column(pts[0].0), 0, 0);
+    for (i, &(x, y)) in pts.iter().enumerate().skip(1) {
+        let c = column(x);
+        if c != current {
+            flush(&mut out, lo, hi);
+            (current, lo, hi) = (c, i, i);
+        } else if y < pts[lo].1 {
+            lo = i;
+        } else if y > pts[hi].1 {
+            hi = i;
+        }
+    }
+    flush(&mut out, lo, hi);
+    out
+}
+
+/// A polyline of a chart.
+struct Line {
+    name: String,
+    pts: Vec<(f64, f64)>,
+    color: RGBColor,
+    width: u32,
+}
+
+fn line(name: impl Into<String>, pts: Vec<(f64, f64)>, color: RGBColor, width: u32) -> Line {
+    Line {
+        name: name.into(),
+        pts,
+        color,
+        width,
+    }
+}
+
+/// Data range of `lines` along x (`x = true`) or y, padded by 5 % on y, never
+/// empty.
+fn range(lines: &[Line], x: bool, pad: f64) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in lines
+        .iter()
+        .flat_map(|l| l.pts.iter().map(|p| if x { p.0 } else { p.1 }))
+    {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !(lo.is_finite() && hi.is_finite()) {
+        return (0.0, 1.0);
+    }
+    if hi <= lo {
+        let d = if lo == 0.0 { 1.0 } else { lo.abs() * 0.1 };
+        return (lo - d, hi + d);
+    }
+    let p = pad * (hi - lo);
+    (lo - p, hi + p)
+}
+
+/// Draws `lines` on linear axes in `area`.
+fn linear_chart(
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    caption: &str,
+    x_desc: &str,
+    y_desc: &str,
+    lines: &[Line],
+) -> Res<()> {
+    let (x0, x1) = range(lines, true, 0.0);
+    let (y0, y1) = range(lines, false, 0.05);
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, ("sans-serif", 20))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(75)
+        .build_cartesian_2d(x0..x1, y0..y1)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .draw()?;
+    draw_lines(&mut chart, lines)
+}
+
+fn draw_lines<'a, 'b: 'a, X, Y>(
+    chart: &mut ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, Y>>,
+    lines: &[Line],
+) -> Res<()>
+where
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    for l in lines {
+        let style = l.color.stroke_width(l.width);
+        chart
+            .draw_series(LineSeries::new(l.pts.iter().copied(), style))?
+            .label(l.name.as_str())
+            .legend(move |(a, b)| PathElement::new(vec![(a, b), (a + 20, b)], style));
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .border_style(BLACK)
+        .background_style(WHITE.mix(0.8))
+        .draw()?;
+    Ok(())
+}
+
+/// Renders an SVG of `size` pixels with `draw` and writes it to `path`.
+fn write_svg(
+    path: &Path,
+    size: (u32, u32),
+    draw: impl FnOnce(&DrawingArea<SVGBackend<'_>, Shift>) -> Res<()>,
+) -> Res<()> {
+    let mut buf = String::new();
+    {
+        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
+        root.fill(&WHITE)?;
+        draw(&root)?;
+        root.present()?;
+    }
+    std::fs::write(path, buf).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(())
+}
+
+/// The four plots of a line scan; returns the paths written.
+fn line_plots(prefix: &Path, a: &LineAnalysis, args: &ProfileArgs) -> Res<Vec<String>> {
+    let dx = a.analysed.dx();
+    let n = a.analysed.len();
+    let z = a.analysed.heights();
+    // The mean line is the level z̄ of the analysed profile over the
+    // evaluation length; in the coordinates of the measured profile it is
+    // raw − (analysed − z̄): the removed form, plus the Gaussian mean line
+    // with a cut-off.
+    let zbar = z[..a.evaluated].iter().sum::<f64>() / a.evaluated as f64;
+    let raw = &a.raw.heights()[a.first..a.first + n];
+    let raw_mean = raw.iter().sum::<f64>() / n as f64;
+    let xs: Vec<f64> = (0..n).map(|j| a.analysed.x(j)).collect();
+    let (xs_scale, xu) = length_unit(xs[0].abs().max(xs[n - 1].abs()));
+    let measured: Vec<(f64, f64)> = xs
+        .iter()
+        .zip(raw)
+        .map(|(&x, &r)| (x, r - raw_mean))
+        .collect();
+    let mean_line: Vec<(f64, f64)> = xs
+        .iter()
+        .zip(raw.iter().zip(z))
+        .map(|(&x, (&r, &h))| (x, r - (h - zbar) - raw_mean))
+        .collect();
+    let rough: Vec<(f64, f64)> = xs.iter().zip(z).map(|(&x, &h)| (x, h - zbar)).collect();
+    let top_span = measured
+        .iter()
+        .chain(&mean_line)
+        .fold(0.0f64, |m, p| m.max(p.1.abs()));
+    let bottom_span = rough.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
+    let scaled = |pts: &[(f64, f64)], ys: f64| -> Vec<(f64, f64)> {
+        decimate(pts, false)
+            .into_iter()
+            .map(|(x, y)| (x / xs_scale, y / ys))
+            .collect()
+    };
+    let (ts, tu) = length_unit(top_span);
+    let (bs, bu) = length_unit(bottom_span);
+    let mean_name = match (args.cutoff, args.detrend) {
+        (Some(lc), _) => format!("mean line (Gaussian, λc = {})", length_text(lc)),
+        (None, Detrend::None | Detrend::Mean) => "mean line (mean height)".to_string(),
+        (None, d) => format!("mean line (least-squares {})", d.name()),
+    };
+    let name = args
+        .file
+        .file_name()
+        .map_or(String::new(), |s| s.to_string_lossy().into_owned());
+    let x_desc = format!("position x / {xu}");
+    let mut written = Vec::new();
+
+    let path = suffixed(prefix, "-profile.svg");
+    write_svg(&path, (1000, 900), |root| {
+        let panels = root.split_evenly((2, 1));
+        linear_chart(
+            &panels[0],
+            &format!("{name}: measured profile (about its mean) and mean line"),
+            &x_desc,
+            &format!("height z / {tu}"),
+            &[
+                line("measured", scaled(&measured, ts), BLUE, 1),
+                line(mean_name.as_str(), scaled(&mean_line, ts), RED, 2),
+            ],
+        )?;
+        let x_end = [xs[0] / xs_scale, xs[n - 1] / xs_scale];
+        linear_chart(
+            &panels[1],
+            "profile about its mean line (analysed)",
+            &x_desc,
+            &format!("height Z / {bu}"),
+            &[
+                line("Z = z − mean line", scaled(&rough, bs), BLUE, 1),
+                line(
+                    "mean line",
+                    x_end.iter().map(|&x| (x, 0.0)).collect(),
+                    RED,
+                    2,
+                ),
+            ],
+        )
+    })?;
+    written.push(path.display().to_string());
+
+    // ACF up to half the analysed length (beyond it the biased estimator
+    // rests on fewer than half the pairs).
+    let acf = a.analysed.acf()?;
+    let rho = acf.normalized();
+    let half = (n / 2).max(2);
+    let (ls, lu) = length_unit(acf.lag(half - 1));
+    let pts: Vec<(f64, f64)> = (0..half).map(|k| (acf.lag(k), rho[k])).collect();
+    let pts: Vec<(f64, f64)> = decimate(&pts, false)
+        .into_iter()
+        .map(|(d, r)| (d / ls, r))
+        .collect();
+    let path = suffixed(prefix, "-acf.svg");
+    let caption = match a.correlation_length {
+        Some(c) => format!(
+            "{name}: autocorrelation, R(0) = Rq² = {:.4e} m², 1/e length {}",
+            acf.r[0],
+            length_text(c)
+        ),
+        None => format!("{name}: autocorrelation, R(0) = {:.4e} m²", acf.r[0]),
+    };
+    write_svg(&path, (900, 600), |root| {
+        linear_chart(
+            root,
+            &caption,
+            &format!("lag δ / {lu}"),
+            "ACF R(δ) / R(0)",
+            &[
+                line("normalised ACF", pts, BLUE, 1),
+                line(
+                    "1/e",
+                    vec![
+                        (0.0, (-1.0f64).exp()),
+                        (acf.lag(half - 1) / ls, (-1.0f64).exp()),
+                    ],
+                    RGBColor(150, 150, 150),
+                    1,
+                ),
+            ],
+        )
+    })?;
+    written.push(path.display().to_string());
+
+    // PSD: the Hann-windowed periodogram, which the power law is fitted to
+    // (the rectangular one, whose moments are reported, leaks at high q for
+    // steep spectra).
+    let g = psd_windowed(z, dx, Window::Hann)?;
+    let gmax = g.c.iter().skip(1).fold(0.0f64, |m, &c| m.max(c));
+    let floor = gmax * 1e-16;
+    let pts: Vec<(f64, f64)> =
+        g.q.iter()
+            .zip(&g.c)
+            .skip(1)
+            .filter(|&(_, &c)| c > floor)
+            .map(|(&q, &c)| (q, c))
+            .collect();
+    // Plotted as log10 q, log10 G on linear axes, labelled with q and G
+    // (plotters' log axes drop every label below 2.2e-16).
+    let log = |pts: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        pts.iter().map(|&(q, g)| (q.log10(), g.log10())).collect()
+    };
+    let mut lines = vec![line(
+        "PSD G(q), Hann window",
+        log(&decimate(&pts, true)),
+        BLUE,
+        1,
+    )];
+    if let Some(f) = &a.fit {
+        let fit = [f.q_min, f.q_max].map(|q| (q, f.prefactor * q.powf(f.slope)));
+        lines.push(line(
+            format!("power law G ∝ q^{:.3}, H = {:.3}", f.slope, f.hurst),
+            log(&fit),
+            RED,
+            2,
+        ));
+    }
+    let (q0, q1) = range(&lines, true, 0.0);
+    let (g0, g1) = range(&lines, false, 0.03);
+    let path = suffixed(prefix, "-psd.svg");
+    write_svg(&path, (900, 600), |root| {
+        let mut chart = ChartBuilder::on(root)
+            .caption(
+                format!("{name}: power spectral density (one-sided)"),
+                ("sans-serif", 20),
+            )
+            .margin(15)
+            .x_label_area_size(45)
+            .y_label_area_size(75)
+            .build_cartesian_2d(q0..q1, g0..g1)?;
+        chart
+            .configure_mesh()
+            .x_desc("wavenumber q / (rad/m)")
+            .y_desc("PSD G(q) / m³")
+            .max_light_lines(0)
+            .x_label_formatter(&decade_label)
+            .y_label_formatter(&decade_label)
+            .draw()?;
+        draw_lines(&mut chart, &lines)
+    })?;
+    written.push(path.display().to_string());
+
+    let path = suffixed(prefix, "-material-ratio.svg");
+    material_ratio_plot(&path, &z[..a.evaluated])?;
+    written.push(path.display().to_string());
+    Ok(written)
+}
+
+/// Label of a log10 value: `1e-20` at whole decades, else the value.
+fn decade_label(v: &f64) -> String {
+    if (v - v.round()).abs() < 1e-9 {
+        format!("1e{}", v.round())
+    } else {
+        format!("{:.2e}", 10f64.powf(*v))
+    }
+}
+
+/// The Abbott–Firestone curve of `heights` (m): level c from the mean line
+/// against the material ratio Rmr.
+fn material_ratio_plot(path: &Path, heights: &[f64]) -> Res<()> {
+    let curve = MaterialRatioCurve::new(heights)?.curve(COLUMNS + 1);
+    let span = curve.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
+    let (s, u) = length_unit(span);
+    let pts: Vec<(f64, f64)> = curve.iter().map(|&(r, c)| (100.0 * r, c / s)).collect();
+    write_svg(path, (900, 600), |root| {
+        linear_chart(
+            root,
+            "material-ratio (Abbott–Firestone) curve",
+            "material ratio Rmr / %",
+            &format!("height c (from the mean line) / {u}"),
+            &[line("c(Rmr)", pts, BLUE, 2)],
+        )
+    })
+}
