@@ -81,7 +81,10 @@ pub mod vec {
 
     /// Deserialise.
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error> {
-        Ok(Vec::<Strict>::deserialize(d)?.into_iter().map(|e| e.0).collect())
+        Ok(Vec::<Strict>::deserialize(d)?
+            .into_iter()
+            .map(|e| e.0)
+            .collect())
     }
 }
 

@@ -751,4 +751,3 @@ impl LjSolver {
         })
     }
 }
-
