@@ -298,7 +298,7 @@ impl LjSphere {
     }
 
     /// Load-controlled pull-off force (N, negative: tensile) on `n_grid` cells
-    /// (0 = converged default), via [`LjSolver::pull_off`].
+    /// (0 = converged default), via [`LjSolver::pull_off_with`].
     pub fn pull_off_force(&self, n_grid: usize) -> Result<f64> {
         Ok(self.pull_off(n_grid)?.force * self.force_scale())
     }
