@@ -12,14 +12,19 @@ fn manifest() -> PathBuf {
 }
 
 /// The binary: the one Cargo built for this test run
-/// (`cargo test --features cli`); otherwise built once per run in its own
+/// (`cargo test --features cli`) when it exists; otherwise built once per run in its own
 /// target directory, which keeps the library artifacts the C-example tests
 /// link against untouched.
 fn binary() -> &'static Path {
     static BIN: OnceLock<PathBuf> = OnceLock::new();
     BIN.get_or_init(|| {
-        if let Some(bin) = option_env!("CARGO_BIN_EXE_asperity") {
-            return PathBuf::from(bin);
+        // Cargo names the binary even when its required feature `cli` is
+        // off and it was not built (plain `cargo test`): use it only if it
+        // exists.
+        if let Some(bin) = option_env!("CARGO_BIN_EXE_asperity").map(PathBuf::from) {
+            if bin.is_file() {
+                return bin;
+            }
         }
         let target = manifest().join("target").join("cli-test");
         let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
