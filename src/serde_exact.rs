@@ -39,7 +39,8 @@ fn value<E: serde::de::Error>(n: Num, lenient: bool) -> Result<f64, E> {
     }
 }
 
-fn write_seq<S: Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
+/// Serialise a `[f64]`.
+pub fn write_seq<S: Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
     let mut seq = s.serialize_seq(Some(v.len()))?;
     for x in v {
         seq.serialize_element(&format!("{x:e}"))?;
@@ -47,11 +48,32 @@ fn write_seq<S: Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
     seq.end()
 }
 
-fn write_opt<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+/// Serialise an `Option<f64>`.
+pub fn write_opt<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
     match v {
         Some(x) => s.serialize_some(&format!("{x:e}")),
         None => s.serialize_none(),
     }
+}
+
+/// One exact value; a plain JSON number is accepted only when `LENIENT`.
+struct Exact<const LENIENT: bool>(f64);
+
+impl<'de, const LENIENT: bool> Deserialize<'de> for Exact<LENIENT> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        value(Num::deserialize(d)?, LENIENT).map(Exact)
+    }
+}
+
+fn read_vec<'de, D: Deserializer<'de>, const L: bool>(d: D) -> Result<Vec<f64>, D::Error> {
+    Ok(Vec::<Exact<L>>::deserialize(d)?
+        .into_iter()
+        .map(|e| e.0)
+        .collect())
+}
+
+fn read_opt<'de, D: Deserializer<'de>, const L: bool>(d: D) -> Result<Option<f64>, D::Error> {
+    Ok(Option::<Exact<L>>::deserialize(d)?.map(|e| e.0))
 }
 
 /// Serialise one `f64`.
@@ -61,92 +83,60 @@ pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
 
 /// Deserialise one `f64` (a string only).
 pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
-    value(Num::deserialize(d)?, false)
+    Exact::<false>::deserialize(d).map(|e| e.0)
 }
-
-#[derive(Deserialize)]
-struct Strict(#[serde(with = "crate::serde_exact")] f64);
-
-#[derive(Deserialize)]
-struct Lenient(#[serde(with = "crate::serde_exact::lenient")] f64);
 
 /// `Vec<f64>`, strict.
 pub mod vec {
+    pub(crate) use super::write_seq as serialize;
     use super::*;
-
-    /// Serialise.
-    pub fn serialize<S: Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
-        write_seq(v, s)
-    }
 
     /// Deserialise.
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error> {
-        Ok(Vec::<Strict>::deserialize(d)?
-            .into_iter()
-            .map(|e| e.0)
-            .collect())
+        read_vec::<D, false>(d)
     }
 }
 
 /// `Option<f64>`, strict.
 pub mod opt {
+    pub(crate) use super::write_opt as serialize;
     use super::*;
-
-    /// Serialise.
-    pub fn serialize<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
-        write_opt(v, s)
-    }
 
     /// Deserialise.
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
-        Ok(Option::<Strict>::deserialize(d)?.map(|e| e.0))
+        read_opt::<D, false>(d)
     }
 }
 
 /// The same, reading plain JSON numbers as well.
 pub mod lenient {
+    pub(crate) use super::serialize;
     use super::*;
-
-    /// Serialise one `f64`.
-    pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
-        super::serialize(v, s)
-    }
 
     /// Deserialise one `f64` (a string or a number).
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
-        value(Num::deserialize(d)?, true)
+        Exact::<true>::deserialize(d).map(|e| e.0)
     }
 
     /// `Vec<f64>`, lenient.
     pub mod vec {
+        pub(crate) use super::super::write_seq as serialize;
         use super::super::*;
-
-        /// Serialise.
-        pub fn serialize<S: Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
-            write_seq(v, s)
-        }
 
         /// Deserialise.
         pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error> {
-            Ok(Vec::<Lenient>::deserialize(d)?
-                .into_iter()
-                .map(|e| e.0)
-                .collect())
+            read_vec::<D, true>(d)
         }
     }
 
     /// `Option<f64>`, lenient.
     pub mod opt {
+        pub(crate) use super::super::write_opt as serialize;
         use super::super::*;
-
-        /// Serialise.
-        pub fn serialize<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
-            write_opt(v, s)
-        }
 
         /// Deserialise.
         pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
-            Ok(Option::<Lenient>::deserialize(d)?.map(|e| e.0))
+            read_opt::<D, true>(d)
         }
     }
 }
