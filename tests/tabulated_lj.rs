@@ -217,6 +217,108 @@ fn mu_0_1_0_5_1_at_n128() {
     check(1.0, 96, 200, true);
 }
 
+/// Above μ = 1 the solver follows the contact edge on a moving mesh (neck
+/// phase on a fixed mesh, then the edge phase, see `lj_sphere::edge`), so no
+/// single fixed-grid solve reproduces its path: the table is checked against
+/// every stable point of `LjSolver::curve` (the same discrete model), and
+/// its jump and pull-off points against the curve's.
+fn check_edge_table(mu: f64, n: usize) {
+    let lj = LjSphere::from_tabor(mu).unwrap();
+    let t0 = Instant::now();
+    let t = TabulatedLaw::from_lj_sphere(&lj, n, 1e-4).unwrap();
+    let build = t0.elapsed();
+    assert!(t.measured_error() <= t.tolerance());
+    assert_eq!(t.branch_count(), 2, "μ = {mu}: one hysteresis loop");
+    let c = lj.solver(n).unwrap().curve().unwrap();
+    let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+    let po = t.pull_off_force(Control::Load).unwrap() / PI;
+    assert!(
+        rel(po, c.pull_off_load.force) < 1e-7,
+        "pull-off {po} vs {:?}",
+        c.pull_off_load
+    );
+    let ji = c.jump_in.unwrap();
+    let jo = c.jump_out.unwrap();
+    let (_, hi0) = t.branch_range(0).unwrap();
+    let (lo1, _) = t.branch_range(1).unwrap();
+    assert!(
+        rel(hi0, ji.approach) < 1e-7,
+        "jump-in {hi0} vs {}",
+        ji.approach
+    );
+    assert!(
+        rel(lo1, jo.approach) < 1e-7,
+        "jump-out {lo1} vs {}",
+        jo.approach
+    );
+    // Every stable curve point: the far piece before the jump-in and the
+    // contact piece after the jump-out (the curve's points are ordered
+    // along the path).
+    let i_in = c
+        .points
+        .iter()
+        .position(|p| p.approach >= ji.approach)
+        .unwrap();
+    let i_out = c
+        .points
+        .iter()
+        .rposition(|p| p.approach <= jo.approach)
+        .unwrap();
+    let mut worst = (0.0f64, f64::NAN);
+    let mut count = 0;
+    for (i, p) in c.points.iter().enumerate() {
+        let branch = if i < i_in {
+            0
+        } else if i > i_out && p.force <= 9.0 {
+            1
+        } else {
+            continue;
+        };
+        let st = ContactState {
+            branch,
+            ..Default::default()
+        };
+        let (r, _) = t.eval(p.approach, &st).unwrap();
+        let want = NormalResponse {
+            force: PI * p.force,
+            delta: p.approach,
+            contact_radius: p.contact_radius,
+            ..Default::default()
+        };
+        let e = t.relative_error(&want, &r);
+        count += 1;
+        if e > worst.0 {
+            worst = (e, p.approach);
+        }
+    }
+    assert!(count > 100, "{count} points compared");
+    assert!(
+        worst.0 <= t.tolerance(),
+        "μ = {mu}: error {} at ᾱ = {}",
+        worst.0,
+        worst.1
+    );
+    // Far away: the rigid law.
+    for al in [-30.0 - 4.0 * mu, -1000.0] {
+        let (r, _) = t.eval(al, &ContactState::default()).unwrap();
+        let want = PI * rigid_force_bar(al);
+        assert!(rel(r.force, want) < 1e-4, "ᾱ = {al}: {} vs {want}", r.force);
+    }
+    eprintln!(
+        "μ = {mu}, N = {n}: build {build:?}, knots {}, measured {:.3e}, worst vs curve {:.3e} \
+         at ᾱ = {:.4} over {count} points",
+        t.knot_count(),
+        t.measured_error(),
+        worst.0,
+        worst.1
+    );
+}
+
+#[test]
+fn above_mu_1_the_edge_continuation_is_tabulated() {
+    check_edge_table(3.0, 64);
+}
+
 #[test]
 fn serde_round_trip_is_bit_identical() {
     let lj = LjSphere::from_tabor(0.5).unwrap();

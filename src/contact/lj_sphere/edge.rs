@@ -15,10 +15,12 @@
 //! The curve is split at the moment the edge zone has formed:
 //!
 //! 1. **Neck phase** (fixed mesh, half the cells in a band of half-width `w`
-//!    at the centre): pseudo-arclength continuation from far away through the
-//!    jump-in until the edge marker `m` (first crossing of the peak-attraction
-//!    gap `h̄ = 3^{1/6}` from the centre, [`LjSolver::edge_marker`]) reaches
-//!    `0.75 w`.
+//!    centred at `m_s = 0.75 w`): pseudo-arclength continuation from far away
+//!    through the jump-in until the edge marker `m` (first crossing of the
+//!    peak-attraction gap `h̄ = 3^{1/6}` from the centre,
+//!    [`LjSolver::edge_marker`]) reaches `m_s`, located exactly as a root
+//!    along the path. That mesh is the edge phase's mesh at `m = m_s`, so the
+//!    two phases share the junction state.
 //! 2. **Edge phase**: the marker itself is the continuation parameter. For
 //!    each `m` the mesh puts its band (half the cells, half-width
 //!    `w = clamp(N μ^{-3/2}/16, 0.01, 2)`) centred on `m`, the influence
@@ -57,7 +59,8 @@ pub(super) struct EdgeState {
 
 /// The two phases of a large-μ continuation.
 pub(super) struct EdgePath {
-    /// Solver of the neck phase (band at the centre).
+    /// Solver of the neck phase (band at the switch marker `0.75 w`: the
+    /// first edge-phase mesh).
     pub(super) neck_solver: LjSolver,
     /// Neck-phase states (on `neck_solver`'s mesh).
     pub(super) neck: Vec<State>,
@@ -122,30 +125,10 @@ impl LjSolver {
         row
     }
 
-    /// Linear interpolation of node values `v` of this mesh at the radii
-    /// `to` (constant beyond the end nodes).
-    fn interp_at(&self, v: &[f64], to: &[f64]) -> Vec<f64> {
-        let x = &self.mesh.x;
-        let n = x.len();
-        to.iter()
-            .map(|&r| {
-                if r <= x[0] {
-                    return v[0];
-                }
-                if r >= x[n - 1] {
-                    return v[n - 1];
-                }
-                let j = x.partition_point(|&q| q <= r) - 1;
-                let t = (r - x[j]) / (x[j + 1] - x[j]);
-                v[j] + t * (v[j + 1] - v[j])
-            })
-            .collect()
-    }
-
     /// The equilibrium with the marker at `m`, on the mesh banded at `m`,
     /// from the guess `(y, al)` (node values of that mesh). Its tangent and
     /// path derivatives are left for [`derivs_in_m`].
-    fn edge_solve(
+    pub(super) fn edge_solve(
         &self,
         m: f64,
         plan: (f64, f64),
@@ -175,14 +158,17 @@ impl LjSolver {
     ) -> Result<EdgePath> {
         let (w, _) = plan;
         let m_switch = 0.75 * w;
-        let neck_solver = self.rebanded(0.0, plan)?;
+        // The neck phase runs on the mesh banded at the switch marker, the
+        // first edge mesh: the phases meet at one equilibrium of one
+        // discrete problem, so the path is continuous across the switch.
+        let neck_solver = self.rebanded(m_switch, plan)?;
         let ns = &neck_solver;
-        let (neck, mut bw) = ns.path_march(max_force, target, &|st: &[State]| {
+        let (mut neck, mut bw) = ns.path_march(max_force, target, &|st: &[State]| {
             ns.edge_marker(&st[st.len() - 1].y) >= m_switch
         })?;
-        let last = neck.last().unwrap();
         let mut edge: Vec<EdgeState> = Vec::new();
-        if last.pt.force >= max_force {
+        let k = neck.len();
+        if neck[k - 1].pt.force >= max_force || k < 2 {
             return Ok(EdgePath {
                 neck_solver,
                 neck,
@@ -191,30 +177,20 @@ impl LjSolver {
                 plan,
             });
         }
-        // First edge state: the last neck state moved to the banded mesh
-        // (interpolation of w̄ = h̄ − r̄²/2, exact for a rigid profile).
-        let m0 = ns.edge_marker(&last.y);
-        let probe = self.rebanded(m0, plan)?;
-        let xn = &ns.mesh.x;
-        let wb: Vec<f64> = (0..xn.len())
-            .map(|i| last.y[i].exp() - 0.5 * xn[i] * xn[i])
-            .collect();
-        let y0: Vec<f64> = ns
-            .interp_at(&wb, &probe.mesh.x)
-            .iter()
-            .zip(&probe.mesh.x)
-            .map(|(v, x)| (v + 0.5 * x * x).max(1e-3).ln())
-            .collect();
-        // Re-converged at the same approach (the marker of a neck that has
-        // just formed is a poor parameter: the gap there is nearly flat),
-        // then the marker of the result is the first edge parameter.
-        let mut y0 = y0;
-        let mut al0 = last.al;
-        bw.invalidate();
-        probe.bnewton(&Con::Approach(last.al), &mut y0, &mut al0, &mut bw, true)?;
-        let m0 = probe.edge_marker(&y0);
-        let st0 = probe.make_state(&y0, al0, vec![0.0; y0.len() + 1], last.s, &bw, false)?;
-        let e0 = EdgeState { m: m0, st: st0 };
+        // The junction: the neck state whose marker is exactly the switch
+        // marker (root along the path), then the same equilibrium under the
+        // marker equation.
+        let phi = |st: &State| ns.edge_marker(&st.y) - m_switch;
+        let junction = ns.path_root(&neck[k - 2], &neck[k - 1], &mut bw, &phi)?;
+        let e0 = self.edge_solve(
+            m_switch,
+            plan,
+            junction.y.clone(),
+            junction.al,
+            junction.s,
+            &mut bw,
+        )?;
+        neck[k - 1] = junction;
         edge.push(e0);
         let metric = self.step_metric(max_force, target);
         let mut dm = 0.5 * w;

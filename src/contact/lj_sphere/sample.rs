@@ -7,6 +7,7 @@
 // NaN-aware comparisons (`!(x > 0.0)`) are intended.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
+use super::edge::EdgeState;
 use super::path::State;
 use super::*;
 use crate::contact::curve::PathPoint;
@@ -66,6 +67,66 @@ struct Node {
     kind: Kind,
     /// (dᾱ/ds, dP̄/ds, da/ds).
     d: [f64; 3],
+}
+
+/// A node of the edge phase (μ > 1, [`super::edge`]): the state on the mesh
+/// banded at its marker radius `m`, with (dᾱ/dm, dP̄/dm, da/dm).
+#[derive(Debug, Clone)]
+struct ENode {
+    e: EdgeState,
+    kind: Kind,
+    d: [f64; 3],
+}
+
+/// Indices of the special points among the emitted path points.
+#[derive(Debug, Default)]
+struct Marks {
+    jump_in: Option<usize>,
+    jump_out: Option<usize>,
+    pull: Option<usize>,
+    onset: Option<usize>,
+}
+
+impl Marks {
+    /// Emit the point `p` of a node of kind `kind` (`d_delta`: dᾱ/dt there),
+    /// with the exact zeros the curve rules ask for.
+    fn push(&mut self, out: &mut Vec<PathPoint>, mut p: PathPoint, kind: Kind, d_delta: f64) {
+        match kind {
+            Kind::Regular => out.push(p),
+            Kind::Turn(d2) => {
+                p.d_delta = 0.0;
+                p.d2_delta = d2;
+                if d2 < 0.0 {
+                    self.jump_in = Some(out.len());
+                } else {
+                    self.jump_out = Some(out.len());
+                }
+                out.push(p);
+            }
+            Kind::Min => {
+                p.d_force = 0.0;
+                self.pull = Some(out.len());
+                out.push(p);
+            }
+            Kind::Zero => {
+                p.force = 0.0;
+                out.push(p);
+            }
+            Kind::Corner(g) => {
+                self.onset = Some(out.len());
+                p.radius = 0.0;
+                p.d_radius = 0.0;
+                out.push(p);
+                out.push(PathPoint {
+                    d_delta: 0.0,
+                    d_force: 0.0,
+                    d_radius: g,
+                    d2_delta: 2.0 * d_delta,
+                    ..p
+                });
+            }
+        }
+    }
 }
 
 /// Refinement criterion: Hermite midpoints within `tol` of the exact ones,
@@ -153,6 +214,19 @@ impl LjSolver {
     ///   `d2_delta = 2 dᾱ/ds`, `d_radius = lim a/τ`); the interval after it is
     ///   sampled in τ.
     ///
+    /// Above μ = 1 the path comes from the edge continuation
+    /// ([`super::edge`]): its neck phase (one fixed mesh) is sampled as
+    /// above; its edge phase is a family of meshes banded at the marker
+    /// radius `m`, so there the parameter is `m`: derivatives by central
+    /// differences in `m` (step 1e-4·w, each a solve on its own banded
+    /// mesh), special points as roots in `m`, bisection in `m` (in
+    /// `τ = √(m − m_c)` after an onset there), and turning points sought
+    /// again between the dense samples (small folds of the discrete model
+    /// near the jump-out on coarse grids are kept as extra branches, not
+    /// smoothed). The two phases share their junction state, so the path is
+    /// continuous. Each edge-phase point costs three banded solves: a table
+    /// at N = 256 takes about a minute at μ = 3.
+    ///
     /// Errors: [`Error::InvalidArgument`] for a tolerance outside
     /// [1e-10, 0.1] or `max_force ≤ 0`; the continuation's errors.
     pub fn path_samples(&self, tolerance: f64) -> Result<LjPathSamples> {
@@ -165,33 +239,82 @@ impl LjSolver {
                 bound: "> 0 (a rigid sphere never comes into contact)",
             });
         }
-        let n = self.n();
         // Coarse continuation beyond the end: the states past `f_end` are the
         // deep tail checks.
         let f_tail = 3.0 * f_end;
         let base_gap = 6.0 + 4.0 * self.mu.sqrt();
         let target = (self.opts.target_points as f64 * (self.opts.start_gap / base_gap).max(1.0))
             .ceil() as usize;
-        let (states, mut bw) = self.path_march(f_tail, target, &|_| false)?;
+        // The fixed-mesh states (the neck phase above μ = 1) and the
+        // edge-phase states, whose first one is the last fixed-mesh state.
+        let (neck_solver, states, edge_states, plan, mut bw) = match self.band_plan() {
+            None => {
+                let (states, bw) = self.path_march(f_tail, target, &|_| false)?;
+                (None, states, Vec::new(), (0.0, 0.0), bw)
+            }
+            Some(plan) => {
+                let p = self.edge_march(plan, f_tail, target, &|_| false)?;
+                (Some(p.neck_solver), p.neck, p.edge, plan, p.bw)
+            }
+        };
+        let ns = neck_solver.as_ref().unwrap_or(self);
+        let nn = ns.n();
+        let end_at = |f: f64| f >= f_end;
+        // Fixed-mesh nodes up to the end.
         let i_end = states
             .iter()
-            .position(|s| s.pt.force >= f_end)
+            .position(|s| end_at(s.pt.force))
             .unwrap_or(states.len() - 1);
         let mut nodes: Vec<Node> = Vec::with_capacity(i_end + 8);
         for st in &states[..=i_end] {
-            let e = self.exactify(st, &mut bw)?;
-            nodes.push(self.node(e, Kind::Regular)?);
+            let e = ns.exactify(st, &mut bw)?;
+            nodes.push(ns.node(e, Kind::Regular)?);
         }
-        let ta = |s: &State| s.t[n];
+        // Edge-phase nodes up to the end (none when the fixed mesh ended).
+        let mut enodes: Vec<ENode> = Vec::new();
+        if i_end + 1 == states.len() && !edge_states.is_empty() {
+            let j_end = edge_states
+                .iter()
+                .position(|e| end_at(e.st.pt.force))
+                .unwrap_or(edge_states.len() - 1);
+            for e in &edge_states[..=j_end] {
+                enodes.push(self.enode(e.clone(), Kind::Regular, plan, &mut bw)?);
+            }
+        }
+        let deep: Vec<(f64, f64, f64)> = if enodes.is_empty() {
+            states[i_end + 1..]
+                .iter()
+                .map(|s| (s.al, s.pt.force, s.pt.contact_radius))
+                .collect()
+        } else {
+            edge_states[enodes.len()..]
+                .iter()
+                .map(|e| (e.st.al, e.st.pt.force, e.st.pt.contact_radius))
+                .collect()
+        };
+        let ta = |s: &State| s.t[nn];
         // Turning points.
         let mut i = 0;
         while i + 1 < nodes.len() {
             let (a, b) = (ta(&nodes[i].st), ta(&nodes[i + 1].st));
             if a * b < 0.0 && nodes[i].kind == Kind::Regular && nodes[i + 1].kind == Kind::Regular {
-                let st = self.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &ta)?;
-                let d2 = self.second_derivative(&st, &mut bw)?;
-                let nd = self.node(st, Kind::Turn(d2))?;
+                let st = ns.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &ta)?;
+                let d2 = ns.second_derivative(&st, &mut bw)?;
+                let nd = ns.node(st, Kind::Turn(d2))?;
                 nodes.insert(i + 1, nd);
+                i += 2;
+            } else {
+                i += 1;
+            }
+        }
+        let mut i = 0;
+        while i + 1 < enodes.len() {
+            if enodes[i].d[0] * enodes[i + 1].d[0] < 0.0 {
+                let e = self.eroot(&enodes[i], &enodes[i + 1], plan, &mut bw, &|e| e.d[0])?;
+                let d2 = self.esecond(&e, plan, &mut bw)?;
+                let mut e = e;
+                e.kind = Kind::Turn(d2);
+                enodes.insert(i + 1, e);
                 i += 2;
             } else {
                 i += 1;
@@ -205,10 +328,10 @@ impl LjSolver {
             let st = if gap(&nodes[i + 1].st) == 0.0 {
                 nodes[i + 1].st.clone()
             } else {
-                self.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &gap)?
+                ns.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &gap)?
             };
-            let g = self.onset_slope(&st, &mut bw)?;
-            let mut nd = self.node(st, Kind::Corner(g))?;
+            let g = ns.onset_slope(&st, &mut bw)?;
+            let mut nd = ns.node(st, Kind::Corner(g))?;
             nd.st.pt.contact_radius = 0.0;
             nd.d[2] = 0.0;
             if gap(&nodes[i + 1].st) == 0.0 {
@@ -216,34 +339,84 @@ impl LjSolver {
             } else {
                 nodes.insert(i + 1, nd);
             }
+        } else if let Some(i) = (0..enodes.len().saturating_sub(1))
+            .find(|&i| gap(&enodes[i].e.st) > 0.0 && gap(&enodes[i + 1].e.st) <= 0.0)
+        {
+            let mut e = self.eroot(&enodes[i], &enodes[i + 1], plan, &mut bw, &|e| gap(&e.e.st))?;
+            let g = self.eonset_slope(&e, plan, &mut bw)?;
+            e.kind = Kind::Corner(g);
+            e.e.st.pt.contact_radius = 0.0;
+            e.d[2] = 0.0;
+            enodes.insert(i + 1, e);
         }
-        // Force minimum and zero on the last stable piece.
+        // Force minimum and zero on the last stable piece (fixed-mesh
+        // nodes, then edge-phase nodes).
+        let not_found = Error::NotConverged {
+            what: "LJ sphere path samples: no force minimum on the last stable piece",
+            iterations: 0,
+            residual: f64::NAN,
+        };
+        let last_turn_e = enodes
+            .iter()
+            .rposition(|nd| matches!(nd.kind, Kind::Turn(_)));
         let last_turn = nodes
             .iter()
             .rposition(|nd| matches!(nd.kind, Kind::Turn(_)))
             .unwrap_or(0);
-        let dfs = |s: &State| s.df;
-        let imin = (last_turn..nodes.len() - 1)
-            .find(|&i| nodes[i].d[1] < 0.0 && nodes[i + 1].d[1] >= 0.0)
-            .ok_or(Error::NotConverged {
-                what: "LJ sphere path samples: no force minimum on the last stable piece",
-                iterations: 0,
-                residual: f64::NAN,
-            })?;
-        let st = self.path_root(&nodes[imin].st, &nodes[imin + 1].st, &mut bw, &dfs)?;
-        let nd = self.node(st, Kind::Min)?;
-        nodes.insert(imin + 1, nd);
+        // The load-controlled pull-off is the last minimum (the one a
+        // retraction from deep contact under load control reaches first).
+        let emin = (last_turn_e.unwrap_or(0)..enodes.len().saturating_sub(1))
+            .rev()
+            .find(|&i| enodes[i].d[1] < 0.0 && enodes[i + 1].d[1] >= 0.0);
+        let neck_min = if emin.is_some() || last_turn_e.is_some() {
+            None
+        } else {
+            (last_turn..nodes.len() - 1)
+                .rev()
+                .find(|&i| nodes[i].d[1] < 0.0 && nodes[i + 1].d[1] >= 0.0)
+        };
         let force = |s: &State| s.pt.force;
-        if let Some(i) = (imin + 1..nodes.len() - 1)
-            .find(|&i| force(&nodes[i].st) < 0.0 && force(&nodes[i + 1].st) >= 0.0)
-        {
-            let st = self.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &force)?;
-            let nd = self.node(st, Kind::Zero)?;
+        let (f_min, a_min);
+        if let Some(imin) = neck_min {
+            let dfs = |s: &State| s.df;
+            let st = ns.path_root(&nodes[imin].st, &nodes[imin + 1].st, &mut bw, &dfs)?;
+            let nd = ns.node(st, Kind::Min)?;
+            (f_min, a_min) = (nd.st.pt.force, nd.st.pt.contact_radius);
+            nodes.insert(imin + 1, nd);
+        } else {
+            let imin = emin.ok_or(not_found)?;
+            let mut e = self.eroot(&enodes[imin], &enodes[imin + 1], plan, &mut bw, &|e| e.d[1])?;
+            e.kind = Kind::Min;
+            (f_min, a_min) = (e.e.st.pt.force, e.e.st.pt.contact_radius);
+            enodes.insert(imin + 1, e);
+        }
+        let imin_n = nodes.iter().position(|nd| nd.kind == Kind::Min);
+        let zero_n = imin_n.and_then(|imin| {
+            (imin + 1..nodes.len() - 1)
+                .find(|&i| force(&nodes[i].st) < 0.0 && force(&nodes[i + 1].st) >= 0.0)
+        });
+        if let Some(i) = zero_n {
+            let st = ns.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &force)?;
+            let nd = ns.node(st, Kind::Zero)?;
             nodes.insert(i + 1, nd);
+        } else {
+            // After the minimum: all the edge phase when the minimum is on
+            // the fixed mesh.
+            let from = enodes
+                .iter()
+                .position(|nd| nd.kind == Kind::Min)
+                .unwrap_or(0);
+            if let Some(i) = (from..enodes.len().saturating_sub(1))
+                .find(|&i| force(&enodes[i].e.st) < 0.0 && force(&enodes[i + 1].e.st) >= 0.0)
+            {
+                let mut e = self.eroot(&enodes[i], &enodes[i + 1], plan, &mut bw, &|e| {
+                    force(&e.e.st)
+                })?;
+                e.kind = Kind::Zero;
+                enodes.insert(i + 1, e);
+            }
         }
         // Error scales.
-        let f_min = nodes[imin + 1].st.pt.force;
-        let a_min = nodes[imin + 1].st.pt.contact_radius;
         // tol/8 as specified, halved again after the contact onset, where
         // the table interpolates in √(Δ − Δ_onset) rather than along τ.
         let crit = Crit {
@@ -254,54 +427,55 @@ impl LjSolver {
         };
         // Dense sampling.
         let mut out: Vec<PathPoint> = Vec::new();
-        let (mut jump_in, mut jump_out, mut pull, mut onset) = (None, None, 0, None);
+        let mut marks = Marks::default();
         for k in 0..nodes.len() {
             let nd = &nodes[k];
-            let mut p = path_point(&nd.st, nd.d);
-            match nd.kind {
-                Kind::Regular => out.push(p),
-                Kind::Turn(d2) => {
-                    p.d_delta = 0.0;
-                    p.d2_delta = d2;
-                    if d2 < 0.0 {
-                        jump_in = Some(out.len());
-                    } else {
-                        jump_out = Some(out.len());
-                    }
-                    out.push(p);
-                }
-                Kind::Min => {
-                    p.d_force = 0.0;
-                    pull = out.len();
-                    out.push(p);
-                }
-                Kind::Zero => {
-                    p.force = 0.0;
-                    out.push(p);
-                }
-                Kind::Corner(g) => {
-                    onset = Some(out.len());
-                    p.radius = 0.0;
-                    p.d_radius = 0.0;
-                    out.push(p);
-                    out.push(PathPoint {
-                        d_delta: 0.0,
-                        d_force: 0.0,
-                        d_radius: g,
-                        d2_delta: 2.0 * nd.d[0],
-                        ..p
-                    });
-                }
-            }
+            marks.push(&mut out, path_point(&nd.st, nd.d), nd.kind, nd.d[0]);
             if k + 1 < nodes.len() {
-                self.sample_interval(nd, &nodes[k + 1], &crit, &mut bw, &mut out)?;
+                ns.sample_interval(nd, &nodes[k + 1], &crit, &mut bw, &mut out)?;
+            }
+        }
+        // Edge phase: densified first, then turning points between dense
+        // neighbours (the discrete model's small folds, which the coarse
+        // nodes can step over) refined, then emitted.
+        let mut dense: Vec<ENode> = Vec::with_capacity(4 * enodes.len());
+        for k in 0..enodes.len() {
+            dense.push(enodes[k].clone());
+            if k + 1 < enodes.len() {
+                self.esample_interval(
+                    &enodes[k],
+                    &enodes[k + 1],
+                    plan,
+                    &crit,
+                    &mut bw,
+                    &mut dense,
+                )?;
+            }
+        }
+        let mut i = 0;
+        while i + 1 < dense.len() {
+            let (a, b) = (&dense[i], &dense[i + 1]);
+            let plain = |k: Kind| matches!(k, Kind::Regular | Kind::Min | Kind::Zero);
+            if a.d[0] * b.d[0] < 0.0 && plain(a.kind) && plain(b.kind) {
+                let mut e = self.eroot(a, b, plan, &mut bw, &|e| e.d[0])?;
+                e.kind = Kind::Turn(self.esecond(&e, plan, &mut bw)?);
+                dense.insert(i + 1, e);
+                i += 2;
+            } else {
+                i += 1;
+            }
+        }
+        for (k, nd) in dense.iter().enumerate() {
+            // The first edge node is the last fixed-mesh node.
+            if k > 0 || nodes.is_empty() {
+                marks.push(&mut out, path_point(&nd.e.st, nd.d), nd.kind, nd.d[0]);
             }
         }
         // Tail checks: far (larger central gaps) and deep (beyond the end).
         let mut tail_checks = Vec::new();
         let g0 = self.opts.start_gap;
         for f in [1.25, 1.5, 2.0, 3.0, 5.0, 10.0] {
-            let s = self.solve_at_central_gap(g0 * f, None)?;
+            let s = ns.solve_at_central_gap(g0 * f, None)?;
             tail_checks.push(PathPoint {
                 delta: s.approach,
                 force: s.force,
@@ -312,26 +486,29 @@ impl LjSolver {
                 d2_delta: 0.0,
             });
         }
-        let mut deep_checks = Vec::new();
-        for st in &states[i_end + 1..] {
-            deep_checks.push(PathPoint {
-                delta: st.al,
-                force: st.pt.force,
-                radius: st.pt.contact_radius,
+        let deep_checks = deep
+            .into_iter()
+            .map(|(delta, force, radius)| PathPoint {
+                delta,
+                force,
+                radius,
                 d_delta: 1.0,
                 d_force: 0.0,
                 d_radius: 0.0,
                 d2_delta: 0.0,
-            });
-        }
+            })
+            .collect();
+        let Some(pull) = marks.pull else {
+            return Err(not_found);
+        };
         Ok(LjPathSamples {
             points: out,
             tail_checks,
             deep_checks,
-            jump_in,
-            jump_out,
+            jump_in: marks.jump_in,
+            jump_out: marks.jump_out,
             pull_off_load: pull,
-            contact_onset: onset,
+            contact_onset: marks.onset,
             iterations: bw.w.iterations,
             factorizations: bw.w.factorizations,
         })
@@ -431,7 +608,6 @@ impl LjSolver {
         out: &mut Vec<PathPoint>,
         depth: u32,
     ) -> Result<()> {
-        let n = self.n();
         let pm = 0.5 * (l.0 + r.0);
         let sig = |p: f64| if corner { p * p } else { p };
         let (sl, sr, sm) = (sig(l.0), sig(r.0), sig(pm));
@@ -466,18 +642,7 @@ impl LjSolver {
             (mnode.st.pt.force, d[1] * k),
             (mnode.st.pt.contact_radius, d[2] * k),
         ];
-        let h = r.0 - l.0;
-        let floors = [f64::INFINITY, c.f_floor, c.a_floor];
-        let ok = (0..3).all(|q| {
-            let y = hermite_mid(l.2[q].0, l.2[q].1, r.2[q].0, r.2[q].1, h);
-            let err = (y - vm[q].0).abs();
-            if q == 0 {
-                err <= c.tol * c.d_abs
-            } else {
-                err <= c.tol * vm[q].0.abs().max(floors[q])
-            }
-        });
-        let _ = n;
+        let ok = hermite_ok(&l.2, &r.2, &vm, r.0 - l.0, c);
         if ok || depth >= 30 {
             out.push(path_point(&mnode.st, d));
             return Ok(());
@@ -487,6 +652,253 @@ impl LjSolver {
         out.push(path_point(&mnode.st, d));
         self.bisect_chart(anchor, corner, m, r, c, bw, out, depth + 1)
     }
+}
+
+/// Marker step of the central differences in the edge phase, relative to
+/// the band half-width `w` (states are converged to ~1e-12: derivatives to
+/// ~1e-8, truncation ~1e-8 w²·(third derivative)).
+const EDGE_DIFF: f64 = 1e-4;
+
+impl LjSolver {
+    /// The edge-phase equilibrium at the marker `m` between the nodes `l`
+    /// and `r` (node-by-node interpolated guess; the nearer node's state if
+    /// that fails).
+    fn esolve(
+        &self,
+        m: f64,
+        l: &EdgeState,
+        r: &EdgeState,
+        plan: (f64, f64),
+        bw: &mut BWork,
+    ) -> Result<EdgeState> {
+        let th = (m - l.m) / (r.m - l.m);
+        let y: Vec<f64> =
+            l.st.y
+                .iter()
+                .zip(&r.st.y)
+                .map(|(p, q)| p + th * (q - p))
+                .collect();
+        let al = l.st.al + th * (r.st.al - l.st.al);
+        let s = l.st.s + th * (r.st.s - l.st.s);
+        match self.edge_solve(m, plan, y, al, s, bw) {
+            Ok(e) => Ok(e),
+            Err(_) => {
+                let near = if th < 0.5 { l } else { r };
+                self.edge_solve(m, plan, near.st.y.clone(), near.st.al, s, bw)
+            }
+        }
+    }
+
+    /// An edge-phase node: `e` with its derivatives in the marker radius by
+    /// central differences (step [`EDGE_DIFF`]·w).
+    fn enode(&self, e: EdgeState, kind: Kind, plan: (f64, f64), bw: &mut BWork) -> Result<ENode> {
+        let h = EDGE_DIFF * plan.0;
+        let mut v = [[0.0; 3]; 2];
+        for (q, sg) in [1.0, -1.0].into_iter().enumerate() {
+            let x = self.edge_solve(e.m + sg * h, plan, e.st.y.clone(), e.st.al, e.st.s, bw)?;
+            v[q] = [x.st.al, x.st.pt.force, x.st.pt.contact_radius];
+        }
+        let mut d = [0.0; 3];
+        for k in 0..3 {
+            d[k] = (v[0][k] - v[1][k]) / (2.0 * h);
+        }
+        if e.st.pt.contact_radius == 0.0 {
+            d[2] = 0.0;
+        }
+        if !d.iter().all(|x| x.is_finite()) {
+            return Err(unresolved(0, f64::NAN));
+        }
+        Ok(ENode { e, kind, d })
+    }
+
+    /// d²ᾱ/dm² at an edge-phase node (second difference, step 10·
+    /// [`EDGE_DIFF`]·w).
+    fn esecond(&self, nd: &ENode, plan: (f64, f64), bw: &mut BWork) -> Result<f64> {
+        let h = 10.0 * EDGE_DIFF * plan.0;
+        let e = &nd.e;
+        let mut a = [0.0; 2];
+        for (q, sg) in [1.0, -1.0].into_iter().enumerate() {
+            a[q] = self
+                .edge_solve(e.m + sg * h, plan, e.st.y.clone(), e.st.al, e.st.s, bw)?
+                .st
+                .al;
+        }
+        Ok((a[0] - 2.0 * e.st.al + a[1]) / (h * h))
+    }
+
+    /// `lim a/τ` at an edge-phase contact onset (τ = √(m − m_c)), by
+    /// Richardson extrapolation from τ = h, 2h.
+    fn eonset_slope(&self, nd: &ENode, plan: (f64, f64), bw: &mut BWork) -> Result<f64> {
+        let h = 1e-3 * plan.0.sqrt();
+        let e = &nd.e;
+        let mut a = [0.0; 2];
+        for (q, tau) in [h, 2.0 * h].into_iter().enumerate() {
+            a[q] = self
+                .edge_solve(e.m + tau * tau, plan, e.st.y.clone(), e.st.al, e.st.s, bw)?
+                .st
+                .pt
+                .contact_radius;
+        }
+        Ok(2.0 * a[0] / h - a[1] / (2.0 * h))
+    }
+
+    /// The edge-phase node between `l` and `r` where `phi` changes sign
+    /// (Illinois method on the marker radius).
+    fn eroot(
+        &self,
+        l: &ENode,
+        r: &ENode,
+        plan: (f64, f64),
+        bw: &mut BWork,
+        phi: &dyn Fn(&ENode) -> f64,
+    ) -> Result<ENode> {
+        let (mut a, mut fa) = (l.e.m, phi(l));
+        let (mut b, mut fb) = (r.e.m, phi(r));
+        if fa == 0.0 {
+            return Ok(l.clone());
+        }
+        if fb == 0.0 {
+            return Ok(r.clone());
+        }
+        let tol = 1e-10 * (r.e.m.abs() + plan.0);
+        let mut best: Option<ENode> = None;
+        for _ in 0..60 {
+            let m = (a * fb - b * fa) / (fb - fa);
+            let m = if m.is_finite() && (m - a) * (m - b) < 0.0 {
+                m
+            } else {
+                0.5 * (a + b)
+            };
+            let e = self.esolve(m, &l.e, &r.e, plan, bw)?;
+            let nd = self.enode(e, Kind::Regular, plan, bw)?;
+            let f = phi(&nd);
+            if f * fb < 0.0 {
+                a = b;
+                fa = fb;
+            } else {
+                fa *= 0.5;
+            }
+            b = m;
+            fb = f;
+            best = Some(nd);
+            if f == 0.0 || (a - b).abs() < tol {
+                break;
+            }
+        }
+        best.ok_or(Error::NotConverged {
+            what: "LJ sphere special point (edge phase)",
+            iterations: 0,
+            residual: f64::NAN,
+        })
+    }
+
+    /// Nodes strictly between the edge-phase nodes `a` and `b` (bisection
+    /// in the marker radius, or in τ = √(m − m_a) after a corner).
+    fn esample_interval(
+        &self,
+        a: &ENode,
+        b: &ENode,
+        plan: (f64, f64),
+        c: &Crit,
+        bw: &mut BWork,
+        out: &mut Vec<ENode>,
+    ) -> Result<()> {
+        let corner = matches!(a.kind, Kind::Corner(_));
+        let dm = b.e.m - a.e.m;
+        if !(dm > 0.0) {
+            return Err(Error::NotConverged {
+                what: "LJ sphere path samples: edge-phase points out of order",
+                iterations: 0,
+                residual: dm,
+            });
+        }
+        let pb = if corner { dm.sqrt() } else { dm };
+        let la = echart(a, a, corner, 0.0);
+        let lb = echart(a, b, corner, pb);
+        self.ebisect(a, corner, (0.0, a, la), (pb, b, lb), plan, c, bw, out, 0)
+    }
+
+    #[allow(clippy::too_many_arguments, clippy::type_complexity)]
+    fn ebisect(
+        &self,
+        anchor: &ENode,
+        corner: bool,
+        l: (f64, &ENode, [(f64, f64); 3]),
+        r: (f64, &ENode, [(f64, f64); 3]),
+        plan: (f64, f64),
+        c: &Crit,
+        bw: &mut BWork,
+        out: &mut Vec<ENode>,
+        depth: u32,
+    ) -> Result<()> {
+        let pm = 0.5 * (l.0 + r.0);
+        let mm = anchor.e.m + if corner { pm * pm } else { pm };
+        if r.1.e.m - l.1.e.m < MIN_SAMPLE_STEP * plan.0 {
+            return Ok(());
+        }
+        let e = self.esolve(mm, &l.1.e, &r.1.e, plan, bw)?;
+        let mnode = self.enode(e, Kind::Regular, plan, bw)?;
+        let vm = echart(anchor, &mnode, corner, pm);
+        if hermite_ok(&l.2, &r.2, &vm, r.0 - l.0, c) || depth >= 30 {
+            out.push(mnode);
+            return Ok(());
+        }
+        let m = (pm, &mnode, vm);
+        self.ebisect(
+            anchor,
+            corner,
+            l,
+            (m.0, m.1, m.2),
+            plan,
+            c,
+            bw,
+            out,
+            depth + 1,
+        )?;
+        out.push(mnode.clone());
+        self.ebisect(anchor, corner, m, r, plan, c, bw, out, depth + 1)
+    }
+}
+
+/// Values and derivatives of an edge-phase node with respect to the chart
+/// parameter `p` of an interval anchored at `anchor` (`m − m_a = p`, or `p²`
+/// after a corner).
+fn echart(anchor: &ENode, nd: &ENode, corner: bool, p: f64) -> [(f64, f64); 3] {
+    let v = [nd.e.st.al, nd.e.st.pt.force, nd.e.st.pt.contact_radius];
+    if corner && p == 0.0 {
+        let g = match anchor.kind {
+            Kind::Corner(g) => g,
+            _ => 0.0,
+        };
+        return [(v[0], 0.0), (v[1], 0.0), (0.0, g)];
+    }
+    let k = if corner { 2.0 * p } else { 1.0 };
+    [
+        (v[0], nd.d[0] * k),
+        (v[1], nd.d[1] * k),
+        (v[2], nd.d[2] * k),
+    ]
+}
+
+/// Whether the cubic Hermite midpoints of `l`, `r` (interval length `h`)
+/// reproduce the exact midpoint values `m` to the criterion `c`.
+fn hermite_ok(
+    l: &[(f64, f64); 3],
+    r: &[(f64, f64); 3],
+    m: &[(f64, f64); 3],
+    h: f64,
+    c: &Crit,
+) -> bool {
+    let floors = [f64::INFINITY, c.f_floor, c.a_floor];
+    (0..3).all(|q| {
+        let y = hermite_mid(l[q].0, l[q].1, r[q].0, r[q].1, h);
+        let err = (y - m[q].0).abs();
+        if q == 0 {
+            err <= c.tol * c.d_abs
+        } else {
+            err <= c.tol * m[q].0.abs().max(floors[q])
+        }
+    })
 }
 
 /// Smallest path-parameter interval `bisect_chart` subdivides: the
