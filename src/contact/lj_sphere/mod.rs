@@ -491,12 +491,17 @@ impl Mesh {
             1.0 / (1.0 + r / rf) + s
         };
         let total = phi(l);
-        let inv = |target: f64| -> f64 {
+        // phi(r) = target for increasing targets: each root brackets the
+        // next from below and starts its Newton iteration (a few steps each).
+        let inv = |target: f64, from: f64| -> f64 {
             // Newton safeguarded by bisection: a Newton step must land in
             // the bracket, and the bracket must halve every two steps (Newton
             // can cycle around the inflections of the tanh band).
-            let (mut lo, mut hi) = (0.0f64, l);
-            let mut r = l * target / total;
+            let (mut lo, mut hi) = (from, l);
+            let mut r = from + (target - phi(from)) / dphi(from);
+            if !(r > lo && r < hi) {
+                r = 0.5 * (lo + hi);
+            }
             let mut width = hi - lo;
             for k in 0..400 {
                 let f = phi(r) - target;
@@ -522,11 +527,23 @@ impl Mesh {
             }
             0.5 * (lo + hi)
         };
+        // Cell edges at the targets total·j/n, nodes half-way (in phi)
+        // between them: 2n + 1 increasing targets.
         let nf = n as f64;
-        let mut c: Vec<f64> = (0..=n).map(|j| inv(total * j as f64 / nf)).collect();
-        c[0] = 0.0;
-        c[n] = l;
-        let x = (0..n).map(|j| inv(total * (j as f64 + 0.5) / nf)).collect();
+        let mut c = Vec::with_capacity(n + 1);
+        let mut x = Vec::with_capacity(n);
+        let mut prev = 0.0f64;
+        c.push(0.0);
+        for k in 1..2 * n {
+            let r = inv(total * k as f64 / (2.0 * nf), prev);
+            if k % 2 == 1 {
+                x.push(r);
+            } else {
+                c.push(r);
+            }
+            prev = r;
+        }
+        c.push(l);
         Mesh { x, c }
     }
 }
