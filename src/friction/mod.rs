@@ -6,10 +6,34 @@
 //!   domains come from an AFM profile (5-15..5-19, 6-2, 6-3). The result,
 //!   [`SliderGeometry`], is built once, immutable, shareable between threads
 //!   and serialisable; the friction model consumes it.
+//! * [`mechanisms`]: the dissipation mechanisms of chapter 4 and their
+//!   constants — [`FrictionMaterial`] (the thesis's copper built in),
+//!   chemical and van der Waals bond counts and their dissipation per unit
+//!   slip (4-6..4-9), the adhesive holding force of a nano-asperity
+//!   (no-slip Kendall, 4.4), the Lennard-Jones nano-asperity and its
+//!   bilinear elastic–rigid law (4-11..4-14), and the elastic (4-15) and
+//!   plastic (4-16) energies of an elastic–perfectly plastic micro-rod.
+//! * [`ledger`]: the energy ledger — [`Dissipation`] by mechanism,
+//!   [`Mechanisms`] switches, the quasi-static step [`ledger_step`]
+//!   (F = ΔU/Δx, 4-1), the coefficient of friction in the Amontons, Coulomb
+//!   or Derjaguin form (1-1..1-3, 4-3), the hand calculation of 4.4
+//!   ([`apparent_friction`], μ = 1.0156) and the single-rod model of 5.2
+//!   ([`single_rod`]).
 
 pub mod geometry;
+pub mod ledger;
+pub mod mechanisms;
 
 pub use geometry::{
     asperity_statistics, nano_analysis, nano_per_rod, rod_heights, rod_levels, AsperityStatistics,
     NanoAnalysis, NanoAsperities, RodLevel, SliderGeometry,
+};
+pub use ledger::{
+    apparent_friction, coefficient_of_friction, ledger_step, ledger_step_for, single_rod,
+    yielded_slider_friction, ApparentFriction, CofForm, Dissipation, LedgerStep, Mechanisms,
+};
+pub use mechanisms::{
+    bond_dissipation_per_slip, bond_energy_from_molar, chemical_bond_count, elastic_strain_energy,
+    nano_holding_force, plastic_work, released_elastic_energy, vdw_bond_count, ElasticPlasticRod,
+    FrictionMaterial, LjNanoAsperity, NanoAsperityBonds, RodIncrement,
 };
