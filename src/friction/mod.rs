@@ -19,10 +19,17 @@
 //!   or Derjaguin form (1-1..1-3, 4-3), the hand calculation of 4.4
 //!   ([`apparent_friction`], μ = 1.0156) and the single-rod model of 5.2
 //!   ([`single_rod`]).
+//! * [`rods`]: the mechanical equilibrium of the micro-rods (elastic–perfectly
+//!   plastic, 4.3.1) against the rigid counter-surface at fixed gap
+//!   (6-9..6-12) and fixed load (6-13..6-16) — exact breakpoint sweep, warm
+//!   start, the thesis's dense formulation as reference, plastic shortening
+//!   with volume-conserving pile-up (6.2.3), energies (4-15, 4-16), and rods
+//!   coupled through an elastic substrate ([`CoupledRodBed`]).
 
 pub mod geometry;
 pub mod ledger;
 pub mod mechanisms;
+pub mod rods;
 
 pub use geometry::{
     asperity_statistics, nano_analysis, nano_per_rod, rod_heights, rod_levels, AsperityStatistics,
@@ -36,4 +43,8 @@ pub use mechanisms::{
     bond_dissipation_per_slip, bond_energy_from_molar, chemical_bond_count, elastic_strain_energy,
     nano_holding_force, plastic_work, released_elastic_energy, vdw_bond_count, ElasticPlasticRod,
     FrictionMaterial, LjNanoAsperity, NanoAsperityBonds, RodIncrement,
+};
+pub use rods::{
+    square_influence, CoupledRodBed, PlasticUpdate, RodBed, RodOptions, RodReport, RodSolution,
+    RodSolver, RodState,
 };
