@@ -456,6 +456,17 @@ impl LjSolver {
         while i + 1 < dense.len() {
             let (a, b) = (&dense[i], &dense[i + 1]);
             let plain = |k: Kind| matches!(k, Kind::Regular | Kind::Min | Kind::Zero);
+            // ᾱ moving against dᾱ/dm at both ends: a pair of turning points
+            // inside; split until the signs show them.
+            let hidden = a.d[0] * b.d[0] > 0.0
+                && (b.e.st.al - a.e.st.al) * a.d[0] < 0.0
+                && b.e.m - a.e.m > MIN_SAMPLE_STEP * plan.0;
+            if hidden && plain(a.kind) && plain(b.kind) {
+                let mid = self.esolve(0.5 * (a.e.m + b.e.m), &a.e, &b.e, plan, &mut bw)?;
+                let nd = self.enode(mid, Kind::Regular, plan, &mut bw)?;
+                dense.insert(i + 1, nd);
+                continue;
+            }
             if a.d[0] * b.d[0] < 0.0 && plain(a.kind) && plain(b.kind) {
                 let mut e = self.eroot(a, b, plan, &mut bw, &|e| e.d[0])?;
                 e.kind = Kind::Turn(self.esecond(&e, plan, &mut bw)?);
