@@ -19,14 +19,26 @@
 //!   or Derjaguin form (1-1..1-3, 4-3), the hand calculation of 4.4
 //!   ([`apparent_friction`], μ = 1.0156) and the single-rod model of 5.2
 //!   ([`single_rod`]).
+//! * [`homogenised`]: the friction step per time increment of an FE
+//!   integration point (issue 6 §4 (b)) — [`HomogenisedFriction`], μ(p),
+//!   adhesion, contact fraction and dissipation shares tabulated over the
+//!   nominal pressure (monotone cubic interpolation), evaluated by a
+//!   regularised Coulomb/Derjaguin return mapping with caller-owned
+//!   [`FrictionPointState`], tangents for implicit codes and a VFRIC-shaped
+//!   block call.
 
 pub mod geometry;
+pub mod homogenised;
 pub mod ledger;
 pub mod mechanisms;
 
 pub use geometry::{
     asperity_statistics, nano_analysis, nano_per_rod, rod_heights, rod_levels, AsperityStatistics,
     NanoAnalysis, NanoAsperities, RodLevel, SliderGeometry,
+};
+pub use homogenised::{
+    FrictionIncrement, FrictionPointState, FrictionRegime, FrictionResponse, HomogenisedFriction,
+    HomogenisedSample, RawFrictionBlock,
 };
 pub use ledger::{
     apparent_friction, coefficient_of_friction, ledger_step, ledger_step_for, single_rod,
