@@ -89,6 +89,18 @@
 // Fidelity: the full numerical Lennard-Jones sphere.
 #define ASPERITY_FIDELITY_LENNARD_JONES 5
 
+// `AsperityFrictionResponse.regime`: the trial force is inside the cone, no
+// plastic slip.
+#define ASPERITY_FRICTION_STICK 0
+
+// `AsperityFrictionResponse.regime`: the force is on the cone, plastic slip
+// and dissipation.
+#define ASPERITY_FRICTION_SLIP 1
+
+// `AsperityFrictionResponse.regime`: no normal force and no adhesion; no
+// friction (force 0).
+#define ASPERITY_FRICTION_NO_CONTACT 2
+
 // Segment label: not assigned.
 #define ASPERITY_SEGMENT_UNKNOWN 0
 
@@ -265,6 +277,14 @@
 // with `asperity_gw_empirical_free`. Immutable: safe to share between
 // threads.
 typedef struct AsperityGwEmpirical AsperityGwEmpirical;
+
+// The homogenised friction law of FE integration points (opaque): μ(p),
+// adhesion, contact fraction and dissipation shares over the nominal
+// pressure. Create it with `asperity_homogenised_friction_new` or
+// `asperity_homogenised_friction_from_json`, release it with
+// `asperity_homogenised_friction_free`. Immutable; safe to share between
+// threads.
+typedef struct AsperityHomogenisedFriction AsperityHomogenisedFriction;
 
 // The slider of the hierarchical friction model (opaque): nested levels of
 // micro-rods and the nano-asperities on the finest rods' tips. Create it
@@ -574,6 +594,121 @@ typedef struct AsperityNanoAsperities {
     // per_rod * spacing^2 <= (rod width)^2.
     size_t per_rod;
 } AsperityNanoAsperities;
+
+// Energy dissipated by each mechanism (J, each finite and ≥ 0), thesis
+// (4-2) restricted to the three mechanisms of friction in vacuum: breaking
+// of chemical (metallic) bonds, of van der Waals bonds, and mechanical
+// interlocking of micro-asperities (elastic energy released and plastic
+// work).
+//
+// A plain `repr(C)` value; [`Self::new`] and [`Self::validate`] check that
+// every entry is finite and ≥ 0; deserialisation validates. Sums with `+`
+// and `+=` (no check: sums of valid ledgers stay valid unless they
+// overflow, which [`Self::validate`] catches).
+typedef struct AsperityDissipation {
+    // Energy of broken chemical bonds (J), (4-7).
+    double chemical;
+    // Energy of broken van der Waals bonds (J), (4-9).
+    double van_der_waals;
+    // Elastic strain energy released by unloading rods (J), (4-15).
+    double elastic;
+    // Plastic work of yielding rods (J), (4-16).
+    double plastic;
+} AsperityDissipation;
+
+// The slider model's response at one nominal pressure: one row of the
+// homogenised table. A plain `repr(C)` value (the C ABI's
+// `AsperityHomogenisedSample`); serde reads plain JSON numbers as well as
+// the exact strings it writes.
+typedef struct AsperityHomogenisedSample {
+    // Nominal contact pressure p = N/A_n (Pa), finite and ≥ 0.
+    double pressure;
+    // Coefficient of friction μ at this pressure, finite and ≥ 0, in the
+    // table's [`CofForm`] (Derjaguin μ = F/(N + A), thesis (4-3), by
+    // default).
+    double cof;
+    // Adhesive holding force per nominal area (Pa), finite and ≥ 0: the
+    // adhesive force A of the thesis (4.2, 4.4) divided by A_n.
+    double adhesion_pressure;
+    // True contact area over nominal area (dimensionless), in [0, 1].
+    double contact_fraction;
+    // Fractions of the dissipation due to each mechanism (dimensionless,
+    // each in [0, 1], summing to 1 within 1e-9), held in a [`Dissipation`]
+    // value: a step's dissipation ΔD is split as ΔD·shares.
+    struct AsperityDissipation shares;
+} AsperityHomogenisedSample;
+
+// One time increment of one contact point (the C ABI's
+// `AsperityFrictionIncrement`). SI units.
+typedef struct AsperityFrictionIncrement {
+    // Normal force N on the point (N), finite and ≥ 0 (compressive).
+    double normal_force;
+    // Nominal area A_n the point represents (m²), finite and > 0.
+    double area;
+    // Slip increment Δs of the point relative to the counter-surface (m),
+    // two components in the caller's tangent basis; a one-dimensional track
+    // uses `slip[1] = 0`.
+    double slip[2];
+    // Time increment (s), finite and ≥ 0 (unused by this rate-independent
+    // law).
+    double dt;
+    // Stick stiffness k of the regularised stick (N/m), finite and ≥ 0;
+    // 0 is rigid–plastic (no elastic slip).
+    double stick_stiffness;
+} AsperityFrictionIncrement;
+
+// Per-point history of the friction step (the C ABI's
+// `AsperityFrictionPointState`), owned by the caller. All-zero is a fresh
+// point. SI units.
+typedef struct AsperityFrictionPointState {
+    // Tangential force on the point at the end of the increment (N), the
+    // elastic (stick) force carried into the next increment; the elastic
+    // slip is `−force/k`.
+    double force[2];
+    // Accumulated plastic slip path length Σ|Δs_p| (m).
+    double slip_path;
+    // Accumulated dissipated energy by mechanism (J).
+    struct AsperityDissipation dissipation;
+    // Number of steps taken (wraps at 2⁶⁴).
+    uint64_t steps;
+} AsperityFrictionPointState;
+
+// The response of one friction step (the C ABI's
+// `AsperityFrictionResponse`). SI units.
+typedef struct AsperityFrictionResponse {
+    // Tangential force F on the point from the counter-surface (N), in the
+    // basis of the slip increment; opposes slip (see the module's sign
+    // convention).
+    double force[2];
+    // |F| (N).
+    double force_magnitude;
+    // Normal force N (N), as given.
+    double normal_force;
+    // Coefficient of friction μ(p) (in the table's [`CofForm`]).
+    double cof;
+    // Slip limit F_lim, the radius of the friction cone (N).
+    double slip_limit;
+    // Adhesive holding force A = p_adh(p)·A_n (N).
+    double adhesion;
+    // True contact area, contact fraction × A_n (m²).
+    double true_contact_area;
+    // Plastic slip increment Δs_p (m); 0 in stick.
+    double plastic_slip[2];
+    // Energy dissipated in the increment ΔD = −F·Δs_p (J), ≥ 0.
+    double dissipated;
+    // ΔD split between the mechanisms by the interpolated shares (J).
+    struct AsperityDissipation dissipation;
+    // dF/dN (dimensionless), at fixed slip increment and old state.
+    double dforce_dnormal[2];
+    // dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, at fixed N and old state
+    // (the consistent tangent of the return mapping; 0 for a rigid stick,
+    // k = 0 and Δs = 0, where it is unbounded).
+    double dforce_dslip[2][2];
+    // [`FrictionRegime`] as an integer: 0 stick, 1 slip, 2 no contact.
+    int32_t regime;
+    // Reserved, always 0.
+    int32_t reserved;
+} AsperityFrictionResponse;
 
 // Options of `asperity_indentation_fit`. Fill with
 // `asperity_indentation_default_options` and change what you need.
@@ -1108,6 +1243,74 @@ int32_t asperity_slider_geometry_rod_heights(const struct AsperitySliderGeometry
                                              size_t level,
                                              double *heights,
                                              size_t len);
+
+// Build the law from `n` >= 1 samples at strictly increasing nominal
+// pressures (Pa), their `cof` read as the Derjaguin coefficient
+// F/(N + A) (thesis (4-3); other forms through JSON). Writes a new handle
+// to `*out` (NULL on failure). Errors: NULL `samples` or `out`, `n` = 0,
+// non-finite or negative values, fractions outside [0, 1], shares not
+// summing to 1, pressures not increasing.
+int32_t asperity_homogenised_friction_new(const struct AsperityHomogenisedSample *samples,
+                                          size_t n,
+                                          struct AsperityHomogenisedFriction **out);
+
+// Load a law from `len` bytes of JSON text at `json` (from
+// `asperity_homogenised_friction_to_json`, or written by hand; no NUL
+// needed). The law is validated; a corrupted text gives
+// `ASPERITY_ERR_INVALID_ARGUMENT`. Writes a new handle to `*out` (NULL on
+// failure).
+int32_t asperity_homogenised_friction_from_json(const char *json,
+                                                size_t len,
+                                                struct AsperityHomogenisedFriction **out);
+
+// Write the JSON text of `friction` into `buf` (at most `len − 1` bytes and
+// a NUL) and its full length in bytes (without the NUL) to `*needed`, so
+// `asperity_homogenised_friction_to_json(f, NULL, 0, &n)` sizes the buffer.
+// The text is complete only when `*needed < len`; `needed` is required.
+int32_t asperity_homogenised_friction_to_json(const struct AsperityHomogenisedFriction *friction,
+                                              char *buf,
+                                              size_t len,
+                                              size_t *needed);
+
+// Release a law; NULL is accepted and ignored.
+void asperity_homogenised_friction_free(struct AsperityHomogenisedFriction *friction);
+
+// Size in bytes of `AsperityFrictionPointState`, for hosts that allocate
+// per-point state arrays generically (an all-zero state is a fresh point).
+size_t asperity_homogenised_friction_state_size(void);
+
+// One friction step at one point: the increment `*increment` from the
+// history `*old_state` (NULL: fresh), the history after the step into
+// `*new_state` (may be NULL, may equal `old_state`) and the response into
+// `*out`. On failure `*new_state` and `*out` are untouched.
+int32_t asperity_homogenised_friction_step(const struct AsperityHomogenisedFriction *friction,
+                                           const struct AsperityFrictionIncrement *increment,
+                                           const struct AsperityFrictionPointState *old_state,
+                                           struct AsperityFrictionPointState *new_state,
+                                           struct AsperityFrictionResponse *out);
+
+// Step `n` points at once, in the shape of Abaqus/Explicit VFRIC:
+// `normal_forces[i]` (N), `areas[i]` (m²), slip increments
+// `slip_increments[2i]`, `[2i+1]` (m, x and y interleaved), one `dt` (s) and
+// `stick_stiffness` (N/m) for all, `old_state[i]` → `new_state[i]`,
+// tangential forces out in `tangential_forces[2i]`, `[2i+1]` (N,
+// interleaved) and the dissipated energy of the increment in
+// `dissipation[i]` (J). `normal_forces`, `areas`, `slip_increments` and
+// `tangential_forces` are required; `old_state` may be NULL (all fresh),
+// `new_state` and `dissipation` may be NULL (not wanted); `old_state` may
+// equal `new_state`. On an error at element i, elements before i are written
+// and the message names i.
+int32_t asperity_homogenised_friction_step_block(const struct AsperityHomogenisedFriction *friction,
+                                                 size_t n,
+                                                 const double *normal_forces,
+                                                 const double *areas,
+                                                 const double *slip_increments,
+                                                 double dt,
+                                                 double stick_stiffness,
+                                                 const struct AsperityFrictionPointState *old_state,
+                                                 struct AsperityFrictionPointState *new_state,
+                                                 double *tangential_forces,
+                                                 double *dissipation);
 
 // Fill `options` with the defaults: Berkovich, ideal area, anchor at the
 // maximum point, labels used, diamond indenter (1141 GPa, 0.07), sample

@@ -906,6 +906,99 @@ fn tabulated_threads_shared() {
     check_tabulated_threads(Linkage::Shared);
 }
 
+const HOMOGENISED: &str =
+    "the homogenised friction law (src/friction/homogenised.rs, src/ffi/homogenised.rs)";
+
+/// `fe_strip_friction`: a toy explicit FE loop over 64 contact points, each a
+/// mass on a spring to a driven base, calling the block step each increment.
+fn check_fe_strip_friction(linkage: Linkage) {
+    use asperity::friction::{CofForm, Dissipation, HomogenisedFriction, HomogenisedSample};
+    let r = run("fe_strip_friction", linkage);
+    let mut c = Report::new(&r);
+    c.exit_ok(HOMOGENISED);
+    c.close(FFI, "state_size_matches", 1.0, 0.0);
+    c.close(HOMOGENISED, "points", 64.0, 0.0);
+    // The example's table, rebuilt here through the Rust API: the steady
+    // sliding force is Σ μ(p_i)(N_i + A_i) over the strip.
+    let rows = [
+        (10.0, 1.10, 0.90, 0.010, 0.930, 0.067, 0.002),
+        (50.0, 1.02, 4.50, 0.050, 0.925, 0.066, 0.006),
+        (100.0, 0.97, 9.00, 0.100, 0.920, 0.064, 0.010),
+        (150.0, 0.93, 13.5, 0.150, 0.910, 0.062, 0.018),
+        (200.0, 0.90, 18.0, 0.200, 0.900, 0.060, 0.025),
+    ];
+    let samples: Vec<HomogenisedSample> = rows
+        .iter()
+        .map(|&(p, mu, pa, fr, ch, v, e)| HomogenisedSample {
+            pressure: p * 1e6,
+            cof: mu,
+            adhesion_pressure: pa * 1e6,
+            contact_fraction: fr,
+            shares: Dissipation {
+                chemical: ch,
+                van_der_waals: v,
+                elastic: e,
+                plastic: 1.0 - ch - v - e,
+            },
+        })
+        .collect();
+    let law = HomogenisedFriction::from_samples(&samples, CofForm::Derjaguin).unwrap();
+    let area = 1e-6;
+    let expected: f64 = (0..64)
+        .map(|i| {
+            let p = 10e6 + 190e6 * i as f64 / 63.0;
+            let s = law.sample_at(p).unwrap();
+            s.cof * (p * area + s.adhesion_pressure * area)
+        })
+        .sum();
+    c.close(
+        HOMOGENISED,
+        "expected_steady_force",
+        expected,
+        1e-9 * expected,
+    );
+    c.close(HOMOGENISED, "steady_force", expected, 1e-9 * expected);
+    c.within(HOMOGENISED, "steady_force_rel_diff", 0.0, 1e-9);
+    // Stick while the springs load (the weakest point, 10 MPa, slides after
+    // μ(N + A)/(k_s v dt) ≈ 1199 increments), then all points slide.
+    c.within(HOMOGENISED, "first_slip_increment", 1000.0, 1300.0);
+    c.close(HOMOGENISED, "stick_below_limit", 1.0, 0.0);
+    c.within(HOMOGENISED, "stick_balance_rel_diff", 0.0, 1e-3);
+    c.within(HOMOGENISED, "all_sliding_from", 19_000.0, 21_000.0);
+    // Dissipation: ≥ 0 per increment, the per-increment sum equals the
+    // states' accumulated ledgers and Σ F_lim,i × slip path_i.
+    c.within(HOMOGENISED, "total_dissipation", 0.5, 2.0);
+    c.close(HOMOGENISED, "min_increment_dissipation", 0.0, 0.0);
+    c.within(HOMOGENISED, "dissipation_states_rel_diff", 0.0, 1e-10);
+    c.within(HOMOGENISED, "dissipation_limit_path_rel_diff", 0.0, 1e-10);
+    c.within(HOMOGENISED, "chemical_share", 0.90, 0.93);
+    c.close(HOMOGENISED, "steps_counted", 30_000.0, 0.0);
+    c.close(HOMOGENISED, "json_roundtrip_identical", 1.0, 0.0);
+    c.close(FFI, "bad_area_status", -2.0, 0.0);
+    c.close(FFI, "bad_area_names_element", 1.0, 0.0);
+    c.close(FFI, "bad_area_names_area", 1.0, 0.0);
+    c.close(FFI, "null_handle_status", -1.0, 0.0);
+    let history = r
+        .stdout
+        .lines()
+        .filter(|l| l.starts_with("history "))
+        .count();
+    c.ok(HOMOGENISED, history == 30, || {
+        format!("{history} history rows, expected 30")
+    });
+    c.finish();
+}
+
+#[test]
+fn fe_strip_friction_static() {
+    check_fe_strip_friction(Linkage::Static);
+}
+
+#[test]
+fn fe_strip_friction_shared() {
+    check_fe_strip_friction(Linkage::Shared);
+}
+
 #[test]
 fn every_example_compiles_and_links_both_ways() {
     let b = built();
@@ -926,6 +1019,7 @@ fn every_example_compiles_and_links_both_ways() {
 fn every_other_example_runs() {
     let known = [
         "batch_and_errors",
+        "fe_strip_friction",
         "indentation_fit",
         "jkr_hysteresis",
         "profile_characterise",

@@ -11,6 +11,7 @@
 pub mod contact;
 pub mod fidelity;
 pub mod friction;
+pub mod homogenised;
 pub mod indentation;
 pub mod lj_sphere;
 pub mod material;

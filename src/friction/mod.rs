@@ -25,8 +25,16 @@
 //!   start, the thesis's dense formulation as reference, plastic shortening
 //!   with volume-conserving pile-up (6.2.3), energies (4-15, 4-16), and rods
 //!   coupled through an elastic substrate ([`CoupledRodBed`]).
+//! * [`homogenised`]: the friction step per time increment of an FE
+//!   integration point (issue 6 §4 (b)) — [`HomogenisedFriction`], μ(p),
+//!   adhesion, contact fraction and dissipation shares tabulated over the
+//!   nominal pressure (monotone cubic interpolation), evaluated by a
+//!   regularised Coulomb/Derjaguin return mapping with caller-owned
+//!   [`FrictionPointState`], tangents for implicit codes and a VFRIC-shaped
+//!   block call.
 
 pub mod geometry;
+pub mod homogenised;
 pub mod ledger;
 pub mod mechanisms;
 pub mod rods;
@@ -34,6 +42,10 @@ pub mod rods;
 pub use geometry::{
     asperity_statistics, nano_analysis, nano_per_rod, rod_heights, rod_levels, AsperityStatistics,
     NanoAnalysis, NanoAsperities, RodLevel, SliderGeometry,
+};
+pub use homogenised::{
+    FrictionIncrement, FrictionPointState, FrictionRegime, FrictionResponse, HomogenisedFriction,
+    HomogenisedSample, RawFrictionBlock,
 };
 pub use ledger::{
     apparent_friction, coefficient_of_friction, ledger_step, ledger_step_for, single_rod,

@@ -1,0 +1,924 @@
+//! The homogenised friction law of an FE integration point (issue 6 §4,
+//! granularity (b)): the slider model's results over a range of nominal
+//! pressures — coefficient of friction μ(p), adhesive holding pressure,
+//! true contact fraction and the split of the dissipation between the
+//! mechanisms — tabulated once, then evaluated per point and per time
+//! increment as a regularised Coulomb (Derjaguin) law with a return mapping.
+//!
+//! # The table
+//!
+//! [`HomogenisedFriction::from_samples`] takes [`HomogenisedSample`]s at
+//! strictly increasing nominal pressures p_k (Pa) — usually from slider runs
+//! ([`HomogenisedFriction::from_fn`] samples any function of p). Between the
+//! samples, μ, the adhesion pressure and the contact fraction are
+//! interpolated by the monotone piecewise cubic Hermite interpolant of
+//! Fritsch & Carlson (SIAM J. Numer. Anal. 17 (1980) 238–246), with the
+//! slopes of Fritsch & Butland (SIAM J. Sci. Stat. Comput. 5 (1984)
+//! 300–304) as in MATLAB's `pchip`: at an interior knot the weighted
+//! harmonic mean `m_k = (w₁ + w₂)/(w₁/δ_{k−1} + w₂/δ_k)`, `w₁ = 2h_k +
+//! h_{k−1}`, `w₂ = h_k + 2h_{k−1}` of the neighbouring secants δ, and 0 where
+//! the secants change sign (a local extremum); the one-sided three-point
+//! slope at the ends, limited to keep the shape. The interpolant is C¹,
+//! passes through every sample exactly, and is monotone wherever the samples
+//! are (so it stays within the samples' range: μ ≥ 0, fractions in [0, 1]).
+//! The dissipation shares are interpolated linearly, so they stay ≥ 0 and sum
+//! to 1. Below the first and above the last pressure every quantity is held
+//! constant at the end sample (constant extrapolation, derivative 0): a
+//! pressure outside the sampled range is not an error, and a table whose
+//! first sample is above 0 gives the first sample's values at zero load.
+//!
+//! # The step
+//!
+//! [`HomogenisedFriction::step`] is the return mapping of regularised
+//! Coulomb friction (Wriggers, *Computational Contact Mechanics*, 2nd ed.,
+//! 2006, §5.2 and §6.2; Simo & Hughes, *Computational Inelasticity*, 1998,
+//! §1.2) with the slip limit of the Derjaguin law (thesis (4-3)):
+//!
+//! * nominal pressure `p = N/A_n`, adhesive force `A = p_adh(p)·A_n`;
+//! * slip limit `F_lim = μ(p)(N + A)` (or `μN`, `A + μN` for the Amontons
+//!   and Coulomb forms (1-1), (1-2) of [`CofForm`]);
+//! * trial force `F_tr = F_old − k Δs` (k the stick stiffness);
+//! * `|F_tr| ≤ F_lim`: stick, `F = F_tr`;
+//! * otherwise slip: `F = F_lim F_tr/|F_tr|`, plastic slip
+//!   `Δs_p = −Δλ F_tr/|F_tr|` with `Δλ = (|F_tr| − F_lim)/k`, dissipation
+//!   `ΔD = −F·Δs_p = F_lim Δλ ≥ 0`, split between the mechanisms by the
+//!   interpolated shares.
+//!
+//! With `k = 0` (rigid–plastic) any non-zero slip increment slides:
+//! `F = −F_lim Δs/|Δs|`, `Δs_p = Δs`, `ΔD = F_lim|Δs|`.
+//!
+//! ## Sign convention
+//!
+//! The slip increment Δs is the displacement increment of the point (the
+//! slave node, in FE terms) relative to the counter-surface, as two
+//! components in a tangent basis the caller chooses; the tangential force F
+//! is the force the counter-surface applies to that point, in the same basis.
+//! It opposes slip: `F·Δs_p ≤ 0`, and in pure sliding `F = −F_lim Δs/|Δs|`.
+//! This is the convention of Abaqus/Explicit's VFRIC, whose local 1-direction
+//! is `t₁ = Δs/|Δs|` (the incremental slip) and whose `fTangential(1)` must
+//! lie between zero and minus the stick force (Abaqus User Subroutines
+//! Reference, VFRIC: "Local coordinate system", "Frictional forces"): our
+//! `F·t₁` is that `fTangential(1)`, negative while sliding. A VFRIC wrapper
+//! passes `dSlipFric` as Δs and stores F in its state (VFRIC's `fTangPrev`
+//! plays the role of `old.force`).
+//!
+//! The step is rate independent: the time increment is validated and
+//! otherwise unused, so rate-dependent laws can share the signature.
+
+use super::ledger::{CofForm, Dissipation};
+use crate::contact::BatchError;
+use crate::error::{check, Error, Result};
+use serde::{Deserialize, Serialize};
+
+/// Identifies the serialised format.
+const FORMAT: &str = "asperity-homogenised-friction-1";
+/// Tolerance on the sum of a sample's dissipation shares.
+const SHARE_SUM_TOLERANCE: f64 = 1e-9;
+
+// ------------------------------------------------------------- samples
+
+/// The slider model's response at one nominal pressure: one row of the
+/// homogenised table. A plain `repr(C)` value (the C ABI's
+/// `AsperityHomogenisedSample`); serde reads plain JSON numbers as well as
+/// the exact strings it writes.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HomogenisedSample {
+    /// Nominal contact pressure p = N/A_n (Pa), finite and ≥ 0.
+    #[serde(with = "crate::serde_exact::lenient")]
+    pub pressure: f64,
+    /// Coefficient of friction μ at this pressure, finite and ≥ 0, in the
+    /// table's [`CofForm`] (Derjaguin μ = F/(N + A), thesis (4-3), by
+    /// default).
+    #[serde(with = "crate::serde_exact::lenient")]
+    pub cof: f64,
+    /// Adhesive holding force per nominal area (Pa), finite and ≥ 0: the
+    /// adhesive force A of the thesis (4.2, 4.4) divided by A_n.
+    #[serde(with = "crate::serde_exact::lenient")]
+    pub adhesion_pressure: f64,
+    /// True contact area over nominal area (dimensionless), in [0, 1].
+    #[serde(with = "crate::serde_exact::lenient")]
+    pub contact_fraction: f64,
+    /// Fractions of the dissipation due to each mechanism (dimensionless,
+    /// each in [0, 1], summing to 1 within 1e-9), held in a [`Dissipation`]
+    /// value: a step's dissipation ΔD is split as ΔD·shares.
+    pub shares: Dissipation,
+}
+
+impl HomogenisedSample {
+    /// Checks every field (errors name it: `pressure`, `cof`,
+    /// `adhesion_pressure`, `contact_fraction`, `shares` with the sum as
+    /// value, or the offending share).
+    pub fn validate(&self) -> Result<()> {
+        check::non_negative("pressure", self.pressure)?;
+        check::non_negative("cof", self.cof)?;
+        check::non_negative("adhesion_pressure", self.adhesion_pressure)?;
+        check::in_range(
+            "contact_fraction",
+            self.contact_fraction,
+            0.0,
+            1.0,
+            "in [0, 1]",
+        )?;
+        let s = &self.shares;
+        for (name, v) in [
+            ("shares.chemical", s.chemical),
+            ("shares.van_der_waals", s.van_der_waals),
+            ("shares.elastic", s.elastic),
+            ("shares.plastic", s.plastic),
+        ] {
+            check::in_range(name, v, 0.0, 1.0, "in [0, 1]")?;
+        }
+        let sum = s.total();
+        if (sum - 1.0).abs() > SHARE_SUM_TOLERANCE {
+            return Err(Error::InvalidArgument {
+                name: "shares",
+                value: sum,
+                bound: "fractions summing to 1 (within 1e-9)",
+            });
+        }
+        Ok(())
+    }
+}
+
+// -------------------------------------------------------- step in/out
+
+/// One time increment of one contact point (the C ABI's
+/// `AsperityFrictionIncrement`). SI units.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct FrictionIncrement {
+    /// Normal force N on the point (N), finite and ≥ 0 (compressive).
+    pub normal_force: f64,
+    /// Nominal area A_n the point represents (m²), finite and > 0.
+    pub area: f64,
+    /// Slip increment Δs of the point relative to the counter-surface (m),
+    /// two components in the caller's tangent basis; a one-dimensional track
+    /// uses `slip[1] = 0`.
+    pub slip: [f64; 2],
+    /// Time increment (s), finite and ≥ 0 (unused by this rate-independent
+    /// law).
+    pub dt: f64,
+    /// Stick stiffness k of the regularised stick (N/m), finite and ≥ 0;
+    /// 0 is rigid–plastic (no elastic slip).
+    pub stick_stiffness: f64,
+}
+
+/// Per-point history of the friction step (the C ABI's
+/// `AsperityFrictionPointState`), owned by the caller. All-zero is a fresh
+/// point. SI units.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct FrictionPointState {
+    /// Tangential force on the point at the end of the increment (N), the
+    /// elastic (stick) force carried into the next increment; the elastic
+    /// slip is `−force/k`.
+    pub force: [f64; 2],
+    /// Accumulated plastic slip path length Σ|Δs_p| (m).
+    pub slip_path: f64,
+    /// Accumulated dissipated energy by mechanism (J).
+    pub dissipation: Dissipation,
+    /// Number of steps taken (wraps at 2⁶⁴).
+    pub steps: u64,
+}
+
+impl FrictionPointState {
+    /// Checks the state is finite with non-negative accumulators (errors
+    /// name `old.force`, `old.slip_path`, `old.dissipation`).
+    pub fn validate(&self) -> Result<()> {
+        check::finite("old.force", self.force[0])?;
+        check::finite("old.force", self.force[1])?;
+        check::non_negative("old.slip_path", self.slip_path)?;
+        let d = &self.dissipation;
+        for v in [d.chemical, d.van_der_waals, d.elastic, d.plastic] {
+            check::non_negative("old.dissipation", v)?;
+        }
+        Ok(())
+    }
+}
+
+/// What the step did at a point (the `regime` field of
+/// [`FrictionResponse`]).
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FrictionRegime {
+    /// The trial force is inside the slip cone: no plastic slip.
+    Stick = 0,
+    /// The force is on the cone: plastic slip and dissipation.
+    Slip = 1,
+    /// No normal force and no adhesion (N + A = 0): no friction, the force
+    /// and the stored elastic force are 0.
+    NoContact = 2,
+}
+
+/// The response of one friction step (the C ABI's
+/// `AsperityFrictionResponse`). SI units.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct FrictionResponse {
+    /// Tangential force F on the point from the counter-surface (N), in the
+    /// basis of the slip increment; opposes slip (see the module's sign
+    /// convention).
+    pub force: [f64; 2],
+    /// |F| (N).
+    pub force_magnitude: f64,
+    /// Normal force N (N), as given.
+    pub normal_force: f64,
+    /// Coefficient of friction μ(p) (in the table's [`CofForm`]).
+    pub cof: f64,
+    /// Slip limit F_lim, the radius of the friction cone (N).
+    pub slip_limit: f64,
+    /// Adhesive holding force A = p_adh(p)·A_n (N).
+    pub adhesion: f64,
+    /// True contact area, contact fraction × A_n (m²).
+    pub true_contact_area: f64,
+    /// Plastic slip increment Δs_p (m); 0 in stick.
+    pub plastic_slip: [f64; 2],
+    /// Energy dissipated in the increment ΔD = −F·Δs_p (J), ≥ 0.
+    pub dissipated: f64,
+    /// ΔD split between the mechanisms by the interpolated shares (J).
+    pub dissipation: Dissipation,
+    /// dF/dN (dimensionless), at fixed slip increment and old state.
+    pub dforce_dnormal: [f64; 2],
+    /// dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, at fixed N and old state
+    /// (the consistent tangent of the return mapping; 0 for a rigid stick,
+    /// k = 0 and Δs = 0, where it is unbounded).
+    pub dforce_dslip: [[f64; 2]; 2],
+    /// [`FrictionRegime`] as an integer: 0 stick, 1 slip, 2 no contact.
+    pub regime: i32,
+    /// Reserved, always 0.
+    pub reserved: i32,
+}
+
+impl FrictionResponse {
+    /// The regime of the step.
+    pub fn regime(&self) -> FrictionRegime {
+        match self.regime {
+            0 => FrictionRegime::Stick,
+            1 => FrictionRegime::Slip,
+            _ => FrictionRegime::NoContact,
+        }
+    }
+}
+
+// ------------------------------------------------------------- the law
+
+/// One interval of the interpolant between two samples: Hermite cubics
+/// `y = c₀ + t(c₁ + t(c₂ + t c₃))`, `t = (p − p₀)/h`, and linear shares.
+#[derive(Debug, Clone, Copy)]
+struct Interval {
+    p0: f64,
+    inv_h: f64,
+    cof: [f64; 4],
+    adhesion: [f64; 4],
+    fraction: [f64; 4],
+    share0: [f64; 4],
+    dshare: [f64; 4],
+}
+
+/// The table's values and their pressure derivatives at one pressure.
+#[derive(Debug, Clone, Copy)]
+struct Point {
+    cof: f64,
+    dcof: f64,
+    adhesion: f64,
+    dadhesion: f64,
+    fraction: f64,
+    shares: [f64; 4],
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct HomogenisedData {
+    format: String,
+    form: CofForm,
+    samples: Vec<HomogenisedSample>,
+}
+
+/// The homogenised friction law; see the module documentation. Built once by
+/// [`Self::from_samples`], [`Self::from_fn`] or [`Self::from_json`],
+/// immutable, `Send + Sync`; a step touches only the caller's memory.
+/// Serialises as its samples and form, and evaluates bit-identically after a
+/// JSON round trip.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(into = "HomogenisedData", try_from = "HomogenisedData")]
+pub struct HomogenisedFriction {
+    data: HomogenisedData,
+    pressures: Vec<f64>,
+    intervals: Vec<Interval>,
+    first: Point,
+    last: Point,
+}
+
+const _: () = {
+    const fn shareable<T: Send + Sync>() {}
+    shareable::<HomogenisedFriction>();
+};
+
+impl From<HomogenisedFriction> for HomogenisedData {
+    fn from(h: HomogenisedFriction) -> Self {
+        h.data
+    }
+}
+
+impl TryFrom<HomogenisedData> for HomogenisedFriction {
+    type Error = Error;
+    fn try_from(d: HomogenisedData) -> Result<Self> {
+        if d.format != FORMAT {
+            return Err(Error::InvalidArgument {
+                name: "format",
+                value: 0.0,
+                bound: "\"asperity-homogenised-friction-1\"",
+            });
+        }
+        Self::from_samples(&d.samples, d.form)
+    }
+}
+
+#[inline]
+fn shares_of(d: &Dissipation) -> [f64; 4] {
+    [d.chemical, d.van_der_waals, d.elastic, d.plastic]
+}
+
+/// The Fritsch–Butland / `pchip` slopes of the data (x, y), n ≥ 2.
+fn pchip_slopes(x: &[f64], y: &[f64]) -> Vec<f64> {
+    let n = x.len();
+    let h: Vec<f64> = x.windows(2).map(|w| w[1] - w[0]).collect();
+    let del: Vec<f64> = (0..n - 1).map(|k| (y[k + 1] - y[k]) / h[k]).collect();
+    let mut m = vec![0.0; n];
+    if n == 2 {
+        m[0] = del[0];
+        m[1] = del[0];
+        return m;
+    }
+    for k in 1..n - 1 {
+        let (d0, d1) = (del[k - 1], del[k]);
+        if d0 * d1 > 0.0 {
+            let w1 = 2.0 * h[k] + h[k - 1];
+            let w2 = h[k] + 2.0 * h[k - 1];
+            m[k] = (w1 + w2) / (w1 / d0 + w2 / d1);
+        }
+    }
+    // One-sided three-point end slopes, shape-preserving (Moler, Numerical
+    // Computing with MATLAB, 2004, §3.4).
+    let end = |h0: f64, h1: f64, d0: f64, d1: f64| -> f64 {
+        let s = ((2.0 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
+        if s.signum() != d0.signum() || d0 == 0.0 {
+            0.0
+        } else if d0.signum() != d1.signum() && s.abs() > 3.0 * d0.abs() {
+            3.0 * d0
+        } else {
+            s
+        }
+    };
+    m[0] = end(h[0], h[1], del[0], del[1]);
+    m[n - 1] = end(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
+    m
+}
+
+/// Hermite coefficients in t ∈ [0, 1] of the cubic through (0, y0), (1, y1)
+/// with slopes m0, m1 (per unit p) over an interval of length h.
+fn hermite(y0: f64, m0: f64, y1: f64, m1: f64, h: f64) -> [f64; 4] {
+    let d = y1 - y0;
+    let (p0, p1) = (h * m0, h * m1);
+    [y0, p0, 3.0 * d - 2.0 * p0 - p1, p0 + p1 - 2.0 * d]
+}
+
+#[inline(always)]
+fn horner(c: &[f64; 4], t: f64) -> f64 {
+    c[0] + t * (c[1] + t * (c[2] + t * c[3]))
+}
+
+#[inline(always)]
+fn horner_d(c: &[f64; 4], t: f64) -> f64 {
+    c[1] + t * (2.0 * c[2] + t * (3.0 * c[3]))
+}
+
+fn constant_point(s: &HomogenisedSample) -> Point {
+    Point {
+        cof: s.cof,
+        dcof: 0.0,
+        adhesion: s.adhesion_pressure,
+        dadhesion: 0.0,
+        fraction: s.contact_fraction,
+        shares: shares_of(&s.shares),
+    }
+}
+
+#[cold]
+fn overflow(name: &'static str, value: f64) -> Error {
+    Error::OutOfDomain {
+        name,
+        value,
+        reason: "the friction force overflows f64",
+    }
+}
+
+impl HomogenisedFriction {
+    /// The law from samples at strictly increasing nominal pressures (at
+    /// least one; one sample gives a pressure-independent law), with the
+    /// samples' `cof` read in the form `form` ([`CofForm::Derjaguin`], the
+    /// thesis's choice, is the default). Errors: no samples (`samples`), a
+    /// sample failing [`HomogenisedSample::validate`], pressures not
+    /// strictly increasing (`pressure`, the offending value).
+    pub fn from_samples(samples: &[HomogenisedSample], form: CofForm) -> Result<Self> {
+        let Some((first, rest)) = samples.split_first() else {
+            return Err(Error::InvalidArgument {
+                name: "samples",
+                value: 0.0,
+                bound: "at least one sample",
+            });
+        };
+        first.validate()?;
+        let mut prev = first.pressure;
+        for s in rest {
+            s.validate()?;
+            if s.pressure <= prev {
+                return Err(Error::InvalidArgument {
+                    name: "pressure",
+                    value: s.pressure,
+                    bound: "strictly increasing from sample to sample",
+                });
+            }
+            prev = s.pressure;
+        }
+        let pressures: Vec<f64> = samples.iter().map(|s| s.pressure).collect();
+        let n = samples.len();
+        let mut intervals = Vec::with_capacity(n.saturating_sub(1));
+        if n >= 2 {
+            let col = |f: fn(&HomogenisedSample) -> f64| -> (Vec<f64>, Vec<f64>) {
+                let y: Vec<f64> = samples.iter().map(f).collect();
+                let m = pchip_slopes(&pressures, &y);
+                (y, m)
+            };
+            let (mu, mu_m) = col(|s| s.cof);
+            let (ad, ad_m) = col(|s| s.adhesion_pressure);
+            let (fr, fr_m) = col(|s| s.contact_fraction);
+            for k in 0..n - 1 {
+                let h = pressures[k + 1] - pressures[k];
+                let s0 = shares_of(&samples[k].shares);
+                let s1 = shares_of(&samples[k + 1].shares);
+                intervals.push(Interval {
+                    p0: pressures[k],
+                    inv_h: 1.0 / h,
+                    cof: hermite(mu[k], mu_m[k], mu[k + 1], mu_m[k + 1], h),
+                    adhesion: hermite(ad[k], ad_m[k], ad[k + 1], ad_m[k + 1], h),
+                    fraction: hermite(fr[k], fr_m[k], fr[k + 1], fr_m[k + 1], h),
+                    share0: s0,
+                    dshare: [s1[0] - s0[0], s1[1] - s0[1], s1[2] - s0[2], s1[3] - s0[3]],
+                });
+            }
+        }
+        Ok(Self {
+            data: HomogenisedData {
+                format: FORMAT.to_string(),
+                form,
+                samples: samples.to_vec(),
+            },
+            pressures,
+            intervals,
+            first: constant_point(first),
+            last: constant_point(&samples[n - 1]),
+        })
+    }
+
+    /// The law sampled from `f` at the nominal pressures `pressures` (Pa,
+    /// strictly increasing, finite, ≥ 0), e.g. a slider model run at each
+    /// pressure. The `pressure` field of each returned sample is set to the
+    /// pressure asked for. Errors: the first error of `f`, and those of
+    /// [`Self::from_samples`].
+    pub fn from_fn(
+        pressures: &[f64],
+        form: CofForm,
+        mut f: impl FnMut(f64) -> Result<HomogenisedSample>,
+    ) -> Result<Self> {
+        let mut samples = Vec::with_capacity(pressures.len());
+        for &p in pressures {
+            check::non_negative("pressure", p)?;
+            let mut s = f(p)?;
+            s.pressure = p;
+            samples.push(s);
+        }
+        Self::from_samples(&samples, form)
+    }
+
+    /// The samples the law was built from.
+    pub fn samples(&self) -> &[HomogenisedSample] {
+        &self.data.samples
+    }
+
+    /// The form in which the samples' `cof` is read.
+    pub fn form(&self) -> CofForm {
+        self.data.form
+    }
+
+    /// JSON text of the law (numbers written exactly).
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(&self.data).expect("a homogenised law always serialises")
+    }
+
+    /// A law from [`Self::to_json`] text (or hand-written JSON with plain
+    /// numbers), validated as [`Self::from_samples`]; evaluates
+    /// bit-identically to the law written. A syntax or field error names
+    /// `json` with the line as value.
+    pub fn from_json(json: &str) -> Result<Self> {
+        let d: HomogenisedData =
+            serde_json::from_str(json).map_err(|e| Error::InvalidArgument {
+                name: "json",
+                value: e.line() as f64,
+                bound:
+                    "a serialised HomogenisedFriction (syntax, field or value error at this line)",
+            })?;
+        Self::try_from(d)
+    }
+
+    #[inline(always)]
+    fn point(&self, p: f64) -> Point {
+        let x = &self.pressures;
+        if p < x[0] {
+            return self.first;
+        }
+        if p >= x[x.len() - 1] {
+            return self.last;
+        }
+        // x[0] ≤ p < x[n−1], n ≥ 2: the interval k with x[k] ≤ p < x[k+1].
+        let k = x.partition_point(|&xi| xi <= p) - 1;
+        let iv = &self.intervals[k];
+        let t = (p - iv.p0) * iv.inv_h;
+        Point {
+            cof: horner(&iv.cof, t),
+            dcof: horner_d(&iv.cof, t) * iv.inv_h,
+            adhesion: horner(&iv.adhesion, t),
+            dadhesion: horner_d(&iv.adhesion, t) * iv.inv_h,
+            fraction: horner(&iv.fraction, t),
+            shares: [
+                iv.share0[0] + t * iv.dshare[0],
+                iv.share0[1] + t * iv.dshare[1],
+                iv.share0[2] + t * iv.dshare[2],
+                iv.share0[3] + t * iv.dshare[3],
+            ],
+        }
+    }
+
+    /// The interpolated sample at the nominal pressure `pressure` (Pa,
+    /// finite and ≥ 0); constant beyond the sampled range.
+    pub fn sample_at(&self, pressure: f64) -> Result<HomogenisedSample> {
+        let p = check::non_negative("pressure", pressure)?;
+        let q = self.point(p);
+        Ok(HomogenisedSample {
+            pressure: p,
+            cof: q.cof,
+            adhesion_pressure: q.adhesion,
+            contact_fraction: q.fraction,
+            shares: Dissipation {
+                chemical: q.shares[0],
+                van_der_waals: q.shares[1],
+                elastic: q.shares[2],
+                plastic: q.shares[3],
+            },
+        })
+    }
+
+    /// dμ/dp (1/Pa) at `pressure` (Pa, finite and ≥ 0): the derivative of
+    /// the interpolant (0 beyond the sampled range; at a knot, the
+    /// derivative of the interval to its right, which is continuous).
+    pub fn cof_slope(&self, pressure: f64) -> Result<f64> {
+        let p = check::non_negative("pressure", pressure)?;
+        Ok(self.point(p).dcof)
+    }
+
+    /// One friction step at one point: from the history `old` and the
+    /// increment `inc`, the new history into `new` and the response into
+    /// `out` (see the module documentation for the formulas and the sign
+    /// convention). `old` is only read, so the same step can be evaluated
+    /// again (cut back, re-iterated). No allocation.
+    ///
+    /// Errors (then `new` and `out` are untouched): `normal_force` not finite
+    /// and ≥ 0; `area` not finite and > 0; `slip` not finite; `dt` not
+    /// finite and ≥ 0; `stick_stiffness` not finite and ≥ 0; an invalid `old`
+    /// state ([`FrictionPointState::validate`]); OutOfDomain (`normal_force`
+    /// or `slip`) when the force overflows f64.
+    #[inline]
+    pub fn step(
+        &self,
+        old: &FrictionPointState,
+        inc: &FrictionIncrement,
+        new: &mut FrictionPointState,
+        out: &mut FrictionResponse,
+    ) -> Result<()> {
+        let (s, r) = self.step_value(old, inc)?;
+        *new = s;
+        *out = r;
+        Ok(())
+    }
+
+    /// [`Self::step`] returning the new state and the response by value.
+    #[inline(always)]
+    pub fn step_value(
+        &self,
+        old: &FrictionPointState,
+        inc: &FrictionIncrement,
+    ) -> Result<(FrictionPointState, FrictionResponse)> {
+        let n = check::non_negative("normal_force", inc.normal_force)?;
+        let a_n = check::positive("area", inc.area)?;
+        let dsx = check::finite("slip", inc.slip[0])?;
+        let dsy = check::finite("slip", inc.slip[1])?;
+        check::non_negative("dt", inc.dt)?;
+        let k = check::non_negative("stick_stiffness", inc.stick_stiffness)?;
+        old.validate()?;
+
+        let p = n / a_n;
+        let q = self.point(p);
+        let adhesion = q.adhesion * a_n;
+        // Slip limit and dF_lim/dN; dp/dN = 1/A_n, dA/dN = p_adh'(p).
+        let (limit, dlimit) = match self.data.form {
+            CofForm::Derjaguin => (
+                q.cof * (n + adhesion),
+                q.dcof / a_n * (n + adhesion) + q.cof * (1.0 + q.dadhesion),
+            ),
+            CofForm::Amontons => (q.cof * n, q.dcof / a_n * n + q.cof),
+            CofForm::Coulomb => (adhesion + q.cof * n, q.dadhesion + q.dcof / a_n * n + q.cof),
+        };
+        if !(limit.is_finite() && dlimit.is_finite() && adhesion.is_finite()) {
+            return Err(overflow("normal_force", n));
+        }
+
+        let mut r = FrictionResponse {
+            normal_force: n,
+            cof: q.cof,
+            slip_limit: limit,
+            adhesion,
+            true_contact_area: q.fraction * a_n,
+            ..FrictionResponse::default()
+        };
+        let mut s = FrictionPointState {
+            force: [0.0; 2],
+            slip_path: old.slip_path,
+            dissipation: old.dissipation,
+            steps: old.steps.wrapping_add(1),
+        };
+
+        if n + adhesion == 0.0 {
+            r.regime = FrictionRegime::NoContact as i32;
+            return Ok((s, r));
+        }
+
+        // Return mapping. `dir` is the unit direction of the force on the
+        // cone when sliding, `mag` the magnitude of the quantity it was
+        // taken from (trial force, or |Δs| when rigid–plastic).
+        let (fx, fy, lambda);
+        if k > 0.0 {
+            let tx = old.force[0] - k * dsx;
+            let ty = old.force[1] - k * dsy;
+            let tn = (tx * tx + ty * ty).sqrt();
+            if !tn.is_finite() {
+                return Err(overflow("slip", dsx.abs().max(dsy.abs())));
+            }
+            if tn <= limit {
+                (fx, fy, lambda) = (tx, ty, 0.0);
+                r.regime = FrictionRegime::Stick as i32;
+                r.dforce_dslip = [[-k, 0.0], [0.0, -k]];
+            } else {
+                let (nx, ny) = (tx / tn, ty / tn);
+                (fx, fy) = (limit * nx, limit * ny);
+                lambda = (tn - limit) / k;
+                r.regime = FrictionRegime::Slip as i32;
+                r.plastic_slip = [-lambda * nx, -lambda * ny];
+                let c = -k * limit / tn;
+                r.dforce_dslip = [
+                    [c * (1.0 - nx * nx), -c * nx * ny],
+                    [-c * nx * ny, c * (1.0 - ny * ny)],
+                ];
+                r.dforce_dnormal = [nx * dlimit, ny * dlimit];
+            }
+        } else {
+            let sn = (dsx * dsx + dsy * dsy).sqrt();
+            if !sn.is_finite() {
+                return Err(overflow("slip", dsx.abs().max(dsy.abs())));
+            }
+            if sn > 0.0 {
+                let (ux, uy) = (dsx / sn, dsy / sn);
+                (fx, fy) = (-limit * ux, -limit * uy);
+                lambda = sn;
+                r.regime = FrictionRegime::Slip as i32;
+                r.plastic_slip = [dsx, dsy];
+                let c = -limit / sn;
+                r.dforce_dslip = [
+                    [c * (1.0 - ux * ux), -c * ux * uy],
+                    [-c * ux * uy, c * (1.0 - uy * uy)],
+                ];
+                r.dforce_dnormal = [-ux * dlimit, -uy * dlimit];
+            } else {
+                // Rigid stick: the old force, capped by the cone (without
+                // slip, so without dissipation).
+                let (tx, ty) = (old.force[0], old.force[1]);
+                let tn = (tx * tx + ty * ty).sqrt();
+                r.regime = FrictionRegime::Stick as i32;
+                lambda = 0.0;
+                if tn <= limit {
+                    (fx, fy) = (tx, ty);
+                } else {
+                    let (nx, ny) = (tx / tn, ty / tn);
+                    (fx, fy) = (limit * nx, limit * ny);
+                    r.dforce_dnormal = [nx * dlimit, ny * dlimit];
+                }
+            }
+        }
+
+        let dissipated = limit * lambda;
+        if !dissipated.is_finite() {
+            return Err(overflow("slip", dsx.abs().max(dsy.abs())));
+        }
+        r.force = [fx, fy];
+        r.force_magnitude = if r.regime == FrictionRegime::Slip as i32 {
+            limit
+        } else {
+            (fx * fx + fy * fy).sqrt()
+        };
+        r.dissipated = dissipated;
+        r.dissipation = Dissipation {
+            chemical: dissipated * q.shares[0],
+            van_der_waals: dissipated * q.shares[1],
+            elastic: dissipated * q.shares[2],
+            plastic: dissipated * q.shares[3],
+        };
+        s.force = [fx, fy];
+        s.slip_path = old.slip_path + lambda;
+        s.dissipation = old.dissipation + r.dissipation;
+        Ok((s, r))
+    }
+
+    /// [`Self::step`] for n points at once, in the shape of Abaqus/Explicit's
+    /// VFRIC: `normal_forces[i]` (N), `areas[i]` (m²), the slip increments
+    /// `slip_increments[2i], [2i+1]` (m, interleaved), one time increment
+    /// `dt` (s) and stick stiffness (N/m) for all, `old[i]` → `new[i]`, the
+    /// tangential forces out in `tangential_forces[2i], [2i+1]` (N,
+    /// interleaved; the sign convention of the module) and the dissipation
+    /// of the increment in `dissipation[i]` (J). n is `normal_forces.len()`;
+    /// every other slice must match it (2n for the interleaved ones), else
+    /// an error naming the slice at index 0. On an error at element i,
+    /// elements before i are written and those from i on are untouched. No
+    /// allocation.
+    #[allow(clippy::too_many_arguments)]
+    pub fn step_block(
+        &self,
+        normal_forces: &[f64],
+        areas: &[f64],
+        slip_increments: &[f64],
+        dt: f64,
+        stick_stiffness: f64,
+        old: &[FrictionPointState],
+        new: &mut [FrictionPointState],
+        tangential_forces: &mut [f64],
+        dissipation: &mut [f64],
+    ) -> core::result::Result<(), BatchError> {
+        let n = normal_forces.len();
+        let len = |name: &'static str, got: usize, want: usize, bound: &'static str| {
+            if got == want {
+                Ok(())
+            } else {
+                Err(BatchError {
+                    index: 0,
+                    error: Error::InvalidArgument {
+                        name,
+                        value: got as f64,
+                        bound,
+                    },
+                })
+            }
+        };
+        const SAME: &str = "of the length of normal_forces";
+        const TWICE: &str = "of twice the length of normal_forces (x, y interleaved)";
+        len("areas", areas.len(), n, SAME)?;
+        len("slip_increments", slip_increments.len(), 2 * n, TWICE)?;
+        len("old", old.len(), n, SAME)?;
+        len("new", new.len(), n, SAME)?;
+        len("tangential_forces", tangential_forces.len(), 2 * n, TWICE)?;
+        len("dissipation", dissipation.len(), n, SAME)?;
+        // SAFETY: every slice holds n (or 2n) elements; Rust slices do not
+        // alias, which the raw form allows but does not need.
+        unsafe {
+            self.step_block_raw(&RawFrictionBlock {
+                n,
+                normal_forces: normal_forces.as_ptr(),
+                areas: areas.as_ptr(),
+                slip_increments: slip_increments.as_ptr(),
+                dt,
+                stick_stiffness,
+                old: old.as_ptr(),
+                new: new.as_mut_ptr(),
+                tangential_forces: tangential_forces.as_mut_ptr(),
+                dissipation: dissipation.as_mut_ptr(),
+            })
+        }
+    }
+
+    /// [`Self::step_block`] on raw arrays, which may alias element by element
+    /// (`old` may be `new`): each element is read completely before it is
+    /// written. `old` NULL means every point is fresh; `new` and
+    /// `dissipation` may be NULL (not wanted).
+    ///
+    /// # Safety
+    /// The pointers of `b` must satisfy the contract of [`RawFrictionBlock`].
+    pub unsafe fn step_block_raw(
+        &self,
+        b: &RawFrictionBlock,
+    ) -> core::result::Result<(), BatchError> {
+        for i in 0..b.n {
+            let inc = FrictionIncrement {
+                normal_force: b.normal_forces.add(i).read(),
+                area: b.areas.add(i).read(),
+                slip: [
+                    b.slip_increments.add(2 * i).read(),
+                    b.slip_increments.add(2 * i + 1).read(),
+                ],
+                dt: b.dt,
+                stick_stiffness: b.stick_stiffness,
+            };
+            let old = if b.old.is_null() {
+                FrictionPointState::default()
+            } else {
+                b.old.add(i).read()
+            };
+            let (s, r) = self
+                .step_value(&old, &inc)
+                .map_err(|error| BatchError { index: i, error })?;
+            b.tangential_forces.add(2 * i).write(r.force[0]);
+            b.tangential_forces.add(2 * i + 1).write(r.force[1]);
+            if !b.dissipation.is_null() {
+                b.dissipation.add(i).write(r.dissipated);
+            }
+            if !b.new.is_null() {
+                b.new.add(i).write(s);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The arrays of a block step as raw pointers (the C ABI passes the host's
+/// arrays straight through). `normal_forces`, `areas` must be valid for `n`
+/// reads, `slip_increments` for 2n, `tangential_forces` for 2n writes; `old`
+/// (n reads), `new` and `dissipation` (n writes) are valid or NULL.
+#[derive(Debug, Clone, Copy)]
+pub struct RawFrictionBlock {
+    /// Number of points.
+    pub n: usize,
+    /// Normal forces (N).
+    pub normal_forces: *const f64,
+    /// Nominal areas (m²).
+    pub areas: *const f64,
+    /// Slip increments (m), x and y interleaved.
+    pub slip_increments: *const f64,
+    /// Time increment (s).
+    pub dt: f64,
+    /// Stick stiffness (N/m).
+    pub stick_stiffness: f64,
+    /// Histories before the step, or NULL for fresh points.
+    pub old: *const FrictionPointState,
+    /// Histories after the step, or NULL.
+    pub new: *mut FrictionPointState,
+    /// Tangential forces (N), x and y interleaved.
+    pub tangential_forces: *mut f64,
+    /// Dissipation of the increment (J), or NULL.
+    pub dissipation: *mut f64,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sample(p: f64, mu: f64) -> HomogenisedSample {
+        HomogenisedSample {
+            pressure: p,
+            cof: mu,
+            adhesion_pressure: 0.0,
+            contact_fraction: 0.0,
+            shares: Dissipation {
+                chemical: 1.0,
+                ..Dissipation::default()
+            },
+        }
+    }
+
+    #[test]
+    fn pchip_linear_data_is_linear() {
+        let s: Vec<_> = (0..5)
+            .map(|i| sample(i as f64, 1.0 + 0.5 * i as f64))
+            .collect();
+        let h = HomogenisedFriction::from_samples(&s, CofForm::Derjaguin).unwrap();
+        for j in 0..=40 {
+            let p = j as f64 * 0.1;
+            let v = h.sample_at(p).unwrap().cof;
+            assert!((v - (1.0 + 0.5 * p)).abs() < 1e-14, "{p} {v}");
+        }
+    }
+
+    #[test]
+    fn single_sample_is_constant() {
+        let h = HomogenisedFriction::from_samples(&[sample(1e6, 0.7)], CofForm::Derjaguin).unwrap();
+        assert_eq!(h.sample_at(0.0).unwrap().cof, 0.7);
+        assert_eq!(h.sample_at(1e9).unwrap().cof, 0.7);
+    }
+}
