@@ -11,18 +11,18 @@ fn manifest() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The binary: the one Cargo built for this test run
-/// (`cargo test --features cli`) when it exists; otherwise built once per run in its own
+/// The binary: the one Cargo built for this test run when the `cli` feature
+/// is on (`cargo test --features cli`); otherwise built once per run in its own
 /// target directory, which keeps the library artifacts the C-example tests
 /// link against untouched.
 fn binary() -> &'static Path {
     static BIN: OnceLock<PathBuf> = OnceLock::new();
     BIN.get_or_init(|| {
-        // Cargo names the binary even when its required feature `cli` is
-        // off and it was not built (plain `cargo test`): use it only if it
-        // exists.
-        if let Some(bin) = option_env!("CARGO_BIN_EXE_asperity").map(PathBuf::from) {
-            if bin.is_file() {
+        // Cargo builds the binary for this run only with its required
+        // feature `cli` on. Without it Cargo still names the binary, and a
+        // file there is a stale build of some earlier run: build afresh.
+        if cfg!(feature = "cli") {
+            if let Some(bin) = option_env!("CARGO_BIN_EXE_asperity").map(PathBuf::from) {
                 return bin;
             }
         }
