@@ -48,6 +48,7 @@ pub mod friction;
 pub mod indentation;
 pub mod material;
 pub mod rescaling;
+pub mod scene;
 mod serde_exact;
 pub mod statistics;
 pub mod surface;

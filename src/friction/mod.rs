@@ -32,12 +32,17 @@
 //!   regularised Coulomb/Derjaguin return mapping with caller-owned
 //!   [`FrictionPointState`], tangents for implicit codes and a VFRIC-shaped
 //!   block call.
+//! * [`slider`]: the hierarchical slider that slides (6.3–6.5) — counter
+//!   heights under the rods, the rod equilibrium, nano-asperities in contact
+//!   (adhesive snap-in, yielded rods), the ledger of every increment, true
+//!   contact area (6.5.3), runs and their summaries ([`Slider`]).
 
 pub mod geometry;
 pub mod homogenised;
 pub mod ledger;
 pub mod mechanisms;
 pub mod rods;
+pub mod slider;
 
 pub use geometry::{
     asperity_statistics, nano_analysis, nano_per_rod, rod_heights, rod_levels, AsperityStatistics,
@@ -59,4 +64,8 @@ pub use mechanisms::{
 pub use rods::{
     square_influence, CoupledRodBed, PlasticUpdate, RodBed, RodOptions, RodReport, RodSolution,
     RodSolver, RodState,
+};
+pub use slider::{
+    summarize, Loading, SlideRun, SlideStep, SlideSummary, Slider, SliderOptions, SliderState,
+    SliderWork, TrackEnd,
 };

@@ -12,6 +12,7 @@ use std::error::Error;
 use std::path::PathBuf;
 
 mod profile;
+mod slide;
 
 #[derive(Parser)]
 #[command(
@@ -94,6 +95,9 @@ enum Command {
     /// ISO 4287 parameters, spectrum and plots of a measured line scan (or the
     /// areal parameters of a height map).
     Profile(profile::ProfileArgs),
+    /// Slide a hierarchical slider over a counter-surface (a scene, JSON):
+    /// CSV of every step, SVG plots, a summary (`--json`: one JSON object).
+    Slide(slide::SlideArgs),
     /// The numerical Lennard-Jones sphere: full force–approach curve, jump
     /// points, pull-off and hysteresis.
     Lj {
@@ -221,6 +225,7 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
             svg,
         )?,
         Command::Profile(args) => profile::run(&args)?,
+        Command::Slide(args) => slide::run(&args)?,
         Command::Lj {
             sphere: s,
             grid,

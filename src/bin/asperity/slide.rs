@@ -1,0 +1,240 @@
+//! `asperity slide SCENE.json [--json] [--out DIR]`: runs a sliding scene
+//! (issue 6 §5), writes the per-step CSV and SVG plots, prints a summary or,
+//! with `--json`, exactly one JSON object (issue 6 §9).
+
+use asperity::friction::{SlideRun, SlideStep};
+use asperity::scene::Scene;
+use plotters::prelude::*;
+use std::error::Error;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+
+type Res<T> = Result<T, Box<dyn Error>>;
+/// A named, coloured line of a plot.
+type Series<'a> = (&'a str, Vec<(f64, f64)>, RGBColor);
+
+/// Arguments of `asperity slide`.
+#[derive(clap::Args)]
+pub struct SlideArgs {
+    /// The scene (JSON; paths inside are relative to it).
+    scene: PathBuf,
+    /// Print one JSON object with the summary (no progress bar, no table).
+    #[arg(long)]
+    json: bool,
+    /// Directory for the CSV and SVG outputs (default: the current one).
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+pub fn run(args: &SlideArgs) -> Res<()> {
+    let scene = Scene::from_file(&args.scene)?;
+    let slider = scene.build()?;
+    let hidden = args.json || !std::io::stderr().is_terminal();
+    let bar = if hidden {
+        indicatif::ProgressBar::hidden()
+    } else {
+        indicatif::ProgressBar::new(0)
+    };
+    let run = slider.slide_with(scene.sliding.distance, scene.sliding.step, |k, n| {
+        if k == 1 {
+            bar.set_length(n as u64);
+        }
+        bar.set_position(k as u64);
+    })?;
+    bar.finish_and_clear();
+    let out = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    let stem = args
+        .scene
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "slide".into());
+    let mut written = vec![];
+    if scene.outputs.csv || scene.outputs.svg {
+        std::fs::create_dir_all(&out)
+            .map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    }
+    if scene.outputs.csv {
+        let p = out.join(format!("{stem}.csv"));
+        write_csv(&p, &run.steps)?;
+        written.push(p);
+    }
+    if scene.outputs.svg {
+        let p = out.join(format!("{stem}_cof.svg"));
+        cof_plot(&p, &run.steps)?;
+        written.push(p);
+        let p = out.join(format!("{stem}_dissipation.svg"));
+        dissipation_plot(&p, &run.steps)?;
+        written.push(p);
+    }
+    if args.json {
+        println!("{}", summary_json(&run, &written));
+    } else {
+        let s = &run.summary;
+        println!("steps                     {}", s.steps);
+        println!("normal load               {:.6e} N", s.normal_load);
+        println!("mean COF                  {:.4}", s.mean_cof);
+        println!("mean friction force       {:.6e} N", s.mean_friction_force);
+        println!(
+            "mean true contact area    {:.6e} m^2",
+            s.mean_true_contact_area
+        );
+        println!(
+            "adhesion share of area    {:.2} %",
+            100.0 * s.mean_adhesion_area_share
+        );
+        let d = s.dissipation;
+        println!(
+            "dissipation (J)           chemical {:.4e}, van der Waals {:.4e}, elastic {:.4e}, plastic {:.4e}",
+            d.chemical, d.van_der_waals, d.elastic, d.plastic
+        );
+        for p in &written {
+            println!("wrote {}", p.display());
+        }
+    }
+    Ok(())
+}
+
+fn summary_json(run: &SlideRun, written: &[PathBuf]) -> String {
+    let s = &run.summary;
+    let d = s.dissipation;
+    serde_json::json!({
+        "mean_cof": s.mean_cof,
+        "mean_friction_force": s.mean_friction_force,
+        "normal_load": s.normal_load,
+        "dissipation": {
+            "chemical": d.chemical,
+            "van_der_waals": d.van_der_waals,
+            "elastic": d.elastic,
+            "plastic": d.plastic,
+        },
+        "mean_true_contact_area": s.mean_true_contact_area,
+        "mean_adhesion_area_share": s.mean_adhesion_area_share,
+        "mean_nano_contacts": s.mean_nano_contacts,
+        "max_yielded_rods": s.max_yielded_rods,
+        "no_contact_steps": s.no_contact_steps,
+        "distance": s.distance,
+        "steps": s.steps,
+        "files": written.iter().map(|p| p.display().to_string()).collect::<Vec<_>>(),
+    })
+    .to_string()
+}
+
+fn write_csv(path: &Path, steps: &[SlideStep]) -> Res<()> {
+    let mut s = String::from(
+        "position_m,rod_position_m,normal_load_n,friction_force_n,cof,no_contact,adhesion_n,\
+         chemical_j,van_der_waals_j,elastic_j,plastic_j,true_contact_area_m2,\
+         adhesion_area_share,nano_contacts,adhesive_contacts,rods_in_contact,yielded_rods\n",
+    );
+    for r in steps {
+        let d = r.dissipation;
+        s.push_str(&format!(
+            "{:e},{:e},{:e},{:e},{:e},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{},{}\n",
+            r.position,
+            r.rod_position,
+            r.normal_load,
+            r.friction_force,
+            r.cof,
+            r.no_contact as u8,
+            r.adhesion,
+            d.chemical,
+            d.van_der_waals,
+            d.elastic,
+            d.plastic,
+            r.true_contact_area,
+            r.adhesion_area_share,
+            r.nano_contacts,
+            r.adhesive_contacts,
+            r.rods_in_contact,
+            r.yielded_rods
+        ));
+    }
+    std::fs::write(path, s).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(())
+}
+
+fn bounds(series: &[Vec<(f64, f64)>]) -> (f64, f64, f64, f64) {
+    let (mut x0, mut x1, mut y0, mut y1) =
+        (f64::INFINITY, f64::NEG_INFINITY, 0.0f64, f64::NEG_INFINITY);
+    for s in series {
+        for &(x, y) in s {
+            x0 = x0.min(x);
+            x1 = x1.max(x);
+            y0 = y0.min(y);
+            y1 = y1.max(y);
+        }
+    }
+    if x1.is_nan() || x1 <= x0 {
+        x1 = x0 + 1.0;
+    }
+    if y1.is_nan() || y1 <= y0 {
+        y1 = y0 + 1.0;
+    }
+    (x0, x1, y0, y1 + 0.05 * (y1 - y0))
+}
+
+fn plot(path: &Path, title: &str, y_label: &str, series: &[Series<'_>]) -> Res<()> {
+    let mut buf = String::new();
+    {
+        let root = SVGBackend::with_string(&mut buf, (900, 500)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let data: Vec<_> = series.iter().map(|s| s.1.clone()).collect();
+        let (x0, x1, y0, y1) = bounds(&data);
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 20))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x0..x1, y0..y1)?;
+        chart
+            .configure_mesh()
+            .x_desc("slider position (µm)")
+            .y_desc(y_label)
+            .draw()?;
+        for (name, pts, color) in series {
+            let c = *color;
+            chart
+                .draw_series(LineSeries::new(pts.iter().copied(), c.stroke_width(2)))?
+                .label(*name)
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(2))
+                });
+        }
+        if series.len() > 1 {
+            chart
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.8))
+                .border_style(BLACK)
+                .draw()?;
+        }
+        root.present()?;
+    }
+    std::fs::write(path, buf).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(())
+}
+
+fn cof_plot(path: &Path, steps: &[SlideStep]) -> Res<()> {
+    let pts = steps.iter().map(|r| (r.position * 1e6, r.cof)).collect();
+    plot(
+        path,
+        "Coefficient of friction",
+        "COF",
+        &[("COF", pts, BLUE)],
+    )
+}
+
+fn dissipation_plot(path: &Path, steps: &[SlideStep]) -> Res<()> {
+    let pick = |f: fn(&SlideStep) -> f64| -> Vec<(f64, f64)> {
+        steps.iter().map(|r| (r.position * 1e6, f(r))).collect()
+    };
+    plot(
+        path,
+        "Energy dissipated per step, by mechanism",
+        "energy (J)",
+        &[
+            ("chemical", pick(|r| r.dissipation.chemical), RED),
+            ("van der Waals", pick(|r| r.dissipation.van_der_waals), BLUE),
+            ("elastic", pick(|r| r.dissipation.elastic), GREEN),
+            ("plastic", pick(|r| r.dissipation.plastic), MAGENTA),
+        ],
+    )
+}
