@@ -346,3 +346,50 @@ fn periodic_track_and_flat_counter() {
     }
     assert!(run.summary.mean_cof > 0.0);
 }
+
+/// The homogenised law built from slider runs reproduces, at each sampled
+/// pressure, what a separate run of the slider at that load gives: the slip
+/// force F = μ(N + A) equals the run's mean friction force (total
+/// dissipation / distance), the dissipation split and the true contact area
+/// are the run's.
+#[test]
+fn homogenised_law_from_slider_runs_reproduces_the_runs() {
+    use asperity::friction::{FrictionIncrement, FrictionPointState, FrictionResponse};
+    let base = scene().build().unwrap();
+    let area = base.nominal_area();
+    let (distance, step) = (30e-6, 1.5e-6);
+    let pressures: Vec<f64> = [0.05, 0.2, 0.4]
+        .iter()
+        .map(|f| f * base.capacity() / area)
+        .collect();
+    let law = base.homogenise(&pressures, distance, step).unwrap();
+    for &p in &pressures {
+        let run = rebuilt(Loading::FixedLoad { load: p * area })
+            .unwrap()
+            .slide(distance, step)
+            .unwrap();
+        let inc = FrictionIncrement {
+            normal_force: p * area,
+            area,
+            slip: [1e-7, 0.0],
+            dt: 1e-3,
+            stick_stiffness: 0.0,
+        };
+        let mut new = FrictionPointState::default();
+        let mut out = FrictionResponse::default();
+        law.step(&FrictionPointState::default(), &inc, &mut new, &mut out)
+            .unwrap();
+        let f = run.summary.mean_friction_force;
+        assert!(
+            (out.force_magnitude - f).abs() <= 1e-12 * f,
+            "p = {p:e} Pa: homogenised {} N, slider {f} N",
+            out.force_magnitude
+        );
+        assert!(out.force[0] < 0.0, "the force opposes the slip");
+        let d = run.summary.dissipation;
+        let share = out.dissipation.chemical / out.dissipated;
+        assert!((share - d.chemical / d.total()).abs() < 1e-12);
+        let a = run.summary.mean_true_contact_area;
+        assert!((out.true_contact_area - a).abs() <= 1e-12 * a);
+    }
+}

@@ -97,7 +97,8 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::geometry::SliderGeometry;
-use super::ledger::{ledger_step, CofForm, Dissipation, Mechanisms};
+use super::homogenised::{HomogenisedFriction, HomogenisedSample};
+use super::ledger::{coefficient_of_friction, ledger_step, CofForm, Dissipation, Mechanisms};
 use super::mechanisms::{FrictionMaterial, NanoAsperityBonds};
 use super::rods::{RodBed, RodOptions, RodReport, RodSolution, RodState};
 use crate::error::{check, Error, Result};
@@ -715,6 +716,89 @@ impl Slider {
         Ok(SlideRun {
             steps: records,
             summary,
+        })
+    }
+}
+
+impl Slider {
+    /// The same slider under another loading (validated as in
+    /// [`Self::new`]: a fixed load must lie within the bed's capacity).
+    pub fn with_loading(&self, loading: Loading) -> Result<Slider> {
+        let mut options = self.options;
+        options.loading = loading;
+        Slider::new(
+            self.geometry.clone(),
+            self.material,
+            self.counter.clone(),
+            self.counter_dx,
+            options,
+        )
+    }
+
+    /// The homogenised friction law of this slider for FE integration points
+    /// (issue 6 §4 (b)): one run ([`Self::slide`] over `distance` in
+    /// increments of `step`) at the fixed load p·A_n for each nominal
+    /// pressure p of `pressures` (Pa, increasing, ≥ 0, each within the
+    /// capacity σ_y·A_rods/A_n), tabulated by [`HomogenisedFriction`] in this
+    /// slider's COF form.
+    ///
+    /// Each sample is built from the run's means so that the homogenised
+    /// slip force reproduces the run's mean friction force: with F̄ the mean
+    /// friction force (total dissipation / distance), N the load and Ā the
+    /// mean adhesive holding force N_c·F_adh,1, μ = F̄/(N + Ā) (Derjaguin;
+    /// F̄/N, (F̄ − Ā)/N for the other forms, [`coefficient_of_friction`]),
+    /// adhesion pressure Ā/A_n, contact fraction = mean true contact area /
+    /// A_n, and the dissipation shares of the run's totals. A run that
+    /// dissipates nothing (no contact) gets μ = 0 and its shares all on the
+    /// chemical bonds (they are then never used: the slip force is 0).
+    ///
+    /// Errors: the errors of [`Self::with_loading`], [`Self::slide`],
+    /// [`coefficient_of_friction`] (a Coulomb or Amontons form at zero load)
+    /// and [`HomogenisedFriction::from_fn`] (pressures not increasing).
+    pub fn homogenise(
+        &self,
+        pressures: &[f64],
+        distance: f64,
+        step: f64,
+    ) -> Result<HomogenisedFriction> {
+        let area = self.nominal_area();
+        let form = self.options.cof_form;
+        HomogenisedFriction::from_fn(pressures, form, |p| {
+            let load = p * area;
+            let run = self
+                .with_loading(Loading::FixedLoad { load })?
+                .slide(distance, step)?;
+            let sum = &run.summary;
+            let n = run.steps.len().max(1) as f64;
+            let adhesion = run.steps.iter().map(|r| r.adhesion).sum::<f64>() / n;
+            let total = sum.dissipation.total();
+            let (cof, shares) = if total > 0.0 {
+                let d = sum.dissipation;
+                (
+                    coefficient_of_friction(form, sum.mean_friction_force, load, adhesion)?,
+                    Dissipation {
+                        chemical: d.chemical / total,
+                        van_der_waals: d.van_der_waals / total,
+                        elastic: d.elastic / total,
+                        plastic: d.plastic / total,
+                    },
+                )
+            } else {
+                (
+                    0.0,
+                    Dissipation {
+                        chemical: 1.0,
+                        ..Dissipation::default()
+                    },
+                )
+            };
+            Ok(HomogenisedSample {
+                pressure: p,
+                cof,
+                adhesion_pressure: adhesion / area,
+                contact_fraction: (sum.mean_true_contact_area / area).min(1.0),
+                shares,
+            })
         })
     }
 }
