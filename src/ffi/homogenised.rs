@@ -9,8 +9,8 @@
 //! point relative to the counter-surface, the tangential force is the force
 //! on the point and opposes slip.
 
-use super::{guard, input, output, Failure};
-use crate::error::{Error, Result};
+use super::{copy_text, guard, input, output, read_text, Failure};
+use crate::error::Result;
 use crate::friction::{
     CofForm, FrictionIncrement, FrictionPointState, FrictionResponse, HomogenisedFriction,
     HomogenisedSample, RawFrictionBlock,
@@ -86,14 +86,7 @@ pub unsafe extern "C" fn asperity_homogenised_friction_from_json(
     out: *mut *mut AsperityHomogenisedFriction,
 ) -> i32 {
     emit(out, || {
-        let p = input(json, "json")?;
-        // SAFETY: the caller provides `len` readable bytes at `json`.
-        let bytes = core::slice::from_raw_parts((p as *const c_char).cast::<u8>(), len);
-        let text = core::str::from_utf8(bytes).map_err(|e| Error::InvalidArgument {
-            name: "json",
-            value: e.valid_up_to() as f64,
-            bound: "UTF-8 text (invalid byte at this offset)",
-        })?;
+        let text = read_text(json, len, "json")?;
         HomogenisedFriction::from_json(text)
     })
 }
@@ -112,14 +105,7 @@ pub unsafe extern "C" fn asperity_homogenised_friction_to_json(
     guard(|| {
         let f = &input(friction, "friction")?.0;
         let needed = output(needed, "needed")?;
-        let s = f.to_json();
-        let bytes = s.as_bytes();
-        if !buf.is_null() && len > 0 {
-            let n = bytes.len().min(len - 1);
-            core::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
-            *buf.add(n) = 0;
-        }
-        *needed = bytes.len();
+        *needed = copy_text(&f.to_json(), buf, len);
         Ok(())
     })
 }

@@ -97,6 +97,42 @@ pub(crate) unsafe fn output<'a, T>(p: *mut T, name: &'static str) -> Result<&'a 
     p.as_mut().ok_or(Error::NullPointer { name })
 }
 
+/// Copy `text` into the caller's `buf` of `len` bytes (at most `len − 1`
+/// bytes plus a terminating NUL; nothing when `buf` is NULL or `len` is 0)
+/// and return its full length in bytes, so a caller can size a buffer with a
+/// first call on `(NULL, 0)`.
+///
+/// # Safety
+/// `buf` is NULL or points to `len` writable bytes.
+pub(crate) unsafe fn copy_text(text: &str, buf: *mut c_char, len: usize) -> usize {
+    let bytes = text.as_bytes();
+    if !buf.is_null() && len > 0 {
+        let n = bytes.len().min(len - 1);
+        core::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
+        *buf.add(n) = 0;
+    }
+    bytes.len()
+}
+
+/// The `len` bytes at `text` (no NUL needed) as UTF-8; errors name `name`
+/// (NULL pointer, or the offset of the first invalid byte).
+///
+/// # Safety
+/// `text` is NULL or points to `len` readable bytes that outlive the result.
+pub(crate) unsafe fn read_text<'a>(
+    text: *const c_char,
+    len: usize,
+    name: &'static str,
+) -> Result<&'a str> {
+    let p = input(text, name)?;
+    let bytes = core::slice::from_raw_parts((p as *const c_char).cast::<u8>(), len);
+    core::str::from_utf8(bytes).map_err(|e| Error::InvalidArgument {
+        name,
+        value: e.valid_up_to() as f64,
+        bound: "UTF-8 text (invalid byte at this offset)",
+    })
+}
+
 /// The library version, "MAJOR.MINOR.PATCH", from `Cargo.toml`. Static storage;
 /// do not free.
 #[no_mangle]
@@ -113,17 +149,8 @@ pub extern "C" fn asperity_version() -> *const c_char {
 pub unsafe extern "C" fn asperity_last_error_message(buf: *mut c_char, len: usize) -> usize {
     let r = std::panic::catch_unwind(|| {
         LAST_ERROR.with(|m| {
-            let m = m.borrow();
-            let bytes = m.as_bytes();
-            if !buf.is_null() && len > 0 {
-                let n = bytes.len().min(len - 1);
-                // SAFETY: the caller provides `len` writable bytes at `buf`.
-                unsafe {
-                    std::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
-                    *buf.add(n) = 0;
-                }
-            }
-            bytes.len()
+            // SAFETY: the caller provides `len` writable bytes at `buf`.
+            unsafe { copy_text(m.borrow().as_str(), buf, len) }
         })
     });
     r.unwrap_or(0)

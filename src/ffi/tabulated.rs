@@ -7,11 +7,10 @@
 //! number of threads at once (per-contact states stay with the caller).
 //! `asperity_table_new_lj` tabulates the numerical Lennard-Jones sphere.
 
-use super::{guard, input, output, Failure};
+use super::{copy_text, guard, input, output, read_text, Failure};
 use crate::contact::{
     ContactState, LjSphere, MaugisDugdale, NormalContact, NormalResponse, TabulatedLaw,
 };
-use crate::error::Error;
 use std::ffi::c_char;
 
 /// An immutable tabulated contact law (opaque). Create it with
@@ -205,14 +204,7 @@ pub unsafe extern "C" fn asperity_table_to_json(
     guard(|| {
         let t = &input(table, "table")?.0;
         let needed = output(needed, "needed")?;
-        let s = t.to_json();
-        let bytes = s.as_bytes();
-        if !buf.is_null() && len > 0 {
-            let n = bytes.len().min(len - 1);
-            core::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
-            *buf.add(n) = 0;
-        }
-        *needed = bytes.len();
+        *needed = copy_text(&t.to_json(), buf, len);
         Ok(())
     })
 }
@@ -228,13 +220,7 @@ pub unsafe extern "C" fn asperity_table_from_json(
     out: *mut *mut AsperityTable,
 ) -> i32 {
     emit(out, || {
-        let p = input(json, "json")?;
-        let bytes = core::slice::from_raw_parts((p as *const c_char).cast::<u8>(), len);
-        let text = core::str::from_utf8(bytes).map_err(|e| Error::InvalidArgument {
-            name: "json",
-            value: e.valid_up_to() as f64,
-            bound: "UTF-8 text (invalid byte at this offset)",
-        })?;
+        let text = read_text(json, len, "json")?;
         TabulatedLaw::from_json(text)
     })
 }
