@@ -639,6 +639,9 @@ pub struct LjSolver {
     mesh: Mesh,
     /// Influence matrix, column-major n×n.
     a: Vec<f64>,
+    /// The influence matrix rounded to `f32`, for the continuation's
+    /// single-precision Jacobian products (`path` module docs).
+    a32: Vec<f32>,
     /// Influence row at r = 0.
     a0: Vec<f64>,
     /// Tail deformation factor at the nodes (times −k gives ū_tail).
@@ -782,6 +785,7 @@ impl LjSolver {
             k: 4.0 * mu.powf(1.5) / PI,
             opts: o,
             mesh,
+            a32: a.iter().map(|&v| v as f32).collect(),
             a,
             a0,
             tail,
