@@ -6,9 +6,20 @@
 //!
 //! If no C compiler is available the library still builds: the script warns
 //! and the benches skip the C-kernel rows (cfg `asperity_c_kernels` unset).
+//!
+//! On Linux it also gives the shared library its soname,
+//! `libasperity.so.MAJOR`.
 
 fn main() {
     println!("cargo::rerun-if-changed=build.rs");
+    // The shared library's ELF soname carries the ABI major version, so host
+    // codes linked against it refuse an incompatible release
+    // (scripts/install.sh installs libasperity.so.MAJOR.MINOR.PATCH with the
+    // .so.MAJOR and .so links; tests/abi.rs guards the ABI).
+    if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
+        let major = std::env::var("CARGO_PKG_VERSION_MAJOR").unwrap_or_else(|_| "0".into());
+        println!("cargo::rustc-cdylib-link-arg=-Wl,-soname,libasperity.so.{major}");
+    }
     println!("cargo::rerun-if-changed=benches/c/kernels.c");
     println!("cargo::rerun-if-changed=benches/c/kernels.h");
     println!("cargo::rustc-check-cfg=cfg(asperity_c_kernels)");

@@ -155,6 +155,22 @@ fn build_library(l: &Layout) -> Result<(), String> {
             ));
         }
     }
+    soname_link(&l.profile_dir)
+}
+
+/// The shared library's soname is `libasperity.so.MAJOR` (build.rs): a
+/// program linked against `libasperity.so` asks the loader for that name, so
+/// it must exist next to the library (scripts/install.sh makes the same link).
+fn soname_link(dir: &Path) -> Result<(), String> {
+    #[cfg(target_os = "linux")]
+    {
+        let link = dir.join(format!("{SHARED_LIB}.{}", env!("CARGO_PKG_VERSION_MAJOR")));
+        let _ = std::fs::remove_file(&link);
+        std::os::unix::fs::symlink(SHARED_LIB, &link)
+            .map_err(|e| format!("linking {} to {SHARED_LIB}: {e}", link.display()))?;
+    }
+    #[cfg(not(target_os = "linux"))]
+    let _ = dir;
     Ok(())
 }
 
