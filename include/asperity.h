@@ -1030,6 +1030,29 @@ const char *asperity_version(void);
 size_t asperity_last_error_message(char *buf,
                                    size_t len);
 
+// The size `*size` and alignment `*align` in bytes of the `repr(C)` type
+// whose C name is the NUL-terminated `name` (e.g. `"AsperityNormalLaw"`;
+// structs and unions of this header with a body, not the opaque handles).
+// An unknown name gives `ASPERITY_ERR_INVALID_ARGUMENT` naming `name`;
+// `asperity_type_count` and `asperity_type_name` list the known ones.
+int32_t asperity_type_layout(const char *name,
+                             size_t *size,
+                             size_t *align);
+
+// The number of types `asperity_type_layout` knows (indices
+// `0 .. asperity_type_count()` of `asperity_type_name`).
+size_t asperity_type_count(void);
+
+// Copy the C name of type `index` (< `asperity_type_count()`) into `buf`
+// (at most `len − 1` bytes and a NUL) and write its full length in bytes
+// (without the NUL) to `*needed`, so `asperity_type_name(i, NULL, 0, &n)`
+// sizes the buffer. The name is complete only when `*needed < len`;
+// `needed` is required.
+int32_t asperity_type_name(size_t index,
+                           char *buf,
+                           size_t len,
+                           size_t *needed);
+
 // Hertz sphere: radius R (m), contact modulus E* (Pa).
 int32_t asperity_law_hertz(double radius,
                            double e_star,

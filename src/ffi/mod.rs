@@ -8,6 +8,7 @@
 
 #![allow(clippy::missing_safety_doc)]
 
+pub mod abi;
 pub mod contact;
 pub mod fidelity;
 pub mod friction;

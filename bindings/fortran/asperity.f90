@@ -1,0 +1,4239 @@
+!> Fortran 2008 bindings of asperity, physics of dry contact between rough
+!> surfaces, over the C ABI of `include/asperity.h` (see bindings/README.md).
+!>
+!>     use asperity
+!>     type(asperity_normal_law) :: law
+!>     type(asperity_normal_response) :: r
+!>     call asperity_law_jkr(1e-6_c_double, 1e9_c_double, 0.05_c_double, law)
+!>     call asperity_normal_eval(law, 1e-9_c_double, r)
+!>
+!> Link with `-lasperity` (shared) or `libasperity.a` plus the system
+!> libraries the Rust runtime needs (`-lgcc_s -lutil -lrt -lpthread -lm -ldl`
+!> on Linux); see bindings/README.md.
+!>
+!> The module has two layers.
+!>
+!> * The raw layer: one `bind(c)` interface per C function, named `c_` plus
+!>   the C name (`c_asperity_law_jkr`), returning the C status. Scalars are
+!>   passed by value, arrays as `x(*)` with their length in an
+!>   `integer(c_size_t), value` argument, structs as the `type, bind(c)`
+!>   mirrors below, opaque handles and arguments the C function accepts as
+!>   NULL as `type(c_ptr), value` (pass `c_loc(x)` or `c_null_ptr`). It is
+!>   the C ABI exactly, for hosts that want nothing in between.
+!>
+!> * The friendly layer: one procedure per C function, named as the C
+!>   function (`asperity_law_jkr`). The arguments are the C arguments in the C
+!>   order, except that array lengths are taken from the arrays (`size`),
+!>   arguments the C function accepts as NULL are `optional` and come last
+!>   (in C order), and an `optional, intent(out) :: status` ends every list.
+!>   With `status` present a failure returns its (negative) code and
+!>   `asperity_last_error_message()` says why; without it a failure prints
+!>   the message to `error_unit` and stops the program (`error stop`).
+!>   Opaque objects are handle types (`asperity_table`, ...) holding a
+!>   `type(c_ptr)`; text comes and goes as `character(len=*)` and
+!>   `character(len=:), allocatable`. Procedures that step a caller-owned
+!>   history also take `state` (or `states`): the old and the new history in
+!>   one variable, updated in place (Fortran forbids passing one variable as
+!>   both `old_state` and `new_state`).
+!>
+!> Types: `type, bind(c) :: asperity_<snake_case>` mirrors the C struct
+!> `Asperity<CamelCase>` field by field, with the C field names; the
+!> components default to zero, so a declared state is a fresh state. C arrays
+!> of two become Fortran arrays (1:2); `dforce_dslip[i][j]` is
+!> `dforce_dslip(j+1, i+1)`; `AsperityFidelityAdvice.assessments` is indexed
+!> `(0:5)` by `ASPERITY_FIDELITY_*` and
+!> `AsperityIndentationOptions.area_coefficients` `(0:7)` by the NanoSuite
+!> coefficient number. The C union `AsperityLawParams` is its storage
+!> `raw(16)`; view it as one law with `transfer`, e.g.
+!> `jkr = transfer(law%params, jkr)` for a `type(asperity_jkr) :: jkr`.
+!> `asperity_type_layout` gives the size the library has for each C type;
+!> tests/fortran_bindings.rs checks `c_sizeof` of every mirror against it.
+!>
+!> Indices the C API takes (rod levels, `asperity_type_name`) keep their C
+!> meaning: 0 is the first. Counts given to the friendly layer (`n_grid`,
+!> `rods`, `order`, `level`) are default integers.
+!>
+!> Handles own their object: create them with the `..._new...`/`..._from_json`
+!> procedures and release them with `call h%free()` (or `asperity_free(h)`,
+!> or the C-named `asperity_table_free(h)`); a handle that is finalised
+!> (deallocated, or going out of scope on compilers that finalise locals) frees its
+!> object too. Do not copy a live handle with `=` (both copies would free the
+!> same object): assignment of a non-null handle to another variable stops
+!> the program; pass handles as arguments, or use pointers.
+!>
+!> Thread safety is that of the C ABI: every call is reentrant, the laws
+!> and handles are immutable and may be shared by threads, and the error
+!> message is per thread. The friendly layer's own argument checks (array
+!> sizes) keep their message in a module variable marked `threadprivate`
+!> for OpenMP.
+module asperity
+  use, intrinsic :: iso_c_binding, only: c_double, c_int32_t, c_int64_t, c_size_t, c_char, &
+      c_ptr, c_funptr, c_null_ptr, c_null_char, c_loc, c_funloc, c_associated, c_f_pointer
+  use, intrinsic :: iso_fortran_env, only: error_unit
+  implicit none
+  private
+
+  ! The kinds a caller needs with this module.
+  public :: c_double, c_int32_t, c_int64_t, c_size_t
+
+  ! ------------------------------------------------------------------------
+  ! Constants: every `#define ASPERITY_*` of the header.
+
+  integer(c_int32_t), parameter, public :: ASPERITY_VERSION_MAJOR = 0
+  integer(c_int32_t), parameter, public :: ASPERITY_VERSION_MINOR = 1
+  integer(c_int32_t), parameter, public :: ASPERITY_VERSION_PATCH = 0
+  ! The law kinds `ASPERITY_LAW_<NAME>` of the header are `ASPERITY_LAW_KIND_<NAME>` here:
+  ! Fortran names are case-insensitive, and `ASPERITY_LAW_JKR` would be the
+  ! constructor `asperity_law_jkr`.
+  !> Law kind: not a law (an all-zero `AsperityNormalLaw`).
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_NONE = 0
+  !> Law kind: Hertz sphere.
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_HERTZ = 1
+  !> Law kind: Galin power-law punch (cones included).
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_POWER_PUNCH = 2
+  !> Law kind: flat punch (Boussinesq), frictionless or no-slip.
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_FLAT_PUNCH = 3
+  !> Law kind: DMT sphere.
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_DMT = 4
+  !> Law kind: JKR sphere.
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_JKR = 5
+  !> Law kind: JKR power-law punch (Borodich 2014), frictionless or no-slip.
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_JKR_POWER_PUNCH = 6
+  !> Law kind: Kendall adhesive flat punch.
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_KENDALL = 7
+  !> Law kind: Maugis–Dugdale sphere.
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_MAUGIS_DUGDALE = 8
+  !> Law kind: rigid sphere with a surface-force law (Derjaguin approximation).
+  integer(c_int32_t), parameter, public :: ASPERITY_LAW_KIND_DERJAGUIN = 9
+  !> Control mode: prescribed force (soft machine).
+  integer(c_int32_t), parameter, public :: ASPERITY_CONTROL_LOAD = 0
+  !> Control mode: prescribed approach (rigid machine, fixed grips).
+  integer(c_int32_t), parameter, public :: ASPERITY_CONTROL_DISPLACEMENT = 1
+  !> Surface law of `asperity_law_derjaguin`: Lennard-Jones 3-9, `range` = z₀.
+  integer(c_int32_t), parameter, public :: ASPERITY_SURFACE_LAW_LENNARD_JONES = 1
+  !> Surface law: Dugdale step, `range` = σ₀ (Pa), the cohesive stress.
+  integer(c_int32_t), parameter, public :: ASPERITY_SURFACE_LAW_DUGDALE = 2
+  !> Surface law: exponential, `range` = decay length ℓ (m).
+  integer(c_int32_t), parameter, public :: ASPERITY_SURFACE_LAW_EXPONENTIAL = 3
+  !> Fidelity: DMT.
+  integer(c_int32_t), parameter, public :: ASPERITY_FIDELITY_DMT = 0
+  !> Fidelity: tabulated Maugis–Dugdale.
+  integer(c_int32_t), parameter, public :: ASPERITY_FIDELITY_TABULATED_MAUGIS_DUGDALE = 1
+  !> Fidelity: tabulated Lennard-Jones sphere.
+  integer(c_int32_t), parameter, public :: ASPERITY_FIDELITY_TABULATED_LENNARD_JONES = 2
+  !> Fidelity: JKR.
+  integer(c_int32_t), parameter, public :: ASPERITY_FIDELITY_JKR = 3
+  !> Fidelity: Maugis–Dugdale (λ = 1.157 μ).
+  integer(c_int32_t), parameter, public :: ASPERITY_FIDELITY_MAUGIS_DUGDALE = 4
+  !> Fidelity: the full numerical Lennard-Jones sphere.
+  integer(c_int32_t), parameter, public :: ASPERITY_FIDELITY_LENNARD_JONES = 5
+  !> `AsperityFrictionResponse.regime`: the trial force is inside the cone, no plastic slip.
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_STICK = 0
+  !> `AsperityFrictionResponse.regime`: the force is on the cone, plastic slip and dissipation.
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_SLIP = 1
+  !> `AsperityFrictionResponse.regime`: no normal force and no adhesion; no friction (force 0).
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_NO_CONTACT = 2
+  !> Segment label: not assigned.
+  integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_UNKNOWN = 0
+  !> Segment label: approach (before contact).
+  integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_APPROACH = 1
+  !> Segment label: loading.
+  integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_LOADING = 2
+  !> Segment label: hold at peak.
+  integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_HOLD = 3
+  !> Segment label: unloading from the peak.
+  integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_UNLOADING = 4
+  !> Segment label: thermal-drift hold.
+  integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_DRIFT_HOLD = 5
+  !> Segment label: final unloading after the drift hold.
+  integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_FINAL_UNLOADING = 6
+  !> Indenter: Berkovich pyramid (ideal area 24.5 h_c², β = 1.05).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_BERKOVICH = 1
+  !> Indenter: Vickers pyramid (ideal area 24.5 h_c², β = 1.05).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_VICKERS = 2
+  !> Indenter: cube corner (ideal area 2.598 h_c², β = 1.05).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_CUBE_CORNER = 3
+  !> Indenter: cone of half-angle `cone_half_angle` (rad), β = 1.
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_CONE = 4
+  !> Indenter: sphere of radius `sphere_radius` (m), d = 2, β = 1.
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_SPHERE = 5
+  !> Indenter: not documented (Berkovich area and β assumed, flagged).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_UNKNOWN = 6
+  !> Loading-fit anchor: the maximum point of loading (thesis §3.6.1).
+  integer(c_int32_t), parameter, public :: ASPERITY_ANCHOR_MAX_POINT = 0
+  !> Loading-fit anchor: the point `anchor_index`.
+  integer(c_int32_t), parameter, public :: ASPERITY_ANCHOR_INDEX = 1
+  !> Loading-fit anchor: none (two-parameter regression).
+  integer(c_int32_t), parameter, public :: ASPERITY_ANCHOR_FREE = 2
+  !> Flag bit: κ < 0 (outside the rescaling assumptions).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_KAPPA_NEGATIVE = 1
+  !> Flag bit: κ > 1 (only densifying or hardening materials).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_KAPPA_ABOVE_ONE = 2
+  !> Flag bit: d > 3 (implausibly blunt).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_D_ABOVE_THREE = 4
+  !> Flag bit: d < 1 (sharper than a cone).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_D_BELOW_ONE = 8
+  !> Flag bit: indenter and specimen both deformable with different κ.
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_BOTH_DEFORMABLE = 16
+  !> Flag bit: sharp indenter, outside the Hertz assumptions.
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_SHARP_INDENTER = 32
+  !> Flag bit: no usable unloading branch (no modulus, no hardness).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_NO_UNLOADING = 64
+  !> Flag bit: few points in the fits.
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_FEW_POINTS = 128
+  !> Flag bit: loading branch not a power law (R² < 0.99).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_POOR_LOADING_FIT = 256
+  !> Flag bit: unloading branch not a power law (R² < 0.99).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_POOR_UNLOADING_FIT = 512
+  !> Flag bit: indenter undocumented, ideal Berkovich area assumed.
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_AREA_FUNCTION_ASSUMED = 1024
+  !> Flag bit: se(κ) > 0.25.
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_KAPPA_POORLY_CONSTRAINED = 2048
+  !> Flag bit: se(d) > d/4.
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_D_POORLY_CONSTRAINED = 4096
+  !> Flag bit: E_r not below the indenter's modulus (no sample modulus).
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_MODULUS_EXCEEDS_INDENTER = 8192
+  !> Weir surface energy prefactor `K = 1/((m−2)(n−2))` (the default).
+  integer(c_int32_t), parameter, public :: ASPERITY_WEIR_PLANE_SUM = 0
+  !> Weir surface energy prefactor `K = 3/(mn)` (reproduces seed 001's 8.6 nN).
+  integer(c_int32_t), parameter, public :: ASPERITY_WEIR_THREE_OVER_MN = 1
+  !> Pair rule: Dupré with geometric-mean interfacial energy, `w = 2√(γ₁γ₂)`.
+  integer(c_int32_t), parameter, public :: ASPERITY_PAIR_GEOMETRIC_MEAN = 0
+  !> Pair rule of seed 001: `Δγ = (√γ₁ − √γ₂)²`.
+  integer(c_int32_t), parameter, public :: ASPERITY_PAIR_SEED001_DIFFERENCE = 1
+  !> Summit heights: Gaussian of zero mean and standard deviation σ.
+  integer(c_int32_t), parameter, public :: ASPERITY_HEIGHTS_GAUSSIAN = 1
+  !> Summit heights: exponential tail shifted to zero mean, standard deviation (decay length) σ.
+  integer(c_int32_t), parameter, public :: ASPERITY_HEIGHTS_EXPONENTIAL = 2
+  !> Deformation regime of a plasticity index ψ < 0.6: elastic.
+  integer(c_int32_t), parameter, public :: ASPERITY_REGIME_ELASTIC = 0
+  !> Deformation regime 0.6 ≤ ψ ≤ 1: transitional.
+  integer(c_int32_t), parameter, public :: ASPERITY_REGIME_TRANSITIONAL = 1
+  !> Deformation regime ψ > 1: plastic even at light loads.
+  integer(c_int32_t), parameter, public :: ASPERITY_REGIME_PLASTIC = 2
+  !> Success.
+  integer(c_int32_t), parameter, public :: ASPERITY_OK = 0
+  !> A required pointer argument was NULL.
+  integer(c_int32_t), parameter, public :: ASPERITY_ERR_NULL_POINTER = -1
+  !> An argument is outside its documented domain (NaN, ±∞ where not allowed, negative radius, ν >
+  !  0.5, an unknown selector value, …).
+  integer(c_int32_t), parameter, public :: ASPERITY_ERR_INVALID_ARGUMENT = -2
+  !> An iterative method did not reach its tolerance.
+  integer(c_int32_t), parameter, public :: ASPERITY_ERR_NOT_CONVERGED = -3
+  !> Valid arguments, but no such state for this law (for example a load below the pull-off
+  !  force).
+  integer(c_int32_t), parameter, public :: ASPERITY_ERR_OUT_OF_DOMAIN = -4
+  !> A bug in the library (a caught panic). The message says where.
+  integer(c_int32_t), parameter, public :: ASPERITY_ERR_INTERNAL = -5
+  !> A file could not be read (not found, no permission, not text).
+  integer(c_int32_t), parameter, public :: ASPERITY_ERR_IO = -6
+  !> A text file or buffer does not have the expected format; the message gives the line.
+  integer(c_int32_t), parameter, public :: ASPERITY_ERR_PARSE = -7
+  !> Form removal before analysis: none (the heights as given; the mean line is still their mean).
+  integer(c_int32_t), parameter, public :: ASPERITY_FORM_NONE = 0
+  !> Form removal: the mean height.
+  integer(c_int32_t), parameter, public :: ASPERITY_FORM_MEAN = 1
+  !> Form removal: the least-squares straight line (tilt).
+  integer(c_int32_t), parameter, public :: ASPERITY_FORM_LINEAR = 2
+  !> Form removal: the least-squares parabola (tilt and curvature).
+  integer(c_int32_t), parameter, public :: ASPERITY_FORM_QUADRATIC = 3
+  !> Gaussian filter ends: drop λc/2 at each end (ISO 4288 run-in/run-out).
+  integer(c_int32_t), parameter, public :: ASPERITY_FILTER_ENDS_DISCARD = 0
+  !> Gaussian filter ends: keep every sample, kernel renormalised at the ends (ISO 16610-28).
+  integer(c_int32_t), parameter, public :: ASPERITY_FILTER_ENDS_KEEP = 1
+  !> PSD data window: none (rectangular; Parseval exact, m₀ = Rq²).
+  integer(c_int32_t), parameter, public :: ASPERITY_WINDOW_RECTANGULAR = 0
+  !> PSD data window: periodic Hann, normalised by its mean square.
+  integer(c_int32_t), parameter, public :: ASPERITY_WINDOW_HANN = 1
+
+  ! ------------------------------------------------------------------------
+  ! Mirrors of the C structs (`type, bind(c)`), in header order.
+
+  !> `AsperityHertz`
+  type, bind(c), public :: asperity_hertz
+    !> Radius of curvature R of the sphere, or the effective radius `1/R = 1/R₁ + 1/R₂` of two
+    !  spheres (m).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa).
+    real(c_double) :: e_star = 0.0_c_double
+  end type asperity_hertz
+
+  !> `AsperityPowerPunch`
+  type, bind(c), public :: asperity_power_punch
+    !> Shape coefficient B (m^{1−d}).
+    real(c_double) :: b = 0.0_c_double
+    !> Shape exponent d (1 ≤ d ≤ 100).
+    real(c_double) :: d = 0.0_c_double
+    !> Contact modulus E* (Pa).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Cached `C(d) B E*` (Pa·m^{1−d}).
+    real(c_double) :: force_coefficient = 0.0_c_double
+    !> Cached `D(d) B` (m^{1−d}).
+    real(c_double) :: depth_coefficient = 0.0_c_double
+    !> Cached `1/(D(d) B)` (m^{d−1}).
+    real(c_double) :: inverse_depth_coefficient = 0.0_c_double
+    !> Cached `1/d`.
+    real(c_double) :: inverse_d = 0.0_c_double
+    !> Cached `(C(d)/D(d)) E* = 2d E*/(d+1)` (Pa), so that `P = this · a δ`.
+    real(c_double) :: force_per_area = 0.0_c_double
+  end type asperity_power_punch
+
+  !> `AsperityFlatPunch`
+  type, bind(c), public :: asperity_flat_punch
+    !> Punch radius a (m).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Stiffness `2 E* a` times the no-slip factor (1 when frictionless) (N/m).
+    real(c_double) :: stiffness = 0.0_c_double
+  end type asperity_flat_punch
+
+  !> `AsperityDmt`
+  type, bind(c), public :: asperity_dmt
+    !> Sphere radius R (m).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m²).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+  end type asperity_dmt
+
+  !> `AsperityJkr`
+  type, bind(c), public :: asperity_jkr
+    !> Sphere radius R (m).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m²).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Cached `k = √(2πw/E*)` (m^{1/2}); 0 without adhesion.
+    real(c_double) :: adhesion_coefficient = 0.0_c_double
+    !> Cached overlap scale `L = (4π²w²R/E*²)^{1/3}` (m) of the reduced quartic `η⁴ − η − δ/L =
+    !  0`; 0 without adhesion.
+    real(c_double) :: delta_scale = 0.0_c_double
+    !> Cached `1/L` (1/m); 0 without adhesion.
+    real(c_double) :: inv_delta_scale = 0.0_c_double
+    !> Cached radius scale `(kR)^{2/3} = (2πwR²/E*)^{1/3}` (m), `a = scale·η²` (the jump-in
+    !  radius); 0 without adhesion.
+    real(c_double) :: radius_scale = 0.0_c_double
+    !> Cached force scale `2πwR` (N), `P = scale·((4/3)η⁶ − 2η³)`.
+    real(c_double) :: force_scale = 0.0_c_double
+    !> Cached displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}` (m, ≤ 0).
+    real(c_double) :: critical_delta = 0.0_c_double
+  end type asperity_jkr
+
+  !> `AsperityJkrPowerPunch`
+  type, bind(c), public :: asperity_jkr_power_punch
+    !> Shape coefficient B (m^{1−d}).
+    real(c_double) :: b = 0.0_c_double
+    !> Shape exponent d (1 ≤ d ≤ 100).
+    real(c_double) :: d = 0.0_c_double
+    !> Contact modulus E* (Pa).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m²).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> No-slip factor C_NS (1 when frictionless).
+    real(c_double) :: no_slip_factor = 0.0_c_double
+    !> Shape factor k*(d) of the bonded punch (1 when frictionless).
+    real(c_double) :: k_star = 0.0_c_double
+    !> Cached `α = C_NS C(d) B E*/k*` (Pa·m^{1−d}), `P_shape = α a^{d+1}`.
+    real(c_double) :: force_coefficient = 0.0_c_double
+    !> Cached `γ = D(d) B/k*` (m^{1−d}), `δ_shape = γ a^d`.
+    real(c_double) :: depth_coefficient = 0.0_c_double
+    !> Cached radius scale `A₀ = (κ/γ)^{1/(d−1/2)}` (m), `κ = √(2πw/(E*C_NS))`; 0 without
+    !  adhesion.
+    real(c_double) :: radius_scale = 0.0_c_double
+    !> Cached overlap scale `L = κ A₀^{1/2}` (m); 0 without adhesion.
+    real(c_double) :: delta_scale = 0.0_c_double
+    !> Cached force scale `F = √(8πwE*C_NS) A₀^{3/2}` (N); 0 without adhesion.
+    real(c_double) :: force_scale = 0.0_c_double
+    !> Cached displacement-controlled instability δ_c (m, ≤ 0), the minimum of δ(a).
+    real(c_double) :: critical_delta = 0.0_c_double
+    !> Cached reduced radius `t_c = (2d)^{−1/(2d−1)}` at δ_c.
+    real(c_double) :: critical_t = 0.0_c_double
+  end type asperity_jkr_power_punch
+
+  !> `AsperityKendall`
+  type, bind(c), public :: asperity_kendall
+    !> Punch radius a (m).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m²).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> No-slip factor C_NS (1 when frictionless).
+    real(c_double) :: no_slip_factor = 0.0_c_double
+    !> Cached contact stiffness `2E* C_NS a` (N/m).
+    real(c_double) :: stiffness = 0.0_c_double
+    !> Cached pull-off force `P_c = −√(8πwE* C_NS a³)` (N, ≤ 0).
+    real(c_double) :: pull_off = 0.0_c_double
+    !> Cached separation overlap `δ_c = P_c/(2E* C_NS a)` (m, ≤ 0).
+    real(c_double) :: critical_delta = 0.0_c_double
+  end type asperity_kendall
+
+  !> `AsperityMaugisDugdale`
+  type, bind(c), public :: asperity_maugis_dugdale
+    !> Sphere radius R (m).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m²).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Dugdale cohesive stress σ₀ (Pa).
+    real(c_double) :: cohesive_stress = 0.0_c_double
+    !> Cached: Maugis parameter λ (dimensionless).
+    real(c_double) :: lambda = 0.0_c_double
+    !> Cached: radius unit `(πwR²/K)^{1/3}` (m).
+    real(c_double) :: radius_scale = 0.0_c_double
+    !> Cached: overlap unit `(π²w²R/K²)^{1/3}` (m).
+    real(c_double) :: delta_scale = 0.0_c_double
+    !> Cached: `C̄₀`, where the non-contact branch closes onto the contact one.
+    real(c_double) :: c0_bar = 0.0_c_double
+    !> Cached: jump-out point: `C̄` (turn_kind 0) or `s` (turn_kind 1).
+    real(c_double) :: turn_param = 0.0_c_double
+    !> Cached: `Δ̄ + 2/(πλ)` at the jump-out point (≤ 0).
+    real(c_double) :: turn_dh = 0.0_c_double
+    !> Cached: load-controlled pull-off `P̄_c` (≤ 0, dimensionless).
+    real(c_double) :: pull_off_load_bar = 0.0_c_double
+    !> Cached: `s` at the load-controlled pull-off.
+    real(c_double) :: pull_off_load_s = 0.0_c_double
+    !> Cached: displacement-controlled pull-off (dimensionless).
+    real(c_double) :: pull_off_disp_bar = 0.0_c_double
+    !> Cached: 0 when the jump-out point is on the non-contact branch (λ ≤ λ_c), 1 when it is on
+    !  the contact branch.
+    integer(c_int32_t) :: turn_kind = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_maugis_dugdale
+
+  !> `AsperityDerjaguin`
+  type, bind(c), public :: asperity_derjaguin
+    !> Sphere radius R (m).
+    real(c_double) :: radius = 0.0_c_double
+    !> Work of adhesion w (J/m²).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> The law's length (m): z₀, h₀ = w/σ₀ or ℓ.
+    real(c_double) :: range = 0.0_c_double
+    !> Surface law selector (`ASPERITY_SURFACE_LAW_*`).
+    integer(c_int32_t) :: surface_law = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_derjaguin
+
+  !> `AsperityLawParams`
+  type, bind(c), public :: asperity_law_params
+    !> Storage.
+    real(c_double) :: raw(16) = 0.0_c_double
+  end type asperity_law_params
+
+  !> `AsperityNormalLaw`
+  type, bind(c), public :: asperity_normal_law
+    !> One of `ASPERITY_LAW_*`.
+    integer(c_int32_t) :: kind = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+    !> The parameters of `kind`.
+    type(asperity_law_params) :: params
+  end type asperity_normal_law
+
+  !> `AsperityContactState`
+  type, bind(c), public :: asperity_contact_state
+    !> Contact radius a at the end of the step (m).
+    real(c_double) :: contact_radius = 0.0_c_double
+    !> Outer radius c of the cohesive (adhesive) zone at the end of the step (m); 0 when the law
+    !  has none.
+    real(c_double) :: cohesive_radius = 0.0_c_double
+    !> 1 when the surfaces are in contact (or, for laws with a cohesive zone, interacting) at
+    !  the end of the step, 0 otherwise.
+    integer(c_int32_t) :: in_contact = 0_c_int32_t
+    !> Law-specific index of the equilibrium branch the contact is on; 0 for a fresh state.
+    integer(c_int32_t) :: branch = 0_c_int32_t
+  end type asperity_contact_state
+
+  !> `AsperityNormalResponse`
+  type, bind(c), public :: asperity_normal_response
+    !> Normal force P (N), positive when repulsive.
+    real(c_double) :: force = 0.0_c_double
+    !> Overlap δ (m) of this equilibrium (the input under displacement control).
+    real(c_double) :: delta = 0.0_c_double
+    !> Contact radius a (m); 0 out of contact.
+    real(c_double) :: contact_radius = 0.0_c_double
+    !> Tangent stiffness dP/dδ (N/m) along the branch the contact is on.
+    real(c_double) :: stiffness = 0.0_c_double
+    !> 1 in contact, 0 otherwise.
+    integer(c_int32_t) :: in_contact = 0_c_int32_t
+    !> Reserved, always 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_normal_response
+
+  !> `AsperityFidelityAssessment`
+  type, bind(c), public :: asperity_fidelity_assessment
+    !> One of `ASPERITY_FIDELITY_*`.
+    integer(c_int32_t) :: law = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+    !> |P_c,model − P_c,LJ| (N), load-controlled pull-off.
+    real(c_double) :: pull_off_error = 0.0_c_double
+    !> Largest force difference over a displacement-controlled approach and retraction (N).
+    real(c_double) :: curve_error = 0.0_c_double
+    !> Time per evaluation on this machine (s).
+    real(c_double) :: cost_per_call = 0.0_c_double
+    !> One-time construction time (s).
+    real(c_double) :: build_time = 0.0_c_double
+  end type asperity_fidelity_assessment
+
+  !> `AsperityFidelityAdvice`
+  type, bind(c), public :: asperity_fidelity_advice
+    !> The cheapest model within the tolerance (`ASPERITY_FIDELITY_*`).
+    integer(c_int32_t) :: choice = 0_c_int32_t
+    !> Reference grid size of the Lennard-Jones solution.
+    integer(c_int32_t) :: reference_grid = 0_c_int32_t
+    !> Tabor parameter μ.
+    real(c_double) :: tabor = 0.0_c_double
+    !> Load-controlled pull-off of the reference (N, negative).
+    real(c_double) :: reference_pull_off = 0.0_c_double
+    !> Every model, cheapest first (index = `ASPERITY_FIDELITY_*`).
+    type(asperity_fidelity_assessment) :: assessments(0:5)
+  end type asperity_fidelity_advice
+
+  !> `AsperityNanoAsperities`
+  type, bind(c), public :: asperity_nano_asperities
+    !> Height of the van der Waals body h_vdW (m), > 0: the RMS of the AFM profile (thesis
+    !  5-15).
+    real(c_double) :: h_vdw = 0.0_c_double
+    !> Width of the van der Waals interaction domain w_vdW (m), > 0 (6-2).
+    real(c_double) :: w_vdw = 0.0_c_double
+    !> Height of the chemical tip on the body h_chem (m), >= 0.
+    real(c_double) :: h_chem = 0.0_c_double
+    !> Width of the chemical interaction domain w_chem (m), in [0, w_vdW].
+    real(c_double) :: w_chem = 0.0_c_double
+    !> Distance between nano-asperities (m), >= w_vdW (6-3).
+    real(c_double) :: spacing = 0.0_c_double
+    !> Nano-asperities on one square tip of the finest rods, >= 1, with per_rod * spacing^2 <=
+    !  (rod width)^2.
+    integer(c_size_t) :: per_rod = 0_c_size_t
+  end type asperity_nano_asperities
+
+  !> `AsperityDissipation`
+  type, bind(c), public :: asperity_dissipation
+    !> Energy of broken chemical bonds (J), (4-7).
+    real(c_double) :: chemical = 0.0_c_double
+    !> Energy of broken van der Waals bonds (J), (4-9).
+    real(c_double) :: van_der_waals = 0.0_c_double
+    !> Elastic strain energy released by unloading rods (J), (4-15).
+    real(c_double) :: elastic = 0.0_c_double
+    !> Plastic work of yielding rods (J), (4-16).
+    real(c_double) :: plastic = 0.0_c_double
+  end type asperity_dissipation
+
+  !> `AsperityHomogenisedSample`
+  type, bind(c), public :: asperity_homogenised_sample
+    !> Nominal contact pressure p = N/A_n (Pa), finite and ≥ 0.
+    real(c_double) :: pressure = 0.0_c_double
+    !> Coefficient of friction μ at this pressure, finite and ≥ 0, in the table's [`CofForm`]
+    !  (Derjaguin μ = F/(N + A), thesis (4-3), by default).
+    real(c_double) :: cof = 0.0_c_double
+    !> Adhesive holding force per nominal area (Pa), finite and ≥ 0: the adhesive force A of the
+    !  thesis (4.2, 4.4) divided by A_n.
+    real(c_double) :: adhesion_pressure = 0.0_c_double
+    !> True contact area over nominal area (dimensionless), in [0, 1].
+    real(c_double) :: contact_fraction = 0.0_c_double
+    !> Fractions of the dissipation due to each mechanism (dimensionless, each in [0, 1],
+    !  summing to 1 within 1e-9), held in a [`Dissipation`] value: a step's dissipation ΔD is
+    !  split as ΔD·shares.
+    type(asperity_dissipation) :: shares
+  end type asperity_homogenised_sample
+
+  !> `AsperityFrictionIncrement`
+  type, bind(c), public :: asperity_friction_increment
+    !> Normal force N on the point (N), finite and ≥ 0 (compressive).
+    real(c_double) :: normal_force = 0.0_c_double
+    !> Nominal area A_n the point represents (m²), finite and > 0.
+    real(c_double) :: area = 0.0_c_double
+    !> Slip increment Δs of the point relative to the counter-surface (m), two components in the
+    !  caller's tangent basis; a one-dimensional track uses `slip[1] = 0`.
+    real(c_double) :: slip(2) = 0.0_c_double
+    !> Time increment (s), finite and ≥ 0 (unused by this rate-independent law).
+    real(c_double) :: dt = 0.0_c_double
+    !> Stick stiffness k of the regularised stick (N/m), finite and ≥ 0; 0 is rigid–plastic (no
+    !  elastic slip).
+    real(c_double) :: stick_stiffness = 0.0_c_double
+  end type asperity_friction_increment
+
+  !> `AsperityFrictionPointState`
+  type, bind(c), public :: asperity_friction_point_state
+    !> Tangential force on the point at the end of the increment (N), the elastic (stick) force
+    !  carried into the next increment; the elastic slip is `−force/k`.
+    real(c_double) :: force(2) = 0.0_c_double
+    !> Accumulated plastic slip path length Σ|Δs_p| (m).
+    real(c_double) :: slip_path = 0.0_c_double
+    !> Accumulated dissipated energy by mechanism (J).
+    type(asperity_dissipation) :: dissipation
+    !> Number of steps taken (wraps at 2⁶⁴).
+    integer(c_int64_t) :: steps = 0_c_int64_t
+  end type asperity_friction_point_state
+
+  !> `AsperityFrictionResponse`
+  type, bind(c), public :: asperity_friction_response
+    !> Tangential force F on the point from the counter-surface (N), in the basis of the slip
+    !  increment; opposes slip (see the module's sign convention).
+    real(c_double) :: force(2) = 0.0_c_double
+    !> |F| (N).
+    real(c_double) :: force_magnitude = 0.0_c_double
+    !> Normal force N (N), as given.
+    real(c_double) :: normal_force = 0.0_c_double
+    !> Coefficient of friction μ(p) (in the table's [`CofForm`]).
+    real(c_double) :: cof = 0.0_c_double
+    !> Slip limit F_lim, the radius of the friction cone (N).
+    real(c_double) :: slip_limit = 0.0_c_double
+    !> Adhesive holding force A = p_adh(p)·A_n (N).
+    real(c_double) :: adhesion = 0.0_c_double
+    !> True contact area, contact fraction × A_n (m²).
+    real(c_double) :: true_contact_area = 0.0_c_double
+    !> Plastic slip increment Δs_p (m); 0 in stick.
+    real(c_double) :: plastic_slip(2) = 0.0_c_double
+    !> Energy dissipated in the increment ΔD = −F·Δs_p (J), ≥ 0.
+    real(c_double) :: dissipated = 0.0_c_double
+    !> ΔD split between the mechanisms by the interpolated shares (J).
+    type(asperity_dissipation) :: dissipation
+    !> dF/dN (dimensionless), at fixed slip increment and old state.
+    real(c_double) :: dforce_dnormal(2) = 0.0_c_double
+    !> dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, at fixed N and old state (the consistent tangent
+    !  of the return mapping; 0 for a rigid stick, k = 0 and Δs = 0, where it is unbounded).
+    real(c_double) :: dforce_dslip(2,2) = 0.0_c_double
+    !> [`FrictionRegime`] as an integer: 0 stick, 1 slip, 2 no contact.
+    integer(c_int32_t) :: regime = 0_c_int32_t
+    !> Reserved, always 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_friction_response
+
+  !> `AsperityIndentationOptions`
+  type, bind(c), public :: asperity_indentation_options
+    !> One of `ASPERITY_INDENTER_*`.
+    integer(c_int32_t) :: indenter = 0_c_int32_t
+    !> One of `ASPERITY_ANCHOR_*`.
+    integer(c_int32_t) :: anchor = 0_c_int32_t
+    !> Nonzero: use the segment labels when given (default 1).
+    integer(c_int32_t) :: use_labels = 0_c_int32_t
+    !> Number of NanoSuite area coefficients in `area_coefficients` (0: the indenter's ideal
+    !  area function).
+    integer(c_int32_t) :: n_area_coefficients = 0_c_int32_t
+    !> NanoSuite area coefficients, `A = C0 h_c² + C1 h_c + C2 h_c^{1/2} + …` with h_c in nm and
+    !  A in nm².
+    real(c_double) :: area_coefficients(0:7) = 0.0_c_double
+    !> Sphere radius (m), for `ASPERITY_INDENTER_SPHERE`.
+    real(c_double) :: sphere_radius = 0.0_c_double
+    !> Cone half-angle (rad), for `ASPERITY_INDENTER_CONE`.
+    real(c_double) :: cone_half_angle = 0.0_c_double
+    !> Nonzero: `known_d` is given (otherwise d is fitted; a sphere's d = 2).
+    integer(c_int32_t) :: has_known_d = 0_c_int32_t
+    !> Nonzero: `known_kappa` is given.
+    integer(c_int32_t) :: has_known_kappa = 0_c_int32_t
+    !> Known bluntness index d.
+    real(c_double) :: known_d = 0.0_c_double
+    !> Known hardening index κ.
+    real(c_double) :: known_kappa = 0.0_c_double
+    !> Anchor index, for `ASPERITY_ANCHOR_INDEX`.
+    integer(c_size_t) :: anchor_index = 0_c_size_t
+    !> Indenter Young's modulus (Pa; default 1141e9, INFINITY for rigid).
+    real(c_double) :: e_indenter = 0.0_c_double
+    !> Indenter Poisson's ratio (default 0.07).
+    real(c_double) :: nu_indenter = 0.0_c_double
+    !> Sample Poisson's ratio (default 0.3).
+    real(c_double) :: nu_sample = 0.0_c_double
+    !> β (0: the indenter's, 1.05 pyramids, 1 axisymmetric).
+    real(c_double) :: beta = 0.0_c_double
+    !> ε of the contact depth (default 0.75).
+    real(c_double) :: epsilon = 0.0_c_double
+    !> Loading-fit load window, fractions of the anchor load (default 0.1, 1).
+    real(c_double) :: loading_window(2) = 0.0_c_double
+    !> Unloading-fit load window, fractions of P_max (default 0.25, 0.95).
+    real(c_double) :: unloading_window(2) = 0.0_c_double
+  end type asperity_indentation_options
+
+  !> `AsperityIndentationResult`
+  type, bind(c), public :: asperity_indentation_result
+    !> Hardening index κ.
+    real(c_double) :: kappa = 0.0_c_double
+    !> Standard error of κ.
+    real(c_double) :: kappa_stderr = 0.0_c_double
+    !> Bluntness index d.
+    real(c_double) :: d = 0.0_c_double
+    !> Standard error of d.
+    real(c_double) :: d_stderr = 0.0_c_double
+    !> Loading log–log slope m_l.
+    real(c_double) :: loading_slope = 0.0_c_double
+    !> Standard error of m_l.
+    real(c_double) :: loading_slope_stderr = 0.0_c_double
+    !> R² of the loading fit (in ln P).
+    real(c_double) :: loading_r_squared = 0.0_c_double
+    !> Unloading exponent m of `P = α(h − h_f)^m`.
+    real(c_double) :: unloading_exponent = 0.0_c_double
+    !> Standard error of m.
+    real(c_double) :: unloading_exponent_stderr = 0.0_c_double
+    !> Final depth h_f (m).
+    real(c_double) :: final_depth = 0.0_c_double
+    !> Standard error of h_f (m).
+    real(c_double) :: final_depth_stderr = 0.0_c_double
+    !> R² of the unloading fit (in P).
+    real(c_double) :: unloading_r_squared = 0.0_c_double
+    !> Peak load at the start of unloading (N).
+    real(c_double) :: peak_load = 0.0_c_double
+    !> Depth at the start of unloading (m).
+    real(c_double) :: peak_depth = 0.0_c_double
+    !> Unloading stiffness S (N/m).
+    real(c_double) :: stiffness = 0.0_c_double
+    !> Standard error of S (N/m).
+    real(c_double) :: stiffness_stderr = 0.0_c_double
+    !> Contact depth h_c (m).
+    real(c_double) :: contact_depth = 0.0_c_double
+    !> Projected contact area (m²).
+    real(c_double) :: contact_area = 0.0_c_double
+    !> Reduced modulus E_r (Pa), Oliver–Pharr with β.
+    real(c_double) :: reduced_modulus = 0.0_c_double
+    !> Standard error of E_r (Pa).
+    real(c_double) :: reduced_modulus_stderr = 0.0_c_double
+    !> BASh reduced modulus (β = 1) (Pa).
+    real(c_double) :: reduced_modulus_bash = 0.0_c_double
+    !> Sample Young's modulus (Pa).
+    real(c_double) :: sample_modulus = 0.0_c_double
+    !> Standard error of the sample modulus (Pa).
+    real(c_double) :: sample_modulus_stderr = 0.0_c_double
+    !> Hardness P_max/A (Pa).
+    real(c_double) :: hardness = 0.0_c_double
+    !> Standard error of H (Pa).
+    real(c_double) :: hardness_stderr = 0.0_c_double
+    !> Points in the loading fit.
+    integer(c_size_t) :: n_loading_points = 0_c_size_t
+    !> Points in the unloading fit.
+    integer(c_size_t) :: n_unloading_points = 0_c_size_t
+    !> Loading segment `[start, end)`.
+    integer(c_size_t) :: loading_range(2) = 0_c_size_t
+    !> Unloading segment `[start, end)`.
+    integer(c_size_t) :: unloading_range(2) = 0_c_size_t
+    !> `ASPERITY_INDENT_FLAG_*` bits.
+    integer(c_int32_t) :: flags = 0_c_int32_t
+    !> 1 when the unloading branch was analysed.
+    integer(c_int32_t) :: has_unloading = 0_c_int32_t
+    !> 1 when a sample modulus could be computed.
+    integer(c_int32_t) :: has_sample_modulus = 0_c_int32_t
+    !> 1 when the segments came from the labels.
+    integer(c_int32_t) :: segments_from_labels = 0_c_int32_t
+  end type asperity_indentation_result
+
+  !> `AsperityGwParams`
+  type, bind(c), public :: asperity_gw_params
+    !> `ASPERITY_HEIGHTS_GAUSSIAN` or `ASPERITY_HEIGHTS_EXPONENTIAL`.
+    integer(c_int32_t) :: distribution = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+    !> Number of summits N on the nominal area (summit density η times the nominal area A_n;
+    !  dimensionless, > 0).
+    real(c_double) :: summit_count = 0.0_c_double
+    !> Summit radius R (m, > 0).
+    real(c_double) :: radius = 0.0_c_double
+    !> Standard deviation σ of the summit heights (m, > 0).
+    real(c_double) :: sigma = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+  end type asperity_gw_params
+
+  !> `AsperityGwResponse`
+  type, bind(c), public :: asperity_gw_response
+    !> Total normal load P (N), ≥ 0, (1-29).
+    real(c_double) :: load = 0.0_c_double
+    !> Real contact area A (m²), ≥ 0, (1-30).
+    real(c_double) :: area = 0.0_c_double
+    !> Expected number of summits in contact (dimensionless).
+    real(c_double) :: contacts = 0.0_c_double
+    !> Normal stiffness −dP/dd (N/m), ≥ 0.
+    real(c_double) :: stiffness = 0.0_c_double
+  end type asperity_gw_response
+
+  !> `AsperitySeparation`
+  type, bind(c), public :: asperity_separation
+    !> Separation d (m).
+    real(c_double) :: separation = 0.0_c_double
+    !> |P(d)/P_target − 1| at `separation` (dimensionless).
+    real(c_double) :: relative_residual = 0.0_c_double
+    !> Newton/bisection iterations spent after bracketing.
+    integer(c_int32_t) :: iterations = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_separation
+
+  !> `AsperityZhuravlev`
+  type, bind(c), public :: asperity_zhuravlev
+    !> Cap radius R of both surfaces (m, > 0), or 0.
+    real(c_double) :: cap_radius = 0.0_c_double
+    !> Effective radius of a pair of caps (m, > 0), or 0.
+    real(c_double) :: effective_radius = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0; E/(2(1−ν²)) for identical materials).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Summit count N (> 0) that normalises the meeting probability.
+    real(c_double) :: summit_count = 0.0_c_double
+  end type asperity_zhuravlev
+
+  !> `AsperityZhuravlevResponse`
+  type, bind(c), public :: asperity_zhuravlev_response
+    !> Total normal load P (N), (1-23).
+    real(c_double) :: load = 0.0_c_double
+    !> Real contact area S (m²), (1-24).
+    real(c_double) :: area = 0.0_c_double
+    !> Expected number of contacting pairs (dimensionless).
+    real(c_double) :: contacts = 0.0_c_double
+  end type asperity_zhuravlev_response
+
+  !> `AsperityZhuravlevFriction`
+  type, bind(c), public :: asperity_zhuravlev_friction
+    !> Approach x (m) that carries the load.
+    real(c_double) :: approach = 0.0_c_double
+    !> The load P (N).
+    real(c_double) :: load = 0.0_c_double
+    !> Real contact area S (m²).
+    real(c_double) :: area = 0.0_c_double
+    !> Friction force F = τS (N).
+    real(c_double) :: friction_force = 0.0_c_double
+    !> Coefficient of friction μ = F/P (dimensionless).
+    real(c_double) :: coefficient = 0.0_c_double
+  end type asperity_zhuravlev_friction
+
+  !> `AsperityRoughness`
+  type, bind(c), public :: asperity_roughness
+    !> Maximum profile peak height Rp (m), averaged over sampling lengths.
+    real(c_double) :: rp = 0.0_c_double
+    !> Maximum profile valley depth Rv (m).
+    real(c_double) :: rv = 0.0_c_double
+    !> Maximum height Rz = Rp + Rv within a sampling length (m).
+    real(c_double) :: rz = 0.0_c_double
+    !> Mean height of profile elements Rc (m); meaningful only when `has_rc` is 1 (0 otherwise).
+    real(c_double) :: rc = 0.0_c_double
+    !> Total height Rt over the evaluation length (m); Rt ≥ Rz.
+    real(c_double) :: rt = 0.0_c_double
+    !> Arithmetic mean deviation Ra (m).
+    real(c_double) :: ra = 0.0_c_double
+    !> Root-mean-square deviation Rq (m), thesis (1-5).
+    real(c_double) :: rq = 0.0_c_double
+    !> Skewness Rsk (dimensionless).
+    real(c_double) :: rsk = 0.0_c_double
+    !> Kurtosis Rku (dimensionless; 3 for a Gaussian, 1.5 for a sine).
+    real(c_double) :: rku = 0.0_c_double
+    !> Mean width of profile elements RSm (m); meaningful only when `has_rsm` is 1 (0
+    !  otherwise).
+    real(c_double) :: rsm = 0.0_c_double
+    !> Root-mean-square slope RΔq (dimensionless), seven-point slopes.
+    real(c_double) :: rdq = 0.0_c_double
+    !> Hurst exponent H of the power-law fit PSD ∝ q^{−(1+2H)} over the default band; meaningful
+    !  only when `has_psd_hurst_exponent` is 1 (0 otherwise: fewer than 128 samples, or the
+    !  spectrum is not a power law with r² ≥ 0.9 and 0 ≤ H ≤ 1 there).
+    real(c_double) :: psd_hurst_exponent = 0.0_c_double
+    !> Spectral moment m₀ = ∫G dq (m²) of the evaluated profile (rectangular window): the height
+    !  variance, Rq² when there is one sampling length.
+    real(c_double) :: m0 = 0.0_c_double
+    !> Spectral moment m₂ = ∫q²G dq (dimensionless): the slope variance.
+    real(c_double) :: m2 = 0.0_c_double
+    !> Spectral moment m₄ = ∫q⁴G dq (m⁻²): the curvature variance.
+    real(c_double) :: m4 = 0.0_c_double
+    !> Nayak's bandwidth parameter α = m₀m₄/m₂² (dimensionless).
+    real(c_double) :: nayak_alpha = 0.0_c_double
+    !> Sampling length used (m).
+    real(c_double) :: sampling_length = 0.0_c_double
+    !> Number of sampling lengths averaged.
+    integer(c_size_t) :: sampling_lengths = 0_c_size_t
+    !> Number of samples of the evaluated profile (fewer than `n` when the Gaussian filter
+    !  discarded its ends).
+    integer(c_size_t) :: n_evaluated = 0_c_size_t
+    !> Index in the input of the first evaluated sample.
+    integer(c_size_t) :: first_index = 0_c_size_t
+    !> 1 when `rc` holds a value (a complete profile element was found).
+    integer(c_int32_t) :: has_rc = 0_c_int32_t
+    !> 1 when `rsm` holds a value.
+    integer(c_int32_t) :: has_rsm = 0_c_int32_t
+    !> 1 when `psd_hurst_exponent` holds a value.
+    integer(c_int32_t) :: has_psd_hurst_exponent = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_roughness
+
+  !> `AsperityHurstFit`
+  type, bind(c), public :: asperity_hurst_fit
+    !> Hurst exponent H = −(s + 1)/2 (dimensionless).
+    real(c_double) :: hurst = 0.0_c_double
+    !> Fitted log–log slope s (dimensionless).
+    real(c_double) :: slope = 0.0_c_double
+    !> Prefactor A (m³·(rad/m)^{−s}).
+    real(c_double) :: prefactor = 0.0_c_double
+    !> Coefficient of determination r² of the log–log fit.
+    real(c_double) :: r_squared = 0.0_c_double
+    !> Lower end of the fit band (rad/m).
+    real(c_double) :: q_min = 0.0_c_double
+    !> Upper end of the fit band (rad/m).
+    real(c_double) :: q_max = 0.0_c_double
+    !> Number of populated log bins fitted (10 per decade).
+    integer(c_size_t) :: bins = 0_c_size_t
+  end type asperity_hurst_fit
+
+  !> `AsperityPeakStatistics`
+  type, bind(c), public :: asperity_peak_statistics
+    !> Number of peaks found.
+    integer(c_size_t) :: count = 0_c_size_t
+    !> Peaks per metre of profile (1/m).
+    real(c_double) :: density = 0.0_c_double
+    !> Mean peak height above the mean line (m).
+    real(c_double) :: mean_height = 0.0_c_double
+    !> Standard deviation of the peak heights (m).
+    real(c_double) :: height_std = 0.0_c_double
+    !> Mean peak curvature (1/m); a mean radius is about 1/this.
+    real(c_double) :: mean_curvature = 0.0_c_double
+  end type asperity_peak_statistics
+
+
+  ! ------------------------------------------------------------------------
+  ! Handles of the opaque C objects.
+
+  !> Handle of `AsperityTable`: a tabulated contact law (`asperity_table_new_*`, `asperity_table_from_json`).
+  !> `ptr` is the C pointer (NULL when empty) for the raw layer.
+  type, public :: asperity_table
+    type(c_ptr) :: ptr = c_null_ptr
+  contains
+    !> Release the object (nothing when empty); the handle becomes empty.
+    procedure :: free => asperity_table_free
+    procedure, private :: asperity_table_assign
+    generic :: assignment(=) => asperity_table_assign
+    final :: asperity_table_final
+  end type asperity_table
+
+  !> Handle of `AsperityGwEmpirical`: a Greenwood-Williamson surface over listed summits (`asperity_gw_empirical_new`).
+  !> `ptr` is the C pointer (NULL when empty) for the raw layer.
+  type, public :: asperity_gw_empirical
+    type(c_ptr) :: ptr = c_null_ptr
+  contains
+    !> Release the object (nothing when empty); the handle becomes empty.
+    procedure :: free => asperity_gw_empirical_free
+    procedure, private :: asperity_gw_empirical_assign
+    generic :: assignment(=) => asperity_gw_empirical_assign
+    final :: asperity_gw_empirical_final
+  end type asperity_gw_empirical
+
+  !> Handle of `AsperityHomogenisedFriction`: the homogenised friction law of FE points (`asperity_homogenised_friction_new`, `..._from_json`).
+  !> `ptr` is the C pointer (NULL when empty) for the raw layer.
+  type, public :: asperity_homogenised_friction
+    type(c_ptr) :: ptr = c_null_ptr
+  contains
+    !> Release the object (nothing when empty); the handle becomes empty.
+    procedure :: free => asperity_homogenised_friction_free
+    procedure, private :: asperity_homogenised_friction_assign
+    generic :: assignment(=) => asperity_homogenised_friction_assign
+    final :: asperity_homogenised_friction_final
+  end type asperity_homogenised_friction
+
+  !> Handle of `AsperitySliderGeometry`: the slider of the hierarchical friction model (`asperity_slider_geometry_new*`).
+  !> `ptr` is the C pointer (NULL when empty) for the raw layer.
+  type, public :: asperity_slider_geometry
+    type(c_ptr) :: ptr = c_null_ptr
+  contains
+    !> Release the object (nothing when empty); the handle becomes empty.
+    procedure :: free => asperity_slider_geometry_free
+    procedure, private :: asperity_slider_geometry_assign
+    generic :: assignment(=) => asperity_slider_geometry_assign
+    final :: asperity_slider_geometry_final
+  end type asperity_slider_geometry
+
+  abstract interface
+    !> A summit density per unit depth n(xi) (1/m) at depth `xi` (m, >= 0)
+    !> below the highest summit, for `asperity_zhuravlev_eval`; `user_data` is
+    !> passed through. It must return a finite value >= 0.
+    function asperity_summit_density(xi, user_data) result(density) bind(c)
+      import :: c_double, c_ptr
+      implicit none
+      real(c_double), value :: xi
+      type(c_ptr), value :: user_data
+      real(c_double) :: density
+    end function asperity_summit_density
+  end interface
+  public :: asperity_summit_density
+
+  !> Release any handle: `call asperity_free(h)`.
+  interface asperity_free
+    module procedure asperity_table_free, asperity_gw_empirical_free, &
+        asperity_homogenised_friction_free, asperity_slider_geometry_free
+  end interface asperity_free
+  public :: asperity_free
+
+  ! ------------------------------------------------------------------------
+  ! The raw layer: the C functions as they are.
+
+  interface
+    !> The library version, "MAJOR.MINOR.PATCH", from `Cargo.toml`. Static storage; do not free.
+    function c_asperity_version() result(r) bind(c, name="asperity_version")
+      import
+      implicit none
+      type(c_ptr) :: r
+    end function c_asperity_version
+
+    !> Copy the message of the last failed call on this thread into `buf` (at most `len − 1`
+    !  bytes plus a terminating NUL) and return the message's full length in bytes (without the
+    !  NUL), so a caller can size a buffer with `asperity_last_error_message(NULL, 0)`.
+    !  Successful calls leave the message unchanged; it is empty before the first failure.
+    function c_asperity_last_error_message(buf, len) result(r) bind(c, &
+        name="asperity_last_error_message")
+      import
+      implicit none
+      type(c_ptr), value :: buf
+      integer(c_size_t), value :: len
+      integer(c_size_t) :: r
+    end function c_asperity_last_error_message
+
+    !> The size `*size` and alignment `*align` in bytes of the `repr(C)` type whose C name is
+    !  the NUL-terminated `name` (e.g. `"AsperityNormalLaw"`; structs and unions of this header
+    !  with a body, not the opaque handles). An unknown name gives
+    !  `ASPERITY_ERR_INVALID_ARGUMENT` naming `name`; `asperity_type_count` and
+    !  `asperity_type_name` list the known ones.
+    function c_asperity_type_layout(name, size, align) result(r) bind(c, &
+        name="asperity_type_layout")
+      import
+      implicit none
+      character(kind=c_char), intent(in) :: name(*)
+      integer(c_size_t), intent(out) :: size
+      integer(c_size_t), intent(out) :: align
+      integer(c_int32_t) :: r
+    end function c_asperity_type_layout
+
+    !> The number of types `asperity_type_layout` knows (indices `0 .. asperity_type_count()` of
+    !  `asperity_type_name`).
+    function c_asperity_type_count() result(r) bind(c, name="asperity_type_count")
+      import
+      implicit none
+      integer(c_size_t) :: r
+    end function c_asperity_type_count
+
+    !> Copy the C name of type `index` (< `asperity_type_count()`) into `buf` (at most `len − 1`
+    !  bytes and a NUL) and write its full length in bytes (without the NUL) to `*needed`, so
+    !  `asperity_type_name(i, NULL, 0, &n)` sizes the buffer. The name is complete only when
+    !  `*needed < len`; `needed` is required.
+    function c_asperity_type_name(index, buf, len, needed) result(r) bind(c, &
+        name="asperity_type_name")
+      import
+      implicit none
+      integer(c_size_t), value :: index
+      type(c_ptr), value :: buf
+      integer(c_size_t), value :: len
+      integer(c_size_t), intent(out) :: needed
+      integer(c_int32_t) :: r
+    end function c_asperity_type_name
+
+    !> Hertz sphere: radius R (m), contact modulus E* (Pa).
+    function c_asperity_law_hertz(radius, e_star, out) result(r) bind(c, &
+        name="asperity_law_hertz")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_hertz
+
+    !> Galanov effective sphere: a sphere of radius `radius` (m) in a spherical crater (the
+    !  deformed medium) of radius `medium_radius` (m, INFINITY for a flat), `1/R = 1/R_s −
+    !  1/R_medium` (thesis (2-19), (3-23)).
+    function c_asperity_law_sphere_in_crater(radius, medium_radius, e_star, out) result(r) &
+        bind(c, name="asperity_law_sphere_in_crater")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: medium_radius
+      real(c_double), value :: e_star
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_sphere_in_crater
+
+    !> Galin power-law punch `f(r) = b r^d`: b (m^(1−d)), 1 ≤ d ≤ 100, E* (Pa).
+    function c_asperity_law_power_punch(b, d, e_star, out) result(r) bind(c, &
+        name="asperity_law_power_punch")
+      import
+      implicit none
+      real(c_double), value :: b
+      real(c_double), value :: d
+      real(c_double), value :: e_star
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_power_punch
+
+    !> Cone of half-angle `half_angle` (rad, in (0, π/2)); a power punch with d = 1, b =
+    !  cot(half_angle).
+    function c_asperity_law_cone(half_angle, e_star, out) result(r) bind(c, &
+        name="asperity_law_cone")
+      import
+      implicit none
+      real(c_double), value :: half_angle
+      real(c_double), value :: e_star
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_cone
+
+    !> Galanov effective cone: indenter half-angle γ_i in an imprint of half-angle γ_f > γ_i
+    !  (rad), `b = cot γ_i − cot γ_f` (thesis (2-18)).
+    function c_asperity_law_cone_in_imprint(indenter_half_angle, imprint_half_angle, e_star, &
+        out) result(r) bind(c, name="asperity_law_cone_in_imprint")
+      import
+      implicit none
+      real(c_double), value :: indenter_half_angle
+      real(c_double), value :: imprint_half_angle
+      real(c_double), value :: e_star
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_cone_in_imprint
+
+    !> Frictionless flat punch of radius a (m): `P = 2E*aδ`.
+    function c_asperity_law_flat_punch(radius, e_star, out) result(r) bind(c, &
+        name="asperity_law_flat_punch")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_flat_punch
+
+    !> Bonded (no-slip) flat punch: `P = 2E*aδ·C_NS(ν)`.
+    function c_asperity_law_flat_punch_no_slip(radius, e_star, nu, out) result(r) bind(c, &
+        name="asperity_law_flat_punch_no_slip")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      real(c_double), value :: nu
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_flat_punch_no_slip
+
+    !> DMT sphere: radius (m), E* (Pa), work of adhesion (J/m²).
+    function c_asperity_law_dmt(radius, e_star, work_of_adhesion, out) result(r) bind(c, &
+        name="asperity_law_dmt")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      real(c_double), value :: work_of_adhesion
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_dmt
+
+    !> JKR sphere: radius (m), E* (Pa), work of adhesion (J/m²).
+    function c_asperity_law_jkr(radius, e_star, work_of_adhesion, out) result(r) bind(c, &
+        name="asperity_law_jkr")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      real(c_double), value :: work_of_adhesion
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_jkr
+
+    !> JKR power-law punch (Borodich 2014): `f(r) = b r^d`, E* (Pa), work of adhesion (J/m²);
+    !  `no_slip` = 1 for a punch bonded to a half-space of Poisson's ratio `nu` (thesis (1-39),
+    !  (1-40)), 0 for frictionless (then `nu` is only range-checked).
+    function c_asperity_law_jkr_power_punch(b, d, e_star, work_of_adhesion, nu, no_slip, &
+        out) result(r) bind(c, name="asperity_law_jkr_power_punch")
+      import
+      implicit none
+      real(c_double), value :: b
+      real(c_double), value :: d
+      real(c_double), value :: e_star
+      real(c_double), value :: work_of_adhesion
+      real(c_double), value :: nu
+      integer(c_int32_t), value :: no_slip
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_jkr_power_punch
+
+    !> Kendall adhesive flat punch of radius a (m); `no_slip` = 1 for a bonded punch on a half-
+    !  space of Poisson's ratio `nu`.
+    function c_asperity_law_kendall(radius, e_star, work_of_adhesion, nu, no_slip, out) &
+        result(r) bind(c, name="asperity_law_kendall")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      real(c_double), value :: work_of_adhesion
+      real(c_double), value :: nu
+      integer(c_int32_t), value :: no_slip
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_kendall
+
+    !> Maugis–Dugdale sphere: radius (m), E* (Pa), work of adhesion (J/m²), Dugdale cohesive
+    !  stress σ₀ (Pa).
+    function c_asperity_law_maugis_dugdale(radius, e_star, work_of_adhesion, sigma0, out) &
+        result(r) bind(c, name="asperity_law_maugis_dugdale")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      real(c_double), value :: work_of_adhesion
+      real(c_double), value :: sigma0
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_maugis_dugdale
+
+    !> Rigid sphere of radius (m) with a surface-force law between flats (Derjaguin
+    !  approximation). `surface_law` is one of `ASPERITY_SURFACE_LAW_*` and `parameter` its
+    !  second parameter: z₀ (m) for Lennard-Jones, σ₀ (Pa) for Dugdale, ℓ (m) for exponential.
+    function c_asperity_law_derjaguin(radius, work_of_adhesion, surface_law, parameter, out) &
+        result(r) bind(c, name="asperity_law_derjaguin")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: work_of_adhesion
+      integer(c_int32_t), value :: surface_law
+      real(c_double), value :: parameter
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_derjaguin
+
+    !> Evaluate `law` at the overlap `delta` (m; > 0 penetration) from the history `old_state`,
+    !  writing the history after the step to `new_state` and the response to `out`. `old_state`
+    !  may be NULL (a fresh contact) and `new_state` NULL (history discarded); they may point to
+    !  the same struct. `law` and `out` are required.
+    function c_asperity_normal_eval(law, delta, old_state, new_state, out) result(r) bind(c, &
+        name="asperity_normal_eval")
+      import
+      implicit none
+      type(asperity_normal_law), intent(in) :: law
+      real(c_double), value :: delta
+      type(c_ptr), value :: old_state
+      type(c_ptr), value :: new_state
+      type(asperity_normal_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_normal_eval
+
+    !> Evaluate `law` for `n` contacts: `delta[i]` (m), `old_state[i]` → `new_state[i]`, writing
+    !  `force[i]` (N), `contact_radius[i]` (m) and `stiffness[i]` (N/m). `delta` and `force` are
+    !  required; the other arrays may be NULL (fresh states / not wanted). Input and output
+    !  arrays may be the same memory. On an error at element i, elements before i are written,
+    !  the status is returned and the message names i.
+    function c_asperity_normal_eval_batch(law, n, delta, old_state, new_state, force, &
+        contact_radius, stiffness) result(r) bind(c, name="asperity_normal_eval_batch")
+      import
+      implicit none
+      type(asperity_normal_law), intent(in) :: law
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: delta(*)
+      type(c_ptr), value :: old_state
+      type(c_ptr), value :: new_state
+      real(c_double), intent(inout) :: force(*)
+      type(c_ptr), value :: contact_radius
+      type(c_ptr), value :: stiffness
+      integer(c_int32_t) :: r
+    end function c_asperity_normal_eval_batch
+
+    !> Equilibrium of `law` at the prescribed force `force` (N) on the stable branch (largest
+    !  contact radius); `out->delta` is the overlap. `ASPERITY_ERR_OUT_OF_DOMAIN` below the
+    !  load-controlled pull-off force.
+    function c_asperity_normal_eval_at_load(law, force, out) result(r) bind(c, &
+        name="asperity_normal_eval_at_load")
+      import
+      implicit none
+      type(asperity_normal_law), intent(in) :: law
+      real(c_double), value :: force
+      type(asperity_normal_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_normal_eval_at_load
+
+    !> The force (N, ≤ 0 for adhesive laws) at which the contact separates under `control`
+    !  (`ASPERITY_CONTROL_LOAD` or `ASPERITY_CONTROL_DISPLACEMENT`).
+    function c_asperity_pull_off_force(law, control, force) result(r) bind(c, &
+        name="asperity_pull_off_force")
+      import
+      implicit none
+      type(asperity_normal_law), intent(in) :: law
+      integer(c_int32_t), value :: control
+      real(c_double), intent(out) :: force
+      integer(c_int32_t) :: r
+    end function c_asperity_pull_off_force
+
+    !> A characteristic overlap of `law` (m), for non-dimensionalising host-code tolerances.
+    function c_asperity_law_length_scale(law, length) result(r) bind(c, &
+        name="asperity_law_length_scale")
+      import
+      implicit none
+      type(asperity_normal_law), intent(in) :: law
+      real(c_double), intent(out) :: length
+      integer(c_int32_t) :: r
+    end function c_asperity_law_length_scale
+
+    !> The cheapest adhesive-sphere model whose pull-off and force–approach errors against the
+    !  converged Lennard-Jones sphere are within `force_tolerance` (N): radius R (m), contact
+    !  modulus E* (Pa), work of adhesion w (J/m²), equilibrium separation z₀ (m). Runs the
+    !  Lennard-Jones solver (milliseconds to seconds); not for a hot path.
+    function c_asperity_fidelity_advise(radius, e_star, work_of_adhesion, z0, &
+        force_tolerance, out) result(r) bind(c, name="asperity_fidelity_advise")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      real(c_double), value :: work_of_adhesion
+      real(c_double), value :: z0
+      real(c_double), value :: force_tolerance
+      type(asperity_fidelity_advice), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_fidelity_advise
+
+    !> Build a slider from two measured profiles, heights from their mean lines (remove form
+    !  first): `micro_n` heights (m) of a profilometer profile sampled at `micro_dx` (m), cut
+    !  into rods by thesis (6-1), and `nano_n` heights (m) of an AFM profile sampled at
+    !  `nano_dx` (m), giving the nano-asperities (5-15, 6-2, 6-3). `rod_widths` holds `n_levels`
+    !  rod widths (m), coarsest first, each the previous divided by an integer >= 2 (nested
+    !  levels); one level is `n_levels` = 1. Writes a new handle to `*out` (NULL on failure).
+    !  Errors: NULL pointers, fewer than 8 heights, non-finite values, widths that are not
+    !  positive, wider than the micro profile or do not nest, constant profiles, finest rods
+    !  narrower than the nano-asperity spacing.
+    function c_asperity_slider_geometry_new(micro_heights, micro_n, micro_dx, nano_heights, &
+        nano_n, nano_dx, rod_widths, n_levels, out) result(r) bind(c, &
+        name="asperity_slider_geometry_new")
+      import
+      implicit none
+      real(c_double), intent(in) :: micro_heights(*)
+      integer(c_size_t), value :: micro_n
+      real(c_double), value :: micro_dx
+      real(c_double), intent(in) :: nano_heights(*)
+      integer(c_size_t), value :: nano_n
+      real(c_double), value :: nano_dx
+      real(c_double), intent(in) :: rod_widths(*)
+      integer(c_size_t), value :: n_levels
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_geometry_new
+
+    !> Build a single-level slider from numbers: `rods` flat rods of `rod_width` (m) at height
+    !  0, carrying `nano->per_rod` nano-asperities each with the parameters `*nano` (the hand
+    !  calculation of thesis 4.4: one 13.5 µm rod, 100 nano-asperities, w_vdW = 430 nm, w_chem =
+    !  161 nm). Writes a new handle to `*out` (NULL on failure).
+    function c_asperity_slider_geometry_new_uniform(rod_width, rods, nano, out) result(r) &
+        bind(c, name="asperity_slider_geometry_new_uniform")
+      import
+      implicit none
+      real(c_double), value :: rod_width
+      integer(c_size_t), value :: rods
+      type(asperity_nano_asperities), intent(in) :: nano
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_geometry_new_uniform
+
+    !> Release a geometry; NULL is accepted and ignored.
+    subroutine c_asperity_slider_geometry_free(geometry) bind(c, &
+        name="asperity_slider_geometry_free")
+      import
+      implicit none
+      type(c_ptr), value :: geometry
+    end subroutine c_asperity_slider_geometry_free
+
+    !> The nano-asperity parameters of `geometry` and their number per rod tip.
+    function c_asperity_slider_geometry_nano(geometry, out) result(r) bind(c, &
+        name="asperity_slider_geometry_nano")
+      import
+      implicit none
+      type(c_ptr), value :: geometry
+      type(asperity_nano_asperities), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_geometry_nano
+
+    !> The number of rod levels of `geometry` (>= 1; level 0 is the coarsest, the last carries
+    !  the nano-asperities).
+    function c_asperity_slider_geometry_level_count(geometry, count) result(r) bind(c, &
+        name="asperity_slider_geometry_level_count")
+      import
+      implicit none
+      type(c_ptr), value :: geometry
+      integer(c_size_t), intent(out) :: count
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_geometry_level_count
+
+    !> The number of rods of `level` (0 = coarsest).
+    function c_asperity_slider_geometry_rod_count(geometry, level, count) result(r) bind(c, &
+        name="asperity_slider_geometry_rod_count")
+      import
+      implicit none
+      type(c_ptr), value :: geometry
+      integer(c_size_t), value :: level
+      integer(c_size_t), intent(out) :: count
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_geometry_rod_count
+
+    !> The rod width (m) of `level` and, if `origin` is not NULL, the position of the left side
+    !  of its rod 0 (m); rod k spans [origin + k*width, origin + (k+1)*width].
+    function c_asperity_slider_geometry_rod_width(geometry, level, width, origin) result(r) &
+        bind(c, name="asperity_slider_geometry_rod_width")
+      import
+      implicit none
+      type(c_ptr), value :: geometry
+      integer(c_size_t), value :: level
+      real(c_double), intent(out) :: width
+      type(c_ptr), value :: origin
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_geometry_rod_width
+
+    !> Copy the rod heights (m, from the micro profile's mean line, thesis 6-1) of `level` into
+    !  `heights`, which holds `len` values; `len` must be at least the level's rod count
+    !  (`asperity_slider_geometry_rod_count`).
+    function c_asperity_slider_geometry_rod_heights(geometry, level, heights, len) result(r) &
+        bind(c, name="asperity_slider_geometry_rod_heights")
+      import
+      implicit none
+      type(c_ptr), value :: geometry
+      integer(c_size_t), value :: level
+      real(c_double), intent(inout) :: heights(*)
+      integer(c_size_t), value :: len
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_geometry_rod_heights
+
+    !> Build the law from `n` >= 1 samples at strictly increasing nominal pressures (Pa), their
+    !  `cof` read as the Derjaguin coefficient F/(N + A) (thesis (4-3); other forms through
+    !  JSON). Writes a new handle to `*out` (NULL on failure). Errors: NULL `samples` or `out`,
+    !  `n` = 0, non-finite or negative values, fractions outside [0, 1], shares not summing to
+    !  1, pressures not increasing.
+    function c_asperity_homogenised_friction_new(samples, n, out) result(r) bind(c, &
+        name="asperity_homogenised_friction_new")
+      import
+      implicit none
+      type(asperity_homogenised_sample), intent(in) :: samples(*)
+      integer(c_size_t), value :: n
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_homogenised_friction_new
+
+    !> Load a law from `len` bytes of JSON text at `json` (from
+    !  `asperity_homogenised_friction_to_json`, or written by hand; no NUL needed). The law is
+    !  validated; a corrupted text gives `ASPERITY_ERR_INVALID_ARGUMENT`. Writes a new handle to
+    !  `*out` (NULL on failure).
+    function c_asperity_homogenised_friction_from_json(json, len, out) result(r) bind(c, &
+        name="asperity_homogenised_friction_from_json")
+      import
+      implicit none
+      character(kind=c_char), intent(in) :: json(*)
+      integer(c_size_t), value :: len
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_homogenised_friction_from_json
+
+    !> Write the JSON text of `friction` into `buf` (at most `len − 1` bytes and a NUL) and its
+    !  full length in bytes (without the NUL) to `*needed`, so
+    !  `asperity_homogenised_friction_to_json(f, NULL, 0, &n)` sizes the buffer. The text is
+    !  complete only when `*needed < len`; `needed` is required.
+    function c_asperity_homogenised_friction_to_json(friction, buf, len, needed) result(r) &
+        bind(c, name="asperity_homogenised_friction_to_json")
+      import
+      implicit none
+      type(c_ptr), value :: friction
+      type(c_ptr), value :: buf
+      integer(c_size_t), value :: len
+      integer(c_size_t), intent(out) :: needed
+      integer(c_int32_t) :: r
+    end function c_asperity_homogenised_friction_to_json
+
+    !> Release a law; NULL is accepted and ignored.
+    subroutine c_asperity_homogenised_friction_free(friction) bind(c, &
+        name="asperity_homogenised_friction_free")
+      import
+      implicit none
+      type(c_ptr), value :: friction
+    end subroutine c_asperity_homogenised_friction_free
+
+    !> Size in bytes of `AsperityFrictionPointState`, for hosts that allocate per-point state
+    !  arrays generically (an all-zero state is a fresh point).
+    function c_asperity_homogenised_friction_state_size() result(r) bind(c, &
+        name="asperity_homogenised_friction_state_size")
+      import
+      implicit none
+      integer(c_size_t) :: r
+    end function c_asperity_homogenised_friction_state_size
+
+    !> One friction step at one point: the increment `*increment` from the history `*old_state`
+    !  (NULL: fresh), the history after the step into `*new_state` (may be NULL, may equal
+    !  `old_state`) and the response into `*out`. On failure `*new_state` and `*out` are
+    !  untouched.
+    function c_asperity_homogenised_friction_step(friction, increment, old_state, new_state, &
+        out) result(r) bind(c, name="asperity_homogenised_friction_step")
+      import
+      implicit none
+      type(c_ptr), value :: friction
+      type(asperity_friction_increment), intent(in) :: increment
+      type(c_ptr), value :: old_state
+      type(c_ptr), value :: new_state
+      type(asperity_friction_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_homogenised_friction_step
+
+    !> Step `n` points at once, in the shape of Abaqus/Explicit VFRIC: `normal_forces[i]` (N),
+    !  `areas[i]` (m²), slip increments `slip_increments[2i]`, `[2i+1]` (m, x and y
+    !  interleaved), one `dt` (s) and `stick_stiffness` (N/m) for all, `old_state[i]` →
+    !  `new_state[i]`, tangential forces out in `tangential_forces[2i]`, `[2i+1]` (N,
+    !  interleaved) and the dissipated energy of the increment in `dissipation[i]` (J).
+    !  `normal_forces`, `areas`, `slip_increments` and `tangential_forces` are required;
+    !  `old_state` may be NULL (all fresh), `new_state` and `dissipation` may be NULL (not
+    !  wanted); `old_state` may equal `new_state`. On an error at element i, elements before i
+    !  are written and the message names i.
+    function c_asperity_homogenised_friction_step_block(friction, n, normal_forces, areas, &
+        slip_increments, dt, stick_stiffness, old_state, new_state, tangential_forces, &
+        dissipation) result(r) bind(c, name="asperity_homogenised_friction_step_block")
+      import
+      implicit none
+      type(c_ptr), value :: friction
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: normal_forces(*)
+      real(c_double), intent(in) :: areas(*)
+      real(c_double), intent(in) :: slip_increments(*)
+      real(c_double), value :: dt
+      real(c_double), value :: stick_stiffness
+      type(c_ptr), value :: old_state
+      type(c_ptr), value :: new_state
+      real(c_double), intent(inout) :: tangential_forces(*)
+      type(c_ptr), value :: dissipation
+      integer(c_int32_t) :: r
+    end function c_asperity_homogenised_friction_step_block
+
+    !> Fill `options` with the defaults: Berkovich, ideal area, anchor at the maximum point,
+    !  labels used, diamond indenter (1141 GPa, 0.07), sample ν = 0.3, β by indenter, ε = 0.75,
+    !  windows 0.1–1 (loading) and 0.25–0.95 (unloading).
+    function c_asperity_indentation_default_options(options) result(r) bind(c, &
+        name="asperity_indentation_default_options")
+      import
+      implicit none
+      type(asperity_indentation_options), intent(inout) :: options
+      integer(c_int32_t) :: r
+    end function c_asperity_indentation_default_options
+
+    !> Fit a measured load–depth curve: `n` points of `depth` (m) and `load` (N), optional
+    !  `segments` (`ASPERITY_SEGMENT_*` per point, NULL to detect them), `options` (NULL for the
+    !  defaults). Writes κ, d with standard errors, the Oliver–Pharr modulus and hardness and
+    !  the validity flags into `result` (see `indentation::analyze`). Errors: NULL pointers, n <
+    !  3, non-finite values, unknown labels or selectors, no loading branch, d or κ not
+    !  identifiable (`ASPERITY_ERR_OUT_OF_DOMAIN`, with a message).
+    function c_asperity_indentation_fit(n, depth, load, segments, options, result) result(r) &
+        bind(c, name="asperity_indentation_fit")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: depth(*)
+      real(c_double), intent(in) :: load(*)
+      type(c_ptr), value :: segments
+      type(c_ptr), value :: options
+      type(asperity_indentation_result), intent(inout) :: result
+      integer(c_int32_t) :: r
+    end function c_asperity_indentation_fit
+
+    !> The code of flag bit `bit` (0-based, e.g. `"kappa_above_one"` for bit 1) as a static NUL-
+    !  terminated string; NULL for a bit without a flag. Do not free.
+    function c_asperity_indentation_flag_name(bit) result(r) bind(c, &
+        name="asperity_indentation_flag_name")
+      import
+      implicit none
+      integer(c_int32_t), value :: bit
+      type(c_ptr) :: r
+    end function c_asperity_indentation_flag_name
+
+    !> Depth (m) at load `load` (N) by Borodich rescaling (3-13): `δ = λ^{(2−κ)/s} (P/P₁)^{d/s}
+    !  δ₁`, `s = 2 + κ(d − 1)`, from the known point (P₁, δ₁); λ = B/B₁ (spheres R₁/R, cones tan
+    !  γ₁/tan γ).
+    function c_asperity_rescaling_depth(kappa, d, lambda, load, known_load, known_depth, &
+        depth) result(r) bind(c, name="asperity_rescaling_depth")
+      import
+      implicit none
+      real(c_double), value :: kappa
+      real(c_double), value :: d
+      real(c_double), value :: lambda
+      real(c_double), value :: load
+      real(c_double), value :: known_load
+      real(c_double), value :: known_depth
+      real(c_double), intent(out) :: depth
+      integer(c_int32_t) :: r
+    end function c_asperity_rescaling_depth
+
+    !> Contact radius (m) at load `load` (N) by rescaling (3-14): `a = λ^{−κ/s} (P/P₁)^{1/s}
+    !  a₁`.
+    function c_asperity_rescaling_radius(kappa, d, lambda, load, known_load, known_radius, &
+        radius) result(r) bind(c, name="asperity_rescaling_radius")
+      import
+      implicit none
+      real(c_double), value :: kappa
+      real(c_double), value :: d
+      real(c_double), value :: lambda
+      real(c_double), value :: load
+      real(c_double), value :: known_load
+      real(c_double), value :: known_radius
+      real(c_double), intent(out) :: radius
+      integer(c_int32_t) :: r
+    end function c_asperity_rescaling_radius
+
+    !> Load (N) at depth `depth` (m) by rescaling (3-24): `P = λ^{(κ−2)/d} (δ/δ₁)^{s/d} P₁`.
+    function c_asperity_rescaling_load(kappa, d, lambda, depth, known_load, known_depth, &
+        load) result(r) bind(c, name="asperity_rescaling_load")
+      import
+      implicit none
+      real(c_double), value :: kappa
+      real(c_double), value :: d
+      real(c_double), value :: lambda
+      real(c_double), value :: depth
+      real(c_double), value :: known_load
+      real(c_double), value :: known_depth
+      real(c_double), intent(out) :: load
+      integer(c_int32_t) :: r
+    end function c_asperity_rescaling_load
+
+    !> λ for spheres, `R₁/R` (3-15).
+    function c_asperity_rescaling_lambda_spheres(known_radius, radius, lambda) result(r) &
+        bind(c, name="asperity_rescaling_lambda_spheres")
+      import
+      implicit none
+      real(c_double), value :: known_radius
+      real(c_double), value :: radius
+      real(c_double), intent(out) :: lambda
+      integer(c_int32_t) :: r
+    end function c_asperity_rescaling_lambda_spheres
+
+    !> λ for cones, `tan γ₁/tan γ` (3-16), half-angles in rad.
+    function c_asperity_rescaling_lambda_cones(known_half_angle, half_angle, lambda) &
+        result(r) bind(c, name="asperity_rescaling_lambda_cones")
+      import
+      implicit none
+      real(c_double), value :: known_half_angle
+      real(c_double), value :: half_angle
+      real(c_double), intent(out) :: lambda
+      integer(c_int32_t) :: r
+    end function c_asperity_rescaling_lambda_cones
+
+    !> κ from the loading log–log slope and d: `κ = (d m_l − 2)/(d − 1)` ((3-20), (3-26)); out
+    !  of domain for a cone (d = 1).
+    function c_asperity_rescaling_kappa_from_slope(loading_slope, d, kappa) result(r) &
+        bind(c, name="asperity_rescaling_kappa_from_slope")
+      import
+      implicit none
+      real(c_double), value :: loading_slope
+      real(c_double), value :: d
+      real(c_double), intent(out) :: kappa
+      integer(c_int32_t) :: r
+    end function c_asperity_rescaling_kappa_from_slope
+
+    !> d from the elastic unloading slope: `d = 1/(m_u − 1)`, m_u > 1.
+    function c_asperity_rescaling_d_from_unloading_slope(unloading_slope, d) result(r) &
+        bind(c, name="asperity_rescaling_d_from_unloading_slope")
+      import
+      implicit none
+      real(c_double), value :: unloading_slope
+      real(c_double), intent(out) :: d
+      integer(c_int32_t) :: r
+    end function c_asperity_rescaling_d_from_unloading_slope
+
+    !> d from the loading slope and a known κ: `d = (2 − κ)/(m_l − κ)`.
+    function c_asperity_rescaling_d_from_loading_slope(loading_slope, kappa, d) result(r) &
+        bind(c, name="asperity_rescaling_d_from_loading_slope")
+      import
+      implicit none
+      real(c_double), value :: loading_slope
+      real(c_double), value :: kappa
+      real(c_double), intent(out) :: d
+      integer(c_int32_t) :: r
+    end function c_asperity_rescaling_d_from_loading_slope
+
+    !> Galanov effective unloading radius (3-22): `R₂ = R₁ (P₂/P₁)² (δ₁/δ₂)³`.
+    function c_asperity_galanov_unloading_radius(r1, p1, delta1, p2, delta2, r2) result(r) &
+        bind(c, name="asperity_galanov_unloading_radius")
+      import
+      implicit none
+      real(c_double), value :: r1
+      real(c_double), value :: p1
+      real(c_double), value :: delta1
+      real(c_double), value :: p2
+      real(c_double), value :: delta2
+      real(c_double), intent(out) :: r2
+      integer(c_int32_t) :: r
+    end function c_asperity_galanov_unloading_radius
+
+    !> Radius of the deformed medium (3-23): `R_medium = R R₂/(R₂ − R)`, R₂ > R.
+    function c_asperity_galanov_medium_radius(radius, unloading_radius, medium_radius) &
+        result(r) bind(c, name="asperity_galanov_medium_radius")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: unloading_radius
+      real(c_double), intent(out) :: medium_radius
+      integer(c_int32_t) :: r
+    end function c_asperity_galanov_medium_radius
+
+    !> Brinell hardness (2-7), `2P/(πD(D − √(D² − d²)))` (Pa).
+    function c_asperity_hardness_brinell(load, ball_diameter, imprint_diameter, hardness) &
+        result(r) bind(c, name="asperity_hardness_brinell")
+      import
+      implicit none
+      real(c_double), value :: load
+      real(c_double), value :: ball_diameter
+      real(c_double), value :: imprint_diameter
+      real(c_double), intent(out) :: hardness
+      integer(c_int32_t) :: r
+    end function c_asperity_hardness_brinell
+
+    !> Meyer hardness (2-8), `4P/(πd²)` (Pa).
+    function c_asperity_hardness_meyer(load, imprint_diameter, hardness) result(r) bind(c, &
+        name="asperity_hardness_meyer")
+      import
+      implicit none
+      real(c_double), value :: load
+      real(c_double), value :: imprint_diameter
+      real(c_double), intent(out) :: hardness
+      integer(c_int32_t) :: r
+    end function c_asperity_hardness_meyer
+
+    !> Ludwik hardness (2-10), `4P/(√2 π d²)` (Pa).
+    function c_asperity_hardness_ludwik(load, imprint_diameter, hardness) result(r) bind(c, &
+        name="asperity_hardness_ludwik")
+      import
+      implicit none
+      real(c_double), value :: load
+      real(c_double), value :: imprint_diameter
+      real(c_double), intent(out) :: hardness
+      integer(c_int32_t) :: r
+    end function c_asperity_hardness_ludwik
+
+    !> Vickers hardness (2-12), `2P sin 68°/d²` (Pa), mean diagonal d.
+    function c_asperity_hardness_vickers(load, mean_diagonal, hardness) result(r) bind(c, &
+        name="asperity_hardness_vickers")
+      import
+      implicit none
+      real(c_double), value :: load
+      real(c_double), value :: mean_diagonal
+      real(c_double), intent(out) :: hardness
+      integer(c_int32_t) :: r
+    end function c_asperity_hardness_vickers
+
+    !> Load-controlled pull-off force (N, negative: tensile) of an elastic sphere of radius
+    !  `radius` (m) and contact modulus `e_star` (Pa) under the Lennard-Jones 3-9 surface law
+    !  with work of adhesion `work_of_adhesion` (J/m²) and equilibrium separation `z0` (m), from
+    !  the full numerical solution on `n_grid` radial cells (0 = the library's converged
+    !  default). Writes `*force`; returns `ASPERITY_ERR_NOT_CONVERGED` when the solver does not
+    !  converge or the grid does not resolve the edge zone.
+    function c_asperity_lj_sphere_pull_off(radius, e_star, work_of_adhesion, z0, n_grid, &
+        force) result(r) bind(c, name="asperity_lj_sphere_pull_off")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      real(c_double), value :: work_of_adhesion
+      real(c_double), value :: z0
+      integer(c_size_t), value :: n_grid
+      real(c_double), intent(out) :: force
+      integer(c_int32_t) :: r
+    end function c_asperity_lj_sphere_pull_off
+
+    !> Contact modulus `1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂` (Pa). `E = INFINITY` marks a rigid body.
+    !  See `material::effective_modulus`.
+    function c_asperity_effective_modulus(e1, nu1, e2, nu2, e_star) result(r) bind(c, &
+        name="asperity_effective_modulus")
+      import
+      implicit none
+      real(c_double), value :: e1
+      real(c_double), value :: nu1
+      real(c_double), value :: e2
+      real(c_double), value :: nu2
+      real(c_double), intent(out) :: e_star
+      integer(c_int32_t) :: r
+    end function c_asperity_effective_modulus
+
+    !> Effective modulus of two rods end to end, `1/E = 1/E₁ + 1/E₂` (Pa), thesis (6-8).
+    function c_asperity_rod_effective_modulus(e1, e2, e_eff) result(r) bind(c, &
+        name="asperity_rod_effective_modulus")
+      import
+      implicit none
+      real(c_double), value :: e1
+      real(c_double), value :: e2
+      real(c_double), intent(out) :: e_eff
+      integer(c_int32_t) :: r
+    end function c_asperity_rod_effective_modulus
+
+    !> No-slip factor `C_NS = (1−ν) ln(3−4ν)/(1−2ν)`, continuous to 1 at ν = 1/2.
+    function c_asperity_no_slip_factor(nu, c_ns) result(r) bind(c, &
+        name="asperity_no_slip_factor")
+      import
+      implicit none
+      real(c_double), value :: nu
+      real(c_double), intent(out) :: c_ns
+      integer(c_int32_t) :: r
+    end function c_asperity_no_slip_factor
+
+    !> Tabor parameter `μ = (R w²/(E*² z₀³))^{1/3}`.
+    function c_asperity_tabor_parameter(radius, work_of_adhesion, e_star, &
+        equilibrium_separation, mu) result(r) bind(c, name="asperity_tabor_parameter")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: work_of_adhesion
+      real(c_double), value :: e_star
+      real(c_double), value :: equilibrium_separation
+      real(c_double), intent(out) :: mu
+      integer(c_int32_t) :: r
+    end function c_asperity_tabor_parameter
+
+    !> Maugis parameter `λ = 2σ₀ (R/(π w K²))^{1/3}`, `K = 4E*/3`.
+    function c_asperity_maugis_parameter(radius, work_of_adhesion, e_star, cohesive_stress, &
+        lambda) result(r) bind(c, name="asperity_maugis_parameter")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: work_of_adhesion
+      real(c_double), value :: e_star
+      real(c_double), value :: cohesive_stress
+      real(c_double), intent(out) :: lambda
+      integer(c_int32_t) :: r
+    end function c_asperity_maugis_parameter
+
+    !> Weir's surface energy `γ = a·B/((m−2)(n−2))` (J/m²), `a = (M/ρ)^{1/3}`, `B =
+    !  E/(3(1−2ν))`: `atomic_mass` in kg per atom, `density` kg/m³, `youngs_modulus` Pa,
+    !  `poisson_ratio` in [0, 0.5), exponents 2 < m < n.
+    function c_asperity_weir_surface_energy(atomic_mass, density, youngs_modulus, &
+        poisson_ratio, m, n, gamma) result(r) bind(c, &
+        name="asperity_weir_surface_energy")
+      import
+      implicit none
+      real(c_double), value :: atomic_mass
+      real(c_double), value :: density
+      real(c_double), value :: youngs_modulus
+      real(c_double), value :: poisson_ratio
+      real(c_double), value :: m
+      real(c_double), value :: n
+      real(c_double), intent(out) :: gamma
+      integer(c_int32_t) :: r
+    end function c_asperity_weir_surface_energy
+
+    !> [`asperity_weir_surface_energy`] with the prefactor chosen by `prefactor`
+    !  (`ASPERITY_WEIR_PLANE_SUM` or `ASPERITY_WEIR_THREE_OVER_MN`).
+    function c_asperity_weir_surface_energy_with(atomic_mass, density, youngs_modulus, &
+        poisson_ratio, m, n, prefactor, gamma) result(r) bind(c, &
+        name="asperity_weir_surface_energy_with")
+      import
+      implicit none
+      real(c_double), value :: atomic_mass
+      real(c_double), value :: density
+      real(c_double), value :: youngs_modulus
+      real(c_double), value :: poisson_ratio
+      real(c_double), value :: m
+      real(c_double), value :: n
+      integer(c_int32_t), value :: prefactor
+      real(c_double), intent(out) :: gamma
+      integer(c_int32_t) :: r
+    end function c_asperity_weir_surface_energy_with
+
+    !> Work of adhesion (J/m²) of a pair of surface energies (J/m²) under `rule`
+    !  (`ASPERITY_PAIR_GEOMETRIC_MEAN` or `ASPERITY_PAIR_SEED001_DIFFERENCE`).
+    function c_asperity_pair_work_of_adhesion(gamma1, gamma2, rule, work_of_adhesion) &
+        result(r) bind(c, name="asperity_pair_work_of_adhesion")
+      import
+      implicit none
+      real(c_double), value :: gamma1
+      real(c_double), value :: gamma2
+      integer(c_int32_t), value :: rule
+      real(c_double), intent(out) :: work_of_adhesion
+      integer(c_int32_t) :: r
+    end function c_asperity_pair_work_of_adhesion
+
+    !> Work of adhesion `A/(12πD₀²)` (J/m²) from a Hamaker constant (J) and a separation D₀ (m).
+    function c_asperity_hamaker_work_of_adhesion(hamaker, separation, work_of_adhesion) &
+        result(r) bind(c, name="asperity_hamaker_work_of_adhesion")
+      import
+      implicit none
+      real(c_double), value :: hamaker
+      real(c_double), value :: separation
+      real(c_double), intent(out) :: work_of_adhesion
+      integer(c_int32_t) :: r
+    end function c_asperity_hamaker_work_of_adhesion
+
+    !> Greenwood–Williamson load, real area, number of contacts and stiffness at `separation` d
+    !  (m, finite) (thesis (1-29), (1-30)).
+    function c_asperity_gw_eval(gw, separation, out) result(r) bind(c, &
+        name="asperity_gw_eval")
+      import
+      implicit none
+      type(asperity_gw_params), intent(in) :: gw
+      real(c_double), value :: separation
+      type(asperity_gw_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_gw_eval
+
+    !> `asperity_gw_eval` for `n` separations `separation[i]` (m), writing `load[i]` (N) and,
+    !  where the array is not NULL, `area[i]` (m²), `contacts[i]` and `stiffness[i]` (N/m).
+    !  `separation` and `load` are required (unless n = 0); inputs and outputs may be the same
+    !  memory. On an error at element i, elements before i are written and the message names i.
+    function c_asperity_gw_eval_batch(gw, n, separation, load, area, contacts, stiffness) &
+        result(r) bind(c, name="asperity_gw_eval_batch")
+      import
+      implicit none
+      type(asperity_gw_params), intent(in) :: gw
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: separation(*)
+      real(c_double), intent(inout) :: load(*)
+      type(c_ptr), value :: area
+      type(c_ptr), value :: contacts
+      type(c_ptr), value :: stiffness
+      integer(c_int32_t) :: r
+    end function c_asperity_gw_eval_batch
+
+    !> The separation (m) at which the surface carries `load` (N, finite, > 0): the inverse of
+    !  (1-29) by safeguarded Newton iteration.
+    function c_asperity_gw_separation_at_load(gw, load, out) result(r) bind(c, &
+        name="asperity_gw_separation_at_load")
+      import
+      implicit none
+      type(asperity_gw_params), intent(in) :: gw
+      real(c_double), value :: load
+      type(asperity_separation), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_gw_separation_at_load
+
+    !> Plasticity index ψ = (E*/H)√(σ/R) (1-31) of the surface `gw` for the hardness `hardness`
+    !  H (Pa, > 0).
+    function c_asperity_gw_plasticity_index(gw, hardness, psi) result(r) bind(c, &
+        name="asperity_gw_plasticity_index")
+      import
+      implicit none
+      type(asperity_gw_params), intent(in) :: gw
+      real(c_double), value :: hardness
+      real(c_double), intent(out) :: psi
+      integer(c_int32_t) :: r
+    end function c_asperity_gw_plasticity_index
+
+    !> Plasticity index of Greenwood & Williamson (1966), thesis (1-31): ψ = (E*/H)√(σ/R) from
+    !  the contact modulus `e_star` (Pa), the hardness `hardness` (Pa), the standard deviation
+    !  of the summit heights `sigma` (m) and the summit radius `radius` (m), all finite and > 0.
+    function c_asperity_plasticity_index(e_star, hardness, sigma, radius, psi) result(r) &
+        bind(c, name="asperity_plasticity_index")
+      import
+      implicit none
+      real(c_double), value :: e_star
+      real(c_double), value :: hardness
+      real(c_double), value :: sigma
+      real(c_double), value :: radius
+      real(c_double), intent(out) :: psi
+      integer(c_int32_t) :: r
+    end function c_asperity_plasticity_index
+
+    !> The deformation regime (`ASPERITY_REGIME_*`) of a plasticity index `psi` (finite, ≥ 0):
+    !  elastic below 0.6, plastic above 1 (GW 1966).
+    function c_asperity_deformation_regime(psi, regime) result(r) bind(c, &
+        name="asperity_deformation_regime")
+      import
+      implicit none
+      real(c_double), value :: psi
+      integer(c_int32_t), intent(out) :: regime
+      integer(c_int32_t) :: r
+    end function c_asperity_deformation_regime
+
+    !> A Greenwood–Williamson surface over `n` ≥ 1 listed summits: heights `heights[i]` (m,
+    !  finite, any order, in the frame of the separations) and, unless `radii` is NULL, each
+    !  summit's radius `radii[i]` (m, > 0; then they replace `radius` in the load, area and
+    !  stiffness), `summit_count` N (> 0; each listed summit stands for N/n), `radius` R (m, >
+    !  0) and the contact modulus `e_star` (Pa, > 0). The arrays are copied. Writes a new handle
+    !  to `*out` (NULL on failure).
+    function c_asperity_gw_empirical_new(summit_count, radius, e_star, n, heights, radii, &
+        out) result(r) bind(c, name="asperity_gw_empirical_new")
+      import
+      implicit none
+      real(c_double), value :: summit_count
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: heights(*)
+      type(c_ptr), value :: radii
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_gw_empirical_new
+
+    !> Release an empirical Greenwood–Williamson surface; NULL is accepted.
+    subroutine c_asperity_gw_empirical_free(gw) bind(c, name="asperity_gw_empirical_free")
+      import
+      implicit none
+      type(c_ptr), value :: gw
+    end subroutine c_asperity_gw_empirical_free
+
+    !> `asperity_gw_eval` for an empirical surface.
+    function c_asperity_gw_empirical_eval(gw, separation, out) result(r) bind(c, &
+        name="asperity_gw_empirical_eval")
+      import
+      implicit none
+      type(c_ptr), value :: gw
+      real(c_double), value :: separation
+      type(asperity_gw_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_gw_empirical_eval
+
+    !> `asperity_gw_eval_batch` for an empirical surface.
+    function c_asperity_gw_empirical_eval_batch(gw, n, separation, load, area, contacts, &
+        stiffness) result(r) bind(c, name="asperity_gw_empirical_eval_batch")
+      import
+      implicit none
+      type(c_ptr), value :: gw
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: separation(*)
+      real(c_double), intent(inout) :: load(*)
+      type(c_ptr), value :: area
+      type(c_ptr), value :: contacts
+      type(c_ptr), value :: stiffness
+      integer(c_int32_t) :: r
+    end function c_asperity_gw_empirical_eval_batch
+
+    !> `asperity_gw_separation_at_load` for an empirical surface.
+    function c_asperity_gw_empirical_separation_at_load(gw, load, out) result(r) bind(c, &
+        name="asperity_gw_empirical_separation_at_load")
+      import
+      implicit none
+      type(c_ptr), value :: gw
+      real(c_double), value :: load
+      type(asperity_separation), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_gw_empirical_separation_at_load
+
+    !> `asperity_gw_plasticity_index` for an empirical surface (σ of the listed heights, the
+    !  model's `radius`).
+    function c_asperity_gw_empirical_plasticity_index(gw, hardness, psi) result(r) bind(c, &
+        name="asperity_gw_empirical_plasticity_index")
+      import
+      implicit none
+      type(c_ptr), value :: gw
+      real(c_double), value :: hardness
+      real(c_double), intent(out) :: psi
+      integer(c_int32_t) :: r
+    end function c_asperity_gw_empirical_plasticity_index
+
+    !> Zhuravlev's model with summit densities linear in depth, n_i(ξ) = α_i ξ (`alpha1`,
+    !  `alpha2` in m⁻², > 0), at the approach `approach` x (m, ≥ 0): the closed forms P ∝
+    !  x^{11/2} (1-25), S ∝ x⁵ (1-26), pairs ∝ x⁴.
+    function c_asperity_zhuravlev_linear(model, alpha1, alpha2, approach, out) result(r) &
+        bind(c, name="asperity_zhuravlev_linear")
+      import
+      implicit none
+      type(asperity_zhuravlev), intent(in) :: model
+      real(c_double), value :: alpha1
+      real(c_double), value :: alpha2
+      real(c_double), value :: approach
+      type(asperity_zhuravlev_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_zhuravlev_linear
+
+    !> The approach x (m) that carries `load` (N, ≥ 0) with linear densities: the inverse of
+    !  (1-25).
+    function c_asperity_zhuravlev_approach_at_load_linear(model, alpha1, alpha2, load, &
+        approach) result(r) bind(c, name="asperity_zhuravlev_approach_at_load_linear")
+      import
+      implicit none
+      type(asperity_zhuravlev), intent(in) :: model
+      real(c_double), value :: alpha1
+      real(c_double), value :: alpha2
+      real(c_double), value :: load
+      real(c_double), intent(out) :: approach
+      integer(c_int32_t) :: r
+    end function c_asperity_zhuravlev_approach_at_load_linear
+
+    !> Friction of Zhuravlev's model at `load` (N, > 0) with linear densities and interfacial
+    !  shear strength `shear_strength` τ (Pa, ≥ 0): F = τS (1-27), F ∝ P^{10/11} (1-28), μ =
+    !  F/P.
+    function c_asperity_zhuravlev_friction_linear(model, alpha1, alpha2, load, &
+        shear_strength, out) result(r) bind(c, &
+        name="asperity_zhuravlev_friction_linear")
+      import
+      implicit none
+      type(asperity_zhuravlev), intent(in) :: model
+      real(c_double), value :: alpha1
+      real(c_double), value :: alpha2
+      real(c_double), value :: load
+      real(c_double), value :: shear_strength
+      type(asperity_zhuravlev_friction), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_zhuravlev_friction_linear
+
+    !> Zhuravlev's model for any summit densities `n1`, `n2` (1/m, callbacks called with the
+    !  depth ξ ≥ 0 and `n1_data` / `n2_data`) at the approach `approach` (m, ≥ 0), by
+    !  Gauss–Legendre quadrature of `order` (4..=64) points per dimension ((1-23), (1-24)). A
+    !  callback value that is not finite gives `ASPERITY_ERR_INVALID_ARGUMENT` naming `n1` or
+    !  `n2`; a negative integral `ASPERITY_ERR_OUT_OF_DOMAIN`. The callbacks are called on the
+    !  calling thread only.
+    function c_asperity_zhuravlev_eval(model, approach, n1, n1_data, n2, n2_data, order, &
+        out) result(r) bind(c, name="asperity_zhuravlev_eval")
+      import
+      implicit none
+      type(asperity_zhuravlev), intent(in) :: model
+      real(c_double), value :: approach
+      type(c_funptr), value :: n1
+      type(c_ptr), value :: n1_data
+      type(c_funptr), value :: n2
+      type(c_ptr), value :: n2_data
+      integer(c_size_t), value :: order
+      type(asperity_zhuravlev_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_zhuravlev_eval
+
+    !> A static, NUL-terminated description of a status code; "unknown status" for a value that
+    !  is not one. Do not free.
+    function c_asperity_status_string(status) result(r) bind(c, &
+        name="asperity_status_string")
+      import
+      implicit none
+      integer(c_int32_t), value :: status
+      type(c_ptr) :: r
+    end function c_asperity_status_string
+
+    !> ISO 4287 parameters of the profile `heights` (`n` values, m) sampled at `dx` (m):  1.
+    !  `form` (one of `ASPERITY_FORM_*`) is removed by least squares; 2. when `cutoff` λc (m) is
+    !  not 0, the ISO 16610-21 Gaussian filter keeps the roughness profile and drops λc/2 at
+    !  each end (λc ≥ 5·dx and shorter than the profile); 3. the parameters are computed over
+    !  sampling lengths of `sampling_length` (m; 0 = the whole evaluated profile is one; ISO
+    !  4288 takes λc), with the ISO 4287 default discriminations (10 % of Rz, 1 % of the
+    !  sampling length); m₀, m₂, m₄ and α over the whole evaluated profile; the Hurst exponent
+    !  where a power law applies.  Errors: NULL `heights` or `out`; fewer than 8 evaluated
+    !  samples, non-finite heights, `dx` not finite and > 0 (`ASPERITY_ERR_INVALID_ARGUMENT`,
+    !  the message names the argument); an unknown `form`; a bad `cutoff` or `sampling_length`;
+    !  constant heights (`ASPERITY_ERR_OUT_OF_DOMAIN`).
+    function c_asperity_roughness_parameters(n, heights, dx, form, cutoff, sampling_length, &
+        out) result(r) bind(c, name="asperity_roughness_parameters")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: heights(*)
+      real(c_double), value :: dx
+      integer(c_int32_t), value :: form
+      real(c_double), value :: cutoff
+      real(c_double), value :: sampling_length
+      type(asperity_roughness), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_roughness_parameters
+
+    !> `heights` (`n` values, m) minus their least-squares `form` (`ASPERITY_FORM_*`; NONE
+    !  copies), written to `out` (`n` values, m; may be `heights` itself). Errors: NULL arrays,
+    !  too few points for the form, non-finite heights, an unknown `form`.
+    function c_asperity_profile_remove_form(n, heights, form, out) result(r) bind(c, &
+        name="asperity_profile_remove_form")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: heights(*)
+      integer(c_int32_t), value :: form
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int32_t) :: r
+    end function c_asperity_profile_remove_form
+
+    !> ISO 16610-21 Gaussian filter of `heights` (`n` values, m, spacing `dx` m) with cut-off
+    !  `cutoff` λc (m): writes the roughness profile to `roughness` and, if not NULL, the mean
+    !  line to `mean_line` (each needs room for `n` values; either may be `heights` itself), the
+    !  number of samples written to `*n_out` and the index of the first one in the input to
+    !  `*first_index` (may be NULL). `ends` is `ASPERITY_FILTER_ENDS_DISCARD` (λc/2 dropped at
+    !  each end: `*n_out` is about n − λc/dx) or `ASPERITY_FILTER_ENDS_KEEP` (`*n_out` = n).
+    !  Errors: as `asperity_roughness_parameters` for `cutoff`.
+    function c_asperity_profile_gaussian_filter(n, heights, dx, cutoff, ends, roughness, &
+        mean_line, n_out, first_index) result(r) bind(c, &
+        name="asperity_profile_gaussian_filter")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: heights(*)
+      real(c_double), value :: dx
+      real(c_double), value :: cutoff
+      integer(c_int32_t), value :: ends
+      real(c_double), intent(inout) :: roughness(*)
+      type(c_ptr), value :: mean_line
+      integer(c_size_t), intent(out) :: n_out
+      type(c_ptr), value :: first_index
+      integer(c_int32_t) :: r
+    end function c_asperity_profile_gaussian_filter
+
+    !> The material-ratio (Abbott–Firestone) curve of `heights` (`n` values, m) at `n_points` ≥
+    !  2 equally spaced ratios Rmr = i/(n_points − 1): `ratio[i]` (dimensionless, 0 … 1; may be
+    !  NULL) and `level[i]`, the height c(Rmr) above the mean line (m; the highest peak at 0,
+    !  the deepest valley at 1). Errors: NULL `heights` or `level`, `n_points` < 2, no or non-
+    !  finite heights.
+    function c_asperity_material_ratio_curve(n, heights, n_points, ratio, level) result(r) &
+        bind(c, name="asperity_material_ratio_curve")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: heights(*)
+      integer(c_size_t), value :: n_points
+      type(c_ptr), value :: ratio
+      real(c_double), intent(inout) :: level(*)
+      integer(c_int32_t) :: r
+    end function c_asperity_material_ratio_curve
+
+    !> One-sided PSD G(q) (thesis 1-7; ∫G dq = Rq² for the rectangular window) of `heights` (`n`
+    !  ≥ 4 values, m, spacing `dx` m, mean removed) with `window` (`ASPERITY_WINDOW_*`). Length
+    !  rule: `n_q` must equal n/2 + 1 (integer division); `q[k]` = k·2π/(n·dx) (rad/m; may be
+    !  NULL) and `g[k]` (m³).
+    function c_asperity_profile_psd(n, heights, dx, window, n_q, q, g) result(r) bind(c, &
+        name="asperity_profile_psd")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: heights(*)
+      real(c_double), value :: dx
+      integer(c_int32_t), value :: window
+      integer(c_size_t), value :: n_q
+      type(c_ptr), value :: q
+      real(c_double), intent(inout) :: g(*)
+      integer(c_int32_t) :: r
+    end function c_asperity_profile_psd
+
+    !> Power-law fit of the Hann-windowed PSD of `heights` (`n` values, m, spacing `dx` m) over
+    !  `q_min ≤ q ≤ q_max` (rad/m); `q_min` = `q_max` = 0 selects the default band (wavelengths
+    !  from n·dx/4 down to 8·dx). Errors: as `asperity_profile_psd`, a bad band, fewer than 3
+    !  populated bins (`ASPERITY_ERR_OUT_OF_DOMAIN`).
+    function c_asperity_profile_hurst_fit(n, heights, dx, q_min, q_max, out) result(r) &
+        bind(c, name="asperity_profile_hurst_fit")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: heights(*)
+      real(c_double), value :: dx
+      real(c_double), value :: q_min
+      real(c_double), value :: q_max
+      type(asperity_hurst_fit), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_profile_hurst_fit
+
+    !> Statistics of the peaks (3-point maxima, heights from the mean line, curvature −z″) of
+    !  `heights` (`n` ≥ 3 values, m, spacing `dx` m); the density is per profile length n·dx.
+    function c_asperity_profile_peak_statistics(n, heights, dx, out) result(r) bind(c, &
+        name="asperity_profile_peak_statistics")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: heights(*)
+      real(c_double), value :: dx
+      type(asperity_peak_statistics), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_profile_peak_statistics
+
+    !> A seeded Gaussian self-affine profile by Fourier filtering: `n` ≥ 4 samples at spacing
+    !  `dx` (m) written to `heights`, Hurst exponent `hurst` in [0, 1], root-mean-square height
+    !  `rq` (m, matched to rounding), `roll_off_wavelength` (m; 0 = none: a power law down to
+    !  the lowest harmonic) and `cutoff_wavelength` (m; 0 = none; shorter than the roll-off).
+    !  The same arguments and `seed` give the same heights (see `surface::generate`).
+    function c_asperity_generate_self_affine(hurst, rq, roll_off_wavelength, &
+        cutoff_wavelength, dx, seed, n, heights) result(r) bind(c, &
+        name="asperity_generate_self_affine")
+      import
+      implicit none
+      real(c_double), value :: hurst
+      real(c_double), value :: rq
+      real(c_double), value :: roll_off_wavelength
+      real(c_double), value :: cutoff_wavelength
+      real(c_double), value :: dx
+      integer(c_int64_t), value :: seed
+      integer(c_size_t), value :: n
+      real(c_double), intent(inout) :: heights(*)
+      integer(c_int32_t) :: r
+    end function c_asperity_generate_self_affine
+
+    !> The Weierstrass–Mandelbrot profile with random phases from `seed`: `n` ≥ 4 samples at
+    !  spacing `dx` (m) written to `heights`, fractal dimension `fractal_dimension` in (1, 2),
+    !  frequency ratio `gamma` > 1, amplitude of the longest term `amplitude` (m).
+    function c_asperity_generate_weierstrass_mandelbrot(fractal_dimension, gamma, amplitude, &
+        dx, seed, n, heights) result(r) bind(c, &
+        name="asperity_generate_weierstrass_mandelbrot")
+      import
+      implicit none
+      real(c_double), value :: fractal_dimension
+      real(c_double), value :: gamma
+      real(c_double), value :: amplitude
+      real(c_double), value :: dx
+      integer(c_int64_t), value :: seed
+      integer(c_size_t), value :: n
+      real(c_double), intent(inout) :: heights(*)
+      integer(c_int32_t) :: r
+    end function c_asperity_generate_weierstrass_mandelbrot
+
+    !> The Cantor–Borodich profile: `descendants` m = 2 (Borodich) or 3 (Warren–Krajcinovic; any
+    !  m ≥ 2 is accepted), horizontal ratio `alpha` in (0, 1/m), vertical ratio `beta` in (1/m,
+    !  1), first step `height` (m), `levels` generations in 1..=40, sampled at `n` ≥ 2 points
+    !  x_j = j·length/n over [0, `length`) (m), written to `heights`.
+    function c_asperity_generate_cantor_borodich(descendants, alpha, beta, height, levels, &
+        length, n, heights) result(r) bind(c, name="asperity_generate_cantor_borodich")
+      import
+      implicit none
+      integer(c_int32_t), value :: descendants
+      real(c_double), value :: alpha
+      real(c_double), value :: beta
+      real(c_double), value :: height
+      integer(c_int32_t), value :: levels
+      real(c_double), value :: length
+      integer(c_size_t), value :: n
+      real(c_double), intent(inout) :: heights(*)
+      integer(c_int32_t) :: r
+    end function c_asperity_generate_cantor_borodich
+
+    !> Build the table of a Maugis–Dugdale sphere: radius (m), E* (Pa), work of adhesion (J/m²),
+    !  Dugdale stress σ₀ (Pa), relative `tolerance` in [1e-10, 0.1] (1e-4 is the default of the
+    !  Rust API) in the error measure of the documentation (relative to max(|P|, 1e-3·|pull-
+    !  off|)). Writes a new handle to `*out` (NULL on failure).
+    function c_asperity_table_new_maugis_dugdale(radius, e_star, work_of_adhesion, sigma0, &
+        tolerance, out) result(r) bind(c, name="asperity_table_new_maugis_dugdale")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      real(c_double), value :: work_of_adhesion
+      real(c_double), value :: sigma0
+      real(c_double), value :: tolerance
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_table_new_maugis_dugdale
+
+    !> Build the table of a Lennard-Jones sphere (the numerical solver with `n_grid` cells; 0 =
+    !  the converged default grid): radius R (m), E* (Pa), work of adhesion Δγ (J/m²),
+    !  equilibrium separation z₀ (m), all finite and positive with Tabor parameter μ in (0,
+    !  100], relative `tolerance` in [1e-10, 0.1] (1e-4 is the default of the Rust API) in the
+    !  error measure of the documentation (relative to max(|P|, 1e-3·|pull-off|)) against the
+    !  solver on the same grid. The overlap δ of the table is the rigid approach α (0 where the
+    !  undeformed apex sits at z₀). Takes about 0.2–0.5 s at `n_grid` = 128 in an optimised
+    !  build (μ ≤ 1). Writes a new handle to `*out` (NULL on failure).
+    function c_asperity_table_new_lj(radius, e_star, work_of_adhesion, z0, n_grid, &
+        tolerance, out) result(r) bind(c, name="asperity_table_new_lj")
+      import
+      implicit none
+      real(c_double), value :: radius
+      real(c_double), value :: e_star
+      real(c_double), value :: work_of_adhesion
+      real(c_double), value :: z0
+      integer(c_size_t), value :: n_grid
+      real(c_double), value :: tolerance
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_table_new_lj
+
+    !> Release a table; NULL is accepted and ignored.
+    subroutine c_asperity_table_free(table) bind(c, name="asperity_table_free")
+      import
+      implicit none
+      type(c_ptr), value :: table
+    end subroutine c_asperity_table_free
+
+    !> Evaluate `table` at the overlap `delta` (m) from the history `old_state` (NULL: fresh),
+    !  writing the history after the step to `new_state` (may be NULL, may equal `old_state`)
+    !  and the response to `out`.
+    function c_asperity_table_eval(table, delta, old_state, new_state, out) result(r) &
+        bind(c, name="asperity_table_eval")
+      import
+      implicit none
+      type(c_ptr), value :: table
+      real(c_double), value :: delta
+      type(c_ptr), value :: old_state
+      type(c_ptr), value :: new_state
+      type(asperity_normal_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_table_eval
+
+    !> Evaluate `table` for `n` contacts, as `asperity_normal_eval_batch`: `delta[i]` (m),
+    !  `old_state[i]` → `new_state[i]`, `force[i]` (N), `contact_radius[i]` (m), `stiffness[i]`
+    !  (N/m). `delta` and `force` are required, the others may be NULL; inputs and outputs may
+    !  alias. On an error at element i, elements before i are written and the message names i.
+    function c_asperity_table_eval_batch(table, n, delta, old_state, new_state, force, &
+        contact_radius, stiffness) result(r) bind(c, name="asperity_table_eval_batch")
+      import
+      implicit none
+      type(c_ptr), value :: table
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: delta(*)
+      type(c_ptr), value :: old_state
+      type(c_ptr), value :: new_state
+      real(c_double), intent(inout) :: force(*)
+      type(c_ptr), value :: contact_radius
+      type(c_ptr), value :: stiffness
+      integer(c_int32_t) :: r
+    end function c_asperity_table_eval_batch
+
+    !> Equilibrium at the prescribed force `force` (N) on the load-controlled stable branch;
+    !  `out->delta` is the overlap.
+    function c_asperity_table_eval_at_load(table, force, out) result(r) bind(c, &
+        name="asperity_table_eval_at_load")
+      import
+      implicit none
+      type(c_ptr), value :: table
+      real(c_double), value :: force
+      type(asperity_normal_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_table_eval_at_load
+
+    !> The pull-off force (N) of `table` under `control` (`ASPERITY_CONTROL_LOAD` or
+    !  `ASPERITY_CONTROL_DISPLACEMENT`).
+    function c_asperity_table_pull_off_force(table, control, force) result(r) bind(c, &
+        name="asperity_table_pull_off_force")
+      import
+      implicit none
+      type(c_ptr), value :: table
+      integer(c_int32_t), value :: control
+      real(c_double), intent(out) :: force
+      integer(c_int32_t) :: r
+    end function c_asperity_table_pull_off_force
+
+    !> The stated maximum relative error of `table` (its tolerance) and, if `measured` is not
+    !  NULL, the largest error measured at construction.
+    function c_asperity_table_max_error(table, max_error, measured) result(r) bind(c, &
+        name="asperity_table_max_error")
+      import
+      implicit none
+      type(c_ptr), value :: table
+      real(c_double), intent(out) :: max_error
+      type(c_ptr), value :: measured
+      integer(c_int32_t) :: r
+    end function c_asperity_table_max_error
+
+    !> Write the JSON text of `table` into `buf` (at most `len − 1` bytes and a NUL) and its
+    !  full length in bytes (without the NUL) to `*needed`, so `asperity_table_to_json(t, NULL,
+    !  0, &n)` sizes the buffer. The text is complete only when `*needed < len`; `needed` is
+    !  required.
+    function c_asperity_table_to_json(table, buf, len, needed) result(r) bind(c, &
+        name="asperity_table_to_json")
+      import
+      implicit none
+      type(c_ptr), value :: table
+      type(c_ptr), value :: buf
+      integer(c_size_t), value :: len
+      integer(c_size_t), intent(out) :: needed
+      integer(c_int32_t) :: r
+    end function c_asperity_table_to_json
+
+    !> Load a table from `len` bytes of JSON text at `json` (from `asperity_table_to_json`; no
+    !  NUL needed). The table is validated; a corrupted text gives
+    !  `ASPERITY_ERR_INVALID_ARGUMENT`. Writes a new handle to `*out` (NULL on failure).
+    function c_asperity_table_from_json(json, len, out) result(r) bind(c, &
+        name="asperity_table_from_json")
+      import
+      implicit none
+      character(kind=c_char), intent(in) :: json(*)
+      integer(c_size_t), value :: len
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_table_from_json
+  end interface
+
+
+  interface
+    function c_strlen(s) result(n) bind(c, name="strlen")
+      import :: c_ptr, c_size_t
+      implicit none
+      type(c_ptr), value :: s
+      integer(c_size_t) :: n
+    end function c_strlen
+  end interface
+
+  public :: c_asperity_version
+  public :: c_asperity_last_error_message
+  public :: c_asperity_type_layout
+  public :: c_asperity_type_count
+  public :: c_asperity_type_name
+  public :: c_asperity_law_hertz
+  public :: c_asperity_law_sphere_in_crater
+  public :: c_asperity_law_power_punch
+  public :: c_asperity_law_cone
+  public :: c_asperity_law_cone_in_imprint
+  public :: c_asperity_law_flat_punch
+  public :: c_asperity_law_flat_punch_no_slip
+  public :: c_asperity_law_dmt
+  public :: c_asperity_law_jkr
+  public :: c_asperity_law_jkr_power_punch
+  public :: c_asperity_law_kendall
+  public :: c_asperity_law_maugis_dugdale
+  public :: c_asperity_law_derjaguin
+  public :: c_asperity_normal_eval
+  public :: c_asperity_normal_eval_batch
+  public :: c_asperity_normal_eval_at_load
+  public :: c_asperity_pull_off_force
+  public :: c_asperity_law_length_scale
+  public :: c_asperity_fidelity_advise
+  public :: c_asperity_slider_geometry_new
+  public :: c_asperity_slider_geometry_new_uniform
+  public :: c_asperity_slider_geometry_free
+  public :: c_asperity_slider_geometry_nano
+  public :: c_asperity_slider_geometry_level_count
+  public :: c_asperity_slider_geometry_rod_count
+  public :: c_asperity_slider_geometry_rod_width
+  public :: c_asperity_slider_geometry_rod_heights
+  public :: c_asperity_homogenised_friction_new
+  public :: c_asperity_homogenised_friction_from_json
+  public :: c_asperity_homogenised_friction_to_json
+  public :: c_asperity_homogenised_friction_free
+  public :: c_asperity_homogenised_friction_state_size
+  public :: c_asperity_homogenised_friction_step
+  public :: c_asperity_homogenised_friction_step_block
+  public :: c_asperity_indentation_default_options
+  public :: c_asperity_indentation_fit
+  public :: c_asperity_indentation_flag_name
+  public :: c_asperity_rescaling_depth
+  public :: c_asperity_rescaling_radius
+  public :: c_asperity_rescaling_load
+  public :: c_asperity_rescaling_lambda_spheres
+  public :: c_asperity_rescaling_lambda_cones
+  public :: c_asperity_rescaling_kappa_from_slope
+  public :: c_asperity_rescaling_d_from_unloading_slope
+  public :: c_asperity_rescaling_d_from_loading_slope
+  public :: c_asperity_galanov_unloading_radius
+  public :: c_asperity_galanov_medium_radius
+  public :: c_asperity_hardness_brinell
+  public :: c_asperity_hardness_meyer
+  public :: c_asperity_hardness_ludwik
+  public :: c_asperity_hardness_vickers
+  public :: c_asperity_lj_sphere_pull_off
+  public :: c_asperity_effective_modulus
+  public :: c_asperity_rod_effective_modulus
+  public :: c_asperity_no_slip_factor
+  public :: c_asperity_tabor_parameter
+  public :: c_asperity_maugis_parameter
+  public :: c_asperity_weir_surface_energy
+  public :: c_asperity_weir_surface_energy_with
+  public :: c_asperity_pair_work_of_adhesion
+  public :: c_asperity_hamaker_work_of_adhesion
+  public :: c_asperity_gw_eval
+  public :: c_asperity_gw_eval_batch
+  public :: c_asperity_gw_separation_at_load
+  public :: c_asperity_gw_plasticity_index
+  public :: c_asperity_plasticity_index
+  public :: c_asperity_deformation_regime
+  public :: c_asperity_gw_empirical_new
+  public :: c_asperity_gw_empirical_free
+  public :: c_asperity_gw_empirical_eval
+  public :: c_asperity_gw_empirical_eval_batch
+  public :: c_asperity_gw_empirical_separation_at_load
+  public :: c_asperity_gw_empirical_plasticity_index
+  public :: c_asperity_zhuravlev_linear
+  public :: c_asperity_zhuravlev_approach_at_load_linear
+  public :: c_asperity_zhuravlev_friction_linear
+  public :: c_asperity_zhuravlev_eval
+  public :: c_asperity_status_string
+  public :: c_asperity_roughness_parameters
+  public :: c_asperity_profile_remove_form
+  public :: c_asperity_profile_gaussian_filter
+  public :: c_asperity_material_ratio_curve
+  public :: c_asperity_profile_psd
+  public :: c_asperity_profile_hurst_fit
+  public :: c_asperity_profile_peak_statistics
+  public :: c_asperity_generate_self_affine
+  public :: c_asperity_generate_weierstrass_mandelbrot
+  public :: c_asperity_generate_cantor_borodich
+  public :: c_asperity_table_new_maugis_dugdale
+  public :: c_asperity_table_new_lj
+  public :: c_asperity_table_free
+  public :: c_asperity_table_eval
+  public :: c_asperity_table_eval_batch
+  public :: c_asperity_table_eval_at_load
+  public :: c_asperity_table_pull_off_force
+  public :: c_asperity_table_max_error
+  public :: c_asperity_table_to_json
+  public :: c_asperity_table_from_json
+
+  ! The friendly layer.
+  public :: asperity_version
+  public :: asperity_last_error_message
+  public :: asperity_status_string
+  public :: asperity_type_layout
+  public :: asperity_type_count
+  public :: asperity_type_name
+  public :: asperity_law_hertz
+  public :: asperity_law_sphere_in_crater
+  public :: asperity_law_power_punch
+  public :: asperity_law_cone
+  public :: asperity_law_cone_in_imprint
+  public :: asperity_law_flat_punch
+  public :: asperity_law_flat_punch_no_slip
+  public :: asperity_law_dmt
+  public :: asperity_law_jkr
+  public :: asperity_law_jkr_power_punch
+  public :: asperity_law_kendall
+  public :: asperity_law_maugis_dugdale
+  public :: asperity_law_derjaguin
+  public :: asperity_normal_eval
+  public :: asperity_normal_eval_batch
+  public :: asperity_normal_eval_at_load
+  public :: asperity_pull_off_force
+  public :: asperity_law_length_scale
+  public :: asperity_fidelity_advise
+  public :: asperity_slider_geometry_new
+  public :: asperity_slider_geometry_new_uniform
+  public :: asperity_slider_geometry_nano
+  public :: asperity_slider_geometry_level_count
+  public :: asperity_slider_geometry_rod_count
+  public :: asperity_slider_geometry_rod_width
+  public :: asperity_slider_geometry_rod_heights
+  public :: asperity_homogenised_friction_new
+  public :: asperity_homogenised_friction_from_json
+  public :: asperity_homogenised_friction_to_json
+  public :: asperity_homogenised_friction_state_size
+  public :: asperity_homogenised_friction_step
+  public :: asperity_homogenised_friction_step_block
+  public :: asperity_indentation_default_options
+  public :: asperity_indentation_fit
+  public :: asperity_indentation_flag_name
+  public :: asperity_rescaling_depth
+  public :: asperity_rescaling_radius
+  public :: asperity_rescaling_load
+  public :: asperity_rescaling_lambda_spheres
+  public :: asperity_rescaling_lambda_cones
+  public :: asperity_rescaling_kappa_from_slope
+  public :: asperity_rescaling_d_from_unloading_slope
+  public :: asperity_rescaling_d_from_loading_slope
+  public :: asperity_galanov_unloading_radius
+  public :: asperity_galanov_medium_radius
+  public :: asperity_hardness_brinell
+  public :: asperity_hardness_meyer
+  public :: asperity_hardness_ludwik
+  public :: asperity_hardness_vickers
+  public :: asperity_lj_sphere_pull_off
+  public :: asperity_effective_modulus
+  public :: asperity_rod_effective_modulus
+  public :: asperity_no_slip_factor
+  public :: asperity_tabor_parameter
+  public :: asperity_maugis_parameter
+  public :: asperity_weir_surface_energy
+  public :: asperity_weir_surface_energy_with
+  public :: asperity_pair_work_of_adhesion
+  public :: asperity_hamaker_work_of_adhesion
+  public :: asperity_gw_eval
+  public :: asperity_gw_eval_batch
+  public :: asperity_gw_separation_at_load
+  public :: asperity_gw_plasticity_index
+  public :: asperity_plasticity_index
+  public :: asperity_deformation_regime
+  public :: asperity_gw_empirical_new
+  public :: asperity_gw_empirical_eval
+  public :: asperity_gw_empirical_eval_batch
+  public :: asperity_gw_empirical_separation_at_load
+  public :: asperity_gw_empirical_plasticity_index
+  public :: asperity_zhuravlev_linear
+  public :: asperity_zhuravlev_approach_at_load_linear
+  public :: asperity_zhuravlev_friction_linear
+  public :: asperity_zhuravlev_eval
+  public :: asperity_roughness_parameters
+  public :: asperity_profile_remove_form
+  public :: asperity_profile_gaussian_filter
+  public :: asperity_material_ratio_curve
+  public :: asperity_profile_psd
+  public :: asperity_profile_hurst_fit
+  public :: asperity_profile_peak_statistics
+  public :: asperity_generate_self_affine
+  public :: asperity_generate_weierstrass_mandelbrot
+  public :: asperity_generate_cantor_borodich
+  public :: asperity_table_new_maugis_dugdale
+  public :: asperity_table_new_lj
+  public :: asperity_table_eval
+  public :: asperity_table_eval_batch
+  public :: asperity_table_eval_at_load
+  public :: asperity_table_pull_off_force
+  public :: asperity_table_max_error
+  public :: asperity_table_to_json
+  public :: asperity_table_from_json
+  public :: asperity_table_free
+  public :: asperity_gw_empirical_free
+  public :: asperity_homogenised_friction_free
+  public :: asperity_slider_geometry_free
+
+  ! The friendly layer's own argument errors (per thread under OpenMP).
+  logical :: fortran_error_set = .false.
+  character(len=:), allocatable :: fortran_error
+  !$omp threadprivate(fortran_error_set, fortran_error)
+
+contains
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: helpers (private).
+
+  !> Record the outcome `st` of the C call `what`: into `status` when present,
+  !> otherwise stop the program with the library's message on failure.
+  subroutine check(st, what, status)
+    integer(c_int32_t), intent(in) :: st
+    character(len=*), intent(in) :: what
+    integer(c_int32_t), intent(out), optional :: status
+    if (st /= ASPERITY_OK) fortran_error_set = .false.
+    if (present(status)) then
+      status = st
+    else if (st /= ASPERITY_OK) then
+      call stop_on(what, st, asperity_last_error_message())
+    end if
+  end subroutine check
+
+  !> An argument error found by the friendly layer itself (array sizes):
+  !> `ASPERITY_ERR_INVALID_ARGUMENT` with `message`, like a library error.
+  subroutine local_error(what, message, status)
+    character(len=*), intent(in) :: what, message
+    integer(c_int32_t), intent(out), optional :: status
+    fortran_error = message
+    fortran_error_set = .true.
+    if (present(status)) then
+      status = ASPERITY_ERR_INVALID_ARGUMENT
+    else
+      call stop_on(what, ASPERITY_ERR_INVALID_ARGUMENT, message)
+    end if
+  end subroutine local_error
+
+  subroutine stop_on(what, st, message)
+    character(len=*), intent(in) :: what, message
+    integer(c_int32_t), intent(in) :: st
+    write (error_unit, '(a)') 'asperity: '//what//' failed: status '//itoa(int(st, c_int64_t)) &
+        //' ('//asperity_status_string(st)//'): '//message
+    flush (error_unit)
+    error stop 'asperity: a call without a status argument failed (message above)'
+  end subroutine stop_on
+
+  !> True (and the error reported) when an array of `got` elements is given
+  !> where `need` are needed.
+  logical function too_small(what, arg, got, need, ref, status)
+    character(len=*), intent(in) :: what, arg, ref
+    integer, intent(in) :: got, need
+    integer(c_int32_t), intent(out), optional :: status
+    too_small = got < need
+    if (too_small) then
+      call local_error(what, 'invalid argument `'//arg//'` of size '//itoa(int(got, c_int64_t)) &
+          //': must hold at least '//itoa(int(need, c_int64_t))//' elements ('//ref//')', status)
+    end if
+  end function too_small
+
+  !> True (and the error reported) when `in_place` is given together with
+  !> `old_state` or `new_state`.
+  logical function state_clash(what, in_place, old_or_new, status)
+    character(len=*), intent(in) :: what
+    logical, intent(in) :: in_place, old_or_new
+    integer(c_int32_t), intent(out), optional :: status
+    state_clash = in_place .and. old_or_new
+    if (state_clash) then
+      call local_error(what, 'invalid argument `state`: must not be given with `old_state` or '// &
+          '`new_state` (it is both)', status)
+    end if
+  end function state_clash
+
+  pure function itoa(i) result(s)
+    integer(c_int64_t), intent(in) :: i
+    character(len=:), allocatable :: s
+    character(len=24) :: buf
+    write (buf, '(i0)') i
+    s = trim(buf)
+  end function itoa
+
+  !> The NUL-terminated C string at `p` ('' for NULL).
+  function c_string(p) result(s)
+    type(c_ptr), intent(in) :: p
+    character(len=:), allocatable :: s
+    character(kind=c_char), pointer :: chars(:)
+    integer :: i, n
+    if (.not. c_associated(p)) then
+      s = ''
+      return
+    end if
+    n = int(c_strlen(p))
+    call c_f_pointer(p, chars, [n])
+    allocate (character(len=n) :: s)
+    do i = 1, n
+      s(i:i) = chars(i)
+    end do
+  end function c_string
+
+  !> The first `n` characters of `buf`.
+  function from_chars(buf, n) result(s)
+    character(kind=c_char), intent(in) :: buf(:)
+    integer, intent(in) :: n
+    character(len=:), allocatable :: s
+    integer :: i
+    allocate (character(len=n) :: s)
+    do i = 1, n
+      s(i:i) = buf(i)
+    end do
+  end function from_chars
+
+  ! Addresses of optional arguments for the raw layer: c_loc, or NULL when
+  ! absent or empty.
+  function loc_d(x) result(p)
+    real(c_double), optional, target, contiguous :: x(:)
+    type(c_ptr) :: p
+    p = c_null_ptr
+    if (present(x)) then
+      if (size(x) > 0) p = c_loc(x)
+    end if
+  end function loc_d
+
+  function loc_d0(x) result(p)
+    real(c_double), optional, target :: x
+    type(c_ptr) :: p
+    p = c_null_ptr
+    if (present(x)) p = c_loc(x)
+  end function loc_d0
+
+  function loc_i(x) result(p)
+    integer(c_int32_t), optional, target, contiguous :: x(:)
+    type(c_ptr) :: p
+    p = c_null_ptr
+    if (present(x)) then
+      if (size(x) > 0) p = c_loc(x)
+    end if
+  end function loc_i
+
+  function loc_contact(x) result(p)
+    type(asperity_contact_state), optional, target :: x
+    type(c_ptr) :: p
+    p = c_null_ptr
+    if (present(x)) p = c_loc(x)
+  end function loc_contact
+
+  function loc_contacts(x) result(p)
+    type(asperity_contact_state), optional, target, contiguous :: x(:)
+    type(c_ptr) :: p
+    p = c_null_ptr
+    if (present(x)) then
+      if (size(x) > 0) p = c_loc(x)
+    end if
+  end function loc_contacts
+
+  function loc_point(x) result(p)
+    type(asperity_friction_point_state), optional, target :: x
+    type(c_ptr) :: p
+    p = c_null_ptr
+    if (present(x)) p = c_loc(x)
+  end function loc_point
+
+  function loc_points(x) result(p)
+    type(asperity_friction_point_state), optional, target, contiguous :: x(:)
+    type(c_ptr) :: p
+    p = c_null_ptr
+    if (present(x)) then
+      if (size(x) > 0) p = c_loc(x)
+    end if
+  end function loc_points
+
+  !> Check the optional state arrays of a batch call of `n` contacts and give
+  !> the old and new pointers for the raw call.
+  subroutine contact_states(what, n, old_state, new_state, states, p_old, p_new, bad, status)
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: n
+    type(asperity_contact_state), optional, target, contiguous :: old_state(:), new_state(:), &
+        states(:)
+    type(c_ptr), intent(out) :: p_old, p_new
+    logical, intent(out) :: bad
+    integer(c_int32_t), intent(out), optional :: status
+    p_old = c_null_ptr
+    p_new = c_null_ptr
+    bad = state_clash(what, present(states), present(old_state) .or. present(new_state), status)
+    if (bad) return
+    if (present(states)) then
+      bad = too_small(what, 'states', size(states), n, 'one per contact', status)
+      p_old = loc_contacts(states)
+      p_new = p_old
+      return
+    end if
+    if (present(old_state)) then
+      bad = too_small(what, 'old_state', size(old_state), n, 'one per contact', status)
+      if (bad) return
+      p_old = loc_contacts(old_state)
+    end if
+    if (present(new_state)) then
+      bad = too_small(what, 'new_state', size(new_state), n, 'one per contact', status)
+      p_new = loc_contacts(new_state)
+    end if
+  end subroutine contact_states
+
+  ! ------------------------------------------------------------------------
+  ! Handles: free, assignment guard, finalisation.
+
+  subroutine stop_copy(what)
+    character(len=*), intent(in) :: what
+    write (error_unit, '(a)') 'asperity: a live '//what//' handle cannot be copied with `=` '// &
+        '(both copies would free the same object); pass it as an argument or use a pointer'
+    flush (error_unit)
+    error stop 'asperity: handle copied'
+  end subroutine stop_copy
+
+  !> Release `table` (an empty handle is accepted); `table` becomes empty.
+  subroutine asperity_table_free(table)
+    class(asperity_table), intent(inout) :: table
+    call c_asperity_table_free(table%ptr)
+    table%ptr = c_null_ptr
+  end subroutine asperity_table_free
+
+  subroutine asperity_table_assign(lhs, rhs)
+    class(asperity_table), intent(inout) :: lhs
+    type(asperity_table), intent(in) :: rhs
+    if (c_associated(rhs%ptr)) then
+      if (c_associated(lhs%ptr, rhs%ptr)) return
+      call stop_copy('asperity_table')
+    end if
+    call asperity_table_free(lhs)
+  end subroutine asperity_table_assign
+
+  impure elemental subroutine asperity_table_final(table)
+    type(asperity_table), intent(inout) :: table
+    call asperity_table_free(table)
+  end subroutine asperity_table_final
+
+  !> Release `gw` (an empty handle is accepted); `gw` becomes empty.
+  subroutine asperity_gw_empirical_free(gw)
+    class(asperity_gw_empirical), intent(inout) :: gw
+    call c_asperity_gw_empirical_free(gw%ptr)
+    gw%ptr = c_null_ptr
+  end subroutine asperity_gw_empirical_free
+
+  subroutine asperity_gw_empirical_assign(lhs, rhs)
+    class(asperity_gw_empirical), intent(inout) :: lhs
+    type(asperity_gw_empirical), intent(in) :: rhs
+    if (c_associated(rhs%ptr)) then
+      if (c_associated(lhs%ptr, rhs%ptr)) return
+      call stop_copy('asperity_gw_empirical')
+    end if
+    call asperity_gw_empirical_free(lhs)
+  end subroutine asperity_gw_empirical_assign
+
+  impure elemental subroutine asperity_gw_empirical_final(gw)
+    type(asperity_gw_empirical), intent(inout) :: gw
+    call asperity_gw_empirical_free(gw)
+  end subroutine asperity_gw_empirical_final
+
+  !> Release `friction` (an empty handle is accepted); `friction` becomes empty.
+  subroutine asperity_homogenised_friction_free(friction)
+    class(asperity_homogenised_friction), intent(inout) :: friction
+    call c_asperity_homogenised_friction_free(friction%ptr)
+    friction%ptr = c_null_ptr
+  end subroutine asperity_homogenised_friction_free
+
+  subroutine asperity_homogenised_friction_assign(lhs, rhs)
+    class(asperity_homogenised_friction), intent(inout) :: lhs
+    type(asperity_homogenised_friction), intent(in) :: rhs
+    if (c_associated(rhs%ptr)) then
+      if (c_associated(lhs%ptr, rhs%ptr)) return
+      call stop_copy('asperity_homogenised_friction')
+    end if
+    call asperity_homogenised_friction_free(lhs)
+  end subroutine asperity_homogenised_friction_assign
+
+  impure elemental subroutine asperity_homogenised_friction_final(friction)
+    type(asperity_homogenised_friction), intent(inout) :: friction
+    call asperity_homogenised_friction_free(friction)
+  end subroutine asperity_homogenised_friction_final
+
+  !> Release `geometry` (an empty handle is accepted); `geometry` becomes empty.
+  subroutine asperity_slider_geometry_free(geometry)
+    class(asperity_slider_geometry), intent(inout) :: geometry
+    call c_asperity_slider_geometry_free(geometry%ptr)
+    geometry%ptr = c_null_ptr
+  end subroutine asperity_slider_geometry_free
+
+  subroutine asperity_slider_geometry_assign(lhs, rhs)
+    class(asperity_slider_geometry), intent(inout) :: lhs
+    type(asperity_slider_geometry), intent(in) :: rhs
+    if (c_associated(rhs%ptr)) then
+      if (c_associated(lhs%ptr, rhs%ptr)) return
+      call stop_copy('asperity_slider_geometry')
+    end if
+    call asperity_slider_geometry_free(lhs)
+  end subroutine asperity_slider_geometry_assign
+
+  impure elemental subroutine asperity_slider_geometry_final(geometry)
+    type(asperity_slider_geometry), intent(inout) :: geometry
+    call asperity_slider_geometry_free(geometry)
+  end subroutine asperity_slider_geometry_final
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: version, errors, layouts.
+
+  !> The library version, "MAJOR.MINOR.PATCH".
+  function asperity_version() result(version)
+    character(len=:), allocatable :: version
+    version = c_string(c_asperity_version())
+  end function asperity_version
+
+  !> The message of the last failed call on this thread ('' before the
+  !> first failure): the library's, or the friendly layer's own when it
+  !> rejected the arguments itself.
+  function asperity_last_error_message() result(message)
+    character(len=:), allocatable :: message
+    character(kind=c_char), allocatable, target :: buf(:)
+    integer(c_size_t) :: n
+    if (fortran_error_set) then
+      message = fortran_error
+      return
+    end if
+    n = c_asperity_last_error_message(c_null_ptr, 0_c_size_t)
+    allocate (buf(n + 1))
+    n = c_asperity_last_error_message(c_loc(buf), n + 1)
+    message = from_chars(buf, int(min(n, size(buf, kind=c_size_t) - 1)))
+  end function asperity_last_error_message
+
+  !> A description of a status code ("unknown status" for a value that is
+  !> not one).
+  function asperity_status_string(status) result(text)
+    integer(c_int32_t), intent(in) :: status
+    character(len=:), allocatable :: text
+    text = c_string(c_asperity_status_string(status))
+  end function asperity_status_string
+
+  !> Size and alignment (bytes) of the C type `name` (e.g. "AsperityNormalLaw").
+  subroutine asperity_type_layout(name, size, align, status)
+    character(len=*), intent(in) :: name
+    integer(c_size_t), intent(out) :: size
+    integer(c_size_t), intent(out), optional :: align
+    integer(c_int32_t), intent(out), optional :: status
+    integer(c_size_t) :: a
+    size = 0
+    a = 0
+    call check(c_asperity_type_layout(trim(name)//c_null_char, size, a), &
+        'asperity_type_layout', status)
+    if (present(align)) align = a
+  end subroutine asperity_type_layout
+
+  !> The number of C types `asperity_type_layout` knows.
+  function asperity_type_count() result(count)
+    integer(c_size_t) :: count
+    count = c_asperity_type_count()
+  end function asperity_type_count
+
+  !> The C name of type `index` (0-based, < `asperity_type_count()`).
+  subroutine asperity_type_name(index, name, status)
+    integer(c_size_t), intent(in) :: index
+    character(len=:), allocatable, intent(out) :: name
+    integer(c_int32_t), intent(out), optional :: status
+    character(kind=c_char), allocatable, target :: buf(:)
+    integer(c_size_t) :: n, cap
+    integer(c_int32_t) :: st
+    name = ''
+    n = 0
+    st = c_asperity_type_name(index, c_null_ptr, 0_c_size_t, n)
+    if (st == ASPERITY_OK) then
+      cap = n + 1
+      allocate (buf(cap))
+      st = c_asperity_type_name(index, c_loc(buf), cap, n)
+      if (st == ASPERITY_OK) name = from_chars(buf, int(n))
+    end if
+    call check(st, 'asperity_type_name', status)
+  end subroutine asperity_type_name
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: single-asperity normal laws (contact.rs).
+
+  !> Hertz sphere: radius R (m), contact modulus E* (Pa).
+  subroutine asperity_law_hertz(radius, e_star, law, status)
+    real(c_double), intent(in) :: radius, e_star
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_hertz(radius, e_star, law), 'asperity_law_hertz', status)
+  end subroutine asperity_law_hertz
+
+  !> Galanov effective sphere in a crater of radius `medium_radius` (m).
+  subroutine asperity_law_sphere_in_crater(radius, medium_radius, e_star, law, status)
+    real(c_double), intent(in) :: radius, medium_radius, e_star
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_sphere_in_crater(radius, medium_radius, e_star, law), &
+        'asperity_law_sphere_in_crater', status)
+  end subroutine asperity_law_sphere_in_crater
+
+  !> Galin power-law punch `f(r) = b r^d`.
+  subroutine asperity_law_power_punch(b, d, e_star, law, status)
+    real(c_double), intent(in) :: b, d, e_star
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_power_punch(b, d, e_star, law), 'asperity_law_power_punch', status)
+  end subroutine asperity_law_power_punch
+
+  !> Cone of half-angle `half_angle` (rad).
+  subroutine asperity_law_cone(half_angle, e_star, law, status)
+    real(c_double), intent(in) :: half_angle, e_star
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_cone(half_angle, e_star, law), 'asperity_law_cone', status)
+  end subroutine asperity_law_cone
+
+  !> Galanov effective cone in an imprint.
+  subroutine asperity_law_cone_in_imprint(indenter_half_angle, imprint_half_angle, e_star, law, &
+      status)
+    real(c_double), intent(in) :: indenter_half_angle, imprint_half_angle, e_star
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_cone_in_imprint(indenter_half_angle, imprint_half_angle, e_star, &
+        law), 'asperity_law_cone_in_imprint', status)
+  end subroutine asperity_law_cone_in_imprint
+
+  !> Frictionless flat punch of radius a (m).
+  subroutine asperity_law_flat_punch(radius, e_star, law, status)
+    real(c_double), intent(in) :: radius, e_star
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_flat_punch(radius, e_star, law), 'asperity_law_flat_punch', status)
+  end subroutine asperity_law_flat_punch
+
+  !> Bonded (no-slip) flat punch.
+  subroutine asperity_law_flat_punch_no_slip(radius, e_star, nu, law, status)
+    real(c_double), intent(in) :: radius, e_star, nu
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_flat_punch_no_slip(radius, e_star, nu, law), &
+        'asperity_law_flat_punch_no_slip', status)
+  end subroutine asperity_law_flat_punch_no_slip
+
+  !> DMT sphere.
+  subroutine asperity_law_dmt(radius, e_star, work_of_adhesion, law, status)
+    real(c_double), intent(in) :: radius, e_star, work_of_adhesion
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_dmt(radius, e_star, work_of_adhesion, law), 'asperity_law_dmt', &
+        status)
+  end subroutine asperity_law_dmt
+
+  !> JKR sphere.
+  subroutine asperity_law_jkr(radius, e_star, work_of_adhesion, law, status)
+    real(c_double), intent(in) :: radius, e_star, work_of_adhesion
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_jkr(radius, e_star, work_of_adhesion, law), 'asperity_law_jkr', &
+        status)
+  end subroutine asperity_law_jkr
+
+  !> JKR power-law punch (Borodich 2014); `no_slip` = 1 for a bonded punch.
+  subroutine asperity_law_jkr_power_punch(b, d, e_star, work_of_adhesion, nu, no_slip, law, &
+      status)
+    real(c_double), intent(in) :: b, d, e_star, work_of_adhesion, nu
+    integer(c_int32_t), intent(in) :: no_slip
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_jkr_power_punch(b, d, e_star, work_of_adhesion, nu, no_slip, law), &
+        'asperity_law_jkr_power_punch', status)
+  end subroutine asperity_law_jkr_power_punch
+
+  !> Kendall adhesive flat punch; `no_slip` = 1 for a bonded punch.
+  subroutine asperity_law_kendall(radius, e_star, work_of_adhesion, nu, no_slip, law, status)
+    real(c_double), intent(in) :: radius, e_star, work_of_adhesion, nu
+    integer(c_int32_t), intent(in) :: no_slip
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_kendall(radius, e_star, work_of_adhesion, nu, no_slip, law), &
+        'asperity_law_kendall', status)
+  end subroutine asperity_law_kendall
+
+  !> Maugis-Dugdale sphere with Dugdale cohesive stress `sigma0` (Pa).
+  subroutine asperity_law_maugis_dugdale(radius, e_star, work_of_adhesion, sigma0, law, status)
+    real(c_double), intent(in) :: radius, e_star, work_of_adhesion, sigma0
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_maugis_dugdale(radius, e_star, work_of_adhesion, sigma0, law), &
+        'asperity_law_maugis_dugdale', status)
+  end subroutine asperity_law_maugis_dugdale
+
+  !> Rigid sphere with a surface-force law (`ASPERITY_SURFACE_LAW_*`).
+  subroutine asperity_law_derjaguin(radius, work_of_adhesion, surface_law, parameter, law, status)
+    real(c_double), intent(in) :: radius, work_of_adhesion, parameter
+    integer(c_int32_t), intent(in) :: surface_law
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_derjaguin(radius, work_of_adhesion, surface_law, parameter, law), &
+        'asperity_law_derjaguin', status)
+  end subroutine asperity_law_derjaguin
+
+  !> Evaluate `law` at the overlap `delta` (m) into `out`. History: `old_state`
+  !> (absent: fresh) to `new_state` (absent: discarded), or `state` in place.
+  subroutine asperity_normal_eval(law, delta, out, old_state, new_state, state, status)
+    type(asperity_normal_law), intent(in) :: law
+    real(c_double), intent(in) :: delta
+    type(asperity_normal_response), intent(out) :: out
+    type(asperity_contact_state), intent(in), optional, target :: old_state
+    type(asperity_contact_state), intent(inout), optional, target :: new_state
+    type(asperity_contact_state), intent(inout), optional, target :: state
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_normal_eval'
+    if (state_clash(what, present(state), present(old_state) .or. present(new_state), status)) &
+        return
+    if (present(state)) then
+      call check(c_asperity_normal_eval(law, delta, c_loc(state), c_loc(state), out), what, &
+          status)
+    else
+      call check(c_asperity_normal_eval(law, delta, loc_contact(old_state), &
+          loc_contact(new_state), out), what, status)
+    end if
+  end subroutine asperity_normal_eval
+
+  !> Evaluate `law` for `size(delta)` contacts: `force(i)` (N) and, when
+  !> given, `contact_radius(i)` (m), `stiffness(i)` (N/m); histories
+  !> `old_state(i)` to `new_state(i)`, or `states(i)` in place.
+  subroutine asperity_normal_eval_batch(law, delta, force, old_state, new_state, contact_radius, &
+      stiffness, states, status)
+    type(asperity_normal_law), intent(in) :: law
+    real(c_double), intent(in) :: delta(:)
+    real(c_double), intent(inout) :: force(:)
+    type(asperity_contact_state), intent(in), optional, target, contiguous :: old_state(:)
+    type(asperity_contact_state), intent(inout), optional, target, contiguous :: new_state(:)
+    real(c_double), intent(inout), optional, target, contiguous :: contact_radius(:), stiffness(:)
+    type(asperity_contact_state), intent(inout), optional, target, contiguous :: states(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_normal_eval_batch'
+    type(c_ptr) :: p_old, p_new
+    logical :: bad
+    integer :: n
+    n = size(delta)
+    if (too_small(what, 'force', size(force), n, 'the size of `delta`', status)) return
+    if (present(contact_radius)) then
+      if (too_small(what, 'contact_radius', size(contact_radius), n, 'the size of `delta`', &
+          status)) return
+    end if
+    if (present(stiffness)) then
+      if (too_small(what, 'stiffness', size(stiffness), n, 'the size of `delta`', status)) return
+    end if
+    call contact_states(what, n, old_state, new_state, states, p_old, p_new, bad, status)
+    if (bad) return
+    call check(c_asperity_normal_eval_batch(law, int(n, c_size_t), delta, p_old, p_new, force, &
+        loc_d(contact_radius), loc_d(stiffness)), what, status)
+  end subroutine asperity_normal_eval_batch
+
+  !> Equilibrium of `law` at the prescribed force `force` (N).
+  subroutine asperity_normal_eval_at_load(law, force, out, status)
+    type(asperity_normal_law), intent(in) :: law
+    real(c_double), intent(in) :: force
+    type(asperity_normal_response), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_normal_eval_at_load(law, force, out), 'asperity_normal_eval_at_load', &
+        status)
+  end subroutine asperity_normal_eval_at_load
+
+  !> Pull-off force (N) under `control` (`ASPERITY_CONTROL_*`).
+  subroutine asperity_pull_off_force(law, control, force, status)
+    type(asperity_normal_law), intent(in) :: law
+    integer(c_int32_t), intent(in) :: control
+    real(c_double), intent(out) :: force
+    integer(c_int32_t), intent(out), optional :: status
+    force = 0
+    call check(c_asperity_pull_off_force(law, control, force), 'asperity_pull_off_force', status)
+  end subroutine asperity_pull_off_force
+
+  !> A characteristic overlap of `law` (m).
+  subroutine asperity_law_length_scale(law, length, status)
+    type(asperity_normal_law), intent(in) :: law
+    real(c_double), intent(out) :: length
+    integer(c_int32_t), intent(out), optional :: status
+    length = 0
+    call check(c_asperity_law_length_scale(law, length), 'asperity_law_length_scale', status)
+  end subroutine asperity_law_length_scale
+
+  !> The cheapest adhesive-sphere model within `force_tolerance` (N).
+  subroutine asperity_fidelity_advise(radius, e_star, work_of_adhesion, z0, force_tolerance, out, &
+      status)
+    real(c_double), intent(in) :: radius, e_star, work_of_adhesion, z0, force_tolerance
+    type(asperity_fidelity_advice), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_fidelity_advise(radius, e_star, work_of_adhesion, z0, force_tolerance, &
+        out), 'asperity_fidelity_advise', status)
+  end subroutine asperity_fidelity_advise
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: the slider of the hierarchical friction model.
+
+  !> A slider from a profilometer profile (`micro_heights`, spacing
+  !> `micro_dx` m), an AFM profile (`nano_heights`, `nano_dx`) and nested rod
+  !> widths `rod_widths` (m, coarsest first). An object `geometry` held is
+  !> freed first.
+  subroutine asperity_slider_geometry_new(micro_heights, micro_dx, nano_heights, nano_dx, &
+      rod_widths, geometry, status)
+    real(c_double), intent(in) :: micro_heights(:), nano_heights(:), rod_widths(:)
+    real(c_double), intent(in) :: micro_dx, nano_dx
+    type(asperity_slider_geometry), intent(inout) :: geometry
+    integer(c_int32_t), intent(out), optional :: status
+    call geometry%free()
+    call check(c_asperity_slider_geometry_new(micro_heights, size(micro_heights, kind=c_size_t), &
+        micro_dx, nano_heights, size(nano_heights, kind=c_size_t), nano_dx, rod_widths, &
+        size(rod_widths, kind=c_size_t), geometry%ptr), 'asperity_slider_geometry_new', status)
+  end subroutine asperity_slider_geometry_new
+
+  !> A single-level slider of `rods` flat rods of `rod_width` (m) carrying
+  !> `nano%per_rod` nano-asperities each.
+  subroutine asperity_slider_geometry_new_uniform(rod_width, rods, nano, geometry, status)
+    real(c_double), intent(in) :: rod_width
+    integer, intent(in) :: rods
+    type(asperity_nano_asperities), intent(in) :: nano
+    type(asperity_slider_geometry), intent(inout) :: geometry
+    integer(c_int32_t), intent(out), optional :: status
+    call geometry%free()
+    call check(c_asperity_slider_geometry_new_uniform(rod_width, int(rods, c_size_t), nano, &
+        geometry%ptr), 'asperity_slider_geometry_new_uniform', status)
+  end subroutine asperity_slider_geometry_new_uniform
+
+  !> The nano-asperity parameters of `geometry`.
+  subroutine asperity_slider_geometry_nano(geometry, out, status)
+    type(asperity_slider_geometry), intent(in) :: geometry
+    type(asperity_nano_asperities), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_slider_geometry_nano(geometry%ptr, out), &
+        'asperity_slider_geometry_nano', status)
+  end subroutine asperity_slider_geometry_nano
+
+  !> The number of rod levels of `geometry`.
+  subroutine asperity_slider_geometry_level_count(geometry, count, status)
+    type(asperity_slider_geometry), intent(in) :: geometry
+    integer, intent(out) :: count
+    integer(c_int32_t), intent(out), optional :: status
+    integer(c_size_t) :: c
+    c = 0
+    call check(c_asperity_slider_geometry_level_count(geometry%ptr, c), &
+        'asperity_slider_geometry_level_count', status)
+    count = int(c)
+  end subroutine asperity_slider_geometry_level_count
+
+  !> The number of rods of `level` (0 = coarsest).
+  subroutine asperity_slider_geometry_rod_count(geometry, level, count, status)
+    type(asperity_slider_geometry), intent(in) :: geometry
+    integer, intent(in) :: level
+    integer, intent(out) :: count
+    integer(c_int32_t), intent(out), optional :: status
+    integer(c_size_t) :: c
+    c = 0
+    call check(c_asperity_slider_geometry_rod_count(geometry%ptr, int(level, c_size_t), c), &
+        'asperity_slider_geometry_rod_count', status)
+    count = int(c)
+  end subroutine asperity_slider_geometry_rod_count
+
+  !> The rod width (m) of `level` and the left side of its rod 0 (m).
+  subroutine asperity_slider_geometry_rod_width(geometry, level, width, origin, status)
+    type(asperity_slider_geometry), intent(in) :: geometry
+    integer, intent(in) :: level
+    real(c_double), intent(out) :: width
+    real(c_double), intent(out), optional, target :: origin
+    integer(c_int32_t), intent(out), optional :: status
+    width = 0
+    call check(c_asperity_slider_geometry_rod_width(geometry%ptr, int(level, c_size_t), width, &
+        loc_d0(origin)), 'asperity_slider_geometry_rod_width', status)
+  end subroutine asperity_slider_geometry_rod_width
+
+  !> The rod heights (m) of `level` into `heights` (at least the rod count).
+  subroutine asperity_slider_geometry_rod_heights(geometry, level, heights, status)
+    type(asperity_slider_geometry), intent(in) :: geometry
+    integer, intent(in) :: level
+    real(c_double), intent(inout) :: heights(:)
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_slider_geometry_rod_heights(geometry%ptr, int(level, c_size_t), &
+        heights, size(heights, kind=c_size_t)), 'asperity_slider_geometry_rod_heights', status)
+  end subroutine asperity_slider_geometry_rod_heights
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: the homogenised friction law of FE points.
+
+  !> The law from `samples` at strictly increasing nominal pressures.
+  !> An object `friction` held is freed first.
+  subroutine asperity_homogenised_friction_new(samples, friction, status)
+    type(asperity_homogenised_sample), intent(in) :: samples(:)
+    type(asperity_homogenised_friction), intent(inout) :: friction
+    integer(c_int32_t), intent(out), optional :: status
+    call friction%free()
+    call check(c_asperity_homogenised_friction_new(samples, size(samples, kind=c_size_t), &
+        friction%ptr), 'asperity_homogenised_friction_new', status)
+  end subroutine asperity_homogenised_friction_new
+
+  !> The law from its JSON text. An object `friction` held is freed first.
+  subroutine asperity_homogenised_friction_from_json(json, friction, status)
+    character(len=*, kind=c_char), intent(in) :: json
+    type(asperity_homogenised_friction), intent(inout) :: friction
+    integer(c_int32_t), intent(out), optional :: status
+    call friction%free()
+    call check(c_asperity_homogenised_friction_from_json(json, len(json, kind=c_size_t), &
+        friction%ptr), 'asperity_homogenised_friction_from_json', status)
+  end subroutine asperity_homogenised_friction_from_json
+
+  !> The JSON text of `friction`.
+  subroutine asperity_homogenised_friction_to_json(friction, json, status)
+    type(asperity_homogenised_friction), intent(in) :: friction
+    character(len=:), allocatable, intent(out) :: json
+    integer(c_int32_t), intent(out), optional :: status
+    character(kind=c_char), allocatable, target :: buf(:)
+    integer(c_size_t) :: n, cap
+    integer(c_int32_t) :: st
+    json = ''
+    n = 0
+    st = c_asperity_homogenised_friction_to_json(friction%ptr, c_null_ptr, 0_c_size_t, n)
+    if (st == ASPERITY_OK) then
+      cap = n + 1
+      allocate (buf(cap))
+      st = c_asperity_homogenised_friction_to_json(friction%ptr, c_loc(buf), cap, n)
+      if (st == ASPERITY_OK) json = from_chars(buf, int(n))
+    end if
+    call check(st, 'asperity_homogenised_friction_to_json', status)
+  end subroutine asperity_homogenised_friction_to_json
+
+  !> Size in bytes of `asperity_friction_point_state`.
+  function asperity_homogenised_friction_state_size() result(size)
+    integer(c_size_t) :: size
+    size = c_asperity_homogenised_friction_state_size()
+  end function asperity_homogenised_friction_state_size
+
+  !> One friction step at one point into `out`. History: `old_state`
+  !> (absent: fresh) to `new_state` (absent: discarded), or `state` in place.
+  subroutine asperity_homogenised_friction_step(friction, increment, out, old_state, new_state, &
+      state, status)
+    type(asperity_homogenised_friction), intent(in) :: friction
+    type(asperity_friction_increment), intent(in) :: increment
+    type(asperity_friction_response), intent(out) :: out
+    type(asperity_friction_point_state), intent(in), optional, target :: old_state
+    type(asperity_friction_point_state), intent(inout), optional, target :: new_state
+    type(asperity_friction_point_state), intent(inout), optional, target :: state
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_homogenised_friction_step'
+    if (state_clash(what, present(state), present(old_state) .or. present(new_state), status)) &
+        return
+    if (present(state)) then
+      call check(c_asperity_homogenised_friction_step(friction%ptr, increment, c_loc(state), &
+          c_loc(state), out), what, status)
+    else
+      call check(c_asperity_homogenised_friction_step(friction%ptr, increment, &
+          loc_point(old_state), loc_point(new_state), out), what, status)
+    end if
+  end subroutine asperity_homogenised_friction_step
+
+  !> Step `size(normal_forces)` points at once (the call of an Abaqus VFRIC):
+  !> `normal_forces(i)` (N), `areas(i)` (m^2), slip increments
+  !> `slip_increments(1:2, i)` (m), one `dt` (s) and `stick_stiffness` (N/m),
+  !> tangential forces out in `tangential_forces(1:2, i)` (N) and, when
+  !> given, the dissipated energy in `dissipation(i)` (J); histories
+  !> `old_state(i)` (absent: fresh) to `new_state(i)`, or `states(i)` in place.
+  subroutine asperity_homogenised_friction_step_block(friction, normal_forces, areas, &
+      slip_increments, dt, stick_stiffness, tangential_forces, old_state, new_state, dissipation, &
+      states, status)
+    type(asperity_homogenised_friction), intent(in) :: friction
+    real(c_double), intent(in) :: normal_forces(:), areas(:), slip_increments(:, :)
+    real(c_double), intent(in) :: dt, stick_stiffness
+    real(c_double), intent(inout) :: tangential_forces(:, :)
+    type(asperity_friction_point_state), intent(in), optional, target, contiguous :: old_state(:)
+    type(asperity_friction_point_state), intent(inout), optional, target, contiguous :: &
+        new_state(:)
+    real(c_double), intent(inout), optional, target, contiguous :: dissipation(:)
+    type(asperity_friction_point_state), intent(inout), optional, target, contiguous :: states(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_homogenised_friction_step_block'
+    type(c_ptr) :: p_old, p_new
+    integer :: n
+    n = size(normal_forces)
+    if (too_small(what, 'areas', size(areas), n, 'the size of `normal_forces`', status)) return
+    if (size(slip_increments, 1) /= 2) then
+      call local_error(what, 'invalid argument `slip_increments`: the first dimension must be '// &
+          '2 (x and y), not '//itoa(int(size(slip_increments, 1), c_int64_t)), status)
+      return
+    end if
+    if (size(tangential_forces, 1) /= 2) then
+      call local_error(what, 'invalid argument `tangential_forces`: the first dimension must '// &
+          'be 2 (x and y), not '//itoa(int(size(tangential_forces, 1), c_int64_t)), status)
+      return
+    end if
+    if (too_small(what, 'slip_increments', size(slip_increments, 2), n, &
+        'columns, the size of `normal_forces`', status)) return
+    if (too_small(what, 'tangential_forces', size(tangential_forces, 2), n, &
+        'columns, the size of `normal_forces`', status)) return
+    if (present(dissipation)) then
+      if (too_small(what, 'dissipation', size(dissipation), n, 'the size of `normal_forces`', &
+          status)) return
+    end if
+    if (state_clash(what, present(states), present(old_state) .or. present(new_state), status)) &
+        return
+    if (present(states)) then
+      if (too_small(what, 'states', size(states), n, 'one per point', status)) return
+      p_old = loc_points(states)
+      p_new = p_old
+    else
+      p_old = c_null_ptr
+      p_new = c_null_ptr
+      if (present(old_state)) then
+        if (too_small(what, 'old_state', size(old_state), n, 'one per point', status)) return
+        p_old = loc_points(old_state)
+      end if
+      if (present(new_state)) then
+        if (too_small(what, 'new_state', size(new_state), n, 'one per point', status)) return
+        p_new = loc_points(new_state)
+      end if
+    end if
+    call check(c_asperity_homogenised_friction_step_block(friction%ptr, int(n, c_size_t), &
+        normal_forces, areas, slip_increments, dt, stick_stiffness, p_old, p_new, &
+        tangential_forces, loc_d(dissipation)), what, status)
+  end subroutine asperity_homogenised_friction_step_block
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: indentation, rescaling, hardness (indentation.rs).
+
+  !> The default options of `asperity_indentation_fit`.
+  subroutine asperity_indentation_default_options(options, status)
+    type(asperity_indentation_options), intent(out) :: options
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_indentation_default_options(options), &
+        'asperity_indentation_default_options', status)
+  end subroutine asperity_indentation_default_options
+
+  !> Fit a load-depth curve of `size(depth)` points; `segments`
+  !> (`ASPERITY_SEGMENT_*` per point) and `options` are optional.
+  subroutine asperity_indentation_fit(depth, load, result, segments, options, status)
+    real(c_double), intent(in) :: depth(:), load(:)
+    type(asperity_indentation_result), intent(out) :: result
+    integer(c_int32_t), intent(in), optional, target, contiguous :: segments(:)
+    type(asperity_indentation_options), intent(in), optional, target :: options
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_indentation_fit'
+    type(c_ptr) :: p_options
+    integer :: n
+    n = size(depth)
+    if (too_small(what, 'load', size(load), n, 'the size of `depth`', status)) return
+    if (present(segments)) then
+      if (too_small(what, 'segments', size(segments), n, 'the size of `depth`', status)) return
+    end if
+    p_options = c_null_ptr
+    if (present(options)) p_options = c_loc(options)
+    call check(c_asperity_indentation_fit(int(n, c_size_t), depth, load, loc_i(segments), &
+        p_options, result), what, status)
+  end subroutine asperity_indentation_fit
+
+  !> The code of flag bit `bit` ('' for a bit without a flag).
+  function asperity_indentation_flag_name(bit) result(name)
+    integer(c_int32_t), intent(in) :: bit
+    character(len=:), allocatable :: name
+    name = c_string(c_asperity_indentation_flag_name(bit))
+  end function asperity_indentation_flag_name
+
+  !> Depth (m) at `load` (N) by Borodich rescaling (3-13).
+  subroutine asperity_rescaling_depth(kappa, d, lambda, load, known_load, known_depth, depth, &
+      status)
+    real(c_double), intent(in) :: kappa, d, lambda, load, known_load, known_depth
+    real(c_double), intent(out) :: depth
+    integer(c_int32_t), intent(out), optional :: status
+    depth = 0
+    call check(c_asperity_rescaling_depth(kappa, d, lambda, load, known_load, known_depth, &
+        depth), 'asperity_rescaling_depth', status)
+  end subroutine asperity_rescaling_depth
+
+  !> Contact radius (m) at `load` (N) by rescaling (3-14).
+  subroutine asperity_rescaling_radius(kappa, d, lambda, load, known_load, known_radius, radius, &
+      status)
+    real(c_double), intent(in) :: kappa, d, lambda, load, known_load, known_radius
+    real(c_double), intent(out) :: radius
+    integer(c_int32_t), intent(out), optional :: status
+    radius = 0
+    call check(c_asperity_rescaling_radius(kappa, d, lambda, load, known_load, known_radius, &
+        radius), 'asperity_rescaling_radius', status)
+  end subroutine asperity_rescaling_radius
+
+  !> Load (N) at `depth` (m) by rescaling (3-24).
+  subroutine asperity_rescaling_load(kappa, d, lambda, depth, known_load, known_depth, load, &
+      status)
+    real(c_double), intent(in) :: kappa, d, lambda, depth, known_load, known_depth
+    real(c_double), intent(out) :: load
+    integer(c_int32_t), intent(out), optional :: status
+    load = 0
+    call check(c_asperity_rescaling_load(kappa, d, lambda, depth, known_load, known_depth, load), &
+        'asperity_rescaling_load', status)
+  end subroutine asperity_rescaling_load
+
+  !> Lambda for spheres, R1/R (3-15).
+  subroutine asperity_rescaling_lambda_spheres(known_radius, radius, lambda, status)
+    real(c_double), intent(in) :: known_radius, radius
+    real(c_double), intent(out) :: lambda
+    integer(c_int32_t), intent(out), optional :: status
+    lambda = 0
+    call check(c_asperity_rescaling_lambda_spheres(known_radius, radius, lambda), &
+        'asperity_rescaling_lambda_spheres', status)
+  end subroutine asperity_rescaling_lambda_spheres
+
+  !> Lambda for cones, tan(g1)/tan(g) (3-16).
+  subroutine asperity_rescaling_lambda_cones(known_half_angle, half_angle, lambda, status)
+    real(c_double), intent(in) :: known_half_angle, half_angle
+    real(c_double), intent(out) :: lambda
+    integer(c_int32_t), intent(out), optional :: status
+    lambda = 0
+    call check(c_asperity_rescaling_lambda_cones(known_half_angle, half_angle, lambda), &
+        'asperity_rescaling_lambda_cones', status)
+  end subroutine asperity_rescaling_lambda_cones
+
+  !> Kappa from the loading log-log slope and d ((3-20), (3-26)).
+  subroutine asperity_rescaling_kappa_from_slope(loading_slope, d, kappa, status)
+    real(c_double), intent(in) :: loading_slope, d
+    real(c_double), intent(out) :: kappa
+    integer(c_int32_t), intent(out), optional :: status
+    kappa = 0
+    call check(c_asperity_rescaling_kappa_from_slope(loading_slope, d, kappa), &
+        'asperity_rescaling_kappa_from_slope', status)
+  end subroutine asperity_rescaling_kappa_from_slope
+
+  !> d from the elastic unloading slope.
+  subroutine asperity_rescaling_d_from_unloading_slope(unloading_slope, d, status)
+    real(c_double), intent(in) :: unloading_slope
+    real(c_double), intent(out) :: d
+    integer(c_int32_t), intent(out), optional :: status
+    d = 0
+    call check(c_asperity_rescaling_d_from_unloading_slope(unloading_slope, d), &
+        'asperity_rescaling_d_from_unloading_slope', status)
+  end subroutine asperity_rescaling_d_from_unloading_slope
+
+  !> d from the loading slope and a known kappa.
+  subroutine asperity_rescaling_d_from_loading_slope(loading_slope, kappa, d, status)
+    real(c_double), intent(in) :: loading_slope, kappa
+    real(c_double), intent(out) :: d
+    integer(c_int32_t), intent(out), optional :: status
+    d = 0
+    call check(c_asperity_rescaling_d_from_loading_slope(loading_slope, kappa, d), &
+        'asperity_rescaling_d_from_loading_slope', status)
+  end subroutine asperity_rescaling_d_from_loading_slope
+
+  !> Galanov effective unloading radius (3-22).
+  subroutine asperity_galanov_unloading_radius(r1, p1, delta1, p2, delta2, r2, status)
+    real(c_double), intent(in) :: r1, p1, delta1, p2, delta2
+    real(c_double), intent(out) :: r2
+    integer(c_int32_t), intent(out), optional :: status
+    r2 = 0
+    call check(c_asperity_galanov_unloading_radius(r1, p1, delta1, p2, delta2, r2), &
+        'asperity_galanov_unloading_radius', status)
+  end subroutine asperity_galanov_unloading_radius
+
+  !> Radius of the deformed medium (3-23).
+  subroutine asperity_galanov_medium_radius(radius, unloading_radius, medium_radius, status)
+    real(c_double), intent(in) :: radius, unloading_radius
+    real(c_double), intent(out) :: medium_radius
+    integer(c_int32_t), intent(out), optional :: status
+    medium_radius = 0
+    call check(c_asperity_galanov_medium_radius(radius, unloading_radius, medium_radius), &
+        'asperity_galanov_medium_radius', status)
+  end subroutine asperity_galanov_medium_radius
+
+  !> Brinell hardness (2-7) (Pa).
+  subroutine asperity_hardness_brinell(load, ball_diameter, imprint_diameter, hardness, status)
+    real(c_double), intent(in) :: load, ball_diameter, imprint_diameter
+    real(c_double), intent(out) :: hardness
+    integer(c_int32_t), intent(out), optional :: status
+    hardness = 0
+    call check(c_asperity_hardness_brinell(load, ball_diameter, imprint_diameter, hardness), &
+        'asperity_hardness_brinell', status)
+  end subroutine asperity_hardness_brinell
+
+  !> Meyer hardness (2-8) (Pa).
+  subroutine asperity_hardness_meyer(load, imprint_diameter, hardness, status)
+    real(c_double), intent(in) :: load, imprint_diameter
+    real(c_double), intent(out) :: hardness
+    integer(c_int32_t), intent(out), optional :: status
+    hardness = 0
+    call check(c_asperity_hardness_meyer(load, imprint_diameter, hardness), &
+        'asperity_hardness_meyer', status)
+  end subroutine asperity_hardness_meyer
+
+  !> Ludwik hardness (2-10) (Pa).
+  subroutine asperity_hardness_ludwik(load, imprint_diameter, hardness, status)
+    real(c_double), intent(in) :: load, imprint_diameter
+    real(c_double), intent(out) :: hardness
+    integer(c_int32_t), intent(out), optional :: status
+    hardness = 0
+    call check(c_asperity_hardness_ludwik(load, imprint_diameter, hardness), &
+        'asperity_hardness_ludwik', status)
+  end subroutine asperity_hardness_ludwik
+
+  !> Vickers hardness (2-12) (Pa).
+  subroutine asperity_hardness_vickers(load, mean_diagonal, hardness, status)
+    real(c_double), intent(in) :: load, mean_diagonal
+    real(c_double), intent(out) :: hardness
+    integer(c_int32_t), intent(out), optional :: status
+    hardness = 0
+    call check(c_asperity_hardness_vickers(load, mean_diagonal, hardness), &
+        'asperity_hardness_vickers', status)
+  end subroutine asperity_hardness_vickers
+
+  !> Load-controlled pull-off force (N) of the Lennard-Jones sphere on
+  !> `n_grid` cells (0: the converged default).
+  subroutine asperity_lj_sphere_pull_off(radius, e_star, work_of_adhesion, z0, n_grid, force, &
+      status)
+    real(c_double), intent(in) :: radius, e_star, work_of_adhesion, z0
+    integer, intent(in) :: n_grid
+    real(c_double), intent(out) :: force
+    integer(c_int32_t), intent(out), optional :: status
+    force = 0
+    call check(c_asperity_lj_sphere_pull_off(radius, e_star, work_of_adhesion, z0, &
+        int(n_grid, c_size_t), force), 'asperity_lj_sphere_pull_off', status)
+  end subroutine asperity_lj_sphere_pull_off
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: materials (material.rs).
+
+  !> Contact modulus (Pa); a modulus of IEEE +infinity
+  !> (`ieee_value(e, ieee_positive_inf)`) marks a rigid body.
+  subroutine asperity_effective_modulus(e1, nu1, e2, nu2, e_star, status)
+    real(c_double), intent(in) :: e1, nu1, e2, nu2
+    real(c_double), intent(out) :: e_star
+    integer(c_int32_t), intent(out), optional :: status
+    e_star = 0
+    call check(c_asperity_effective_modulus(e1, nu1, e2, nu2, e_star), &
+        'asperity_effective_modulus', status)
+  end subroutine asperity_effective_modulus
+
+  !> Effective modulus of two rods end to end (Pa), (6-8).
+  subroutine asperity_rod_effective_modulus(e1, e2, e_eff, status)
+    real(c_double), intent(in) :: e1, e2
+    real(c_double), intent(out) :: e_eff
+    integer(c_int32_t), intent(out), optional :: status
+    e_eff = 0
+    call check(c_asperity_rod_effective_modulus(e1, e2, e_eff), &
+        'asperity_rod_effective_modulus', status)
+  end subroutine asperity_rod_effective_modulus
+
+  !> No-slip factor C_NS(nu).
+  subroutine asperity_no_slip_factor(nu, c_ns, status)
+    real(c_double), intent(in) :: nu
+    real(c_double), intent(out) :: c_ns
+    integer(c_int32_t), intent(out), optional :: status
+    c_ns = 0
+    call check(c_asperity_no_slip_factor(nu, c_ns), 'asperity_no_slip_factor', status)
+  end subroutine asperity_no_slip_factor
+
+  !> Tabor parameter mu.
+  subroutine asperity_tabor_parameter(radius, work_of_adhesion, e_star, equilibrium_separation, &
+      mu, status)
+    real(c_double), intent(in) :: radius, work_of_adhesion, e_star, equilibrium_separation
+    real(c_double), intent(out) :: mu
+    integer(c_int32_t), intent(out), optional :: status
+    mu = 0
+    call check(c_asperity_tabor_parameter(radius, work_of_adhesion, e_star, &
+        equilibrium_separation, mu), 'asperity_tabor_parameter', status)
+  end subroutine asperity_tabor_parameter
+
+  !> Maugis parameter lambda.
+  subroutine asperity_maugis_parameter(radius, work_of_adhesion, e_star, cohesive_stress, lambda, &
+      status)
+    real(c_double), intent(in) :: radius, work_of_adhesion, e_star, cohesive_stress
+    real(c_double), intent(out) :: lambda
+    integer(c_int32_t), intent(out), optional :: status
+    lambda = 0
+    call check(c_asperity_maugis_parameter(radius, work_of_adhesion, e_star, cohesive_stress, &
+        lambda), 'asperity_maugis_parameter', status)
+  end subroutine asperity_maugis_parameter
+
+  !> Weir's surface energy (J/m^2).
+  subroutine asperity_weir_surface_energy(atomic_mass, density, youngs_modulus, poisson_ratio, m, &
+      n, gamma, status)
+    real(c_double), intent(in) :: atomic_mass, density, youngs_modulus, poisson_ratio, m, n
+    real(c_double), intent(out) :: gamma
+    integer(c_int32_t), intent(out), optional :: status
+    gamma = 0
+    call check(c_asperity_weir_surface_energy(atomic_mass, density, youngs_modulus, &
+        poisson_ratio, m, n, gamma), 'asperity_weir_surface_energy', status)
+  end subroutine asperity_weir_surface_energy
+
+  !> Weir's surface energy with the prefactor `ASPERITY_WEIR_*`.
+  subroutine asperity_weir_surface_energy_with(atomic_mass, density, youngs_modulus, &
+      poisson_ratio, m, n, prefactor, gamma, status)
+    real(c_double), intent(in) :: atomic_mass, density, youngs_modulus, poisson_ratio, m, n
+    integer(c_int32_t), intent(in) :: prefactor
+    real(c_double), intent(out) :: gamma
+    integer(c_int32_t), intent(out), optional :: status
+    gamma = 0
+    call check(c_asperity_weir_surface_energy_with(atomic_mass, density, youngs_modulus, &
+        poisson_ratio, m, n, prefactor, gamma), 'asperity_weir_surface_energy_with', status)
+  end subroutine asperity_weir_surface_energy_with
+
+  !> Work of adhesion (J/m^2) of two surface energies under `rule`
+  !> (`ASPERITY_PAIR_*`).
+  subroutine asperity_pair_work_of_adhesion(gamma1, gamma2, rule, work_of_adhesion, status)
+    real(c_double), intent(in) :: gamma1, gamma2
+    integer(c_int32_t), intent(in) :: rule
+    real(c_double), intent(out) :: work_of_adhesion
+    integer(c_int32_t), intent(out), optional :: status
+    work_of_adhesion = 0
+    call check(c_asperity_pair_work_of_adhesion(gamma1, gamma2, rule, work_of_adhesion), &
+        'asperity_pair_work_of_adhesion', status)
+  end subroutine asperity_pair_work_of_adhesion
+
+  !> Work of adhesion A/(12 pi D0^2) (J/m^2).
+  subroutine asperity_hamaker_work_of_adhesion(hamaker, separation, work_of_adhesion, status)
+    real(c_double), intent(in) :: hamaker, separation
+    real(c_double), intent(out) :: work_of_adhesion
+    integer(c_int32_t), intent(out), optional :: status
+    work_of_adhesion = 0
+    call check(c_asperity_hamaker_work_of_adhesion(hamaker, separation, work_of_adhesion), &
+        'asperity_hamaker_work_of_adhesion', status)
+  end subroutine asperity_hamaker_work_of_adhesion
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: multi-asperity statistics (statistics.rs).
+
+  !> Greenwood-Williamson load, area, contacts and stiffness at `separation` (m).
+  subroutine asperity_gw_eval(gw, separation, out, status)
+    type(asperity_gw_params), intent(in) :: gw
+    real(c_double), intent(in) :: separation
+    type(asperity_gw_response), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_gw_eval(gw, separation, out), 'asperity_gw_eval', status)
+  end subroutine asperity_gw_eval
+
+  !> `asperity_gw_eval` for `size(separation)` separations: `load(i)` (N)
+  !> and, when given, `area(i)` (m^2), `contacts(i)`, `stiffness(i)` (N/m).
+  subroutine asperity_gw_eval_batch(gw, separation, load, area, contacts, stiffness, status)
+    type(asperity_gw_params), intent(in) :: gw
+    real(c_double), intent(in) :: separation(:)
+    real(c_double), intent(inout) :: load(:)
+    real(c_double), intent(inout), optional, target, contiguous :: area(:), contacts(:), &
+        stiffness(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_gw_eval_batch'
+    if (gw_batch_sizes_bad(what, size(separation), load, area, contacts, stiffness, status)) &
+        return
+    call check(c_asperity_gw_eval_batch(gw, size(separation, kind=c_size_t), separation, load, &
+        loc_d(area), loc_d(contacts), loc_d(stiffness)), what, status)
+  end subroutine asperity_gw_eval_batch
+
+  logical function gw_batch_sizes_bad(what, n, load, area, contacts, stiffness, status) result(bad)
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: n
+    real(c_double), intent(in) :: load(:)
+    real(c_double), intent(in), optional :: area(:), contacts(:), stiffness(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: ref = 'the size of `separation`'
+    bad = too_small(what, 'load', size(load), n, ref, status)
+    if (bad) return
+    if (present(area)) then
+      bad = too_small(what, 'area', size(area), n, ref, status)
+      if (bad) return
+    end if
+    if (present(contacts)) then
+      bad = too_small(what, 'contacts', size(contacts), n, ref, status)
+      if (bad) return
+    end if
+    if (present(stiffness)) bad = too_small(what, 'stiffness', size(stiffness), n, ref, status)
+  end function gw_batch_sizes_bad
+
+  !> The separation (m) that carries `load` (N), with the solver's report.
+  subroutine asperity_gw_separation_at_load(gw, load, out, status)
+    type(asperity_gw_params), intent(in) :: gw
+    real(c_double), intent(in) :: load
+    type(asperity_separation), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_gw_separation_at_load(gw, load, out), &
+        'asperity_gw_separation_at_load', status)
+  end subroutine asperity_gw_separation_at_load
+
+  !> Plasticity index of the surface `gw` for the hardness `hardness` (Pa).
+  subroutine asperity_gw_plasticity_index(gw, hardness, psi, status)
+    type(asperity_gw_params), intent(in) :: gw
+    real(c_double), intent(in) :: hardness
+    real(c_double), intent(out) :: psi
+    integer(c_int32_t), intent(out), optional :: status
+    psi = 0
+    call check(c_asperity_gw_plasticity_index(gw, hardness, psi), &
+        'asperity_gw_plasticity_index', status)
+  end subroutine asperity_gw_plasticity_index
+
+  !> Plasticity index psi = (E*/H) sqrt(sigma/R) (1-31).
+  subroutine asperity_plasticity_index(e_star, hardness, sigma, radius, psi, status)
+    real(c_double), intent(in) :: e_star, hardness, sigma, radius
+    real(c_double), intent(out) :: psi
+    integer(c_int32_t), intent(out), optional :: status
+    psi = 0
+    call check(c_asperity_plasticity_index(e_star, hardness, sigma, radius, psi), &
+        'asperity_plasticity_index', status)
+  end subroutine asperity_plasticity_index
+
+  !> The deformation regime (`ASPERITY_REGIME_*`) of a plasticity index.
+  subroutine asperity_deformation_regime(psi, regime, status)
+    real(c_double), intent(in) :: psi
+    integer(c_int32_t), intent(out) :: regime
+    integer(c_int32_t), intent(out), optional :: status
+    regime = 0
+    call check(c_asperity_deformation_regime(psi, regime), 'asperity_deformation_regime', status)
+  end subroutine asperity_deformation_regime
+
+  !> A Greenwood-Williamson surface over listed summits `heights` (m) and,
+  !> when given, their radii `radii` (m). An object `gw` held is freed first.
+  subroutine asperity_gw_empirical_new(summit_count, radius, e_star, heights, gw, radii, status)
+    real(c_double), intent(in) :: summit_count, radius, e_star
+    real(c_double), intent(in) :: heights(:)
+    type(asperity_gw_empirical), intent(inout) :: gw
+    real(c_double), intent(in), optional, target, contiguous :: radii(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_gw_empirical_new'
+    call gw%free()
+    if (present(radii)) then
+      if (too_small(what, 'radii', size(radii), size(heights), 'the size of `heights`', status)) &
+          return
+    end if
+    call check(c_asperity_gw_empirical_new(summit_count, radius, e_star, &
+        size(heights, kind=c_size_t), heights, loc_d(radii), gw%ptr), what, status)
+  end subroutine asperity_gw_empirical_new
+
+  !> `asperity_gw_eval` for an empirical surface.
+  subroutine asperity_gw_empirical_eval(gw, separation, out, status)
+    type(asperity_gw_empirical), intent(in) :: gw
+    real(c_double), intent(in) :: separation
+    type(asperity_gw_response), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_gw_empirical_eval(gw%ptr, separation, out), &
+        'asperity_gw_empirical_eval', status)
+  end subroutine asperity_gw_empirical_eval
+
+  !> `asperity_gw_eval_batch` for an empirical surface.
+  subroutine asperity_gw_empirical_eval_batch(gw, separation, load, area, contacts, stiffness, &
+      status)
+    type(asperity_gw_empirical), intent(in) :: gw
+    real(c_double), intent(in) :: separation(:)
+    real(c_double), intent(inout) :: load(:)
+    real(c_double), intent(inout), optional, target, contiguous :: area(:), contacts(:), &
+        stiffness(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_gw_empirical_eval_batch'
+    if (gw_batch_sizes_bad(what, size(separation), load, area, contacts, stiffness, status)) &
+        return
+    call check(c_asperity_gw_empirical_eval_batch(gw%ptr, size(separation, kind=c_size_t), &
+        separation, load, loc_d(area), loc_d(contacts), loc_d(stiffness)), what, status)
+  end subroutine asperity_gw_empirical_eval_batch
+
+  !> `asperity_gw_separation_at_load` for an empirical surface.
+  subroutine asperity_gw_empirical_separation_at_load(gw, load, out, status)
+    type(asperity_gw_empirical), intent(in) :: gw
+    real(c_double), intent(in) :: load
+    type(asperity_separation), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_gw_empirical_separation_at_load(gw%ptr, load, out), &
+        'asperity_gw_empirical_separation_at_load', status)
+  end subroutine asperity_gw_empirical_separation_at_load
+
+  !> `asperity_gw_plasticity_index` for an empirical surface.
+  subroutine asperity_gw_empirical_plasticity_index(gw, hardness, psi, status)
+    type(asperity_gw_empirical), intent(in) :: gw
+    real(c_double), intent(in) :: hardness
+    real(c_double), intent(out) :: psi
+    integer(c_int32_t), intent(out), optional :: status
+    psi = 0
+    call check(c_asperity_gw_empirical_plasticity_index(gw%ptr, hardness, psi), &
+        'asperity_gw_empirical_plasticity_index', status)
+  end subroutine asperity_gw_empirical_plasticity_index
+
+  !> Zhuravlev's model with linear summit densities at the approach (m).
+  subroutine asperity_zhuravlev_linear(model, alpha1, alpha2, approach, out, status)
+    type(asperity_zhuravlev), intent(in) :: model
+    real(c_double), intent(in) :: alpha1, alpha2, approach
+    type(asperity_zhuravlev_response), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_zhuravlev_linear(model, alpha1, alpha2, approach, out), &
+        'asperity_zhuravlev_linear', status)
+  end subroutine asperity_zhuravlev_linear
+
+  !> The approach (m) that carries `load` (N) with linear densities.
+  subroutine asperity_zhuravlev_approach_at_load_linear(model, alpha1, alpha2, load, approach, &
+      status)
+    type(asperity_zhuravlev), intent(in) :: model
+    real(c_double), intent(in) :: alpha1, alpha2, load
+    real(c_double), intent(out) :: approach
+    integer(c_int32_t), intent(out), optional :: status
+    approach = 0
+    call check(c_asperity_zhuravlev_approach_at_load_linear(model, alpha1, alpha2, load, &
+        approach), 'asperity_zhuravlev_approach_at_load_linear', status)
+  end subroutine asperity_zhuravlev_approach_at_load_linear
+
+  !> Friction of Zhuravlev's model at `load` (N) with shear strength (Pa).
+  subroutine asperity_zhuravlev_friction_linear(model, alpha1, alpha2, load, shear_strength, out, &
+      status)
+    type(asperity_zhuravlev), intent(in) :: model
+    real(c_double), intent(in) :: alpha1, alpha2, load, shear_strength
+    type(asperity_zhuravlev_friction), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_zhuravlev_friction_linear(model, alpha1, alpha2, load, shear_strength, &
+        out), 'asperity_zhuravlev_friction_linear', status)
+  end subroutine asperity_zhuravlev_friction_linear
+
+  !> Zhuravlev's model for summit densities `n1`, `n2` (`bind(c)` functions
+  !> of the interface `asperity_summit_density`, called with `n1_data`,
+  !> `n2_data`, or `c_null_ptr` when absent) by Gauss-Legendre quadrature of
+  !> `order` points.
+  subroutine asperity_zhuravlev_eval(model, approach, n1, n2, order, out, n1_data, n2_data, status)
+    type(asperity_zhuravlev), intent(in) :: model
+    real(c_double), intent(in) :: approach
+    procedure(asperity_summit_density) :: n1, n2
+    integer, intent(in) :: order
+    type(asperity_zhuravlev_response), intent(out) :: out
+    type(c_ptr), intent(in), optional :: n1_data, n2_data
+    integer(c_int32_t), intent(out), optional :: status
+    type(c_ptr) :: d1, d2
+    d1 = c_null_ptr
+    d2 = c_null_ptr
+    if (present(n1_data)) d1 = n1_data
+    if (present(n2_data)) d2 = n2_data
+    call check(c_asperity_zhuravlev_eval(model, approach, c_funloc(n1), d1, c_funloc(n2), d2, &
+        int(order, c_size_t), out), 'asperity_zhuravlev_eval', status)
+  end subroutine asperity_zhuravlev_eval
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: profiles (surface.rs).
+
+  !> ISO 4287 parameters of the profile `heights` (m) sampled at `dx` (m).
+  subroutine asperity_roughness_parameters(heights, dx, form, cutoff, sampling_length, out, status)
+    real(c_double), intent(in) :: heights(:)
+    real(c_double), intent(in) :: dx, cutoff, sampling_length
+    integer(c_int32_t), intent(in) :: form
+    type(asperity_roughness), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_roughness_parameters(size(heights, kind=c_size_t), heights, dx, form, &
+        cutoff, sampling_length, out), 'asperity_roughness_parameters', status)
+  end subroutine asperity_roughness_parameters
+
+  !> `heights` minus their least-squares `form` (`ASPERITY_FORM_*`) into
+  !> `out` (for in place, call the raw `c_asperity_profile_remove_form`
+  !> with the same array twice).
+  subroutine asperity_profile_remove_form(heights, form, out, status)
+    real(c_double), intent(in) :: heights(:)
+    integer(c_int32_t), intent(in) :: form
+    real(c_double), intent(inout) :: out(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_profile_remove_form'
+    if (too_small(what, 'out', size(out), size(heights), 'the size of `heights`', status)) return
+    call check(c_asperity_profile_remove_form(size(heights, kind=c_size_t), heights, form, out), &
+        what, status)
+  end subroutine asperity_profile_remove_form
+
+  !> ISO 16610-21 Gaussian filter: the roughness profile into `roughness`
+  !> (room for `size(heights)`), its length into `n_out` and, when given, the
+  !> mean line into `mean_line` and the index (0-based) of the first sample
+  !> kept into `first_index`.
+  subroutine asperity_profile_gaussian_filter(heights, dx, cutoff, ends, roughness, n_out, &
+      mean_line, first_index, status)
+    real(c_double), intent(in) :: heights(:)
+    real(c_double), intent(in) :: dx, cutoff
+    integer(c_int32_t), intent(in) :: ends
+    real(c_double), intent(inout) :: roughness(:)
+    integer, intent(out) :: n_out
+    real(c_double), intent(inout), optional, target, contiguous :: mean_line(:)
+    integer, intent(out), optional :: first_index
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_profile_gaussian_filter'
+    integer(c_size_t), target :: c_n_out, c_first
+    integer :: n
+    n = size(heights)
+    n_out = 0
+    if (present(first_index)) first_index = 0
+    if (too_small(what, 'roughness', size(roughness), n, 'the size of `heights`', status)) return
+    if (present(mean_line)) then
+      if (too_small(what, 'mean_line', size(mean_line), n, 'the size of `heights`', status)) return
+    end if
+    c_n_out = 0
+    c_first = 0
+    call check(c_asperity_profile_gaussian_filter(int(n, c_size_t), heights, dx, cutoff, ends, &
+        roughness, loc_d(mean_line), c_n_out, c_loc(c_first)), what, status)
+    n_out = int(c_n_out)
+    if (present(first_index)) first_index = int(c_first)
+  end subroutine asperity_profile_gaussian_filter
+
+  !> The material-ratio curve at `size(level)` ratios: `level(i)` (m) and,
+  !> when given, `ratio(i)`.
+  subroutine asperity_material_ratio_curve(heights, level, ratio, status)
+    real(c_double), intent(in) :: heights(:)
+    real(c_double), intent(inout) :: level(:)
+    real(c_double), intent(inout), optional, target, contiguous :: ratio(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_material_ratio_curve'
+    if (present(ratio)) then
+      if (too_small(what, 'ratio', size(ratio), size(level), 'the size of `level`', status)) return
+    end if
+    call check(c_asperity_material_ratio_curve(size(heights, kind=c_size_t), heights, &
+        size(level, kind=c_size_t), loc_d(ratio), level), what, status)
+  end subroutine asperity_material_ratio_curve
+
+  !> One-sided PSD `g(k)` (m^3) of `heights`; `size(g)` must be
+  !> `size(heights)/2 + 1`; the wavenumbers (rad/m) into `q` when given.
+  subroutine asperity_profile_psd(heights, dx, window, g, q, status)
+    real(c_double), intent(in) :: heights(:)
+    real(c_double), intent(in) :: dx
+    integer(c_int32_t), intent(in) :: window
+    real(c_double), intent(inout) :: g(:)
+    real(c_double), intent(inout), optional, target, contiguous :: q(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_profile_psd'
+    if (present(q)) then
+      if (too_small(what, 'q', size(q), size(g), 'the size of `g`', status)) return
+    end if
+    call check(c_asperity_profile_psd(size(heights, kind=c_size_t), heights, dx, window, &
+        size(g, kind=c_size_t), loc_d(q), g), what, status)
+  end subroutine asperity_profile_psd
+
+  !> Power-law fit of the PSD over `q_min`..`q_max` (rad/m; 0, 0: default).
+  subroutine asperity_profile_hurst_fit(heights, dx, q_min, q_max, out, status)
+    real(c_double), intent(in) :: heights(:)
+    real(c_double), intent(in) :: dx, q_min, q_max
+    type(asperity_hurst_fit), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_profile_hurst_fit(size(heights, kind=c_size_t), heights, dx, q_min, &
+        q_max, out), 'asperity_profile_hurst_fit', status)
+  end subroutine asperity_profile_hurst_fit
+
+  !> Statistics of the peaks of `heights`.
+  subroutine asperity_profile_peak_statistics(heights, dx, out, status)
+    real(c_double), intent(in) :: heights(:)
+    real(c_double), intent(in) :: dx
+    type(asperity_peak_statistics), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_profile_peak_statistics(size(heights, kind=c_size_t), heights, dx, out), &
+        'asperity_profile_peak_statistics', status)
+  end subroutine asperity_profile_peak_statistics
+
+  !> A seeded Gaussian self-affine profile into `heights` (`size(heights)`
+  !> samples at `dx` m).
+  subroutine asperity_generate_self_affine(hurst, rq, roll_off_wavelength, cutoff_wavelength, dx, &
+      seed, heights, status)
+    real(c_double), intent(in) :: hurst, rq, roll_off_wavelength, cutoff_wavelength, dx
+    integer(c_int64_t), intent(in) :: seed
+    real(c_double), intent(inout) :: heights(:)
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_generate_self_affine(hurst, rq, roll_off_wavelength, cutoff_wavelength, &
+        dx, seed, size(heights, kind=c_size_t), heights), 'asperity_generate_self_affine', status)
+  end subroutine asperity_generate_self_affine
+
+  !> The Weierstrass-Mandelbrot profile into `heights`.
+  subroutine asperity_generate_weierstrass_mandelbrot(fractal_dimension, gamma, amplitude, dx, &
+      seed, heights, status)
+    real(c_double), intent(in) :: fractal_dimension, gamma, amplitude, dx
+    integer(c_int64_t), intent(in) :: seed
+    real(c_double), intent(inout) :: heights(:)
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_generate_weierstrass_mandelbrot(fractal_dimension, gamma, amplitude, &
+        dx, seed, size(heights, kind=c_size_t), heights), &
+        'asperity_generate_weierstrass_mandelbrot', status)
+  end subroutine asperity_generate_weierstrass_mandelbrot
+
+  !> The Cantor-Borodich profile into `heights` (`size(heights)` points over
+  !> [0, `length`)).
+  subroutine asperity_generate_cantor_borodich(descendants, alpha, beta, height, levels, length, &
+      heights, status)
+    integer(c_int32_t), intent(in) :: descendants, levels
+    real(c_double), intent(in) :: alpha, beta, height, length
+    real(c_double), intent(inout) :: heights(:)
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_generate_cantor_borodich(descendants, alpha, beta, height, levels, &
+        length, size(heights, kind=c_size_t), heights), 'asperity_generate_cantor_borodich', &
+        status)
+  end subroutine asperity_generate_cantor_borodich
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: tabulated laws (tabulated.rs).
+
+  !> The table of a Maugis-Dugdale sphere. An object `table` held is freed first.
+  subroutine asperity_table_new_maugis_dugdale(radius, e_star, work_of_adhesion, sigma0, &
+      tolerance, table, status)
+    real(c_double), intent(in) :: radius, e_star, work_of_adhesion, sigma0, tolerance
+    type(asperity_table), intent(inout) :: table
+    integer(c_int32_t), intent(out), optional :: status
+    call table%free()
+    call check(c_asperity_table_new_maugis_dugdale(radius, e_star, work_of_adhesion, sigma0, &
+        tolerance, table%ptr), 'asperity_table_new_maugis_dugdale', status)
+  end subroutine asperity_table_new_maugis_dugdale
+
+  !> The table of a Lennard-Jones sphere on `n_grid` cells (0: default).
+  !> An object `table` held is freed first.
+  subroutine asperity_table_new_lj(radius, e_star, work_of_adhesion, z0, n_grid, tolerance, table, &
+      status)
+    real(c_double), intent(in) :: radius, e_star, work_of_adhesion, z0, tolerance
+    integer, intent(in) :: n_grid
+    type(asperity_table), intent(inout) :: table
+    integer(c_int32_t), intent(out), optional :: status
+    call table%free()
+    call check(c_asperity_table_new_lj(radius, e_star, work_of_adhesion, z0, &
+        int(n_grid, c_size_t), tolerance, table%ptr), 'asperity_table_new_lj', status)
+  end subroutine asperity_table_new_lj
+
+  !> Evaluate `table` at `delta` (m), as `asperity_normal_eval`.
+  subroutine asperity_table_eval(table, delta, out, old_state, new_state, state, status)
+    type(asperity_table), intent(in) :: table
+    real(c_double), intent(in) :: delta
+    type(asperity_normal_response), intent(out) :: out
+    type(asperity_contact_state), intent(in), optional, target :: old_state
+    type(asperity_contact_state), intent(inout), optional, target :: new_state
+    type(asperity_contact_state), intent(inout), optional, target :: state
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_table_eval'
+    if (state_clash(what, present(state), present(old_state) .or. present(new_state), status)) &
+        return
+    if (present(state)) then
+      call check(c_asperity_table_eval(table%ptr, delta, c_loc(state), c_loc(state), out), what, &
+          status)
+    else
+      call check(c_asperity_table_eval(table%ptr, delta, loc_contact(old_state), &
+          loc_contact(new_state), out), what, status)
+    end if
+  end subroutine asperity_table_eval
+
+  !> Evaluate `table` for `size(delta)` contacts, as `asperity_normal_eval_batch`.
+  subroutine asperity_table_eval_batch(table, delta, force, old_state, new_state, contact_radius, &
+      stiffness, states, status)
+    type(asperity_table), intent(in) :: table
+    real(c_double), intent(in) :: delta(:)
+    real(c_double), intent(inout) :: force(:)
+    type(asperity_contact_state), intent(in), optional, target, contiguous :: old_state(:)
+    type(asperity_contact_state), intent(inout), optional, target, contiguous :: new_state(:)
+    real(c_double), intent(inout), optional, target, contiguous :: contact_radius(:), stiffness(:)
+    type(asperity_contact_state), intent(inout), optional, target, contiguous :: states(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_table_eval_batch'
+    type(c_ptr) :: p_old, p_new
+    logical :: bad
+    integer :: n
+    n = size(delta)
+    if (too_small(what, 'force', size(force), n, 'the size of `delta`', status)) return
+    if (present(contact_radius)) then
+      if (too_small(what, 'contact_radius', size(contact_radius), n, 'the size of `delta`', &
+          status)) return
+    end if
+    if (present(stiffness)) then
+      if (too_small(what, 'stiffness', size(stiffness), n, 'the size of `delta`', status)) return
+    end if
+    call contact_states(what, n, old_state, new_state, states, p_old, p_new, bad, status)
+    if (bad) return
+    call check(c_asperity_table_eval_batch(table%ptr, int(n, c_size_t), delta, p_old, p_new, &
+        force, loc_d(contact_radius), loc_d(stiffness)), what, status)
+  end subroutine asperity_table_eval_batch
+
+  !> Equilibrium of `table` at the prescribed force `force` (N).
+  subroutine asperity_table_eval_at_load(table, force, out, status)
+    type(asperity_table), intent(in) :: table
+    real(c_double), intent(in) :: force
+    type(asperity_normal_response), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_table_eval_at_load(table%ptr, force, out), &
+        'asperity_table_eval_at_load', status)
+  end subroutine asperity_table_eval_at_load
+
+  !> The pull-off force (N) of `table` under `control`.
+  subroutine asperity_table_pull_off_force(table, control, force, status)
+    type(asperity_table), intent(in) :: table
+    integer(c_int32_t), intent(in) :: control
+    real(c_double), intent(out) :: force
+    integer(c_int32_t), intent(out), optional :: status
+    force = 0
+    call check(c_asperity_table_pull_off_force(table%ptr, control, force), &
+        'asperity_table_pull_off_force', status)
+  end subroutine asperity_table_pull_off_force
+
+  !> The stated maximum relative error of `table` and, when given, the
+  !> largest error measured at construction.
+  subroutine asperity_table_max_error(table, max_error, measured, status)
+    type(asperity_table), intent(in) :: table
+    real(c_double), intent(out) :: max_error
+    real(c_double), intent(out), optional, target :: measured
+    integer(c_int32_t), intent(out), optional :: status
+    max_error = 0
+    call check(c_asperity_table_max_error(table%ptr, max_error, loc_d0(measured)), &
+        'asperity_table_max_error', status)
+  end subroutine asperity_table_max_error
+
+  !> The JSON text of `table`.
+  subroutine asperity_table_to_json(table, json, status)
+    type(asperity_table), intent(in) :: table
+    character(len=:), allocatable, intent(out) :: json
+    integer(c_int32_t), intent(out), optional :: status
+    character(kind=c_char), allocatable, target :: buf(:)
+    integer(c_size_t) :: n, cap
+    integer(c_int32_t) :: st
+    json = ''
+    n = 0
+    st = c_asperity_table_to_json(table%ptr, c_null_ptr, 0_c_size_t, n)
+    if (st == ASPERITY_OK) then
+      cap = n + 1
+      allocate (buf(cap))
+      st = c_asperity_table_to_json(table%ptr, c_loc(buf), cap, n)
+      if (st == ASPERITY_OK) json = from_chars(buf, int(n))
+    end if
+    call check(st, 'asperity_table_to_json', status)
+  end subroutine asperity_table_to_json
+
+  !> A table from its JSON text. An object `table` held is freed first.
+  subroutine asperity_table_from_json(json, table, status)
+    character(len=*, kind=c_char), intent(in) :: json
+    type(asperity_table), intent(inout) :: table
+    integer(c_int32_t), intent(out), optional :: status
+    call table%free()
+    call check(c_asperity_table_from_json(json, len(json, kind=c_size_t), table%ptr), &
+        'asperity_table_from_json', status)
+  end subroutine asperity_table_from_json
+
+end module asperity

@@ -1,0 +1,134 @@
+!> The size of every `type, bind(c)` mirror of the Fortran module
+!> (`c_sizeof`) next to the size the library reports for the C type
+!> (`asperity_type_layout`), and every type the library lists checked to
+!> have a mirror here.
+!>
+!> Rows "size <C name> <c_sizeof> <library size> <library alignment>" and
+!> lines "CHECK <name> <value>" are read by tests/fortran_bindings.rs, which
+!> also checks that every struct of include/asperity.h has a row.
+program sizes
+  use asperity
+  use, intrinsic :: iso_c_binding, only: c_sizeof
+  implicit none
+  integer, parameter :: max_types = 64
+  character(len=64) :: seen(max_types)
+  integer :: n_seen = 0, mismatches = 0, missing = 0
+  integer(c_size_t) :: i
+  character(len=:), allocatable :: name
+  logical :: found
+  integer :: k
+  type(asperity_hertz) :: hertz
+  type(asperity_power_punch) :: power_punch
+  type(asperity_flat_punch) :: flat_punch
+  type(asperity_dmt) :: dmt
+  type(asperity_jkr) :: jkr
+  type(asperity_jkr_power_punch) :: jkr_power_punch
+  type(asperity_kendall) :: kendall
+  type(asperity_maugis_dugdale) :: maugis_dugdale
+  type(asperity_derjaguin) :: derjaguin
+  type(asperity_law_params) :: law_params
+  type(asperity_normal_law) :: normal_law
+  type(asperity_contact_state) :: contact_state
+  type(asperity_normal_response) :: normal_response
+  type(asperity_fidelity_assessment) :: fidelity_assessment
+  type(asperity_fidelity_advice) :: fidelity_advice
+  type(asperity_nano_asperities) :: nano_asperities
+  type(asperity_dissipation) :: dissipation
+  type(asperity_homogenised_sample) :: homogenised_sample
+  type(asperity_friction_increment) :: friction_increment
+  type(asperity_friction_point_state) :: friction_point_state
+  type(asperity_friction_response) :: friction_response
+  type(asperity_indentation_options) :: indentation_options
+  type(asperity_indentation_result) :: indentation_result
+  type(asperity_gw_params) :: gw_params
+  type(asperity_gw_response) :: gw_response
+  type(asperity_separation) :: separation
+  type(asperity_zhuravlev) :: zhuravlev
+  type(asperity_zhuravlev_response) :: zhuravlev_response
+  type(asperity_zhuravlev_friction) :: zhuravlev_friction
+  type(asperity_roughness) :: roughness
+  type(asperity_hurst_fit) :: hurst_fit
+  type(asperity_peak_statistics) :: peak_statistics
+
+  call row('AsperityHertz', c_sizeof(hertz))
+  call row('AsperityPowerPunch', c_sizeof(power_punch))
+  call row('AsperityFlatPunch', c_sizeof(flat_punch))
+  call row('AsperityDmt', c_sizeof(dmt))
+  call row('AsperityJkr', c_sizeof(jkr))
+  call row('AsperityJkrPowerPunch', c_sizeof(jkr_power_punch))
+  call row('AsperityKendall', c_sizeof(kendall))
+  call row('AsperityMaugisDugdale', c_sizeof(maugis_dugdale))
+  call row('AsperityDerjaguin', c_sizeof(derjaguin))
+  call row('AsperityLawParams', c_sizeof(law_params))
+  call row('AsperityNormalLaw', c_sizeof(normal_law))
+  call row('AsperityContactState', c_sizeof(contact_state))
+  call row('AsperityNormalResponse', c_sizeof(normal_response))
+  call row('AsperityFidelityAssessment', c_sizeof(fidelity_assessment))
+  call row('AsperityFidelityAdvice', c_sizeof(fidelity_advice))
+  call row('AsperityNanoAsperities', c_sizeof(nano_asperities))
+  call row('AsperityDissipation', c_sizeof(dissipation))
+  call row('AsperityHomogenisedSample', c_sizeof(homogenised_sample))
+  call row('AsperityFrictionIncrement', c_sizeof(friction_increment))
+  call row('AsperityFrictionPointState', c_sizeof(friction_point_state))
+  call row('AsperityFrictionResponse', c_sizeof(friction_response))
+  call row('AsperityIndentationOptions', c_sizeof(indentation_options))
+  call row('AsperityIndentationResult', c_sizeof(indentation_result))
+  call row('AsperityGwParams', c_sizeof(gw_params))
+  call row('AsperityGwResponse', c_sizeof(gw_response))
+  call row('AsperitySeparation', c_sizeof(separation))
+  call row('AsperityZhuravlev', c_sizeof(zhuravlev))
+  call row('AsperityZhuravlevResponse', c_sizeof(zhuravlev_response))
+  call row('AsperityZhuravlevFriction', c_sizeof(zhuravlev_friction))
+  call row('AsperityRoughness', c_sizeof(roughness))
+  call row('AsperityHurstFit', c_sizeof(hurst_fit))
+  call row('AsperityPeakStatistics', c_sizeof(peak_statistics))
+
+  ! Every type the library knows has a row above.
+  do i = 0, asperity_type_count() - 1
+    call asperity_type_name(i, name)
+    found = .false.
+    do k = 1, n_seen
+      if (seen(k) == name) found = .true.
+    end do
+    if (.not. found) then
+      write (*, '(a)') 'no Fortran mirror for '//name
+      missing = missing + 1
+    end if
+  end do
+
+  call check('mirrors', real(n_seen, c_double))
+  call check('library_types', real(asperity_type_count(), c_double))
+  call check('mismatches', real(mismatches, c_double))
+  call check('library_types_without_mirror', real(missing, c_double))
+  call check('state_size_matches', merge(1.0_c_double, 0.0_c_double, &
+      asperity_homogenised_friction_state_size() == c_sizeof(friction_point_state)))
+
+contains
+
+  subroutine row(c_name, fortran_size)
+    character(len=*), intent(in) :: c_name
+    integer(c_size_t), intent(in) :: fortran_size
+    integer(c_size_t) :: size, align
+    integer(c_int32_t) :: st
+    call asperity_type_layout(c_name, size, align, status=st)
+    if (st /= ASPERITY_OK) then
+      write (*, '(a)') 'asperity_type_layout('//c_name//') failed: '// &
+          asperity_last_error_message()
+      size = 0
+      align = 0
+    end if
+    write (*, '(a, 1x, a, 3(1x, i0))') 'size', c_name, fortran_size, size, align
+    if (size /= fortran_size) mismatches = mismatches + 1
+    n_seen = n_seen + 1
+    seen(n_seen) = c_name
+  end subroutine row
+
+  subroutine check(what, value)
+    character(len=*), intent(in) :: what
+    real(c_double), intent(in) :: value
+    character(len=32) :: buf
+    write (buf, '(es25.17e3)') value
+    write (*, '(a)') 'CHECK '//what//' '//trim(adjustl(buf))
+  end subroutine check
+
+end program sizes
