@@ -166,8 +166,13 @@ fn soname_link(dir: &Path) -> Result<(), String> {
     {
         let link = dir.join(format!("{SHARED_LIB}.{}", env!("CARGO_PKG_VERSION_MAJOR")));
         let _ = std::fs::remove_file(&link);
-        std::os::unix::fs::symlink(SHARED_LIB, &link)
-            .map_err(|e| format!("linking {} to {SHARED_LIB}: {e}", link.display()))?;
+        match std::os::unix::fs::symlink(SHARED_LIB, &link) {
+            // Another test made it between the two calls.
+            Err(e) if e.kind() != std::io::ErrorKind::AlreadyExists => {
+                return Err(format!("linking {} to {SHARED_LIB}: {e}", link.display()))
+            }
+            _ => {}
+        }
     }
     #[cfg(not(target_os = "linux"))]
     let _ = dir;

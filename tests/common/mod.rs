@@ -208,6 +208,28 @@ pub mod native {
                 ));
             }
         }
+        soname_link(&l.profile_dir)
+    }
+
+    /// The shared library's soname is `libasperity.so.MAJOR` (build.rs): a
+    /// program linked against `libasperity.so` asks the loader for that
+    /// name, so it must exist next to the library (scripts/install.sh makes
+    /// the same link).
+    pub fn soname_link(dir: &Path) -> Result<(), String> {
+        #[cfg(target_os = "linux")]
+        {
+            let link = dir.join(format!("{SHARED_LIB}.{}", env!("CARGO_PKG_VERSION_MAJOR")));
+            let _ = std::fs::remove_file(&link);
+            match std::os::unix::fs::symlink(SHARED_LIB, &link) {
+                // Another test made it between the two calls.
+                Err(e) if e.kind() != std::io::ErrorKind::AlreadyExists => {
+                    return Err(format!("linking {} to {SHARED_LIB}: {e}", link.display()))
+                }
+                _ => {}
+            }
+        }
+        #[cfg(not(target_os = "linux"))]
+        let _ = dir;
         Ok(())
     }
 

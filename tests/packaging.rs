@@ -1,0 +1,263 @@
+//! Packaging: `scripts/install.sh` installs the freshly built library into a
+//! temporary prefix, and host programs build against the installed copy only:
+//! a C program through pkg-config (shared and static), and a CMake consumer
+//! through `find_package(asperity)` (both imported targets). The installed
+//! shared library carries the soname `libasperity.so.MAJOR`, and a version
+//! request of another major version is refused by the CMake package.
+//!
+//! Linux only (ELF sonames). pkg-config and cmake are optional: without them
+//! the test prints why it skips that part (`.ci/run` installs both).
+
+#![cfg(target_os = "linux")]
+
+mod common;
+
+use common::native::{self, run_ok};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const MAJOR: &str = env!("CARGO_PKG_VERSION_MAJOR");
+const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+fn have(tool: &str) -> bool {
+    Command::new(tool)
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success())
+}
+
+/// The example every consumer builds: it prints `CHECK` lines and exits 0
+/// only when the library behaves (closed forms checked inside the program).
+fn example() -> PathBuf {
+    common::manifest().join("examples/c/batch_and_errors.c")
+}
+
+fn run_checked(bin: &Path, label: &str) {
+    let o = Command::new(bin)
+        .env_remove("LD_LIBRARY_PATH")
+        .output()
+        .unwrap_or_else(|e| panic!("{label}: running {}: {e}", bin.display()));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{label}: {} exited with {}:\n{text}{}",
+        bin.display(),
+        o.status,
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(
+        text.lines().filter(|l| l.starts_with("CHECK ")).count() >= 3,
+        "{label}: the example printed no checks:\n{text}"
+    );
+}
+
+/// The shared objects a program needs, by `ldd`, and where they resolve.
+fn needs_from_prefix(bin: &Path, lib: &Path, label: &str) {
+    // Cargo puts its target directory on LD_LIBRARY_PATH for tests: without
+    // it, only the program's rpath can find the library.
+    let Ok(o) = Command::new("ldd")
+        .env_remove("LD_LIBRARY_PATH")
+        .arg(bin)
+        .output()
+    else {
+        println!("{label}: ldd not found, resolution of libasperity not checked");
+        return;
+    };
+    let text = String::from_utf8_lossy(&o.stdout);
+    let line = text
+        .lines()
+        .find(|l| l.contains("libasperity"))
+        .unwrap_or_else(|| panic!("{label}: does not need libasperity:\n{text}"));
+    let want = format!(
+        "libasperity.so.{MAJOR} => {}",
+        lib.join(format!("libasperity.so.{MAJOR}")).display()
+    );
+    assert!(line.contains(&want), "{label}: `{line}` is not `{want}`");
+}
+
+#[test]
+fn install_then_build_consumers_against_the_prefix() {
+    let l = native::layout().unwrap();
+    native::build_library(&l).unwrap();
+    let out = native::out_dir(&l, "packaging");
+    let prefix = out.join("prefix");
+    let _ = std::fs::remove_dir_all(&out);
+    std::fs::create_dir_all(&out).unwrap();
+
+    // The one install command, on the artifacts this test run built.
+    run_ok(
+        Command::new("bash")
+            .arg(common::manifest().join("scripts/install.sh"))
+            .arg("--prefix")
+            .arg(&prefix)
+            .args(["--profile", &l.profile, "--no-build", "--target-dir"])
+            .arg(&l.target_dir),
+        "scripts/install.sh",
+    )
+    .unwrap();
+    let lib = prefix.join("lib");
+    for f in [
+        "include/asperity.h".to_string(),
+        format!("lib/libasperity.so.{VERSION}"),
+        format!("lib/libasperity.so.{MAJOR}"),
+        "lib/libasperity.so".to_string(),
+        "lib/libasperity.a".to_string(),
+        "lib/pkgconfig/asperity.pc".to_string(),
+        "lib/cmake/asperity/asperityConfig.cmake".to_string(),
+        "lib/cmake/asperity/asperityConfigVersion.cmake".to_string(),
+    ] {
+        assert!(prefix.join(&f).exists(), "install.sh did not install {f}");
+    }
+    for (link, to) in [
+        (
+            format!("libasperity.so.{MAJOR}"),
+            format!("libasperity.so.{VERSION}"),
+        ),
+        (
+            "libasperity.so".to_string(),
+            format!("libasperity.so.{MAJOR}"),
+        ),
+    ] {
+        let t = std::fs::read_link(lib.join(&link)).unwrap_or_else(|e| panic!("{link}: {e}"));
+        assert_eq!(t, PathBuf::from(&to), "{link} should point at {to}");
+    }
+    if let Ok(o) = Command::new("readelf")
+        .arg("-d")
+        .arg(lib.join(format!("libasperity.so.{VERSION}")))
+        .output()
+    {
+        let text = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            text.contains(&format!("Library soname: [libasperity.so.{MAJOR}]")),
+            "the installed library lacks the soname libasperity.so.{MAJOR}:\n{text}"
+        );
+    }
+
+    let cc = native::c_compiler(&l, &out).unwrap();
+
+    // pkg-config: shared, then static.
+    if have("pkg-config") {
+        let pc = |args: &[&str]| -> Vec<String> {
+            let o = Command::new("pkg-config")
+                .env("PKG_CONFIG_PATH", lib.join("pkgconfig"))
+                .args(args)
+                .arg("asperity")
+                .output()
+                .unwrap();
+            assert!(o.status.success(), "pkg-config {args:?} asperity failed");
+            String::from_utf8_lossy(&o.stdout)
+                .split_whitespace()
+                .map(String::from)
+                .collect()
+        };
+        assert_eq!(pc(&["--modversion"]), vec![VERSION.to_string()]);
+        let shared = out.join("pc_shared");
+        run_ok(
+            cc.to_command()
+                .args(["-std=c99", "-Wall", "-Wextra", "-Werror"])
+                .args(pc(&["--cflags"]))
+                .arg(example())
+                .arg("-o")
+                .arg(&shared)
+                .args(pc(&["--libs"]))
+                .arg("-lm")
+                .arg(format!("-Wl,-rpath,{}", lib.display())),
+            "C example through pkg-config (shared)",
+        )
+        .unwrap();
+        needs_from_prefix(&shared, &lib, "pkg-config shared");
+        run_checked(&shared, "pkg-config shared");
+        // Static: the archive by path, its private dependencies from
+        // `pkg-config --static`.
+        let stat = out.join("pc_static");
+        let private: Vec<String> = pc(&["--static", "--libs"])
+            .into_iter()
+            .filter(|a| a != "-lasperity" && !a.starts_with("-L"))
+            .collect();
+        run_ok(
+            cc.to_command()
+                .args(["-std=c99", "-Wall", "-Wextra", "-Werror"])
+                .args(pc(&["--cflags"]))
+                .arg(example())
+                .arg("-o")
+                .arg(&stat)
+                .arg(lib.join("libasperity.a"))
+                .args(private)
+                .arg("-lm"),
+            "C example through pkg-config (static)",
+        )
+        .unwrap();
+        run_checked(&stat, "pkg-config static");
+    } else {
+        println!("SKIP pkg-config consumer: pkg-config not found (apt-get install pkg-config)");
+    }
+
+    // CMake: find_package with both imported targets, then a request for
+    // the next major version, which must be refused.
+    if have("cmake") {
+        let src = out.join("cmake_src");
+        std::fs::create_dir_all(&src).unwrap();
+        std::fs::write(
+            src.join("CMakeLists.txt"),
+            format!(
+                "cmake_minimum_required(VERSION 3.13)\n\
+                 project(asperity_consumer C)\n\
+                 find_package(asperity {MAJOR}.0 REQUIRED)\n\
+                 add_executable(consumer_shared \"{ex}\")\n\
+                 target_link_libraries(consumer_shared PRIVATE asperity::asperity m)\n\
+                 add_executable(consumer_static \"{ex}\")\n\
+                 target_link_libraries(consumer_static PRIVATE asperity::asperity_static m)\n",
+                ex = example().display()
+            ),
+        )
+        .unwrap();
+        let build = out.join("cmake_build");
+        run_ok(
+            Command::new("cmake")
+                .arg("-S")
+                .arg(&src)
+                .arg("-B")
+                .arg(&build)
+                .arg(format!("-DCMAKE_PREFIX_PATH={}", prefix.display()))
+                .arg(format!("-DCMAKE_C_COMPILER={}", cc.path().display())),
+            "cmake configure of the consumer",
+        )
+        .unwrap();
+        run_ok(
+            Command::new("cmake").arg("--build").arg(&build),
+            "cmake --build",
+        )
+        .unwrap();
+        needs_from_prefix(&build.join("consumer_shared"), &lib, "cmake shared");
+        run_checked(&build.join("consumer_shared"), "cmake asperity::asperity");
+        run_checked(
+            &build.join("consumer_static"),
+            "cmake asperity::asperity_static",
+        );
+
+        let next = MAJOR.parse::<u32>().unwrap() + 1;
+        let src2 = out.join("cmake_next_major");
+        std::fs::create_dir_all(&src2).unwrap();
+        std::fs::write(
+            src2.join("CMakeLists.txt"),
+            format!(
+                "cmake_minimum_required(VERSION 3.13)\nproject(next C)\nfind_package(asperity {next}.0 REQUIRED)\n"
+            ),
+        )
+        .unwrap();
+        let o = Command::new("cmake")
+            .arg("-S")
+            .arg(&src2)
+            .arg("-B")
+            .arg(out.join("cmake_next_build"))
+            .arg(format!("-DCMAKE_PREFIX_PATH={}", prefix.display()))
+            .output()
+            .unwrap();
+        assert!(
+            !o.status.success(),
+            "find_package(asperity {next}.0) accepted version {VERSION}"
+        );
+    } else {
+        println!("SKIP CMake consumer: cmake not found (apt-get install cmake)");
+    }
+}
