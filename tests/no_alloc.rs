@@ -1,0 +1,168 @@
+//! Per-call evaluations allocate nothing: every closed-form law through the
+//! C ABI (scalar, batch, load-controlled, pull-off) and tabulated-law lookups
+//! (scalar and batch), counted by a global allocator that tallies the
+//! current thread's allocations. Building a law or a table may allocate;
+//! evaluating one may not (host codes call these millions of times per
+//! increment, often from many threads). The friction steps have their own
+//! counting tests (tests/friction_homogenised.rs, tests/slider_alloc.rs).
+
+use asperity::contact::ContactState;
+use asperity::ffi::contact::*;
+use asperity::ffi::tabulated::*;
+use asperity::ffi::ASPERITY_OK;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+struct Counting;
+
+thread_local! {
+    static COUNT: Cell<u64> = const { Cell::new(0) };
+}
+
+// SAFETY: forwards to the system allocator; only counts.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
+        let _ = COUNT.try_with(|c| c.set(c.get() + 1));
+        System.alloc(l)
+    }
+    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
+        System.dealloc(p, l)
+    }
+    unsafe fn realloc(&self, p: *mut u8, l: Layout, n: usize) -> *mut u8 {
+        let _ = COUNT.try_with(|c| c.set(c.get() + 1));
+        System.realloc(p, l, n)
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+fn count() -> u64 {
+    COUNT.with(Cell::get)
+}
+
+type Law = AsperityNormalLaw;
+
+fn laws() -> Vec<(&'static str, Law)> {
+    let mut v = Vec::new();
+    let mut law = core::mem::MaybeUninit::<Law>::zeroed();
+    let (r, e, w) = (1e-6, 1e9, 0.05);
+    macro_rules! add {
+        ($name:literal, $call:expr) => {
+            // SAFETY: `law` is a valid out-pointer.
+            let s = unsafe { $call(law.as_mut_ptr()) };
+            assert_eq!(s, ASPERITY_OK, "{}", $name);
+            // SAFETY: written by the successful call.
+            v.push(($name, unsafe { law.assume_init() }));
+        };
+    }
+    add!("hertz", |o| asperity_law_hertz(r, e, o));
+    add!("power_punch", |o| asperity_law_power_punch(2e5, 2.5, e, o));
+    add!("cone", |o| asperity_law_cone(1.2, e, o));
+    add!("flat_punch", |o| asperity_law_flat_punch(r, e, o));
+    add!("flat_punch_no_slip", |o| asperity_law_flat_punch_no_slip(
+        r, e, 0.3, o
+    ));
+    add!("dmt", |o| asperity_law_dmt(r, e, w, o));
+    add!("jkr", |o| asperity_law_jkr(r, e, w, o));
+    add!("jkr_power_punch", |o| asperity_law_jkr_power_punch(
+        2e5, 2.5, e, w, 0.3, 0, o
+    ));
+    add!("kendall", |o| asperity_law_kendall(r, e, w, 0.3, 1, o));
+    add!("maugis_dugdale", |o| asperity_law_maugis_dugdale(
+        r, e, w, 3.27e7, o
+    ));
+    add!("derjaguin", |o| asperity_law_derjaguin(r, w, 1, 3e-10, o));
+    v
+}
+
+#[test]
+fn laws_and_table_lookups_allocate_nothing() {
+    let laws = laws();
+    let deltas: Vec<f64> = (0..64).map(|i| -4e-9 + 0.25e-9 * i as f64).collect();
+    let n = deltas.len();
+    let old = vec![ContactState::default(); n];
+    let mut new = vec![ContactState::default(); n];
+    let (mut f, mut a, mut k) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let mut table: *mut AsperityTable = core::ptr::null_mut();
+    // SAFETY: valid out-pointer.
+    let s = unsafe { asperity_table_new_maugis_dugdale(1e-6, 1e9, 0.05, 3.27e7, 1e-4, &mut table) };
+    assert_eq!(s, ASPERITY_OK);
+    // Warm up the thread-local error buffer and any lazy statics.
+    let mut resp = core::mem::MaybeUninit::zeroed();
+    for (_, law) in &laws {
+        // SAFETY: valid pointers.
+        unsafe { asperity_normal_eval(law, 1e-9, &old[0], &mut new[0], resp.as_mut_ptr()) };
+    }
+    for (name, law) in &laws {
+        // The rigid Derjaguin sphere is defined out of contact only.
+        let shift = if *name == "derjaguin" { -20e-9 } else { 0.0 };
+        let shifted: Vec<f64> = deltas.iter().map(|d| d + shift).collect();
+        let before = count();
+        let mut ok = 0;
+        for (i, &d) in shifted.iter().enumerate() {
+            // SAFETY: valid pointers for one element.
+            let s =
+                unsafe { asperity_normal_eval(law, d, &old[i], &mut new[i], resp.as_mut_ptr()) };
+            ok += (s == ASPERITY_OK) as usize;
+        }
+        // SAFETY: arrays of n elements.
+        let s = unsafe {
+            asperity_normal_eval_batch(
+                law,
+                n,
+                shifted.as_ptr(),
+                old.as_ptr(),
+                new.as_mut_ptr(),
+                f.as_mut_ptr(),
+                a.as_mut_ptr(),
+                k.as_mut_ptr(),
+            )
+        };
+        let mut p = 0.0;
+        // SAFETY: valid out-pointer.
+        let s2 = unsafe { asperity_pull_off_force(law, ASPERITY_CONTROL_LOAD, &mut p) };
+        let used = count() - before;
+        assert_eq!(ok, n, "{name}: not every scalar call succeeded");
+        assert_eq!(
+            (s, s2),
+            (ASPERITY_OK, ASPERITY_OK),
+            "{name}: batch or pull-off failed"
+        );
+        assert_eq!(
+            used, 0,
+            "{name}: {used} allocations in {n} scalar calls, a batch of {n} and a pull-off"
+        );
+    }
+    let before = count();
+    for (i, &d) in deltas.iter().enumerate() {
+        // SAFETY: valid pointers.
+        let s = unsafe { asperity_table_eval(table, d, &old[i], &mut new[i], resp.as_mut_ptr()) };
+        assert_eq!(s, ASPERITY_OK);
+    }
+    // SAFETY: arrays of n elements.
+    let s = unsafe {
+        asperity_table_eval_batch(
+            table,
+            n,
+            deltas.as_ptr(),
+            old.as_ptr(),
+            new.as_mut_ptr(),
+            f.as_mut_ptr(),
+            a.as_mut_ptr(),
+            k.as_mut_ptr(),
+        )
+    };
+    assert_eq!(s, ASPERITY_OK);
+    let used = count() - before;
+    assert_eq!(
+        used, 0,
+        "tabulated law: {used} allocations in {n} lookups and a batch"
+    );
+    // The counter works: a Vec allocates.
+    let before = count();
+    let v: Vec<u8> = Vec::with_capacity(16);
+    assert!(count() > before && v.capacity() >= 16);
+    // SAFETY: from asperity_table_new_maugis_dugdale.
+    unsafe { asperity_table_free(table) };
+}
