@@ -12,35 +12,15 @@
 //! `cargo build --lib` with the same profile and target directory as this test
 //! executable before compiling anything. Everything is built once per test run
 //! and shared by the tests; outputs go to `target/tmp/c_examples/<profile>/`.
+//! The toolchain, run and report helpers are shared with
+//! `tests/cpp_bindings.rs` (`tests/common/native.rs`).
 
-use std::collections::BTreeMap;
-use std::fmt::Write as _;
+#[path = "common/native.rs"]
+mod native;
+
+use native::{Binaries, Linkage, Report, Run};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use std::sync::OnceLock;
-use std::time::{Duration, Instant};
-
-/// Native libraries a Rust staticlib needs, from
-/// `cargo rustc --lib --crate-type staticlib -- --print native-static-libs`.
-#[cfg(target_os = "linux")]
-const NATIVE_STATIC_LIBS: &[&str] = &[
-    "-lgcc_s",
-    "-lutil",
-    "-lrt",
-    "-lpthread",
-    "-lm",
-    "-ldl",
-    "-lc",
-];
-#[cfg(target_os = "macos")]
-const NATIVE_STATIC_LIBS: &[&str] = &["-lSystem", "-lc", "-lm"];
-#[cfg(not(any(target_os = "linux", target_os = "macos")))]
-const NATIVE_STATIC_LIBS: &[&str] = &["-lpthread", "-lm", "-ldl", "-lc"];
-
-#[cfg(target_os = "macos")]
-const SHARED_LIB: &str = "libasperity.dylib";
-#[cfg(not(target_os = "macos"))]
-const SHARED_LIB: &str = "libasperity.so";
 
 const C_FLAGS: &[&str] = &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"];
 
@@ -52,169 +32,12 @@ const HERTZ: &str = "Hertz (src/contact/hertz.rs)";
 const FFI: &str = "the C ABI (src/ffi)";
 const MATERIAL: &str = "material (src/material.rs)";
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-enum Linkage {
-    Static,
-    Shared,
-}
+/// Table rows the programs print: the phase, then numbers.
+const ROW_PHASES: &[&str] = &["approach", "retract"];
 
 struct Built {
     /// example name → (linkage → binary or compiler error)
-    binaries: BTreeMap<String, BTreeMap<Linkage, Result<PathBuf, String>>>,
-}
-
-fn manifest_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// `target/<profile>` (or `target/<triple>/<profile>`) of this test executable,
-/// the target directory, the cargo profile name and the cross triple, if any.
-struct Layout {
-    profile_dir: PathBuf,
-    target_dir: PathBuf,
-    profile: String,
-    cross_target: Option<String>,
-}
-
-fn layout() -> Result<Layout, String> {
-    let exe = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
-    // target/<profile>/deps/c_examples-<hash>
-    let profile_dir = exe
-        .parent()
-        .and_then(Path::parent)
-        .ok_or_else(|| format!("unexpected test executable path {}", exe.display()))?
-        .to_path_buf();
-    let dir_name = profile_dir
-        .file_name()
-        .and_then(|s| s.to_str())
-        .ok_or("profile directory has no name")?
-        .to_string();
-    let profile = match dir_name.as_str() {
-        "debug" => "dev".to_string(),
-        other => other.to_string(),
-    };
-    let parent = profile_dir.parent().ok_or("no target directory")?;
-    // Cargo marks its target directory with CACHEDIR.TAG; one level further up
-    // means a `--target <triple>` build.
-    let (target_dir, cross_target) = if parent.join("CACHEDIR.TAG").exists() {
-        (parent.to_path_buf(), None)
-    } else if parent
-        .parent()
-        .is_some_and(|p| p.join("CACHEDIR.TAG").exists())
-    {
-        (
-            parent.parent().unwrap().to_path_buf(),
-            parent
-                .file_name()
-                .and_then(|s| s.to_str())
-                .map(String::from),
-        )
-    } else {
-        // Fall back to the environment, then to the executable's grandparent.
-        match std::env::var_os("CARGO_TARGET_DIR") {
-            Some(d) => (PathBuf::from(d), None),
-            None => (parent.to_path_buf(), None),
-        }
-    };
-    Ok(Layout {
-        profile_dir,
-        target_dir,
-        profile,
-        cross_target,
-    })
-}
-
-/// Build `libasperity.a` and the shared library with the test's profile.
-fn build_library(l: &Layout) -> Result<(), String> {
-    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    let mut cmd = Command::new(cargo);
-    cmd.current_dir(manifest_dir())
-        .args(["build", "--lib", "--profile", &l.profile, "--target-dir"])
-        .arg(&l.target_dir);
-    if let Some(t) = &l.cross_target {
-        cmd.args(["--target", t]);
-    }
-    if cfg!(feature = "cli") {
-        cmd.args(["--features", "cli"]);
-    }
-    let out = cmd
-        .output()
-        .map_err(|e| format!("running cargo build --lib: {e}"))?;
-    if !out.status.success() {
-        return Err(format!(
-            "cargo build --lib failed ({}):\n{}",
-            out.status,
-            String::from_utf8_lossy(&out.stderr)
-        ));
-    }
-    for lib in ["libasperity.a", SHARED_LIB] {
-        if !l.profile_dir.join(lib).exists() {
-            return Err(format!(
-                "cargo build --lib did not produce {}",
-                l.profile_dir.join(lib).display()
-            ));
-        }
-    }
-    soname_link(&l.profile_dir)
-}
-
-/// The shared library's soname is `libasperity.so.MAJOR` (build.rs): a
-/// program linked against `libasperity.so` asks the loader for that name, so
-/// it must exist next to the library (scripts/install.sh makes the same link).
-fn soname_link(dir: &Path) -> Result<(), String> {
-    #[cfg(target_os = "linux")]
-    {
-        let link = dir.join(format!("{SHARED_LIB}.{}", env!("CARGO_PKG_VERSION_MAJOR")));
-        let _ = std::fs::remove_file(&link);
-        match std::os::unix::fs::symlink(SHARED_LIB, &link) {
-            // Another test made it between the two calls.
-            Err(e) if e.kind() != std::io::ErrorKind::AlreadyExists => {
-                return Err(format!("linking {} to {SHARED_LIB}: {e}", link.display()))
-            }
-            _ => {}
-        }
-    }
-    #[cfg(not(target_os = "linux"))]
-    let _ = dir;
-    Ok(())
-}
-
-fn host_triple() -> String {
-    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
-    if let Ok(out) = Command::new(rustc).arg("-vV").output() {
-        let text = String::from_utf8_lossy(&out.stdout);
-        if let Some(h) = text.lines().find_map(|l| l.strip_prefix("host: ")) {
-            return h.trim().to_string();
-        }
-    }
-    // Good enough for the usual hosts when rustc is not on PATH.
-    format!(
-        "{}-{}",
-        std::env::consts::ARCH,
-        match std::env::consts::OS {
-            "linux" => "unknown-linux-gnu",
-            "macos" => "apple-darwin",
-            other => other,
-        }
-    )
-}
-
-/// The C compiler `cc` would use for this target, without any cargo metadata.
-fn c_compiler(l: &Layout, scratch: &Path) -> Result<cc::Tool, String> {
-    let host = host_triple();
-    let target = l.cross_target.clone().unwrap_or_else(|| host.clone());
-    cc::Build::new()
-        .target(&target)
-        .host(&host)
-        .opt_level(0)
-        .debug(false)
-        .out_dir(scratch)
-        .cargo_metadata(false)
-        .cargo_warnings(false)
-        .cargo_output(false)
-        .emit_rerun_if_env_changed(false)
-        .try_get_compiler()
-        .map_err(|e| format!("cc could not find a C compiler: {e}"))
+    binaries: Binaries,
 }
 
 fn compile(
@@ -227,35 +50,18 @@ fn compile(
     let mut cmd = tool.to_command();
     cmd.args(C_FLAGS)
         .arg("-I")
-        .arg(manifest_dir().join("include"))
+        .arg(native::manifest_dir().join("include"))
         .arg(source)
         .arg("-o")
         .arg(out);
     if needs_pthreads(source) {
         cmd.arg("-pthread");
     }
-    match linkage {
-        Linkage::Static => {
-            cmd.arg(lib_dir.join("libasperity.a"));
-            cmd.args(NATIVE_STATIC_LIBS);
-        }
-        Linkage::Shared => {
-            cmd.arg("-L").arg(lib_dir).arg("-lasperity");
-            cmd.arg(format!("-Wl,-rpath,{}", lib_dir.display()));
-            cmd.arg("-lm");
-        }
-    }
-    let o = cmd
-        .output()
-        .map_err(|e| format!("running the C compiler {cmd:?}: {e}"))?;
-    if !o.status.success() {
-        return Err(format!(
-            "compiling {} ({linkage:?}) failed:\n{cmd:?}\n{}{}",
-            source.display(),
-            String::from_utf8_lossy(&o.stdout),
-            String::from_utf8_lossy(&o.stderr)
-        ));
-    }
+    native::link_args(&mut cmd, linkage, lib_dir);
+    native::run_tool(
+        cmd,
+        &format!("compiling {} ({linkage:?})", source.display()),
+    )?;
     Ok(out.to_path_buf())
 }
 
@@ -265,7 +71,7 @@ fn needs_pthreads(source: &Path) -> bool {
 }
 
 fn example_sources() -> Vec<PathBuf> {
-    let dir = manifest_dir().join("examples/c");
+    let dir = native::manifest_dir().join("examples/c");
     let mut v: Vec<PathBuf> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("reading {}: {e}", dir.display()))
         .filter_map(|e| e.ok().map(|e| e.path()))
@@ -275,50 +81,30 @@ fn example_sources() -> Vec<PathBuf> {
     v
 }
 
-fn out_dir(l: &Layout) -> PathBuf {
-    // `CARGO_TARGET_TMPDIR` is target/tmp of the build that compiled this test.
-    let base = option_env!("CARGO_TARGET_TMPDIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| l.target_dir.join("tmp"));
-    base.join("c_examples").join(&l.profile)
-}
-
 fn build_all() -> Result<Built, String> {
-    let l = layout()?;
-    build_library(&l)?;
-    let out = out_dir(&l);
+    let l = native::layout()?;
+    native::build_library(&l)?;
+    let out = native::out_dir(&l, "c_examples");
     std::fs::create_dir_all(&out).map_err(|e| format!("creating {}: {e}", out.display()))?;
-    let tool = c_compiler(&l, &out)?;
+    let tool = native::compiler(&l, &out, false)?;
     let jobs: Vec<(String, PathBuf, Linkage)> = example_sources()
         .into_iter()
         .flat_map(|src| {
             let name = src.file_stem().unwrap().to_string_lossy().into_owned();
-            [Linkage::Static, Linkage::Shared]
+            Linkage::BOTH
                 .into_iter()
                 .map(move |k| (name.clone(), src.clone(), k))
         })
         .collect();
-    let results: Vec<(String, Linkage, Result<PathBuf, String>)> = std::thread::scope(|s| {
-        let handles: Vec<_> = jobs
-            .iter()
-            .map(|(name, src, k)| {
-                let tool = &tool;
-                let bin = out.join(format!(
-                    "{name}-{}",
-                    if *k == Linkage::Static {
-                        "static"
-                    } else {
-                        "shared"
-                    }
-                ));
-                let lib_dir = &l.profile_dir;
-                s.spawn(move || (name.clone(), *k, compile(tool, src, &bin, *k, lib_dir)))
-            })
-            .collect();
-        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    let results = native::parallel(&jobs, |(name, src, k)| {
+        let bin = out.join(format!("{name}-{}", k.suffix()));
+        (
+            name.clone(),
+            *k,
+            compile(&tool, src, &bin, *k, &l.profile_dir),
+        )
     });
-    let mut binaries: BTreeMap<String, BTreeMap<Linkage, Result<PathBuf, String>>> =
-        BTreeMap::new();
+    let mut binaries = Binaries::new();
     for (name, k, r) in results {
         binaries.entry(name).or_default().insert(k, r);
     }
@@ -333,173 +119,14 @@ fn built() -> &'static Built {
     }
 }
 
-/// What a program printed.
-struct Run {
-    label: String,
-    status: std::process::ExitStatus,
-    stdout: String,
-    stderr: String,
-    checks: BTreeMap<String, f64>,
-    /// Rows whose first word is "approach" or "retract": (phase, numbers).
-    rows: Vec<(String, Vec<f64>)>,
-}
-
 fn run(name: &str, linkage: Linkage) -> Run {
-    let bin = match built().binaries.get(name).and_then(|m| m.get(&linkage)) {
-        None => panic!("examples/c/{name}.c not found"),
-        Some(Err(e)) => panic!("{e}"),
-        Some(Ok(b)) => b.clone(),
-    };
-    // One pair of output files per run: two tests may run the same binary
-    // at once (each example's own test and the catch-all), and shared files
-    // would truncate each other.
-    static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-    let k = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let stdout_path = bin.with_extension(format!("{k}.stdout"));
-    let stderr_path = bin.with_extension(format!("{k}.stderr"));
-    let mut child = Command::new(&bin)
-        .stdin(Stdio::null())
-        .stdout(std::fs::File::create(&stdout_path).unwrap())
-        .stderr(std::fs::File::create(&stderr_path).unwrap())
-        .spawn()
-        .unwrap_or_else(|e| panic!("running {}: {e}", bin.display()));
-    let start = Instant::now();
-    let status = loop {
-        if let Some(s) = child.try_wait().unwrap() {
-            break s;
-        }
-        if start.elapsed() > Duration::from_secs(120) {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("{} did not finish within 120 s", bin.display());
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    };
-    let stdout = std::fs::read_to_string(&stdout_path).unwrap_or_default();
-    let stderr = std::fs::read_to_string(&stderr_path).unwrap_or_default();
-    let mut checks = BTreeMap::new();
-    let mut rows = Vec::new();
-    for line in stdout.lines() {
-        let mut words = line.split_whitespace();
-        match words.next() {
-            Some("CHECK") => {
-                let (Some(k), Some(v)) = (words.next(), words.next()) else {
-                    panic!("{name}: malformed CHECK line `{line}`");
-                };
-                let v: f64 = v
-                    .parse()
-                    .unwrap_or_else(|_| panic!("{name}: CHECK {k}: `{v}` is not a number"));
-                checks.insert(k.to_string(), v);
-            }
-            Some(phase @ ("approach" | "retract")) => {
-                let numbers: Vec<f64> = words.map_while(|w| w.parse().ok()).collect();
-                rows.push((phase.to_string(), numbers));
-            }
-            _ => {}
-        }
-    }
-    Run {
-        label: format!("{name} ({linkage:?} linkage)"),
-        status,
-        stdout,
-        stderr,
-        checks,
-        rows,
-    }
-}
-
-/// Collects failed checks, each tagged with the law it depends on.
-struct Report<'a> {
-    run: &'a Run,
-    failures: Vec<(&'static str, String)>,
-    passed: usize,
-}
-
-impl<'a> Report<'a> {
-    fn new(run: &'a Run) -> Self {
-        Self {
-            run,
-            failures: Vec::new(),
-            passed: 0,
-        }
-    }
-
-    fn fail(&mut self, needs: &'static str, msg: String) {
-        self.failures.push((needs, msg));
-    }
-
-    fn ok(&mut self, needs: &'static str, cond: bool, msg: impl FnOnce() -> String) {
-        if cond {
-            self.passed += 1;
-        } else {
-            self.fail(needs, msg());
-        }
-    }
-
-    fn get(&mut self, needs: &'static str, name: &str) -> Option<f64> {
-        let v = self.run.checks.get(name).copied();
-        if v.is_none() {
-            self.fail(needs, format!("CHECK {name} missing from the output"));
-        }
-        v
-    }
-
-    /// `|value − expected| ≤ tol`.
-    fn close(&mut self, needs: &'static str, name: &str, expected: f64, tol: f64) {
-        if let Some(v) = self.get(needs, name) {
-            self.ok(needs, (v - expected).abs() <= tol, || {
-                format!("CHECK {name} = {v:.10e}, expected {expected:.10e} ± {tol:e}")
-            });
-        }
-    }
-
-    /// `lo ≤ value ≤ hi`.
-    fn within(&mut self, needs: &'static str, name: &str, lo: f64, hi: f64) {
-        if let Some(v) = self.get(needs, name) {
-            self.ok(needs, v >= lo && v <= hi, || {
-                format!("CHECK {name} = {v:.10e}, expected in [{lo:e}, {hi:e}]")
-            });
-        }
-    }
-
-    fn exit_ok(&mut self, needs: &'static str) {
-        let s = self.run.status;
-        self.ok(needs, s.success(), || {
-            format!("the program exited with {s} (a library call failed, see stderr)")
-        });
-    }
-
-    fn finish(self) {
-        if self.failures.is_empty() {
-            return;
-        }
-        let mut by_law: BTreeMap<&str, Vec<&String>> = BTreeMap::new();
-        for (needs, m) in &self.failures {
-            by_law.entry(needs).or_default().push(m);
-        }
-        let mut msg = format!(
-            "{}: {} check(s) failed, {} passed.\n",
-            self.run.label,
-            self.failures.len(),
-            self.passed
-        );
-        for (law, ms) in by_law {
-            let _ = writeln!(msg, "  depends on {law}:");
-            for m in ms.iter().take(12) {
-                let _ = writeln!(msg, "    - {m}");
-            }
-            if ms.len() > 12 {
-                let _ = writeln!(msg, "    - … and {} more", ms.len() - 12);
-            }
-        }
-        let _ = writeln!(msg, "--- stderr ---\n{}", self.run.stderr.trim_end());
-        let tail: Vec<&str> = self.run.stdout.lines().rev().take(25).collect();
-        let _ = writeln!(msg, "--- stdout (last lines) ---");
-        for l in tail.into_iter().rev() {
-            let _ = writeln!(msg, "{l}");
-        }
-        panic!("{msg}");
-    }
+    let bin = native::binary(
+        &built().binaries,
+        name,
+        linkage,
+        &format!("examples/c/{name}.c"),
+    );
+    native::run(&bin, format!("{name} ({linkage:?} linkage)"))
 }
 
 // ---------------------------------------------------------------------------
@@ -687,6 +314,7 @@ fn check_batch_and_errors(linkage: Linkage) {
 
 fn check_jkr_hysteresis(linkage: Linkage) {
     let r = run("jkr_hysteresis", linkage);
+    let rows = r.rows(ROW_PHASES);
     let mut c = Report::new(&r);
     let piwr = PI * W * R;
     let delta_c = -0.75 * (PI * PI * W * W * R / (E_STAR * E_STAR)).cbrt();
@@ -708,13 +336,13 @@ fn check_jkr_hysteresis(linkage: Linkage) {
     c.close(JKR, "jkr_reeval_identical", 1.0, 0.0);
 
     // Every row against the closed form: (δ, δ/|δ_c|, P, P/πwR, a, in_contact).
-    let n_app = r.rows.iter().filter(|(p, _)| p == "approach").count();
-    let n_ret = r.rows.iter().filter(|(p, _)| p == "retract").count();
+    let n_app = rows.iter().filter(|(p, _)| p == "approach").count();
+    let n_ret = rows.iter().filter(|(p, _)| p == "retract").count();
     c.ok(JKR, n_app == 61 && n_ret == 62, || {
         format!("expected 61 approach and 62 retract rows, got {n_app} and {n_ret}")
     });
     let mut min_ref = 0.0f64;
-    for (phase, v) in &r.rows {
+    for (phase, v) in &rows {
         if v.len() < 6 {
             c.fail(JKR, format!("short row: {phase} {v:?}"));
             continue;
@@ -765,6 +393,7 @@ fn check_jkr_hysteresis(linkage: Linkage) {
 
 fn check_pull_off_table(linkage: Linkage) {
     let r = run("pull_off_table", linkage);
+    let rows = r.rows(ROW_PHASES);
     let mut c = Report::new(&r);
     c.exit_ok("JKR and Maugis–Dugdale (the program reports which call failed)");
     c.within(MATERIAL, "maugis_parameter_max_rel_err", 0.0, 1e-12);
@@ -838,7 +467,7 @@ fn check_pull_off_table(linkage: Linkage) {
     // The λ = 1 curve: (Δ̄, P̄, Ā, C̄, in_contact) rows satisfy Maugis's equations.
     let lambda = 1.0;
     let mut checked = 0;
-    for (phase, v) in &r.rows {
+    for (phase, v) in &rows {
         if v.len() < 5 {
             c.fail(MD, format!("short curve row: {phase} {v:?}"));
             continue;
@@ -1023,14 +652,7 @@ fn fe_strip_friction_shared() {
 #[test]
 fn every_example_compiles_and_links_both_ways() {
     let b = built();
-    let mut errors = String::new();
-    for (name, by_linkage) in &b.binaries {
-        for (k, r) in by_linkage {
-            if let Err(e) = r {
-                let _ = writeln!(errors, "{name} ({k:?}): {e}");
-            }
-        }
-    }
+    let errors = native::build_errors(&b.binaries);
     assert!(!b.binaries.is_empty(), "no C examples found in examples/c");
     assert!(errors.is_empty(), "{errors}");
 }

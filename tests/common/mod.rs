@@ -1,5 +1,7 @@
 //! Shared by the command-line tests: where the crate is and the `asperity`
-//! binary to run.
+//! binary to run. (`native.rs` beside this file holds the helpers of the
+//! tests that compile C and C++ programs; those include it by path, so the
+//! command-line tests do not compile it.)
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -1,0 +1,474 @@
+//! Shared by the tests that compile native programs against the library
+//! (`tests/c_examples.rs`, `tests/cpp_bindings.rs`): where the test
+//! executable's profile lives, building `libasperity.a` / the shared library
+//! with that profile, finding the `cc` crate's C or C++ compiler, the link
+//! lines (static and shared), running a program with a time limit, parsing
+//! its `CHECK <name> <value>` lines, and reporting failed checks grouped by
+//! the part of the library they depend on.
+//!
+//! Included with `#[path = "common/native.rs"] mod native;`; each test crate
+//! uses a subset.
+
+#![allow(dead_code)]
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// Native libraries a Rust staticlib needs, from
+/// `cargo rustc --lib --crate-type staticlib -- --print native-static-libs`.
+#[cfg(target_os = "linux")]
+pub const NATIVE_STATIC_LIBS: &[&str] = &[
+    "-lgcc_s",
+    "-lutil",
+    "-lrt",
+    "-lpthread",
+    "-lm",
+    "-ldl",
+    "-lc",
+];
+#[cfg(target_os = "macos")]
+pub const NATIVE_STATIC_LIBS: &[&str] = &["-lSystem", "-lc", "-lm"];
+#[cfg(not(any(target_os = "linux", target_os = "macos")))]
+pub const NATIVE_STATIC_LIBS: &[&str] = &["-lpthread", "-lm", "-ldl", "-lc"];
+
+#[cfg(target_os = "macos")]
+pub const SHARED_LIB: &str = "libasperity.dylib";
+#[cfg(not(target_os = "macos"))]
+pub const SHARED_LIB: &str = "libasperity.so";
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Linkage {
+    Static,
+    Shared,
+}
+
+impl Linkage {
+    pub const BOTH: [Linkage; 2] = [Linkage::Static, Linkage::Shared];
+
+    /// "static" or "shared", for file names.
+    pub fn suffix(self) -> &'static str {
+        match self {
+            Linkage::Static => "static",
+            Linkage::Shared => "shared",
+        }
+    }
+}
+
+pub fn manifest_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `target/<profile>` (or `target/<triple>/<profile>`) of this test executable,
+/// the target directory, the cargo profile name and the cross triple, if any.
+pub struct Layout {
+    pub profile_dir: PathBuf,
+    pub target_dir: PathBuf,
+    pub profile: String,
+    pub cross_target: Option<String>,
+}
+
+pub fn layout() -> Result<Layout, String> {
+    let exe = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
+    // target/<profile>/deps/<test>-<hash>
+    let profile_dir = exe
+        .parent()
+        .and_then(Path::parent)
+        .ok_or_else(|| format!("unexpected test executable path {}", exe.display()))?
+        .to_path_buf();
+    let dir_name = profile_dir
+        .file_name()
+        .and_then(|s| s.to_str())
+        .ok_or("profile directory has no name")?
+        .to_string();
+    let profile = match dir_name.as_str() {
+        "debug" => "dev".to_string(),
+        other => other.to_string(),
+    };
+    let parent = profile_dir.parent().ok_or("no target directory")?;
+    // Cargo marks its target directory with CACHEDIR.TAG; one level further up
+    // means a `--target <triple>` build.
+    let (target_dir, cross_target) = if parent.join("CACHEDIR.TAG").exists() {
+        (parent.to_path_buf(), None)
+    } else if parent
+        .parent()
+        .is_some_and(|p| p.join("CACHEDIR.TAG").exists())
+    {
+        (
+            parent.parent().unwrap().to_path_buf(),
+            parent
+                .file_name()
+                .and_then(|s| s.to_str())
+                .map(String::from),
+        )
+    } else {
+        // Fall back to the environment, then to the executable's grandparent.
+        match std::env::var_os("CARGO_TARGET_DIR") {
+            Some(d) => (PathBuf::from(d), None),
+            None => (parent.to_path_buf(), None),
+        }
+    };
+    Ok(Layout {
+        profile_dir,
+        target_dir,
+        profile,
+        cross_target,
+    })
+}
+
+/// Build `libasperity.a` and the shared library with the test's profile.
+pub fn build_library(l: &Layout) -> Result<(), String> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut cmd = Command::new(cargo);
+    cmd.current_dir(manifest_dir())
+        .args(["build", "--lib", "--profile", &l.profile, "--target-dir"])
+        .arg(&l.target_dir);
+    if let Some(t) = &l.cross_target {
+        cmd.args(["--target", t]);
+    }
+    if cfg!(feature = "cli") {
+        cmd.args(["--features", "cli"]);
+    }
+    let out = cmd
+        .output()
+        .map_err(|e| format!("running cargo build --lib: {e}"))?;
+    if !out.status.success() {
+        return Err(format!(
+            "cargo build --lib failed ({}):\n{}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr)
+        ));
+    }
+    for lib in ["libasperity.a", SHARED_LIB] {
+        if !l.profile_dir.join(lib).exists() {
+            return Err(format!(
+                "cargo build --lib did not produce {}",
+                l.profile_dir.join(lib).display()
+            ));
+        }
+    }
+    soname_link(&l.profile_dir)
+}
+
+/// The shared library's soname is `libasperity.so.MAJOR` (build.rs): a
+/// program linked against `libasperity.so` asks the loader for that name, so
+/// it must exist next to the library (scripts/install.sh makes the same link).
+pub fn soname_link(dir: &Path) -> Result<(), String> {
+    #[cfg(target_os = "linux")]
+    {
+        let link = dir.join(format!("{SHARED_LIB}.{}", env!("CARGO_PKG_VERSION_MAJOR")));
+        let _ = std::fs::remove_file(&link);
+        match std::os::unix::fs::symlink(SHARED_LIB, &link) {
+            // Another test made it between the two calls.
+            Err(e) if e.kind() != std::io::ErrorKind::AlreadyExists => {
+                return Err(format!("linking {} to {SHARED_LIB}: {e}", link.display()))
+            }
+            _ => {}
+        }
+    }
+    #[cfg(not(target_os = "linux"))]
+    let _ = dir;
+    Ok(())
+}
+
+fn host_triple() -> String {
+    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+    if let Ok(out) = Command::new(rustc).arg("-vV").output() {
+        let text = String::from_utf8_lossy(&out.stdout);
+        if let Some(h) = text.lines().find_map(|l| l.strip_prefix("host: ")) {
+            return h.trim().to_string();
+        }
+    }
+    // Good enough for the usual hosts when rustc is not on PATH.
+    format!(
+        "{}-{}",
+        std::env::consts::ARCH,
+        match std::env::consts::OS {
+            "linux" => "unknown-linux-gnu",
+            "macos" => "apple-darwin",
+            other => other,
+        }
+    )
+}
+
+/// The C (or, with `cpp`, C++) compiler `cc` would use for this target,
+/// without any cargo metadata.
+pub fn compiler(l: &Layout, scratch: &Path, cpp: bool) -> Result<cc::Tool, String> {
+    let host = host_triple();
+    let target = l.cross_target.clone().unwrap_or_else(|| host.clone());
+    cc::Build::new()
+        .cpp(cpp)
+        .target(&target)
+        .host(&host)
+        .opt_level(0)
+        .debug(false)
+        .out_dir(scratch)
+        .cargo_metadata(false)
+        .cargo_warnings(false)
+        .cargo_output(false)
+        .emit_rerun_if_env_changed(false)
+        .try_get_compiler()
+        .map_err(|e| {
+            format!(
+                "cc could not find a {} compiler: {e}",
+                if cpp { "C++" } else { "C" }
+            )
+        })
+}
+
+/// Append the link line for `linkage` against the library in `lib_dir`.
+pub fn link_args(cmd: &mut Command, linkage: Linkage, lib_dir: &Path) {
+    match linkage {
+        Linkage::Static => {
+            cmd.arg(lib_dir.join("libasperity.a"));
+            cmd.args(NATIVE_STATIC_LIBS);
+        }
+        Linkage::Shared => {
+            cmd.arg("-L").arg(lib_dir).arg("-lasperity");
+            cmd.arg(format!("-Wl,-rpath,{}", lib_dir.display()));
+            cmd.arg("-lm");
+        }
+    }
+}
+
+/// Run a compiler or linker command; on failure the error gives `what`, the
+/// command line and the tool's output.
+pub fn run_tool(mut cmd: Command, what: &str) -> Result<(), String> {
+    // The program and its arguments, without the environment `cc` sets.
+    let line = std::iter::once(cmd.get_program())
+        .chain(cmd.get_args())
+        .map(|a| a.to_string_lossy())
+        .collect::<Vec<_>>()
+        .join(" ");
+    let o = cmd
+        .output()
+        .map_err(|e| format!("running the compiler `{line}`: {e}"))?;
+    if !o.status.success() {
+        return Err(format!(
+            "{what} failed:\n{line}\n{}{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        ));
+    }
+    Ok(())
+}
+
+/// Built programs: name → (linkage → binary or the compiler's error).
+pub type Binaries = BTreeMap<String, BTreeMap<Linkage, Result<PathBuf, String>>>;
+
+/// The binary of `name` linked `linkage`; panics with the compiler's error,
+/// or naming `source` when there is no such program.
+pub fn binary(b: &Binaries, name: &str, linkage: Linkage, source: &str) -> PathBuf {
+    match b.get(name).and_then(|m| m.get(&linkage)) {
+        None => panic!("{source} not found"),
+        Some(Err(e)) => panic!("{e}"),
+        Some(Ok(bin)) => bin.clone(),
+    }
+}
+
+/// Every build failure, one per line (empty when all built).
+pub fn build_errors(b: &Binaries) -> String {
+    let mut errors = String::new();
+    for (name, by_linkage) in b {
+        for (k, r) in by_linkage {
+            if let Err(e) = r {
+                let _ = writeln!(errors, "{name} ({k:?}): {e}");
+            }
+        }
+    }
+    errors
+}
+
+/// `<target>/tmp/<name>/<profile>/`, where a test keeps its programs.
+pub fn out_dir(l: &Layout, name: &str) -> PathBuf {
+    // `CARGO_TARGET_TMPDIR` is target/tmp of the build that compiled this test.
+    let base = option_env!("CARGO_TARGET_TMPDIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| l.target_dir.join("tmp"));
+    base.join(name).join(&l.profile)
+}
+
+/// `f` over `items`, one thread each, results in order.
+pub fn parallel<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
+    std::thread::scope(|s| {
+        let handles: Vec<_> = items.iter().map(|item| s.spawn(|| f(item))).collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    })
+}
+
+/// What a program printed.
+pub struct Run {
+    pub label: String,
+    pub status: std::process::ExitStatus,
+    pub stdout: String,
+    pub stderr: String,
+    pub checks: BTreeMap<String, f64>,
+}
+
+impl Run {
+    /// Rows whose first word is one of `phases`: (phase, the numbers that
+    /// follow).
+    pub fn rows(&self, phases: &[&str]) -> Vec<(String, Vec<f64>)> {
+        self.stdout
+            .lines()
+            .filter_map(|line| {
+                let mut words = line.split_whitespace();
+                let phase = words.next().filter(|w| phases.contains(w))?;
+                let numbers: Vec<f64> = words.map_while(|w| w.parse().ok()).collect();
+                Some((phase.to_string(), numbers))
+            })
+            .collect()
+    }
+}
+
+/// Run `bin` (at most 120 s) and parse its `CHECK <name> <value>` lines.
+pub fn run(bin: &Path, label: String) -> Run {
+    // One pair of output files per run: two tests may run the same binary
+    // at once, and shared files would truncate each other.
+    static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let k = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let stdout_path = bin.with_extension(format!("{k}.stdout"));
+    let stderr_path = bin.with_extension(format!("{k}.stderr"));
+    let mut child = Command::new(bin)
+        .stdin(Stdio::null())
+        .stdout(std::fs::File::create(&stdout_path).unwrap())
+        .stderr(std::fs::File::create(&stderr_path).unwrap())
+        .spawn()
+        .unwrap_or_else(|e| panic!("running {}: {e}", bin.display()));
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().unwrap() {
+            break s;
+        }
+        if start.elapsed() > Duration::from_secs(120) {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("{} did not finish within 120 s", bin.display());
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    };
+    let stdout = std::fs::read_to_string(&stdout_path).unwrap_or_default();
+    let stderr = std::fs::read_to_string(&stderr_path).unwrap_or_default();
+    let mut checks = BTreeMap::new();
+    for line in stdout.lines() {
+        let mut words = line.split_whitespace();
+        if words.next() == Some("CHECK") {
+            let (Some(k), Some(v)) = (words.next(), words.next()) else {
+                panic!("{label}: malformed CHECK line `{line}`");
+            };
+            let v: f64 = v
+                .parse()
+                .unwrap_or_else(|_| panic!("{label}: CHECK {k}: `{v}` is not a number"));
+            checks.insert(k.to_string(), v);
+        }
+    }
+    Run {
+        label,
+        status,
+        stdout,
+        stderr,
+        checks,
+    }
+}
+
+/// Collects failed checks, each tagged with the part of the library it
+/// depends on.
+pub struct Report<'a> {
+    pub run: &'a Run,
+    failures: Vec<(&'static str, String)>,
+    passed: usize,
+}
+
+impl<'a> Report<'a> {
+    pub fn new(run: &'a Run) -> Self {
+        Self {
+            run,
+            failures: Vec::new(),
+            passed: 0,
+        }
+    }
+
+    pub fn fail(&mut self, needs: &'static str, msg: String) {
+        self.failures.push((needs, msg));
+    }
+
+    pub fn ok(&mut self, needs: &'static str, cond: bool, msg: impl FnOnce() -> String) {
+        if cond {
+            self.passed += 1;
+        } else {
+            self.fail(needs, msg());
+        }
+    }
+
+    pub fn get(&mut self, needs: &'static str, name: &str) -> Option<f64> {
+        let v = self.run.checks.get(name).copied();
+        if v.is_none() {
+            self.fail(needs, format!("CHECK {name} missing from the output"));
+        }
+        v
+    }
+
+    /// `|value − expected| ≤ tol`.
+    pub fn close(&mut self, needs: &'static str, name: &str, expected: f64, tol: f64) {
+        if let Some(v) = self.get(needs, name) {
+            self.ok(needs, (v - expected).abs() <= tol, || {
+                format!("CHECK {name} = {v:.10e}, expected {expected:.10e} ± {tol:e}")
+            });
+        }
+    }
+
+    /// `|value − expected| ≤ rel·|expected|`.
+    pub fn rel(&mut self, needs: &'static str, name: &str, expected: f64, rel: f64) {
+        self.close(needs, name, expected, rel * expected.abs());
+    }
+
+    /// `lo ≤ value ≤ hi`.
+    pub fn within(&mut self, needs: &'static str, name: &str, lo: f64, hi: f64) {
+        if let Some(v) = self.get(needs, name) {
+            self.ok(needs, v >= lo && v <= hi, || {
+                format!("CHECK {name} = {v:.10e}, expected in [{lo:e}, {hi:e}]")
+            });
+        }
+    }
+
+    pub fn exit_ok(&mut self, needs: &'static str) {
+        let s = self.run.status;
+        self.ok(needs, s.success(), || {
+            format!("the program exited with {s} (a library call failed, see stderr)")
+        });
+    }
+
+    pub fn finish(self) {
+        if self.failures.is_empty() {
+            return;
+        }
+        let mut by_law: BTreeMap<&str, Vec<&String>> = BTreeMap::new();
+        for (needs, m) in &self.failures {
+            by_law.entry(needs).or_default().push(m);
+        }
+        let mut msg = format!(
+            "{}: {} check(s) failed, {} passed.\n",
+            self.run.label,
+            self.failures.len(),
+            self.passed
+        );
+        for (law, ms) in by_law {
+            let _ = writeln!(msg, "  depends on {law}:");
+            for m in ms.iter().take(12) {
+                let _ = writeln!(msg, "    - {m}");
+            }
+            if ms.len() > 12 {
+                let _ = writeln!(msg, "    - … and {} more", ms.len() - 12);
+            }
+        }
+        let _ = writeln!(msg, "--- stderr ---\n{}", self.run.stderr.trim_end());
+        let tail: Vec<&str> = self.run.stdout.lines().rev().take(25).collect();
+        let _ = writeln!(msg, "--- stdout (last lines) ---");
+        for l in tail.into_iter().rev() {
+            let _ = writeln!(msg, "{l}");
+        }
+        panic!("{msg}");
+    }
+}
