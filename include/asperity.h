@@ -203,6 +203,46 @@
 // Pair rule of seed 001: `Δγ = (√γ₁ − √γ₂)²`.
 #define ASPERITY_PAIR_SEED001_DIFFERENCE 1
 
+// `AsperitySliderIncrement.control`: the slider's own loading (the
+// scene's); `normal_force` and `gap` are ignored.
+#define ASPERITY_SLIDER_CONTROL_SCENE 0
+
+// `AsperitySliderIncrement.control`: fixed load `normal_force` (N).
+#define ASPERITY_SLIDER_CONTROL_LOAD 1
+
+// `AsperitySliderIncrement.control`: fixed gap, the slider's mean line at
+// `gap` (m) above the counter-surface's mean line.
+#define ASPERITY_SLIDER_CONTROL_GAP 2
+
+// `AsperitySliderIncrement.tangents` bit: compute dF/dN.
+#define ASPERITY_SLIDER_TANGENT_NORMAL 1
+
+// `AsperitySliderIncrement.tangents` bit: compute dF/d(slip).
+#define ASPERITY_SLIDER_TANGENT_SLIP 2
+
+// Index in a slider state of its flag: 0 fresh, 1 stepped.
+#define ASPERITY_SLIDER_STATE_FLAG 0
+
+// Index in a slider state of the slider position X along its track (m).
+// A fresh state (flag 0) starts there: set it to place patches at
+// different points of the counter-surface.
+#define ASPERITY_SLIDER_STATE_POSITION 1
+
+// Index in a slider state of the rod-bed position b of the last
+// equilibrium (m; NaN: none).
+#define ASPERITY_SLIDER_STATE_ROD_POSITION 2
+
+// Index in a slider state of the accumulated slip path (m).
+#define ASPERITY_SLIDER_STATE_SLIP_PATH 3
+
+// Index in a slider state of the accumulated dissipation (J), 4 values:
+// chemical, van der Waals, elastic, plastic.
+#define ASPERITY_SLIDER_STATE_DISSIPATION 4
+
+// Index in a slider state of the rod heights (m, one per rod), followed by
+// the rods' stored elastic energies (J, one per rod).
+#define ASPERITY_SLIDER_STATE_HEIGHTS 8
+
 // Summit heights: Gaussian of zero mean and standard deviation σ.
 #define ASPERITY_HEIGHTS_GAUSSIAN 1
 
@@ -286,12 +326,22 @@ typedef struct AsperityGwEmpirical AsperityGwEmpirical;
 // threads.
 typedef struct AsperityHomogenisedFriction AsperityHomogenisedFriction;
 
+// The hierarchical slider against its counter-surface (opaque). Create it
+// with `asperity_slider_from_scene_json`, release it with
+// `asperity_slider_free`. Immutable; safe to share between threads.
+typedef struct AsperitySlider AsperitySlider;
+
 // The slider of the hierarchical friction model (opaque): nested levels of
 // micro-rods and the nano-asperities on the finest rods' tips. Create it
 // with `asperity_slider_geometry_new` or
 // `asperity_slider_geometry_new_uniform`, release it with
 // `asperity_slider_geometry_free`. Immutable; safe to share between threads.
 typedef struct AsperitySliderGeometry AsperitySliderGeometry;
+
+// Scratch buffers of the slider step (opaque): one per thread. Create it
+// with `asperity_slider_work_new`, release it with
+// `asperity_slider_work_free`.
+typedef struct AsperitySliderWork AsperitySliderWork;
 
 // An immutable tabulated contact law (opaque). Create it with
 // `asperity_table_new_*` or `asperity_table_from_json`, release it with
@@ -826,6 +876,120 @@ typedef struct AsperityIndentationResult {
     // 1 when the segments came from the labels.
     int32_t segments_from_labels;
 } AsperityIndentationResult;
+
+// What a slider is: sizes and capacities (SI).
+typedef struct AsperitySliderInfo {
+    // Doubles per patch state (8 + 2 x rods).
+    size_t state_size;
+    // Number of rods (micro-asperities of the finest level).
+    size_t rods;
+    // Nano-asperities per rod.
+    size_t nano_per_rod;
+    // Samples of the counter-surface profile.
+    size_t counter_samples;
+    // Rod width along the track (m).
+    double rod_width;
+    // Rod depth across the track (m).
+    double depth;
+    // Nominal area of the patch, rods x width x depth (m^2).
+    double nominal_area;
+    // Load capacity of the rods, n sigma_y A (N): the largest normal force.
+    double capacity;
+    // Counter-surface sample spacing (m).
+    double counter_dx;
+    // The scene's loading value: its load (N) or gap (m), per
+    // `scene_control`.
+    double scene_loading;
+    // The scene's loading: `ASPERITY_SLIDER_CONTROL_LOAD` or `_GAP`.
+    int32_t scene_control;
+    // 1 when the counter-surface repeats past its end, 0 when running
+    // past it is an error.
+    int32_t periodic;
+} AsperitySliderInfo;
+
+// One time increment of a slider patch. SI units. An all-zero increment
+// seats a fresh patch under the scene's loading without sliding.
+typedef struct AsperitySliderIncrement {
+    // Normal force on the patch (N), finite, >= 0 and <= the capacity
+    // (`AsperitySliderInfo.capacity`); read when `control` is
+    // `ASPERITY_SLIDER_CONTROL_LOAD`.
+    double normal_force;
+    // Position of the slider's mean line above the counter-surface's mean
+    // line (m), finite; read when `control` is `ASPERITY_SLIDER_CONTROL_GAP`.
+    double gap;
+    // Slip increment of the patch relative to the counter-surface (m), two
+    // finite components in the caller's tangent basis; a track uses
+    // `slip[1] = 0`. The slider advances along its track by |slip|.
+    double slip[2];
+    // Time increment (s), finite and >= 0 (unused: rate independent).
+    double dt;
+    // `ASPERITY_SLIDER_CONTROL_SCENE` (0), `_LOAD` (1) or `_GAP` (2).
+    int32_t control;
+    // Tangents wanted: 0, or `ASPERITY_SLIDER_TANGENT_NORMAL` |
+    // `ASPERITY_SLIDER_TANGENT_SLIP` (each costs two more evaluations).
+    int32_t tangents;
+} AsperitySliderIncrement;
+
+// The response of one [`Slider::step_flat`] (SI; the C ABI's
+// `AsperitySliderResponse`). A plain `repr(C)` value.
+typedef struct AsperitySliderResponse {
+    // Tangential force on the patch from the counter-surface (N), in the
+    // basis of the slip increment: F = −F_t Δs/|Δs|, opposing slip; 0 for
+    // a zero slip increment.
+    double force[2];
+    // Its magnitude, the friction force F_t = ΔU/|Δs| (N), thesis (4-1);
+    // 0 for a zero slip increment.
+    double friction_force;
+    // Normal load N carried by the rods (N): the given load, or at a fixed
+    // gap the rods' total force.
+    double normal_force;
+    // Coefficient of friction in the slider's COF form; 0 when undefined
+    // (`regime` no contact) and for a zero slip increment.
+    double cof;
+    // Adhesive holding force A = N_c F_adh,1 (N), 4.4.
+    double adhesion;
+    // Energy dissipated in the increment ΔU (J), ≥ 0.
+    double dissipated;
+    // ΔU by mechanism (J), each ≥ 0.
+    struct AsperityDissipation dissipation;
+    // True contact area N_c·w_vdW² (m²), thesis 6.5.3.
+    double true_contact_area;
+    // Fraction of the nano-asperities in contact touching only thanks to
+    // adhesion, in [0, 1].
+    double adhesion_area_share;
+    // Slider position X along its track after the increment (m).
+    double position;
+    // Rod-bed position b after the increment (m).
+    double rod_position;
+    // Slip path length of the increment |Δs| (m): the distance the slider
+    // advanced along its track.
+    double slip_length;
+    // dF/dN (dimensionless), a finite-difference secant (see
+    // [`Slider::step_flat`]); 0 unless asked for.
+    double dforce_dnormal[2];
+    // dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`; 0 unless asked for, and for
+    // a zero slip increment (rigid stick: unbounded).
+    double dforce_dslip[2][2];
+    // Nano-asperities in contact N_c.
+    uint64_t nano_contacts;
+    // Of those, in contact only thanks to adhesion.
+    uint64_t adhesive_contacts;
+    // Rods carrying force.
+    uint64_t rods_in_contact;
+    // Rods at the yield force.
+    uint64_t yielded_rods;
+    // [`FrictionRegime`] as an integer: 0 stick (zero slip increment), 1
+    // slip, 2 no contact (μ undefined: N + A ≤ 0 for Derjaguin, N ≤ 0
+    // otherwise; friction 0 unless rods leaving contact release energy).
+    int32_t regime;
+    // 1 when this call seated a fresh state first, else 0.
+    int32_t seated;
+    // The tangents computed, as bits: 1 dF/dN (`ASPERITY_SLIDER_TANGENT_NORMAL`),
+    // 2 dF/dΔs (`ASPERITY_SLIDER_TANGENT_SLIP`); [`SliderTangents::bits`].
+    int32_t tangents;
+    // Reserved, always 0.
+    int32_t reserved;
+} AsperitySliderResponse;
 
 // A Greenwood–Williamson rough surface with parametric summit heights
 // (thesis (1-29), (1-30)), by value: N summits of radius R, heights of
@@ -1529,6 +1693,81 @@ int32_t asperity_pair_work_of_adhesion(double gamma1,
 int32_t asperity_hamaker_work_of_adhesion(double hamaker,
                                           double separation,
                                           double *work_of_adhesion);
+
+// Build a slider from the scene JSON text of `len` bytes at `json` (UTF-8,
+// no NUL needed; the format of `examples/scenes/*.json`). Relative file
+// paths in the scene are resolved against `base_dir` (a NUL-terminated
+// UTF-8 directory path), or against the current directory when `base_dir`
+// is NULL. The scene's `sliding` and `outputs` are validated but unused by
+// the step. Writes a new handle to `*out` (NULL on failure). Errors: NULL
+// `json` or `out`; invalid UTF-8 (`json`, `base_dir`);
+// `ASPERITY_ERR_PARSE` for a JSON or field error (the message gives line,
+// column and the field); the scene's value errors naming the field; a
+// file the scene names that cannot be read (`ASPERITY_ERR_IO`).
+int32_t asperity_slider_from_scene_json(const char *json,
+                                        size_t len,
+                                        const char *base_dir,
+                                        struct AsperitySlider **out);
+
+// Release a slider; NULL is accepted and ignored.
+void asperity_slider_free(struct AsperitySlider *slider);
+
+// Write the number of doubles of one patch state (8 + 2 x rods) to `*n`.
+int32_t asperity_slider_state_size(const struct AsperitySlider *slider,
+                                   size_t *n);
+
+// Write the sizes and capacities of `slider` to `*info`.
+int32_t asperity_slider_info(const struct AsperitySlider *slider,
+                             struct AsperitySliderInfo *info);
+
+// Build the scratch buffers of a step with `slider` and write the handle to
+// `*out` (NULL on failure). Use one per thread; it may serve any slider
+// with the same number of rods.
+int32_t asperity_slider_work_new(const struct AsperitySlider *slider,
+                                 struct AsperitySliderWork **out);
+
+// Release work buffers; NULL is accepted and ignored.
+void asperity_slider_work_free(struct AsperitySliderWork *work);
+
+// One friction step of one patch: the increment `*increment` from the
+// state `old_state` (`asperity_slider_state_size` doubles; all-zero =
+// fresh: seated first under the increment's loading) into `new_state`
+// (same size; may equal `old_state` to step in place, must not partially
+// overlap it) and the response into `*out`. The same old state and
+// increment give bit-identical results, so a host can re-evaluate or cut
+// back an increment. See `Slider::step_flat` for the zero-slip rule (stick:
+// force 0, nothing dissipated) and the finite-difference tangents. No
+// allocation. On failure `new_state` and `*out` are untouched; the message
+// names the argument and its bound.
+int32_t asperity_slider_step(const struct AsperitySlider *slider,
+                             struct AsperitySliderWork *work,
+                             const struct AsperitySliderIncrement *increment,
+                             const double *old_state,
+                             double *new_state,
+                             struct AsperitySliderResponse *out);
+
+// Step `n` patches at once, in the shape of Abaqus/Explicit VFRIC (as
+// `asperity_homogenised_friction_step_block`): the normal force on patch i
+// `normal_force[i]` (N, a fixed load, <= the capacity), its slip increment
+// `slip[2i]`, `[2i+1]` (m, x and y interleaved), one `dt` (s) for all,
+// states `old_states[i*m .. (i+1)*m]` -> `new_states[...]` with m =
+// `asperity_slider_state_size`, tangential forces out in
+// `tangential_force[2i]`, `[2i+1]` (N, interleaved, opposing slip) and the
+// dissipated energy of the increment in `dissipation[i]` (J). `dissipation`
+// may be NULL (not wanted); `new_states` may equal `old_states` (in place)
+// but must not partially overlap it. No tangents (use
+// `asperity_slider_step`). On an error at element i, elements before i are
+// written, those from i on are untouched, and the message names i.
+int32_t asperity_slider_step_block(const struct AsperitySlider *slider,
+                                   struct AsperitySliderWork *work,
+                                   size_t n,
+                                   const double *normal_force,
+                                   const double *slip,
+                                   double dt,
+                                   const double *old_states,
+                                   double *new_states,
+                                   double *tangential_force,
+                                   double *dissipation);
 
 // Greenwood–Williamson load, real area, number of contacts and stiffness at
 // `separation` d (m, finite) (thesis (1-29), (1-30)).

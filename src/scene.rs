@@ -18,7 +18,8 @@
 //!   "mechanisms": { "chemical": true, "van_der_waals": true, "elastic": true, "plastic": true },
 //!   "loading": { "fixed_load_fraction": { "fraction": 0.35 } },
 //!   "sliding": { "distance": 1.5e-4, "step": 1.5e-6 },
-//!   "outputs": { "csv": true, "svg": true }
+//!   "outputs": { "csv": true, "svg": true },
+//!   "load_sweep": { "fractions": [0.05, 0.11, 0.25, 0.45] }
 //! }
 //! ```
 //!
@@ -282,6 +283,17 @@ pub struct SlidingSpec {
     pub track_end: TrackEnd,
 }
 
+/// Loads of a load sweep (`asperity slide` plots the mean true contact area
+/// against them, thesis 6.5.3, Figure 6-60).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "snake_case")]
+pub enum LoadSweep {
+    /// Normal loads P (N), each finite, ≥ 0 and within the rods' capacity.
+    Loads(Vec<f64>),
+    /// Loads as fractions P/(σ_y A_n) of the capacity, each in [0, 1].
+    Fractions(Vec<f64>),
+}
+
 /// What the command line writes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -324,6 +336,10 @@ pub struct Scene {
     /// Outputs.
     #[serde(default)]
     pub outputs: Outputs,
+    /// Optional load sweep: one slide per load, the same slider otherwise
+    /// (see [`Scene::sweep_loads`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub load_sweep: Option<LoadSweep>,
     /// Directory that relative paths are resolved against (not serialised).
     #[serde(skip)]
     pub base: PathBuf,
@@ -409,7 +425,42 @@ impl Scene {
         if let NanoSpec::Asperities(n) = &self.surfaces.nano {
             n.validate().map_err(at("surfaces.nano"))?;
         }
+        if let Some(sweep) = &self.load_sweep {
+            let (name, values, fraction) = match sweep {
+                LoadSweep::Loads(v) => ("loads", v, false),
+                LoadSweep::Fractions(v) => ("fractions", v, true),
+            };
+            if values.is_empty() {
+                return Err(SceneError::Invalid {
+                    field: "load_sweep",
+                    error: Error::InvalidArgument {
+                        name,
+                        value: 0.0,
+                        bound: "at least one load",
+                    },
+                });
+            }
+            for &v in values {
+                if fraction {
+                    check::in_range(name, v, 0.0, 1.0, "in [0, 1]")
+                } else {
+                    check::non_negative(name, v)
+                }
+                .map_err(at("load_sweep"))?;
+            }
+        }
         Ok(())
+    }
+
+    /// The loads (N) of the scene's load sweep for `slider` (fractions are
+    /// of its capacity σ_y A_n, [`Slider::capacity`]); `None` without a
+    /// sweep. The loads are validated against the capacity by
+    /// [`Slider::with_loading`] when used.
+    pub fn sweep_loads(&self, slider: &Slider) -> Option<Vec<f64>> {
+        self.load_sweep.as_ref().map(|sweep| match sweep {
+            LoadSweep::Loads(v) => v.clone(),
+            LoadSweep::Fractions(v) => v.iter().map(|f| f * slider.capacity()).collect(),
+        })
     }
 
     /// The material.

@@ -649,6 +649,170 @@ fn fe_strip_friction_shared() {
     check_fe_strip_friction(Linkage::Shared);
 }
 
+const SLIDER: &str = "the slider step (src/friction/slider.rs, src/ffi/slider.rs)";
+
+/// `slider_patch`: four surface patches, each the chapter-6 slider, stepped
+/// with the VFRIC-shaped block call; the mean friction forces against
+/// separate `Slider::slide` runs at each load (and, for the oblique,
+/// staggered patch, the struct API stepping from its start position).
+fn check_slider_patch(linkage: Linkage) {
+    use asperity::friction::{Loading, Slider, SliderIncrement, SliderTangents};
+    use asperity::scene::Scene;
+    let r = run("slider_patch", linkage);
+    let mut c = Report::new(&r);
+    c.exit_ok(SLIDER);
+    let slider: Slider =
+        Scene::from_file(manifest_dir().join("examples/scenes/chapter6_copper.json"))
+            .unwrap()
+            .build()
+            .unwrap();
+    c.close(FFI, "state_size", slider.state_len() as f64, 0.0);
+    c.close(FFI, "state_size_matches_info", 1.0, 0.0);
+    c.close(FFI, "rods", 90.0, 0.0);
+    c.close(FFI, "capacity", slider.capacity(), 0.0);
+    let (steps, step) = (60usize, 1.5e-6);
+    let fractions = [0.05, 0.10, 0.20, 0.35];
+    let loads: Vec<f64> = fractions.iter().map(|f| f * slider.capacity()).collect();
+    // Patches 0, 2, 3 slide from 0 along +x, +y, -x: the track advances by
+    // |slip| whatever its direction, so each is Slider::slide at its load.
+    for i in [0usize, 2, 3] {
+        let run = slider
+            .with_loading(Loading::FixedLoad { load: loads[i] })
+            .unwrap()
+            .slide(steps as f64 * step, step)
+            .unwrap();
+        let f = run.summary.mean_friction_force;
+        c.close(
+            SLIDER,
+            &format!("patch{i}_mean_friction_force"),
+            f,
+            1e-10 * f,
+        );
+        let d = run.summary.dissipation.total();
+        c.close(SLIDER, &format!("patch{i}_dissipation"), d, 1e-10 * d);
+        let share = run.summary.dissipation.chemical / d;
+        c.close(SLIDER, &format!("patch{i}_chemical_share"), share, 1e-10);
+    }
+    // Patch 1: 30 degrees, starting 45 um along the track; the struct API.
+    {
+        let s = (3f64.sqrt() / 2.0 * step).hypot(0.5 * step);
+        let load = Loading::FixedLoad { load: loads[1] };
+        let mut w = slider.work();
+        let mut fresh = slider.fresh_state();
+        fresh.position = 45e-6;
+        let mut a = fresh.clone();
+        slider.seat_loaded(&fresh, &mut a, load, &mut w).unwrap();
+        let mut b = a.clone();
+        let (mut fsum, mut dsum) = (0.0, 0.0);
+        for _ in 0..steps {
+            let r = slider.step_loaded(&a, &mut b, s, load, &mut w).unwrap();
+            fsum += r.friction_force;
+            dsum += r.dissipation.total();
+            core::mem::swap(&mut a, &mut b);
+        }
+        let f = fsum / steps as f64;
+        c.close(SLIDER, "patch1_mean_friction_force", f, 1e-10 * f);
+        c.close(SLIDER, "patch1_dissipation", dsum, 1e-10 * dsum);
+        c.close(SLIDER, "patch1_position", a.position, 1e-15);
+    }
+    for i in 0..4 {
+        // Work of the friction force = dissipation, per increment summed;
+        // the state's ledger; the slip path and the track position.
+        c.within(
+            SLIDER,
+            &format!("patch{i}_work_dissipation_rel_diff"),
+            0.0,
+            1e-12,
+        );
+        c.within(
+            SLIDER,
+            &format!("patch{i}_state_dissipation_rel_diff"),
+            0.0,
+            1e-12,
+        );
+        c.close(
+            SLIDER,
+            &format!("patch{i}_slip_path"),
+            steps as f64 * step,
+            1e-15,
+        );
+        if i != 1 {
+            c.close(
+                SLIDER,
+                &format!("patch{i}_position"),
+                steps as f64 * step,
+                1e-15,
+            );
+        }
+        // Chemical bonds dominate (thesis 6.5.2).
+        c.within(SLIDER, &format!("patch{i}_chemical_share"), 0.5, 1.0);
+    }
+    c.close(SLIDER, "min_increment_dissipation", 0.0, 0.0);
+    c.within(SLIDER, "max_misalignment", 0.0, 1e-15);
+    c.close(SLIDER, "opposes_slip", 1.0, 0.0);
+    // The tangents of patch 0's next increment, as the Rust flat step gives
+    // them from the same history.
+    {
+        let m = slider.state_len();
+        let mut w = slider.work();
+        let mut st = vec![0.0; m];
+        for _ in 0..steps {
+            let inc = SliderIncrement {
+                loading: Some(Loading::FixedLoad { load: loads[0] }),
+                slip: [step, 0.0],
+                dt: 1e-5,
+                tangents: SliderTangents::default(),
+            };
+            slider.step_flat_in_place(&mut st, &inc, &mut w).unwrap();
+        }
+        let inc = SliderIncrement {
+            loading: Some(Loading::FixedLoad { load: loads[0] }),
+            slip: [step, 0.0],
+            dt: 1e-5,
+            tangents: SliderTangents::all(),
+        };
+        let mut new = vec![0.0; m];
+        let t = slider.step_flat(&st, &mut new, &inc, &mut w).unwrap();
+        c.close(
+            SLIDER,
+            "tangent_friction_force",
+            t.friction_force,
+            1e-10 * t.friction_force,
+        );
+        let dn = t.dforce_dnormal[0];
+        c.close(SLIDER, "tangent_dfdn", dn, 1e-9 * dn.abs());
+        let ds = t.dforce_dslip[0][0];
+        c.close(SLIDER, "tangent_dfds_along", ds, 1e-9 * ds.abs());
+    }
+    c.within(SLIDER, "tangent_transverse_rel_diff", 0.0, 1e-12);
+    c.close(SLIDER, "tangents_flag", 3.0, 0.0);
+    c.close(SLIDER, "reevaluation_identical", 1.0, 0.0);
+    c.close(SLIDER, "zero_slip_force", 0.0, 0.0);
+    c.close(SLIDER, "zero_slip_dissipated", 0.0, 0.0);
+    c.close(SLIDER, "zero_slip_regime", 0.0, 0.0);
+    c.close(FFI, "bad_load_status", -4.0, 0.0);
+    c.close(FFI, "bad_load_names_element", 1.0, 0.0);
+    c.close(FFI, "bad_load_names_normal_force", 1.0, 0.0);
+    c.close(FFI, "bad_load_before_written", 1.0, 0.0);
+    c.close(FFI, "bad_load_rest_untouched", 1.0, 0.0);
+    c.close(FFI, "null_handle_status", -1.0, 0.0);
+    let rows = r.stdout.lines().filter(|l| l.starts_with("patch ")).count();
+    c.ok(SLIDER, rows == 4, || {
+        format!("{rows} patch rows, expected 4")
+    });
+    c.finish();
+}
+
+#[test]
+fn slider_patch_static() {
+    check_slider_patch(Linkage::Static);
+}
+
+#[test]
+fn slider_patch_shared() {
+    check_slider_patch(Linkage::Shared);
+}
+
 #[test]
 fn every_example_compiles_and_links_both_ways() {
     let b = built();
@@ -667,6 +831,7 @@ fn every_other_example_runs() {
         "jkr_hysteresis",
         "profile_characterise",
         "pull_off_table",
+        "slider_patch",
         "tabulated_threads",
     ];
     for name in built()

@@ -1,6 +1,8 @@
 //! `asperity slide` (feature `cli`), run as a user would: the chapter-6
-//! scene with `--json` (keys and ranges), and bad scenes (clear error, exit
-//! code != 0). The binary is found or built by `tests/common`.
+//! scene with `--json` (keys and ranges), the contact-area-against-load plot
+//! (a load sweep, against separate library runs; per step otherwise; only
+//! with `--out`), and bad scenes (clear error, exit code != 0). The binary is
+//! found or built by `tests/common`.
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -54,12 +56,107 @@ fn chapter6_scene_json() {
         "chapter6_copper.csv",
         "chapter6_copper_cof.svg",
         "chapter6_copper_dissipation.svg",
+        "chapter6_copper_area_load.svg",
     ] {
         assert!(out.join(f).is_file(), "{f}");
     }
+    // No load sweep: the true contact area of every step against its load
+    // (one fixed load here, so no line).
+    let a = &v["area_load"];
+    assert_eq!(a["source"], "steps", "{a}");
+    assert_eq!(a["loads"].as_array().map(|l| l.len()), Some(100));
+    assert!(a["r_squared"].is_null(), "one load: R^2 undefined ({a})");
+    let svg = std::fs::read_to_string(out.join("chapter6_copper_area_load.svg")).unwrap();
+    assert!(svg.contains("<svg") && svg.contains("one load"));
     let csv = std::fs::read_to_string(out.join("chapter6_copper.csv")).unwrap();
     assert_eq!(csv.lines().count(), 101);
     assert!(csv.starts_with("position_m,"));
+}
+
+/// The scene's `load_sweep` (Table 6-1 fractions): one slide per load, the
+/// mean true contact area plotted against the load with its line and R²;
+/// the points are those of separate library runs, R² is recomputed here.
+#[test]
+fn load_sweep_plots_area_against_load() {
+    use asperity::friction::Loading;
+    use asperity::scene::Scene;
+    let out = tmp("sweep");
+    let scene = manifest().join("examples/scenes/chapter6_load_sweep.json");
+    let o = Command::new(binary())
+        .arg("slide")
+        .arg(&scene)
+        .arg("--json")
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let a = &v["area_load"];
+    assert_eq!(a["source"], "load_sweep", "{a}");
+    let nums = |k: &str| -> Vec<f64> {
+        a[k].as_array()
+            .unwrap_or_else(|| panic!("area_load.{k}: {a}"))
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect()
+    };
+    let (loads, areas) = (nums("loads"), nums("areas"));
+    let s = Scene::from_file(&scene).unwrap();
+    let slider = s.build().unwrap();
+    let fractions = [0.05, 0.11, 0.25, 0.45];
+    assert_eq!(loads.len(), fractions.len());
+    for (k, f) in fractions.iter().enumerate() {
+        let load = f * slider.capacity();
+        let run = slider
+            .with_loading(Loading::FixedLoad { load })
+            .unwrap()
+            .slide(s.sliding.distance, s.sliding.step)
+            .unwrap();
+        assert!((loads[k] - load).abs() <= 1e-12 * load, "{k}");
+        let want = run.summary.mean_true_contact_area;
+        assert!((areas[k] - want).abs() <= 1e-12 * want, "{k}");
+    }
+    // R² of the least-squares line, from the points.
+    let n = loads.len() as f64;
+    let (mx, my) = (loads.iter().sum::<f64>() / n, areas.iter().sum::<f64>() / n);
+    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
+    for (x, y) in loads.iter().zip(&areas) {
+        sxy += (x - mx) * (y - my);
+        sxx += (x - mx) * (x - mx);
+        syy += (y - my) * (y - my);
+    }
+    let r2 = sxy * sxy / (sxx * syy);
+    let got = a["r_squared"].as_f64().unwrap();
+    assert!((got - r2).abs() < 1e-12, "{got} vs {r2}");
+    assert!((a["slope"].as_f64().unwrap() - sxy / sxx).abs() <= 1e-9 * sxy / sxx);
+    // Thesis 6.5.3: the true contact area is linear in the load.
+    assert!(r2 >= 0.95, "R^2 = {r2}");
+    let svg = std::fs::read_to_string(out.join("chapter6_load_sweep_area_load.svg")).unwrap();
+    assert!(
+        svg.contains("<svg") && svg.contains("R²"),
+        "{}",
+        &svg[..200]
+    );
+}
+
+/// Without `--out` the extra plot (and its slides) are skipped.
+#[test]
+fn area_load_plot_only_with_out() {
+    let dir = tmp("no-out");
+    let scene = manifest().join("examples/scenes/chapter6_load_sweep.json");
+    let o = Command::new(binary())
+        .current_dir(&dir)
+        .arg("slide")
+        .arg(&scene)
+        .arg("--json")
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v.get("area_load").is_none(), "{v}");
+    assert!(dir.join("chapter6_load_sweep_cof.svg").is_file());
+    assert!(!dir.join("chapter6_load_sweep_area_load.svg").exists());
 }
 
 fn fails(name: &str, text: &str, expect: &str) {
@@ -106,6 +203,22 @@ fn bad_scenes_fail_clearly() {
             1,
         ).replacen("\"self_affine\": { \"path", "\"file\": { \"path", 1),
         "missing.csv",
+    );
+    fails(
+        "sweep",
+        &good.replace(
+            "\"outputs\"",
+            "\"load_sweep\": { \"fractions\": [0.1, 1.5] }, \"outputs\"",
+        ),
+        "fractions",
+    );
+    fails(
+        "sweep_empty",
+        &good.replace(
+            "\"outputs\"",
+            "\"load_sweep\": { \"loads\": [] }, \"outputs\"",
+        ),
+        "load_sweep",
     );
     let o = Command::new(binary())
         .args(["slide", "/nonexistent/scene.json"])

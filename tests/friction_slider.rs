@@ -393,3 +393,768 @@ fn homogenised_law_from_slider_runs_reproduces_the_runs() {
         assert!((out.true_contact_area - a).abs() <= 1e-12 * a);
     }
 }
+
+// ------------------------------------------- the flat per-increment step
+
+use asperity::friction::{
+    FrictionRegime, SliderIncrement, SliderResponse, SliderStates, SliderTangents,
+};
+
+fn along(dx: f64) -> SliderIncrement {
+    SliderIncrement {
+        loading: None,
+        slip: [dx, 0.0],
+        dt: 1e-3,
+        tangents: SliderTangents::default(),
+    }
+}
+
+fn loaded(load: f64, slip: [f64; 2]) -> SliderIncrement {
+    SliderIncrement {
+        loading: Some(Loading::FixedLoad { load }),
+        slip,
+        dt: 1e-3,
+        tangents: SliderTangents::default(),
+    }
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+fn same(a: &SliderResponse, b: &SliderResponse) -> bool {
+    // Bit for bit (NaN-safe through the debug text of every field).
+    format!("{a:?}") == format!("{b:?}")
+}
+
+#[test]
+fn flat_steps_reproduce_slide_bit_for_bit() {
+    let s = scene();
+    let slider = s.build().unwrap();
+    let (d, dx) = (30e-6, 1.5e-6);
+    let run = slider.slide(d, dx).unwrap();
+    let m = slider.state_len();
+    assert_eq!(m, 8 + 2 * slider.rods());
+    let mut work = slider.work();
+    let mut a = vec![0.0; m]; // all-zero: fresh
+    let mut b = vec![0.0; m];
+    let (mut path, mut total) = (0.0, 0.0);
+    for (k, want) in run.steps.iter().enumerate() {
+        let r = slider.step_flat(&a, &mut b, &along(dx), &mut work).unwrap();
+        assert_eq!(r.seated, (k == 0) as i32, "only the first step seats");
+        assert_eq!(
+            r.friction_force.to_bits(),
+            want.friction_force.to_bits(),
+            "{k}"
+        );
+        assert_eq!(r.force[0], -want.friction_force, "opposes the slip");
+        assert_eq!(r.force[1], 0.0);
+        assert_eq!(r.dissipation, want.dissipation, "{k}");
+        assert_eq!(r.true_contact_area, want.true_contact_area, "{k}");
+        assert_eq!(r.cof, want.cof, "{k}");
+        assert_eq!(r.normal_force, want.normal_load, "{k}");
+        assert_eq!(r.position, want.position, "{k}");
+        assert_eq!(r.rod_position, want.rod_position, "{k}");
+        assert_eq!(r.nano_contacts as usize, want.nano_contacts, "{k}");
+        assert_eq!(r.slip_length, dx);
+        assert_eq!(r.regime(), FrictionRegime::Slip);
+        assert_eq!(r.tangents, 0, "no tangent unless asked");
+        assert_eq!(r.dforce_dslip, [[0.0; 2]; 2]);
+        // Dissipation >= 0 on every increment, by mechanism.
+        r.dissipation.validate().unwrap();
+        assert!(r.dissipated >= 0.0);
+        path += dx;
+        total += want.dissipation.total();
+        core::mem::swap(&mut a, &mut b);
+    }
+    // The state's ledger: slip path and the summed dissipation.
+    assert_eq!(a[Slider::STATE_FLAG], 1.0);
+    assert!((a[Slider::STATE_SLIP_PATH] - path).abs() <= 1e-12 * path);
+    let acc: f64 = a[Slider::STATE_DISSIPATION..Slider::STATE_HEIGHTS]
+        .iter()
+        .sum();
+    assert!((acc - total).abs() <= 1e-12 * total);
+    assert!((acc - run.summary.dissipation.total()).abs() <= 1e-12 * total);
+    // The rods' history equals that of the struct API (seat, then steps).
+    let mut w = slider.work();
+    let fresh = slider.fresh_state();
+    let mut x = fresh.clone();
+    slider.seat(&fresh, &mut x, &mut w).unwrap();
+    let mut y = x.clone();
+    for _ in 0..run.steps.len() {
+        slider.step(&x, &mut y, dx, &mut w).unwrap();
+        core::mem::swap(&mut x, &mut y);
+    }
+    let back = slider.state_from_flat(&a).unwrap();
+    assert_eq!(bits(&back.rod.heights), bits(&x.rod.heights));
+    assert_eq!(bits(&back.rod.energy), bits(&x.rod.energy));
+    assert_eq!(back.rod.position, x.rod.position);
+    assert_eq!(back.position, x.position);
+}
+
+#[test]
+fn flat_step_is_a_pure_function_of_old_state_and_increment() {
+    let slider = scene().build().unwrap();
+    let m = slider.state_len();
+    let mut work = slider.work();
+    let mut st = vec![0.0; m];
+    for _ in 0..7 {
+        slider
+            .step_flat_in_place(&mut st, &along(1.5e-6), &mut work)
+            .unwrap();
+    }
+    let old = st.clone();
+    let mut inc = loaded(0.1, [1.2e-6, -0.7e-6]);
+    inc.tangents = SliderTangents::all();
+    let mut n1 = vec![0.0; m];
+    let mut n2 = vec![1.0; m];
+    let r1 = slider.step_flat(&old, &mut n1, &inc, &mut work).unwrap();
+    // A cut-back: a different increment in between, then the same again,
+    // and with fresh work buffers.
+    let mut scratch = vec![0.0; m];
+    slider
+        .step_flat(&old, &mut scratch, &loaded(0.2, [3e-6, 0.0]), &mut work)
+        .unwrap();
+    let r2 = slider.step_flat(&old, &mut n2, &inc, &mut work).unwrap();
+    assert!(same(&r1, &r2), "{r1:?}\n{r2:?}");
+    assert_eq!(bits(&n1), bits(&n2));
+    let mut other = slider.work();
+    let r3 = slider.step_flat(&old, &mut n2, &inc, &mut other).unwrap();
+    assert!(same(&r1, &r3));
+    assert_eq!(bits(&n1), bits(&n2));
+    // In place gives the same.
+    let mut inplace = old.clone();
+    let r4 = slider
+        .step_flat_in_place(&mut inplace, &inc, &mut work)
+        .unwrap();
+    assert!(same(&r1, &r4));
+    assert_eq!(bits(&n1), bits(&inplace));
+    assert_eq!(old, st, "old is only read");
+}
+
+#[test]
+fn flat_step_with_the_hosts_load_matches_a_slider_built_for_that_load() {
+    let base = scene().build().unwrap();
+    let dx = 1.5e-6;
+    let m = base.state_len();
+    let mut work = base.work();
+    for f in [0.0, 0.07, 0.3] {
+        let load = f * base.capacity();
+        let run = rebuilt(Loading::FixedLoad { load })
+            .unwrap()
+            .slide(12e-6, dx)
+            .unwrap();
+        let mut st = vec![0.0; m];
+        for (k, want) in run.steps.iter().enumerate() {
+            let r = base
+                .step_flat_in_place(&mut st, &loaded(load, [dx, 0.0]), &mut work)
+                .unwrap();
+            assert_eq!(r.friction_force, want.friction_force, "f = {f}, step {k}");
+            assert_eq!(r.dissipation, want.dissipation);
+            assert_eq!(r.true_contact_area, want.true_contact_area);
+            assert_eq!(r.normal_force, load);
+        }
+    }
+}
+
+#[test]
+fn slip_direction_sets_the_force_direction_not_its_size() {
+    let slider = scene().build().unwrap();
+    let m = slider.state_len();
+    let mut work = slider.work();
+    let mut st = vec![0.0; m];
+    for _ in 0..3 {
+        slider
+            .step_flat_in_place(&mut st, &along(1.5e-6), &mut work)
+            .unwrap();
+    }
+    let s = 1.5e-6;
+    let mut n = vec![0.0; m];
+    let r0 = slider
+        .step_flat(&st, &mut n, &loaded(0.18, [s, 0.0]), &mut work)
+        .unwrap();
+    for (sx, sy) in [(0.0, s), (-s, 0.0), (0.0, -s)] {
+        let r = slider
+            .step_flat(&st, &mut n, &loaded(0.18, [sx, sy]), &mut work)
+            .unwrap();
+        // Same path length, same track advance, same friction force ...
+        assert_eq!(r.friction_force, r0.friction_force);
+        assert_eq!(r.dissipation, r0.dissipation);
+        // ... opposing the slip.
+        assert_eq!(
+            r.force,
+            [-r0.friction_force * sx / s, -r0.friction_force * sy / s]
+        );
+    }
+    // An oblique slip: |F| = F_t, F antiparallel to the slip.
+    let (sx, sy) = (0.9e-6, -1.3e-6);
+    let r = slider
+        .step_flat(&st, &mut n, &loaded(0.18, [sx, sy]), &mut work)
+        .unwrap();
+    let fm = r.force[0].hypot(r.force[1]);
+    assert!((fm - r.friction_force).abs() <= 1e-14 * fm);
+    let cross = r.force[0] * sy - r.force[1] * sx;
+    assert!(cross.abs() <= 1e-14 * fm * sx.hypot(sy));
+    assert!(r.force[0] * sx + r.force[1] * sy < 0.0);
+    // F·Δs = −ΔU: the work of the friction force is the dissipation.
+    let work_done = -(r.force[0] * sx + r.force[1] * sy);
+    assert!((work_done - r.dissipated).abs() <= 1e-12 * r.dissipated);
+}
+
+#[test]
+fn zero_slip_is_stick_with_nothing_dissipated() {
+    let slider = scene().build().unwrap();
+    let m = slider.state_len();
+    let mut work = slider.work();
+    // An all-zero state and an all-zero increment: seated, nothing else.
+    let zero = vec![0.0; m];
+    let mut st = vec![0.0; m];
+    let r = slider
+        .step_flat(&zero, &mut st, &SliderIncrement::default(), &mut work)
+        .unwrap();
+    assert_eq!(r.seated, 1);
+    assert_eq!(r.regime(), FrictionRegime::Stick);
+    assert_eq!(
+        (r.force, r.friction_force, r.dissipated, r.cof),
+        ([0.0; 2], 0.0, 0.0, 0.0)
+    );
+    assert_eq!(r.position, 0.0);
+    assert!(r.true_contact_area > 0.0);
+    assert_eq!(st[Slider::STATE_FLAG], 1.0);
+    assert_eq!(st[Slider::STATE_SLIP_PATH], 0.0);
+    // The seated state equals Slider::seat's.
+    let mut w = slider.work();
+    let fresh = slider.fresh_state();
+    let mut seated = fresh.clone();
+    slider.seat(&fresh, &mut seated, &mut w).unwrap();
+    assert_eq!(slider.state_from_flat(&st).unwrap(), seated);
+    // Zero slip under a heavier load: a normal loading step, stick, nothing
+    // booked, the track position kept; tangents asked are 0.
+    let mut inc = loaded(0.5 * slider.capacity(), [0.0, 0.0]);
+    inc.tangents = SliderTangents::all();
+    let before = st.clone();
+    let r = slider.step_flat_in_place(&mut st, &inc, &mut work).unwrap();
+    assert_eq!(r.regime(), FrictionRegime::Stick);
+    assert_eq!((r.friction_force, r.dissipated), (0.0, 0.0));
+    assert_eq!(r.dforce_dslip, [[0.0; 2]; 2]);
+    assert_eq!(r.dforce_dnormal, [0.0; 2]);
+    assert_eq!(r.tangents, 0);
+    assert_eq!(r.normal_force, 0.5 * slider.capacity());
+    assert_eq!(st[Slider::STATE_POSITION], before[Slider::STATE_POSITION]);
+    assert_eq!(
+        st[Slider::STATE_DISSIPATION..Slider::STATE_HEIGHTS],
+        before[Slider::STATE_DISSIPATION..Slider::STATE_HEIGHTS]
+    );
+    // More rods now yield: heights changed (plastic indentation, not
+    // friction).
+    assert_ne!(st[Slider::STATE_HEIGHTS..], before[Slider::STATE_HEIGHTS..]);
+}
+
+#[test]
+fn fresh_state_starts_at_its_position() {
+    let slider = scene().build().unwrap();
+    let m = slider.state_len();
+    let mut work = slider.work();
+    let x0 = 45e-6;
+    let mut st = vec![0.0; m];
+    st[Slider::STATE_POSITION] = x0;
+    st[Slider::STATE_HEIGHTS] = 123.0; // ignored in a fresh state
+    let dx = 1.5e-6;
+    // The struct API: a fresh state moved to x0, seated, stepped.
+    let mut w = slider.work();
+    let mut fresh = slider.fresh_state();
+    fresh.position = x0;
+    let mut a = fresh.clone();
+    slider.seat(&fresh, &mut a, &mut w).unwrap();
+    let mut b = a.clone();
+    for k in 0..5 {
+        let want = slider.step(&a, &mut b, dx, &mut w).unwrap();
+        let r = slider
+            .step_flat_in_place(&mut st, &along(dx), &mut work)
+            .unwrap();
+        assert_eq!(r.friction_force, want.friction_force, "{k}");
+        assert_eq!(r.position, want.position);
+        assert!((r.position - (x0 + (k + 1) as f64 * dx)).abs() < 1e-18);
+        core::mem::swap(&mut a, &mut b);
+    }
+}
+
+#[test]
+fn tangents_are_the_documented_secants() {
+    let slider = scene().build().unwrap();
+    let m = slider.state_len();
+    let mut work = slider.work();
+    let mut st = vec![0.0; m];
+    for _ in 0..5 {
+        slider
+            .step_flat_in_place(&mut st, &along(1.5e-6), &mut work)
+            .unwrap();
+    }
+    let (load, s) = (0.12, 1.5e-6);
+    let mut n = vec![0.0; m];
+    let only = |normal: bool, slip: bool| SliderIncrement {
+        tangents: SliderTangents { normal, slip },
+        ..loaded(load, [s, 0.0])
+    };
+    let r0 = slider
+        .step_flat(&st, &mut n, &only(false, false), &mut work)
+        .unwrap();
+    let rn = slider
+        .step_flat(&st, &mut n, &only(true, false), &mut work)
+        .unwrap();
+    let rs = slider
+        .step_flat(&st, &mut n, &only(false, true), &mut work)
+        .unwrap();
+    let r = slider
+        .step_flat(&st, &mut n, &only(true, true), &mut work)
+        .unwrap();
+    // Only what is asked is computed; the step itself is unchanged.
+    assert_eq!((rn.tangents, rs.tangents, r.tangents), (1, 2, 3));
+    assert_eq!(rn.dforce_dslip, [[0.0; 2]; 2]);
+    assert_eq!(rs.dforce_dnormal, [0.0; 2]);
+    for x in [&rn, &rs, &r] {
+        assert_eq!(x.friction_force, r0.friction_force);
+        assert_eq!(x.dissipation, r0.dissipation);
+    }
+    assert_eq!(r.dforce_dnormal, rn.dforce_dnormal);
+    assert_eq!(r.dforce_dslip, rs.dforce_dslip);
+    // The secants, recomputed through the struct API from the same old
+    // state (Slider::step_loaded), with the documented steps.
+    let old = slider.state_from_flat(&st).unwrap();
+    let mut w = slider.work();
+    let mut tmp = old.clone();
+    let mut ft = |slip: f64, load: f64| {
+        slider
+            .step_loaded(&old, &mut tmp, slip, Loading::FixedLoad { load }, &mut w)
+            .unwrap()
+            .friction_force
+    };
+    let h = Slider::TANGENT_STEP;
+    let dn = h * load.max(h * slider.capacity());
+    let dfdn = (ft(s, load + dn) - ft(s, load - dn)) / (2.0 * dn);
+    let dfds = (ft(s + h * s, load) - ft(s - h * s, load)) / (2.0 * h * s);
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs().max(1e-300);
+    assert!(
+        close(r.dforce_dnormal[0], -dfdn),
+        "{:?} vs {}",
+        r.dforce_dnormal,
+        -dfdn
+    );
+    assert_eq!(r.dforce_dnormal[1], 0.0);
+    assert!(
+        close(r.dforce_dslip[0][0], -dfds),
+        "{:?} vs {}",
+        r.dforce_dslip,
+        -dfds
+    );
+    // Across the slip the force turns with it: −F_t/s, closed form.
+    let turn = -r0.friction_force / s;
+    assert!(close(r.dforce_dslip[1][1], turn));
+    assert_eq!(r.dforce_dslip[0][1], 0.0);
+    assert_eq!(r.dforce_dslip[1][0], 0.0);
+    // The friction force grows with the load: dF_t/dN > 0 (more contacts).
+    assert!(dfdn > 0.0);
+    // A rotated slip rotates the tangent: R diag(a, b) Rᵀ.
+    let th: f64 = 0.6;
+    let (c, sn) = (th.cos(), th.sin());
+    let mut inc = only(true, true);
+    inc.slip = [s * c, s * sn];
+    let q = slider.step_flat(&st, &mut n, &inc, &mut work).unwrap();
+    let (a, b) = (r.dforce_dslip[0][0], r.dforce_dslip[1][1]);
+    let want = [
+        [a * c * c + b * sn * sn, (a - b) * c * sn],
+        [(a - b) * c * sn, a * sn * sn + b * c * c],
+    ];
+    for i in 0..2 {
+        for j in 0..2 {
+            assert!(
+                (q.dforce_dslip[i][j] - want[i][j]).abs() <= 1e-6 * a.abs().max(b.abs()),
+                "{:?} vs {want:?}",
+                q.dforce_dslip
+            );
+        }
+    }
+    assert!((q.dforce_dnormal[0] - r.dforce_dnormal[0] * c).abs() <= 1e-6 * dfdn.abs());
+}
+
+#[test]
+fn flat_step_limits_and_bad_input() {
+    let slider = scene().build().unwrap();
+    let m = slider.state_len();
+    let mut work = slider.work();
+    let name = |e: Error| match e {
+        Error::InvalidArgument { name, .. }
+        | Error::OutOfDomain { name, .. }
+        | Error::UnknownSelector { name, .. } => name,
+        other => panic!("{other:?}"),
+    };
+    let mut st = vec![0.0; m];
+    slider
+        .step_flat_in_place(&mut st, &along(1.5e-6), &mut work)
+        .unwrap();
+    let sentinel = vec![-7.0; m];
+    let mut new = sentinel.clone();
+    let mut err = |old: &[f64], inc: SliderIncrement| {
+        let e = slider
+            .step_flat(old, &mut new, &inc, &mut work)
+            .unwrap_err();
+        assert_eq!(new, sentinel, "new untouched on error");
+        name(e)
+    };
+    let cap = slider.capacity();
+    // Non-finite input.
+    assert_eq!(err(&st, along(f64::NAN)), "slip");
+    assert_eq!(err(&st, loaded(0.1, [0.0, f64::INFINITY])), "slip");
+    assert_eq!(err(&st, loaded(0.1, [f64::MAX, f64::MAX])), "slip");
+    assert_eq!(
+        err(
+            &st,
+            SliderIncrement {
+                dt: -1.0,
+                ..along(1e-6)
+            }
+        ),
+        "dt"
+    );
+    assert_eq!(
+        err(
+            &st,
+            SliderIncrement {
+                dt: f64::NAN,
+                ..along(1e-6)
+            }
+        ),
+        "dt"
+    );
+    assert_eq!(err(&st, loaded(f64::NAN, [1e-6, 0.0])), "normal_force");
+    assert_eq!(err(&st, loaded(-1e-3, [1e-6, 0.0])), "normal_force");
+    // Load above the total yield capacity: no equilibrium.
+    assert_eq!(err(&st, loaded(1.001 * cap, [1e-6, 0.0])), "normal_force");
+    let gap = SliderIncrement {
+        loading: Some(Loading::FixedGap {
+            position: f64::INFINITY,
+        }),
+        ..along(1e-6)
+    };
+    assert_eq!(err(&st, gap), "gap");
+    // Bad states.
+    assert_eq!(err(&st[1..], along(1e-6)), "old_state.len()");
+    let mut bad = st.clone();
+    bad[Slider::STATE_FLAG] = 2.0;
+    assert_eq!(err(&bad, along(1e-6)), "old_state.flag");
+    let mut bad = st.clone();
+    bad[Slider::STATE_POSITION] = f64::NAN;
+    assert_eq!(err(&bad, along(1e-6)), "old_state.position");
+    let mut bad = st.clone();
+    bad[Slider::STATE_ROD_POSITION] = f64::INFINITY;
+    assert_eq!(err(&bad, along(1e-6)), "old_state.rod_position");
+    let mut bad = st.clone();
+    bad[Slider::STATE_DISSIPATION + 2] = -1.0;
+    assert_eq!(err(&bad, along(1e-6)), "old_state.dissipation");
+    let mut bad = st.clone();
+    bad[Slider::STATE_SLIP_PATH] = f64::NAN;
+    assert_eq!(err(&bad, along(1e-6)), "old_state.slip_path");
+    let mut bad = st.clone();
+    bad[Slider::STATE_HEIGHTS + 3] = f64::NAN;
+    assert_eq!(err(&bad, along(1e-6)), "state.heights");
+    let mut bad = st.clone();
+    bad[Slider::STATE_HEIGHTS + slider.rods()] = -1.0;
+    assert_eq!(err(&bad, along(1e-6)), "state.energy");
+    // Past the counter profile's end.
+    assert_eq!(err(&st, along(1e-3)), "position");
+    let e = slider
+        .step_flat(&st, &mut vec![0.0; m + 1], &along(1e-6), &mut work)
+        .unwrap_err();
+    assert_eq!(name(e), "new_state.len()");
+    assert_eq!(name(SliderTangents::from_bits(4).unwrap_err()), "tangents");
+    // A rod-bed position NaN is "none": no warm start, same equilibrium.
+    let mut cold = st.clone();
+    cold[Slider::STATE_ROD_POSITION] = f64::NAN;
+    let mut a = vec![0.0; m];
+    let mut b = vec![0.0; m];
+    let ra = slider
+        .step_flat(&st, &mut a, &along(1.5e-6), &mut work)
+        .unwrap();
+    let rb = slider
+        .step_flat(&cold, &mut b, &along(1.5e-6), &mut work)
+        .unwrap();
+    assert!((ra.rod_position - rb.rod_position).abs() <= 1e-15);
+    assert_eq!(ra.nano_contacts, rb.nano_contacts);
+
+    // Zero load: a defined result (the slider just touches; adhesive
+    // contacts may still give friction), finite, dissipation >= 0.
+    let r = slider
+        .step_flat(&st, &mut a, &loaded(0.0, [1.5e-6, 0.0]), &mut work)
+        .unwrap();
+    assert_eq!(r.normal_force, 0.0);
+    assert!(r.friction_force.is_finite() && r.cof.is_finite() && r.dissipated >= 0.0);
+    // Load at the capacity: every rod yields, still defined.
+    let r = slider
+        .step_flat(&st, &mut a, &loaded(cap, [1.5e-6, 0.0]), &mut work)
+        .unwrap();
+    assert_eq!(r.yielded_rods as usize, slider.rods());
+    assert!(r.friction_force.is_finite() && r.friction_force > 0.0);
+    // No contact (a gap far above the counter-surface): friction 0, the
+    // flag, no division by zero.
+    let far = SliderIncrement {
+        loading: Some(Loading::FixedGap { position: 1e-3 }),
+        ..along(1.5e-6)
+    };
+    let r = slider
+        .step_flat(&vec![0.0; m], &mut a, &far, &mut work)
+        .unwrap();
+    assert_eq!(r.regime(), FrictionRegime::NoContact);
+    assert_eq!((r.friction_force, r.cof, r.nano_contacts), (0.0, 0.0, 0));
+    assert_eq!(r.force, [-0.0, -0.0]);
+    let far0 = SliderIncrement {
+        slip: [0.0; 2],
+        ..far
+    };
+    let r = slider
+        .step_flat(&vec![0.0; m], &mut a, &far0, &mut work)
+        .unwrap();
+    assert_eq!(r.regime(), FrictionRegime::NoContact);
+}
+
+#[test]
+fn mismatched_profile_lengths() {
+    let base = scene().build().unwrap();
+    let o = *base.options();
+    let length = base.rods() as f64 * base.rod_width();
+    let mk = |counter: Vec<f64>, dx: f64, track_end: TrackEnd| {
+        let mut o = o;
+        o.track_end = track_end;
+        Slider::new(base.geometry().clone(), *base.material(), counter, dx, o)
+    };
+    let wave = |n: usize, dx: f64| -> Vec<f64> {
+        (0..n)
+            .map(|j| 3e-7 * (j as f64 * dx * 2.0 * std::f64::consts::PI / 20e-6).sin())
+            .collect()
+    };
+    // A counter-surface shorter than the slider: a named error at
+    // construction (not a failure at the first step) ...
+    let short = wave(40, 1.5e-6);
+    assert!(39.0 * 1.5e-6 < length);
+    match mk(short.clone(), 1.5e-6, TrackEnd::Error) {
+        Err(Error::InvalidArgument {
+            name: "counter.len()",
+            value,
+            ..
+        }) => assert_eq!(value, 40.0),
+        other => panic!("{other:?}"),
+    }
+    // ... and a defined slide when it repeats.
+    let s = mk(short, 1.5e-6, TrackEnd::Periodic).unwrap();
+    let run = s.slide(60e-6, 1.5e-6).unwrap();
+    for r in &run.steps {
+        check_step(r);
+        assert!(r.friction_force > 0.0);
+    }
+    // Just long enough: accepted, and one more increment runs off the end.
+    let n = (length / 1.5e-6).round() as usize + 1;
+    let s = mk(wave(n, 1.5e-6), 1.5e-6, TrackEnd::Error).unwrap();
+    let mut st = vec![0.0; s.state_len()];
+    let mut w = s.work();
+    s.step_flat_in_place(&mut st, &SliderIncrement::default(), &mut w)
+        .unwrap();
+    let e = s
+        .step_flat_in_place(&mut st, &along(1.5e-6), &mut w)
+        .unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::OutOfDomain {
+                name: "position",
+                ..
+            }
+        ),
+        "{e:?}"
+    );
+    // A counter sampled at another spacing than the rods: interpolated, and
+    // a finer sampling of the same sine gives nearly the same contacts.
+    let coarse = mk(wave(200, 1.5e-6), 1.5e-6, TrackEnd::Error).unwrap();
+    let fine = mk(wave(600, 0.5e-6), 0.5e-6, TrackEnd::Error).unwrap();
+    let a = coarse.slide(30e-6, 1.5e-6).unwrap().summary;
+    let b = fine.slide(30e-6, 1.5e-6).unwrap().summary;
+    assert!(
+        (a.mean_true_contact_area / b.mean_true_contact_area - 1.0).abs() < 0.05,
+        "{} vs {}",
+        a.mean_true_contact_area,
+        b.mean_true_contact_area
+    );
+}
+
+#[test]
+fn flat_step_on_a_flat_counter_surface() {
+    let base = scene().build().unwrap();
+    let mut o = *base.options();
+    o.track_end = TrackEnd::Periodic;
+    let s = Slider::new(
+        base.geometry().clone(),
+        *base.material(),
+        vec![0.0; 8],
+        1.5e-6,
+        o,
+    )
+    .unwrap();
+    let mut st = vec![0.0; s.state_len()];
+    let mut w = s.work();
+    for _ in 0..20 {
+        let r = s
+            .step_flat_in_place(&mut st, &loaded(0.1, [1e-6, 1e-6]), &mut w)
+            .unwrap();
+        assert!(r.friction_force.is_finite() && r.friction_force > 0.0);
+        r.dissipation.validate().unwrap();
+    }
+}
+
+#[test]
+fn block_step_equals_scalar_steps() {
+    let slider = scene().build().unwrap();
+    let m = slider.state_len();
+    let n = 5;
+    let cap = slider.capacity();
+    let normal: Vec<f64> = (0..n).map(|i| (0.02 + 0.08 * i as f64) * cap).collect();
+    let mut states = vec![0.0; n * m];
+    for i in 0..n {
+        states[i * m + Slider::STATE_POSITION] = 10e-6 * i as f64;
+    }
+    let mut work = slider.work();
+    let mut scalar = states.clone();
+    let mut sep_new = vec![0.0; n * m];
+    for k in 0..6 {
+        let slip: Vec<f64> = (0..n)
+            .flat_map(|i| {
+                let th = 0.9 * i as f64 + 0.3 * k as f64;
+                [1.4e-6 * th.cos(), 1.4e-6 * th.sin()]
+            })
+            .collect();
+        let mut f_block = vec![0.0; 2 * n];
+        let mut d_block = vec![0.0; n];
+        let mut f_sep = vec![0.0; 2 * n];
+        slider
+            .step_flat_block(
+                &normal,
+                &slip,
+                1e-3,
+                SliderStates::Separate {
+                    old: &states,
+                    new: &mut sep_new,
+                },
+                &mut f_sep,
+                None,
+                &mut work,
+            )
+            .unwrap();
+        slider
+            .step_flat_block(
+                &normal,
+                &slip,
+                1e-3,
+                SliderStates::InPlace(&mut states),
+                &mut f_block,
+                Some(&mut d_block),
+                &mut work,
+            )
+            .unwrap();
+        assert_eq!(bits(&states), bits(&sep_new));
+        assert_eq!(bits(&f_block), bits(&f_sep));
+        for i in 0..n {
+            let r = slider
+                .step_flat_in_place(
+                    &mut scalar[i * m..(i + 1) * m],
+                    &loaded(normal[i], [slip[2 * i], slip[2 * i + 1]]),
+                    &mut work,
+                )
+                .unwrap();
+            assert_eq!(r.force, [f_block[2 * i], f_block[2 * i + 1]]);
+            assert_eq!(r.dissipated, d_block[i]);
+            assert!(d_block[i] >= 0.0);
+        }
+        assert_eq!(bits(&states), bits(&scalar));
+    }
+    // An error at element 3: elements before written, from 3 on untouched.
+    let mut bad = normal.clone();
+    bad[3] = 2.0 * cap;
+    let before = states.clone();
+    let mut f = vec![9.0; 2 * n];
+    let e = slider
+        .step_flat_block(
+            &bad,
+            &[1e-6; 10],
+            1e-3,
+            SliderStates::InPlace(&mut states),
+            &mut f,
+            None,
+            &mut work,
+        )
+        .unwrap_err();
+    assert_eq!(e.index, 3);
+    assert!(matches!(
+        e.error,
+        Error::OutOfDomain {
+            name: "normal_force",
+            ..
+        }
+    ));
+    assert_ne!(states[..3 * m], before[..3 * m]);
+    assert_eq!(states[3 * m..], before[3 * m..]);
+    assert_eq!(f[6..], [9.0; 4]);
+    // Mismatched lengths name the slice.
+    let e = slider
+        .step_flat_block(
+            &normal,
+            &[0.0; 3],
+            1e-3,
+            SliderStates::InPlace(&mut states),
+            &mut f,
+            None,
+            &mut work,
+        )
+        .unwrap_err();
+    assert!(matches!(
+        e.error,
+        Error::InvalidArgument {
+            name: "slip.len()",
+            ..
+        }
+    ));
+}
+
+#[test]
+fn one_slider_many_threads_one_work_each() {
+    let slider = scene().build().unwrap();
+    let m = slider.state_len();
+    let patch = |i: usize| -> Vec<u64> {
+        let mut work = slider.work();
+        let mut st = vec![0.0; m];
+        st[Slider::STATE_POSITION] = 5e-6 * i as f64;
+        let mut out = vec![];
+        for k in 0..20 {
+            let th = 0.3 * (i + k) as f64;
+            let r = slider
+                .step_flat_in_place(
+                    &mut st,
+                    &loaded(
+                        0.03 * (i + 1) as f64,
+                        [1.2e-6 * th.cos(), 1.2e-6 * th.sin()],
+                    ),
+                    &mut work,
+                )
+                .unwrap();
+            out.extend([
+                r.force[0].to_bits(),
+                r.force[1].to_bits(),
+                r.dissipated.to_bits(),
+            ]);
+        }
+        out.extend(bits(&st));
+        out
+    };
+    let serial: Vec<Vec<u64>> = (0..4).map(patch).collect();
+    let parallel: Vec<Vec<u64>> = std::thread::scope(|s| {
+        let h: Vec<_> = (0..4).map(|i| s.spawn(move || patch(i))).collect();
+        h.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    assert_eq!(serial, parallel);
+}

@@ -16,6 +16,7 @@ pub mod homogenised;
 pub mod indentation;
 pub mod lj_sphere;
 pub mod material;
+pub mod slider;
 pub mod statistics;
 mod status;
 pub mod surface;

@@ -66,6 +66,6 @@ pub use rods::{
     RodSolver, RodState,
 };
 pub use slider::{
-    summarize, Loading, SlideRun, SlideStep, SlideSummary, Slider, SliderOptions, SliderState,
-    SliderWork, TrackEnd,
+    summarize, Loading, SlideRun, SlideStep, SlideSummary, Slider, SliderIncrement, SliderOptions,
+    SliderResponse, SliderState, SliderStates, SliderTangents, SliderWork, TrackEnd,
 };

@@ -1,8 +1,16 @@
 //! `asperity slide SCENE.json [--json] [--out DIR]`: runs a sliding scene
 //! (issue 6 §5), writes the per-step CSV and SVG plots, prints a summary or,
 //! with `--json`, exactly one JSON object (issue 6 §9).
+//!
+//! With `--out DIR` (and SVG outputs on) it also plots the true contact area
+//! against the load (thesis 6.5.3, Figure 6-60) with its least-squares line
+//! and R²: the mean true contact area of one slide per load of the scene's
+//! `load_sweep` when it has one, otherwise the true contact area of every
+//! increment against its normal load (meaningful at a fixed gap, where the
+//! load varies; at a fixed load all points share one load and R² is
+//! undefined).
 
-use asperity::friction::{SlideRun, SlideStep};
+use asperity::friction::{Loading, SlideRun, SlideStep, Slider};
 use asperity::scene::Scene;
 use plotters::prelude::*;
 use std::error::Error;
@@ -66,8 +74,17 @@ pub fn run(args: &SlideArgs) -> Res<()> {
         dissipation_plot(&p, &run.steps)?;
         written.push(p);
     }
+    let area_load = if scene.outputs.svg && args.out.is_some() {
+        let data = area_load_data(&scene, &slider, &run)?;
+        let p = out.join(format!("{stem}_area_load.svg"));
+        area_load_plot(&p, &data)?;
+        written.push(p);
+        Some(data)
+    } else {
+        None
+    };
     if args.json {
-        println!("{}", summary_json(&run, &written));
+        println!("{}", summary_json(&run, &written, area_load.as_ref()));
     } else {
         let s = &run.summary;
         println!("steps                     {}", s.steps);
@@ -94,10 +111,10 @@ pub fn run(args: &SlideArgs) -> Res<()> {
     Ok(())
 }
 
-fn summary_json(run: &SlideRun, written: &[PathBuf]) -> String {
+fn summary_json(run: &SlideRun, written: &[PathBuf], area_load: Option<&AreaLoad>) -> String {
     let s = &run.summary;
     let d = s.dissipation;
-    serde_json::json!({
+    let mut v = serde_json::json!({
         "mean_cof": s.mean_cof,
         "mean_friction_force": s.mean_friction_force,
         "normal_load": s.normal_load,
@@ -115,8 +132,182 @@ fn summary_json(run: &SlideRun, written: &[PathBuf]) -> String {
         "distance": s.distance,
         "steps": s.steps,
         "files": written.iter().map(|p| p.display().to_string()).collect::<Vec<_>>(),
-    })
-    .to_string()
+    });
+    if let Some(a) = area_load {
+        v["area_load"] = serde_json::json!({
+            "source": if a.sweep { "load_sweep" } else { "steps" },
+            "loads": a.points.iter().map(|p| p.0).collect::<Vec<_>>(),
+            "areas": a.points.iter().map(|p| p.1).collect::<Vec<_>>(),
+            "slope": a.fit.slope,
+            "intercept": a.fit.intercept,
+            "r_squared": a.fit.r_squared,
+        });
+    }
+    v.to_string()
+}
+
+/// Least-squares line y = slope·x + intercept and its R² (NaN when x or y
+/// does not vary).
+struct Fit {
+    slope: f64,
+    intercept: f64,
+    r_squared: f64,
+}
+
+fn fit(points: &[(f64, f64)]) -> Fit {
+    let varies = |f: fn(&(f64, f64)) -> f64| {
+        let first = points.first().map(f);
+        points.iter().any(|p| Some(f(p)) != first)
+    };
+    if !varies(|p| p.0) {
+        // One load (a fixed-load run): no line, whatever the rounding of
+        // the mean would make of it.
+        return Fit {
+            slope: f64::NAN,
+            intercept: f64::NAN,
+            r_squared: f64::NAN,
+        };
+    }
+    let y_varies = varies(|p| p.1);
+    let n = points.len() as f64;
+    let mx = points.iter().map(|p| p.0).sum::<f64>() / n;
+    let my = points.iter().map(|p| p.1).sum::<f64>() / n;
+    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
+    for &(x, y) in points {
+        sxy += (x - mx) * (y - my);
+        sxx += (x - mx) * (x - mx);
+        syy += (y - my) * (y - my);
+    }
+    let slope = sxy / sxx;
+    Fit {
+        slope,
+        intercept: my - slope * mx,
+        r_squared: if y_varies {
+            sxy * sxy / (sxx * syy)
+        } else {
+            f64::NAN
+        },
+    }
+}
+
+/// Points (normal load N, true contact area m²) and their fit.
+struct AreaLoad {
+    /// Whether the points come from the scene's load sweep (else: steps).
+    sweep: bool,
+    points: Vec<(f64, f64)>,
+    fit: Fit,
+}
+
+fn area_load_data(scene: &Scene, slider: &Slider, run: &SlideRun) -> Res<AreaLoad> {
+    let (sweep, points) = match scene.sweep_loads(slider) {
+        Some(loads) => {
+            let mut pts = Vec::with_capacity(loads.len());
+            for load in loads {
+                let r = slider
+                    .with_loading(Loading::FixedLoad { load })
+                    .map_err(|e| format!("load_sweep: {e}"))?
+                    .slide(scene.sliding.distance, scene.sliding.step)?;
+                pts.push((r.summary.normal_load, r.summary.mean_true_contact_area));
+            }
+            (true, pts)
+        }
+        None => (
+            false,
+            run.steps
+                .iter()
+                .map(|r| (r.normal_load, r.true_contact_area))
+                .collect(),
+        ),
+    };
+    let fit = fit(&points);
+    Ok(AreaLoad { sweep, points, fit })
+}
+
+fn area_load_plot(path: &Path, data: &AreaLoad) -> Res<()> {
+    // Plot in mN and µm².
+    let pts: Vec<(f64, f64)> = data
+        .points
+        .iter()
+        .map(|&(p, a)| (p * 1e3, a * 1e12))
+        .collect();
+    let f = &data.fit;
+    let line = |x: f64| f.slope * 1e9 * x + f.intercept * 1e12;
+    let lo = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+    let hi = pts.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+    let (x0, x1) = if hi > lo {
+        (lo.min(0.0), hi + 0.05 * (hi - lo.min(0.0)))
+    } else {
+        // One load only: centre it.
+        let w = (lo.abs() * 0.1).max(1e-3);
+        (lo - w, lo + w)
+    };
+    let mut ys: Vec<f64> = pts.iter().map(|p| p.1).collect();
+    if f.slope.is_finite() {
+        ys.extend([line(x0), line(x1)]);
+    }
+    let y0 = ys.iter().copied().fold(0.0, f64::min);
+    let top = ys.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let y1 = if top > y0 {
+        top + 0.05 * (top - y0)
+    } else {
+        y0 + 1.0
+    };
+    let title = if f.r_squared.is_finite() {
+        format!(
+            "True contact area against load: A = {:.4e} m²/N · P {:+.3e} m², R² = {:.5}",
+            f.slope, f.intercept, f.r_squared
+        )
+    } else if f.slope.is_finite() {
+        "True contact area against load (constant area: R² undefined)".to_string()
+    } else {
+        "True contact area against load (one load: no fit)".to_string()
+    };
+    let mut buf = String::new();
+    {
+        let root = SVGBackend::with_string(&mut buf, (900, 500)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 18))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x0..x1, y0..y1)?;
+        chart
+            .configure_mesh()
+            .x_desc("normal load (mN)")
+            .y_desc("true contact area (µm²)")
+            .draw()?;
+        let label = if data.sweep {
+            "mean over a slide, per load"
+        } else {
+            "per increment"
+        };
+        chart
+            .draw_series(
+                pts.iter()
+                    .map(|&(x, y)| Circle::new((x, y), 4, BLUE.filled())),
+            )?
+            .label(label)
+            .legend(|(x, y)| Circle::new((x + 9, y), 4, BLUE.filled()));
+        if f.slope.is_finite() {
+            // The fit in plot units: A[µm²] = slope·1e9 · P[mN] + intercept·1e12.
+            chart
+                .draw_series(LineSeries::new(
+                    [(x0, line(x0)), (x1, line(x1))],
+                    RED.stroke_width(2),
+                ))?
+                .label("least-squares line")
+                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], RED.stroke_width(2)));
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .draw()?;
+        root.present()?;
+    }
+    std::fs::write(path, buf).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(())
 }
 
 fn write_csv(path: &Path, steps: &[SlideStep]) -> Res<()> {

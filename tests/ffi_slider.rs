@@ -1,0 +1,556 @@
+//! The C ABI of the slider step, called from Rust: a slider built from scene
+//! JSON (with `base_dir` for the files a scene names), sizes, equality of
+//! the scalar and block steps with the Rust API (bit for bit, in place and
+//! separate), NULL pointers, bad input (status and the message of
+//! `asperity_last_error_message`), and outputs untouched on failure.
+
+use asperity::ffi::slider::*;
+use asperity::ffi::*;
+use asperity::friction::{
+    Loading, Slider, SliderIncrement, SliderResponse, SliderStates, SliderTangents,
+};
+use asperity::scene::Scene;
+use std::ffi::CString;
+use std::path::{Path, PathBuf};
+use std::ptr::{null, null_mut};
+
+fn last_message() -> String {
+    unsafe {
+        let n = asperity_last_error_message(null_mut(), 0);
+        let mut buf = vec![0u8; n + 1];
+        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
+        String::from_utf8(buf[..n].to_vec()).unwrap()
+    }
+}
+
+#[track_caller]
+fn expect_error(status: i32, code: i32, what: &str) {
+    let msg = last_message();
+    assert_eq!(status, code, "status (message: {msg})");
+    assert!(msg.contains(what), "message `{msg}` should name {what}");
+}
+
+fn scene_path() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/chapter6_copper.json")
+}
+
+fn scene_text() -> String {
+    std::fs::read_to_string(scene_path()).unwrap()
+}
+
+struct Handles {
+    slider: *mut AsperitySlider,
+    work: *mut AsperitySliderWork,
+}
+
+impl Drop for Handles {
+    fn drop(&mut self) {
+        unsafe {
+            asperity_slider_work_free(self.work);
+            asperity_slider_free(self.slider);
+        }
+    }
+}
+
+fn from_json(text: &str, base: Option<&Path>) -> (i32, *mut AsperitySlider) {
+    let base = base.map(|b| CString::new(b.to_str().unwrap()).unwrap());
+    let mut h = null_mut();
+    let st = unsafe {
+        asperity_slider_from_scene_json(
+            text.as_ptr().cast(),
+            text.len(),
+            base.as_ref().map_or(null(), |b| b.as_ptr()),
+            &mut h,
+        )
+    };
+    (st, h)
+}
+
+fn handles() -> Handles {
+    let (st, slider) = from_json(&scene_text(), None);
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    assert!(!slider.is_null());
+    let mut work = null_mut();
+    let st = unsafe { asperity_slider_work_new(slider, &mut work) };
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    Handles { slider, work }
+}
+
+fn rust_slider() -> Slider {
+    Scene::from_file(scene_path()).unwrap().build().unwrap()
+}
+
+fn same(a: &SliderResponse, b: &SliderResponse) -> bool {
+    format!("{a:?}") == format!("{b:?}")
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+#[test]
+fn sizes_and_info_match_the_rust_slider() {
+    let h = handles();
+    let rs = rust_slider();
+    let mut n = 0usize;
+    assert_eq!(
+        unsafe { asperity_slider_state_size(h.slider, &mut n) },
+        ASPERITY_OK
+    );
+    assert_eq!(n, 8 + 2 * 90);
+    assert_eq!(n, rs.state_len());
+    let mut info = AsperitySliderInfo::default();
+    assert_eq!(
+        unsafe { asperity_slider_info(h.slider, &mut info) },
+        ASPERITY_OK
+    );
+    assert_eq!(info.state_size, n);
+    assert_eq!(info.rods, 90);
+    assert_eq!(info.nano_per_rod, 10);
+    assert_eq!(info.counter_samples, 241);
+    assert_eq!(info.capacity, rs.capacity());
+    assert_eq!(info.nominal_area, 90.0 * 1.5e-6 * 13.5e-6);
+    assert!((info.nominal_area - rs.nominal_area()).abs() <= 1e-12 * info.nominal_area);
+    assert_eq!((info.rod_width, info.depth), (1.5e-6, 1.35e-5));
+    assert_eq!(info.scene_control, ASPERITY_SLIDER_CONTROL_LOAD);
+    assert_eq!(info.scene_loading, 0.18);
+    assert_eq!(info.periodic, 0);
+    assert_eq!(info.counter_dx, 1.5e-6);
+}
+
+#[test]
+fn scalar_step_equals_the_rust_api_bit_for_bit() {
+    let h = handles();
+    let rs = rust_slider();
+    let m = rs.state_len();
+    let mut w = rs.work();
+    let mut c_state = vec![0.0; m];
+    let mut c_new = vec![0.0; m];
+    let mut r_state = vec![0.0; m];
+    for k in 0..12 {
+        let th = 0.4 * k as f64;
+        let control = [
+            ASPERITY_SLIDER_CONTROL_SCENE,
+            ASPERITY_SLIDER_CONTROL_LOAD,
+            ASPERITY_SLIDER_CONTROL_GAP,
+        ][k % 3];
+        let inc = AsperitySliderIncrement {
+            normal_force: 0.05 + 0.01 * k as f64,
+            gap: -2e-7,
+            slip: [1.5e-6 * th.cos(), 1.5e-6 * th.sin()],
+            dt: 1e-4,
+            control,
+            tangents: (k % 4) as i32,
+        };
+        let rinc = SliderIncrement {
+            loading: match control {
+                ASPERITY_SLIDER_CONTROL_SCENE => None,
+                ASPERITY_SLIDER_CONTROL_LOAD => Some(Loading::FixedLoad {
+                    load: inc.normal_force,
+                }),
+                _ => Some(Loading::FixedGap { position: inc.gap }),
+            },
+            slip: inc.slip,
+            dt: inc.dt,
+            tangents: SliderTangents::from_bits(inc.tangents).unwrap(),
+        };
+        let mut out = SliderResponse::default();
+        let st = unsafe {
+            asperity_slider_step(
+                h.slider,
+                h.work,
+                &inc,
+                c_state.as_ptr(),
+                c_new.as_mut_ptr(),
+                &mut out,
+            )
+        };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        let want = rs.step_flat_in_place(&mut r_state, &rinc, &mut w).unwrap();
+        assert!(same(&out, &want), "{k}: {out:?}\n{want:?}");
+        assert_eq!(bits(&c_new), bits(&r_state), "{k}");
+        assert_eq!(out.tangents, inc.tangents);
+        assert!(out.dissipated >= 0.0);
+        // In place gives the same.
+        let mut out2 = SliderResponse::default();
+        let st = unsafe {
+            asperity_slider_step(
+                h.slider,
+                h.work,
+                &inc,
+                c_state.as_ptr(),
+                c_state.as_mut_ptr(),
+                &mut out2,
+            )
+        };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        assert!(same(&out, &out2));
+        assert_eq!(bits(&c_state), bits(&c_new));
+    }
+}
+
+#[test]
+fn block_step_equals_the_rust_block_and_steps_in_place() {
+    let h = handles();
+    let rs = rust_slider();
+    let m = rs.state_len();
+    let n = 3;
+    let normal = [0.03, 0.12, 0.25];
+    let mut w = rs.work();
+    let mut c_states = vec![0.0; n * m];
+    let mut r_states = vec![0.0; n * m];
+    c_states[2 * m + ASPERITY_SLIDER_STATE_POSITION] = 30e-6;
+    r_states[2 * m + Slider::STATE_POSITION] = 30e-6;
+    let mut c_sep = vec![0.0; n * m];
+    for k in 0..5 {
+        let slip: Vec<f64> = (0..2 * n).map(|j| 1e-6 * ((j + k) as f64).sin()).collect();
+        let (mut cf, mut cd, mut rf, mut rd) = ([0.0; 6], [0.0; 3], [0.0; 6], [0.0; 3]);
+        let mut cf2 = [0.0; 6];
+        let st = unsafe {
+            asperity_slider_step_block(
+                h.slider,
+                h.work,
+                n,
+                normal.as_ptr(),
+                slip.as_ptr(),
+                1e-4,
+                c_states.as_ptr(),
+                c_sep.as_mut_ptr(),
+                cf2.as_mut_ptr(),
+                null_mut(),
+            )
+        };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        let st = unsafe {
+            asperity_slider_step_block(
+                h.slider,
+                h.work,
+                n,
+                normal.as_ptr(),
+                slip.as_ptr(),
+                1e-4,
+                c_states.as_ptr(),
+                c_states.as_mut_ptr(),
+                cf.as_mut_ptr(),
+                cd.as_mut_ptr(),
+            )
+        };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        rs.step_flat_block(
+            &normal,
+            &slip,
+            1e-4,
+            SliderStates::InPlace(&mut r_states),
+            &mut rf,
+            Some(&mut rd),
+            &mut w,
+        )
+        .unwrap();
+        assert_eq!(bits(&cf), bits(&rf));
+        assert_eq!(bits(&cf2), bits(&rf));
+        assert_eq!(bits(&cd), bits(&rd));
+        assert_eq!(bits(&c_states), bits(&r_states));
+        assert_eq!(bits(&c_sep), bits(&r_states));
+    }
+    // n = 0 does nothing, even with NULL arrays.
+    let st = unsafe {
+        asperity_slider_step_block(
+            h.slider,
+            h.work,
+            0,
+            null(),
+            null(),
+            0.0,
+            null(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+        )
+    };
+    assert_eq!(st, ASPERITY_OK);
+}
+
+#[test]
+fn errors_name_the_argument_and_leave_outputs_untouched() {
+    let h = handles();
+    let m = rust_slider().state_len();
+    let old = vec![0.0; m];
+    let mut new = vec![-3.0; m];
+    let mut out = SliderResponse {
+        cof: -5.0,
+        ..SliderResponse::default()
+    };
+    let inc = AsperitySliderIncrement {
+        slip: [1e-6, 0.0],
+        ..AsperitySliderIncrement::default()
+    };
+    let step = |inc: &AsperitySliderIncrement,
+                old: *const f64,
+                new: *mut f64,
+                out: *mut SliderResponse| unsafe {
+        asperity_slider_step(h.slider, h.work, inc, old, new, out)
+    };
+    // NULL pointers.
+    let p_new = new.as_mut_ptr();
+    expect_error(
+        unsafe { asperity_slider_step(null(), h.work, &inc, old.as_ptr(), p_new, &mut out) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`slider`",
+    );
+    expect_error(
+        unsafe { asperity_slider_step(h.slider, null_mut(), &inc, old.as_ptr(), p_new, &mut out) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`work`",
+    );
+    expect_error(
+        step(&inc, null(), p_new, &mut out),
+        ASPERITY_ERR_NULL_POINTER,
+        "`old_state`",
+    );
+    expect_error(
+        step(&inc, old.as_ptr(), null_mut(), &mut out),
+        ASPERITY_ERR_NULL_POINTER,
+        "`new_state`",
+    );
+    expect_error(
+        step(&inc, old.as_ptr(), p_new, null_mut()),
+        ASPERITY_ERR_NULL_POINTER,
+        "`out`",
+    );
+    expect_error(
+        unsafe { asperity_slider_step(h.slider, h.work, null(), old.as_ptr(), p_new, &mut out) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`increment`",
+    );
+    // Selectors and values.
+    let bad = |f: &dyn Fn(&mut AsperitySliderIncrement)| {
+        let mut i = inc;
+        f(&mut i);
+        i
+    };
+    let p_new = new.as_mut_ptr();
+    expect_error(
+        step(&bad(&|i| i.control = 7), old.as_ptr(), p_new, &mut out),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`control`",
+    );
+    expect_error(
+        step(&bad(&|i| i.tangents = 4), old.as_ptr(), p_new, &mut out),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`tangents`",
+    );
+    expect_error(
+        step(
+            &bad(&|i| i.slip[1] = f64::NAN),
+            old.as_ptr(),
+            p_new,
+            &mut out,
+        ),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`slip`",
+    );
+    expect_error(
+        step(&bad(&|i| i.dt = -1.0), old.as_ptr(), p_new, &mut out),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`dt`",
+    );
+    expect_error(
+        step(
+            &bad(&|i| {
+                i.control = ASPERITY_SLIDER_CONTROL_LOAD;
+                i.normal_force = 1e3;
+            }),
+            old.as_ptr(),
+            p_new,
+            &mut out,
+        ),
+        ASPERITY_ERR_OUT_OF_DOMAIN,
+        "`normal_force`",
+    );
+    expect_error(
+        step(
+            &bad(&|i| {
+                i.control = ASPERITY_SLIDER_CONTROL_GAP;
+                i.gap = f64::INFINITY;
+            }),
+            old.as_ptr(),
+            p_new,
+            &mut out,
+        ),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`gap`",
+    );
+    let mut flagged = old.clone();
+    flagged[ASPERITY_SLIDER_STATE_FLAG] = 3.0;
+    expect_error(
+        step(&inc, flagged.as_ptr(), p_new, &mut out),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`old_state.flag`",
+    );
+    // Past the end of the counter-surface.
+    expect_error(
+        step(
+            &bad(&|i| i.slip = [1e-3, 0.0]),
+            old.as_ptr(),
+            p_new,
+            &mut out,
+        ),
+        ASPERITY_ERR_OUT_OF_DOMAIN,
+        "`position`",
+    );
+    // States that partially overlap.
+    let mut both = vec![0.0; 2 * m];
+    let p = both.as_mut_ptr();
+    expect_error(
+        step(&inc, p, unsafe { p.add(3) }, &mut out),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`new_state`",
+    );
+    assert!(new.iter().all(|&x| x == -3.0), "new_state untouched");
+    assert_eq!(out.cof, -5.0, "out untouched");
+    assert_eq!(both, vec![0.0; 2 * m]);
+
+    // Block: an error at element 1 names it; element 0 written, 1.. not.
+    let normal = [0.1, 1e3, 0.1];
+    let slip = [1e-6; 6];
+    let mut states = vec![0.0; 3 * m];
+    let mut f = [7.0; 6];
+    let st = unsafe {
+        asperity_slider_step_block(
+            h.slider,
+            h.work,
+            3,
+            normal.as_ptr(),
+            slip.as_ptr(),
+            0.0,
+            states.as_ptr(),
+            states.as_mut_ptr(),
+            f.as_mut_ptr(),
+            null_mut(),
+        )
+    };
+    expect_error(st, ASPERITY_ERR_OUT_OF_DOMAIN, "element 1");
+    assert!(last_message().contains("`normal_force`"));
+    assert_eq!(states[ASPERITY_SLIDER_STATE_FLAG], 1.0);
+    assert!(states[m..].iter().all(|&x| x == 0.0));
+    assert_ne!(f[0], 7.0);
+    assert_eq!(f[2..], [7.0; 4]);
+    let p = states.as_mut_ptr();
+    let st = unsafe {
+        asperity_slider_step_block(
+            h.slider,
+            h.work,
+            2,
+            normal.as_ptr(),
+            slip.as_ptr(),
+            0.0,
+            p,
+            p.add(m),
+            f.as_mut_ptr(),
+            null_mut(),
+        )
+    };
+    expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "`new_states`");
+    let st = unsafe {
+        asperity_slider_step_block(
+            h.slider,
+            h.work,
+            1,
+            null(),
+            slip.as_ptr(),
+            0.0,
+            p,
+            p,
+            f.as_mut_ptr(),
+            null_mut(),
+        )
+    };
+    expect_error(st, ASPERITY_ERR_NULL_POINTER, "`normal_force`");
+    // Sizes and handles.
+    let mut n = 0usize;
+    expect_error(
+        unsafe { asperity_slider_state_size(null(), &mut n) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`slider`",
+    );
+    expect_error(
+        unsafe { asperity_slider_state_size(h.slider, null_mut()) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`n`",
+    );
+    let mut w = null_mut();
+    expect_error(
+        unsafe { asperity_slider_work_new(null(), &mut w) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`slider`",
+    );
+    assert!(w.is_null());
+    unsafe {
+        asperity_slider_free(null_mut());
+        asperity_slider_work_free(null_mut());
+    }
+}
+
+#[test]
+fn scene_json_errors_and_base_dir() {
+    let good = scene_text();
+    // Syntax: a parse error with the line.
+    let (st, h) = from_json("{\n  \"material\": ", None);
+    expect_error(st, ASPERITY_ERR_PARSE, "`json`");
+    assert!(h.is_null());
+    assert!(last_message().contains("line 2"), "{}", last_message());
+    // Unknown field: named.
+    let (st, _) = from_json(&good.replacen("\"outputs\"", "\"output\"", 1), None);
+    expect_error(st, ASPERITY_ERR_PARSE, "unknown field `output`");
+    // A value outside its domain: the field and the bound.
+    let (st, _) = from_json(&good.replace("\"load\": 0.18", "\"load\": 99"), None);
+    expect_error(st, ASPERITY_ERR_OUT_OF_DOMAIN, "`load`");
+    // Not UTF-8.
+    let bytes = b"{\xff}";
+    let mut h = null_mut();
+    let st = unsafe { asperity_slider_from_scene_json(bytes.as_ptr().cast(), 3, null(), &mut h) };
+    expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "`json`");
+    let st = unsafe { asperity_slider_from_scene_json(null(), 0, null(), &mut h) };
+    expect_error(st, ASPERITY_ERR_NULL_POINTER, "`json`");
+    let st = unsafe {
+        asperity_slider_from_scene_json(good.as_ptr().cast(), good.len(), null(), null_mut())
+    };
+    expect_error(st, ASPERITY_ERR_NULL_POINTER, "`out`");
+
+    // A scene naming a profile file: relative to base_dir, or to the
+    // current directory without it.
+    let dir = std::env::temp_dir().join(format!("asperity-ffi-slider-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv: String = (0..300)
+        .map(|j| {
+            let x = j as f64 * 1.5e-6;
+            format!(
+                "{x:e},{:e}\n",
+                4e-7 * (x * 2.0e5).sin() + 2e-7 * (x * 7.1e5).cos()
+            )
+        })
+        .collect();
+    let name = "ffi_slider_counter_profile.csv";
+    std::fs::write(dir.join(name), csv).unwrap();
+    let counter = "{ \"hurst\": 0.8, \"rq\": 5e-7, \"roll_off_wavelength\": 1e-4, \"points\": 241, \"dx\": 1.5e-6, \"seed\": 7 }";
+    assert!(good.contains(counter));
+    let with_file = good
+        .replace(counter, &format!("{{ \"path\": \"{name}\" }}"))
+        .replacen("\"self_affine\": { \"path", "\"file\": { \"path", 1);
+    assert!(with_file.contains("\"file\""), "{with_file}");
+    let (st, h) = from_json(&with_file, Some(&dir));
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    let mut info = AsperitySliderInfo::default();
+    assert_eq!(unsafe { asperity_slider_info(h, &mut info) }, ASPERITY_OK);
+    assert_eq!(info.counter_samples, 300);
+    // The same through the Rust scene API.
+    let rs = Scene::from_json(&with_file, &dir).unwrap().build().unwrap();
+    assert_eq!(info.capacity, rs.capacity());
+    let rs_counter = rs.counter().to_vec();
+    unsafe { asperity_slider_free(h) };
+    assert_eq!(rs_counter.len(), 300);
+    let (st, h) = from_json(&with_file, None);
+    expect_error(st, ASPERITY_ERR_IO, name);
+    assert!(h.is_null());
+    let _ = std::fs::remove_dir_all(&dir);
+}

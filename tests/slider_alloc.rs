@@ -1,0 +1,135 @@
+//! The flat slider step allocates nothing once its `SliderWork` exists
+//! (DESIGN.md: the hot path does not allocate): a counting global allocator,
+//! in its own test binary, around `Slider::step_flat`, `step_flat_in_place`
+//! (with tangents, zero slip, a fresh state seated inside the call) and
+//! `step_flat_block`.
+
+use asperity::friction::{Loading, SliderIncrement, SliderStates, SliderTangents};
+use asperity::scene::Scene;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+use std::path::Path;
+
+struct Counting;
+thread_local! {
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+fn allocations() -> usize {
+    ALLOCATIONS.with(|c| c.get())
+}
+
+#[test]
+fn flat_step_does_not_allocate() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/chapter6_copper.json");
+    let slider = Scene::from_file(path).unwrap().build().unwrap();
+    let m = slider.state_len();
+    let mut work = slider.work();
+    let mut a = vec![0.0; m];
+    let mut b = vec![0.0; m];
+    let along = SliderIncrement {
+        loading: None,
+        slip: [1.5e-6, 0.0],
+        dt: 1e-3,
+        tangents: SliderTangents::default(),
+    };
+    let oblique = SliderIncrement {
+        loading: Some(Loading::FixedLoad { load: 0.1 }),
+        slip: [0.8e-6, -1.1e-6],
+        dt: 1e-3,
+        tangents: SliderTangents::all(),
+    };
+    let gap = SliderIncrement {
+        loading: Some(Loading::FixedGap { position: 1e-7 }),
+        tangents: SliderTangents::all(),
+        ..along
+    };
+    // The first call with this work (a fresh state: seated inside).
+    slider.step_flat(&a, &mut b, &along, &mut work).unwrap();
+    core::mem::swap(&mut a, &mut b);
+
+    let before = allocations();
+    for k in 0..40 {
+        let inc = match k % 4 {
+            0 => along,
+            1 => oblique,
+            2 => gap,
+            _ => SliderIncrement::default(), // zero slip
+        };
+        let r = slider.step_flat(&a, &mut b, &inc, &mut work).unwrap();
+        assert!(r.dissipated >= 0.0);
+        core::mem::swap(&mut a, &mut b);
+        slider
+            .step_flat_in_place(&mut a, &along, &mut work)
+            .unwrap();
+    }
+    // A fresh state seated inside the call, and an error path.
+    b.iter_mut().for_each(|x| *x = 0.0);
+    slider
+        .step_flat_in_place(&mut b, &oblique, &mut work)
+        .unwrap();
+    let bad = SliderIncrement {
+        slip: [f64::NAN, 0.0],
+        ..along
+    };
+    assert!(slider.step_flat(&a, &mut b, &bad, &mut work).is_err());
+    assert_eq!(allocations() - before, 0, "Slider::step_flat allocated");
+
+    // The block step.
+    let n = 4;
+    let normal = [0.02, 0.05, 0.1, 0.2];
+    let slip = [1e-6, 0.0, 0.0, 1e-6, -1e-6, 0.5e-6, 0.7e-6, -0.7e-6];
+    let mut states = vec![0.0; n * m];
+    let mut new = vec![0.0; n * m];
+    let mut force = [0.0; 8];
+    let mut diss = [0.0; 4];
+    let before = allocations();
+    for _ in 0..10 {
+        slider
+            .step_flat_block(
+                &normal,
+                &slip,
+                1e-3,
+                SliderStates::InPlace(&mut states),
+                &mut force,
+                Some(&mut diss),
+                &mut work,
+            )
+            .unwrap();
+        slider
+            .step_flat_block(
+                &normal,
+                &slip,
+                1e-3,
+                SliderStates::Separate {
+                    old: &states,
+                    new: &mut new,
+                },
+                &mut force,
+                None,
+                &mut work,
+            )
+            .unwrap();
+    }
+    assert_eq!(
+        allocations() - before,
+        0,
+        "Slider::step_flat_block allocated"
+    );
+    assert!(force.iter().all(|f| f.is_finite()));
+}
