@@ -61,6 +61,9 @@ const TYPES: &[TypeLayout] = layouts![
     "AsperityRoughness" => super::surface::AsperityRoughness,
     "AsperityHurstFit" => super::surface::AsperityHurstFit,
     "AsperityPeakStatistics" => super::surface::AsperityPeakStatistics,
+    "AsperitySliderIncrement" => super::slider::AsperitySliderIncrement,
+    "AsperitySliderInfo" => super::slider::AsperitySliderInfo,
+    "AsperitySliderResponse" => crate::friction::SliderResponse,
 ];
 
 /// The size `*size` and alignment `*align` in bytes of the `repr(C)` type
