@@ -27,6 +27,27 @@
 //! per `eval`, median of repeated passes over the path); the choice itself
 //! uses the fixed cost order of [`Fidelity::ALL`], so it does not depend on
 //! timing noise.
+//!
+//! # Formulas
+//!
+//! $$e_\mathrm{pull\text{-}off} = \bigl\lvert P_c^\mathrm{model} - P_c^\mathrm{LJ}\bigr\rvert, \qquad e_\mathrm{curve} = \max_{\delta\ \text{on the path}}\bigl\lvert P^\mathrm{model}(\delta) - P^\mathrm{LJ}(\delta)\bigr\rvert,$$
+//!
+//! with the Maugis–Dugdale stress $\sigma_0 = 16w/(9\sqrt3\\, z_0)$, so that
+//! $\lambda = 1.157\\,\mu$, $\mu = (Rw^2/(E^{\ast 2}z_0^3))^{1/3}$.
+//!
+//! # References
+//!
+//! * B. V. Derjaguin, V. M. Muller, Yu. P. Toporov (1975), J. Colloid Interface
+//!   Sci. 53, 314–326,
+//!   [doi:10.1016/0021-9797(75)90018-1](https://doi.org/10.1016/0021-9797(75)90018-1).
+//! * K. L. Johnson, K. Kendall, A. D. Roberts (1971), Proc. R. Soc. Lond. A 324,
+//!   301–313, [doi:10.1098/rspa.1971.0141](https://doi.org/10.1098/rspa.1971.0141).
+//! * D. Maugis (1992), J. Colloid Interface Sci. 150, 243–269,
+//!   [doi:10.1016/0021-9797(92)90285-T](https://doi.org/10.1016/0021-9797(92)90285-T).
+//! * J. A. Greenwood (1997), Proc. R. Soc. Lond. A 453, 1277–1297,
+//!   [doi:10.1098/rspa.1997.0070](https://doi.org/10.1098/rspa.1997.0070).
+//! * W. G. Lee, W. W. F. Chong (2015), Jurnal Teknologi 76(10) (seed 001).
+//! * Thesis (1-41)–(1-44).
 
 use crate::contact::{
     ContactState, Control, Dmt, Jkr, LjSphere, MaugisDugdale, NormalContact, TabulatedLaw,

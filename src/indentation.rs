@@ -43,6 +43,39 @@
 //! the correlation between α, h_f and m). Systematic errors — the area
 //! function, β, ε, thermal drift, frame compliance, surface detection — are not
 //! in them.
+//!
+//! # Formulas
+//!
+//! Hardness numbers (2-7)–(2-12), ball diameter $D$, impression diameter (or
+//! Vickers mean diagonal) $d$:
+//!
+//! $$\mathrm{BHN} = \frac{2P}{\pi D\bigl(D - \sqrt{D^2 - d^2}\bigr)}, \qquad H_M = \frac{4P}{\pi d^2}, \qquad \mathrm{LHN} = \frac{4P}{\sqrt2\\,\pi d^2}, \qquad \mathrm{HV} = \frac{2P\sin 68^\circ}{d^2} .$$
+//!
+//! Loading branch and rescaling (3-20), (3-26):
+//!
+//! $$\ln\frac{P}{P_1} = m_l\ln\frac{\delta}{\delta_1}, \qquad m_l = \frac{2+\kappa(d-1)}{d}, \qquad \kappa = \frac{d\\,m_l - 2}{d-1}, \qquad d = \frac{2-\kappa}{m_l - \kappa} .$$
+//!
+//! Unloading (Oliver & Pharr 1992), with $\varepsilon = 0.75$:
+//!
+//! $$P = \alpha(h - h_f)^m, \quad d = \frac{1}{m-1}, \quad S = \alpha m (h_\mathrm{max} - h_f)^{m-1}, \quad h_c = h_\mathrm{max} - \varepsilon\frac{P_\mathrm{max}}{S},$$
+//!
+//! $$E_r = \frac{\sqrt\pi}{2\beta}\frac{S}{\sqrt{A(h_c)}}, \qquad H = \frac{P_\mathrm{max}}{A(h_c)}, \qquad \frac{1}{E_r} = \frac{1-\nu^2}{E} + \frac{1-\nu_i^2}{E_i}, \qquad S = 2E^\ast a \ \ \text{(BASh, (2-13))}.$$
+//!
+//! # References
+//!
+//! * Thesis chapter 2 ((2-13)–(2-15)), chapter 3 ((3-20), (3-21), (3-26), §3.6).
+//! * W. C. Oliver, G. M. Pharr (1992), "An improved technique for determining
+//!   hardness and elastic modulus using load and displacement sensing
+//!   indentation experiments", J. Mater. Res. 7, 1564–1583,
+//!   [doi:10.1557/JMR.1992.1564](https://doi.org/10.1557/JMR.1992.1564).
+//! * W. C. Oliver, G. M. Pharr (2004), "Measurement of hardness and elastic
+//!   modulus by instrumented indentation: advances in understanding and
+//!   refinements to methodology", J. Mater. Res. 19, 3–20,
+//!   [doi:10.1557/jmr.2004.19.1.3](https://doi.org/10.1557/jmr.2004.19.1.3).
+//! * S. I. Bulychev, V. P. Alekhin, M. Kh. Shorshorov, A. P. Ternovskii,
+//!   G. D. Shnyrev (1975), the BASh relation (Zavod. Lab. 41, in Russian).
+//! * F. M. Borodich (1993), Int. J. Solids Struct. 30, 1513–1526 (rescaling);
+//!   B. A. Galanov (1981) (effective shape of unloading), as cited by the thesis.
 
 // `!(x > 0.0)` is deliberate throughout: it rejects NaN as well.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]

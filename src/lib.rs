@@ -36,7 +36,24 @@
 //! Equation numbers "(1-37)" refer to the PhD thesis on multi-scale dry
 //! friction that seeds this project; `REFERENCE.md` in the project's shared
 //! folder restores its formulas. Each law's documentation cites its equation
-//! and the original paper.
+//! and the original paper, and ends with a *References* section.
+//!
+//! ## Reading the formulas
+//!
+//! The module docs write their formulas in LaTeX, rendered by KaTeX from
+//! `docs/katex-header.html` (docs.rs passes it through
+//! `[package.metadata.docs.rs]`). A local build needs the header on the
+//! command line, for this crate only:
+//!
+//! ```text
+//! RUSTDOCFLAGS="--html-in-header docs/katex-header.html" cargo doc --no-deps --open
+//! ```
+//!
+//! (`scripts/check-docs.sh` does this and fails on any rustdoc warning.)
+//! The header is not set in `.cargo/config.toml`: cargo would pass it to
+//! every dependency documented by a plain `cargo doc`, where the relative
+//! path does not resolve. Without the header the formulas show as their
+//! LaTeX source, for example $P = \tfrac43 E^\ast R^{1/2}\delta^{3/2}$.
 
 #![deny(missing_docs)]
 

@@ -4,6 +4,39 @@
 //! `E*` is defined by `1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂` (Johnson's convention,
 //! thesis (1-15)); JKR-era papers use `K = 4E*/3` ([`jkr_k`]); `w` is the work of
 //! adhesion (Dupré), `w = 2γ` for identical surfaces.
+//!
+//! # Formulas
+//!
+//! $$\frac{1}{E^\ast} = \frac{1-\nu_1^2}{E_1} + \frac{1-\nu_2^2}{E_2}, \qquad K = \tfrac43 E^\ast, \qquad \frac{1}{E_\mathrm{rod}} = \frac{1}{E_1} + \frac{1}{E_2},$$
+//!
+//! $$C_\mathrm{NS} = \frac{(1-\nu)\ln(3-4\nu)}{1-2\nu}, \qquad \varepsilon = \frac{\ln(3-4\nu)}{2\pi},$$
+//!
+//! $$\mu = \left(\frac{R w^2}{E^{\ast 2} z_0^3}\right)^{1/3}, \qquad \lambda = 2\sigma_0\left(\frac{R}{\pi w K^2}\right)^{1/3}, \qquad \sigma_\mathrm{th} = \frac{16w}{9\sqrt3\\, z_0}, \qquad \frac{\lambda}{\mu} = \frac{32}{9\sqrt3}\left(\frac{9}{16\pi}\right)^{1/3} \approx 1.157,$$
+//!
+//! $$\gamma = K(m,n)\\, a\\, B, \quad a = (M/\rho)^{1/3}, \quad B = \frac{E}{3(1-2\nu)}, \quad K(m,n) = \frac{1}{(m-2)(n-2)} \ \text{or}\ \frac{3}{mn}, \qquad W_{12} = \frac{A}{12\pi D_0^2} .$$
+//!
+//! # References
+//!
+//! * Thesis (1-15), (1-42)–(1-44), §4.4, (6-4)–(6-8); REFERENCE.md §1, §6.
+//! * K. L. Johnson (1985), *Contact Mechanics*, Cambridge University Press,
+//!   §4.2, [doi:10.1017/CBO9781139171731](https://doi.org/10.1017/CBO9781139171731).
+//! * D. Tabor (1977), "Surface forces and surface interactions", J. Colloid
+//!   Interface Sci. 58, 2–13.
+//! * D. Maugis (1992), "Adhesion of spheres: the JKR-DMT transition using a
+//!   Dugdale model", J. Colloid Interface Sci. 150, 243–269,
+//!   [doi:10.1016/0021-9797(92)90285-T](https://doi.org/10.1016/0021-9797(92)90285-T).
+//! * J. A. Greenwood (1997), "Adhesion of elastic spheres", Proc. R. Soc. Lond.
+//!   A 453, 1277–1297,
+//!   [doi:10.1098/rspa.1997.0070](https://doi.org/10.1098/rspa.1997.0070).
+//! * F. M. Borodich, B. A. Galanov, M. M. Suarez-Alvarez (2014), "The JKR-type
+//!   adhesive contact problems for power-law shaped axisymmetric punches",
+//!   J. Mech. Phys. Solids 68, 14–32,
+//!   [doi:10.1016/j.jmps.2014.03.003](https://doi.org/10.1016/j.jmps.2014.03.003)
+//!   (no-slip factor and ε).
+//! * G. Weir (2008), Proc. R. Soc. A 464 (surface energy from bulk moduli);
+//!   W. G. Lee, W. W. F. Chong (2015), Jurnal Teknologi 76(10) (seed 001), Eq. 4.
+//! * J. N. Israelachvili, *Intermolecular and Surface Forces*, Academic Press,
+//!   §13 (the Hamaker work of adhesion).
 
 use crate::error::{check, Error, Result};
 

@@ -56,6 +56,31 @@
 //! * The exponent of λ in (3-13) is `(2−κ)/s`; at κ = 2 the load–depth relation
 //!   does not depend on the punch scale and λ cannot be recovered from two
 //!   points ([`shape_scale_from_points`] refuses κ = 2).
+//!
+//! # Formulas
+//!
+//! With $s = 2 + \kappa(d-1)$ and $\lambda = B/B_1$:
+//!
+//! $$\delta(\lambda, P) = \lambda^{(2-\kappa)/s}\Bigl(\frac{P}{P_1}\Bigr)^{d/s}\delta_1, \qquad a(\lambda, P) = \lambda^{-\kappa/s}\Bigl(\frac{P}{P_1}\Bigr)^{1/s}a_1, \qquad P(\lambda, \delta) = \lambda^{(\kappa-2)/d}\Bigl(\frac{\delta}{\delta_1}\Bigr)^{s/d}P_1,$$
+//!
+//! $$m_l = \frac{2 + \kappa(d-1)}{d}, \qquad m_u = \frac{d+1}{d}, \qquad d = \frac{1}{m_u - 1}, \qquad \kappa = \frac{d\\,m_l - 2}{d - 1},$$
+//!
+//! $$R_2 = R_1\Bigl(\frac{P_2}{P_1}\Bigr)^2\Bigl(\frac{\delta_1}{\delta_2}\Bigr)^3, \qquad \frac{1}{R_2} = \frac{1}{R} - \frac{1}{R_\mathrm{medium}}, \qquad B_\mathrm{eff} = \cot\gamma_i - \cot\gamma_f .$$
+//!
+//! # References
+//!
+//! * Thesis chapter 3, (3-10)–(3-28); §2.5, (2-18), (2-19).
+//! * F. M. Borodich (1983), "Similarity in the problem of contact between
+//!   elastic bodies", J. Appl. Math. Mech. (PMM) 47, 440–442.
+//! * F. M. Borodich (1993), "The Hertz frictional contact between nonlinear
+//!   elastic anisotropic bodies (the similarity approach)", Int. J. Solids
+//!   Struct. 30, 1513–1526.
+//! * B. A. Galanov (1981), the self-similar contact problem and the effective
+//!   shape of the unloading branch (in Russian; as cited by the thesis, §2.5).
+//! * L. A. Galin (1946), J. Appl. Math. Mech. (PMM) 10, 425–448 (κ = 1).
+//! * H. Hertz (1882), J. reine angew. Math. 92, 156–171,
+//!   [doi:10.1515/crll.1882.92.156](https://doi.org/10.1515/crll.1882.92.156)
+//!   (κ = 1, d = 2).
 
 use crate::error::{check, Error, Result};
 

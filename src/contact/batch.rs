@@ -8,6 +8,20 @@
 //! element loop of [`eval_elementwise`]. Batch and scalar evaluation agree to
 //! rounding, and a batch is deterministic: an element's result does not depend
 //! on its position in the arrays or on the other elements.
+//!
+//! # Formulas
+//!
+//! None of its own: element $i$ of a batch is exactly the scalar evaluation
+//! $(P_i, a_i, k_i, \tilde s_i) = \mathrm{eval}(\delta_i, s_i)$ of the law, whose
+//! module gives the formula.
+//!
+//! # References
+//!
+//! * The laws' own modules (for example [`super::hertz`], [`super::jkr`]).
+//! * The batched-kernel calling convention follows libxc, `f(p, n, x[])`:
+//!   S. Lehtola, C. Steigemann, M. J. T. Oliveira, M. A. L. Marques (2018),
+//!   "Recent developments in libxc — A comprehensive library of functionals
+//!   for density functional theory", SoftwareX 7, 1–5.
 
 use super::{is_finite, overflow, ContactState, NormalContact};
 use crate::error::{Error, Result};

@@ -53,6 +53,28 @@
 //! Hermite interpolation between neighbours is accurate well below the
 //! tolerance asked of the table: the table builder picks its knots among the
 //! points and measures its error on the points it leaves out.
+//!
+//! # Formulas
+//!
+//! A curve stores reduced values and the scales that make them dimensional:
+//!
+//! $$\delta = \delta_\mathrm{origin} + \Delta\\,\delta_\mathrm{scale}, \qquad P = F\\,P_\mathrm{scale}, \qquad a = \bar a\\, a_\mathrm{scale},$$
+//!
+//! and only the ratios $dF/d\Delta = (dF/dt)/(d\Delta/dt)$,
+//! $d\bar a/d\Delta$ of its path derivatives enter the tables. At a corner
+//! after which $\Delta - \Delta_c \propto t^2$ the radius grows like
+//! $\sqrt{\Delta - \Delta_c}$.
+//!
+//! # References
+//!
+//! * The sources of the curves: D. Maugis (1992), J. Colloid Interface Sci. 150,
+//!   243–269 ([`super::maugis_dugdale`]); J. A. Greenwood (1997), Proc. R. Soc.
+//!   Lond. A 453, 1277–1297,
+//!   [doi:10.1098/rspa.1997.0070](https://doi.org/10.1098/rspa.1997.0070)
+//!   ([`super::lj_sphere`]).
+//! * The interpolation they feed: F. N. Fritsch, R. E. Carlson (1980), SIAM J.
+//!   Numer. Anal. 17, 238–246,
+//!   [doi:10.1137/0717021](https://doi.org/10.1137/0717021) ([`super::tabulated`]).
 
 use super::lj_sphere::{LjOptions, LjSolver, LjSphere};
 use super::{MaugisDugdale, NormalContact};

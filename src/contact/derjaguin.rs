@@ -60,6 +60,28 @@
 //! Evaluations never allocate. Every output is finite or the call returns an
 //! error; an overflow at an extreme overlap or load is
 //! [`Error::OutOfDomain`].
+//!
+//! # Formulas
+//!
+//! $$F(D) = 2\pi R\int_D^\infty p(z)\\,dz = 2\pi R\\, e(D), \qquad P = -2\pi R\\, e(D), \qquad \frac{dP}{d\delta} = -2\pi R\\, p(D),$$
+//!
+//! and for the Lennard-Jones 3-9 law
+//!
+//! $$p(z) = \frac{8w}{3z_0}\left(\Bigl(\frac{z_0}{z}\Bigr)^3 - \Bigl(\frac{z_0}{z}\Bigr)^9\right), \qquad e(D) = \frac{4w}{3}\left(\Bigl(\frac{z_0}{D}\Bigr)^2 - \frac{1}{4}\Bigl(\frac{z_0}{D}\Bigr)^8\right), \qquad \sigma_\mathrm{th} = \frac{16 w}{9\sqrt{3}\\, z_0} .$$
+//!
+//! # References
+//!
+//! * Thesis (1-32), (1-44).
+//! * B. V. Derjaguin (1934), "Untersuchungen über die Reibung und Adhäsion,
+//!   IV", Kolloid-Z. 69, 155–164 (the approximation).
+//! * J. A. Greenwood (1997), "Adhesion of elastic spheres", Proc. R. Soc. Lond.
+//!   A 453, 1277–1297,
+//!   [doi:10.1098/rspa.1997.0070](https://doi.org/10.1098/rspa.1997.0070).
+//! * W. G. Lee, W. W. F. Chong (2015), "Adhesive contact modelling based on
+//!   Lennard-Jones force law", Jurnal Teknologi 76(10) (seed 001), Eq. 1.
+//! * D. Maugis (1992), J. Colloid Interface Sci. 150, 243–269,
+//!   [doi:10.1016/0021-9797(92)90285-T](https://doi.org/10.1016/0021-9797(92)90285-T)
+//!   (the Dugdale step).
 
 use super::{check_delta, check_force, ContactState, Control, NormalContact, NormalResponse};
 use crate::error::{check, Error, Result};

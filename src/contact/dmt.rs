@@ -6,6 +6,22 @@
 //! (δ < 0) the force is zero (the range of the surface forces is neglected).
 //! Pull-off is `−2πwR` under both controls. The limit λ → 0 of
 //! [`super::MaugisDugdale`].
+//!
+//! # Formulas
+//!
+//! $$P(\delta) = \tfrac{4}{3} E^\ast R^{1/2} \delta^{3/2} - 2\pi w R \quad (\delta \ge 0), \qquad P = 0 \quad (\delta < 0),$$
+//!
+//! $$a = \sqrt{R\delta}, \qquad P_c = -2\pi w R .$$
+//!
+//! # References
+//!
+//! * Thesis (1-41).
+//! * B. V. Derjaguin, V. M. Muller, Yu. P. Toporov (1975), "Effect of contact
+//!   deformations on the adhesion of particles", J. Colloid Interface Sci. 53,
+//!   314–326,
+//!   [doi:10.1016/0021-9797(75)90018-1](https://doi.org/10.1016/0021-9797(75)90018-1).
+//! * D. Maugis (1992), J. Colloid Interface Sci. 150, 243–269 (DMT as the
+//!   λ → 0 limit; see [`super::maugis_dugdale`]).
 
 use super::batch::{eval_pointwise, Pointwise};
 use super::{

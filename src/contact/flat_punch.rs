@@ -3,6 +3,26 @@
 //! punch is bonded (no slip; thesis §4.4, Borodich et al. 2014, with
 //! [`crate::material::no_slip_factor`]). The stiffness is constant while in
 //! contact. The adhesive version is [`super::Kendall`].
+//!
+//! # Formulas
+//!
+//! $$P = 2 E^\ast a \delta \ \ \text{(frictionless)}, \qquad P = 2 E^\ast a \delta\\, C_\mathrm{NS} \ \ \text{(no slip)}, \qquad C_\mathrm{NS} = \frac{(1-\nu)\ln(3-4\nu)}{1-2\nu},$$
+//!
+//! and the stiffness $dP/d\delta = 2E^\ast a$ (times $C_\mathrm{NS}$) while
+//! $\delta > 0$.
+//!
+//! # References
+//!
+//! * Thesis §4.4 (no-slip factor of a bonded punch).
+//! * J. Boussinesq (1885), *Application des potentiels à l'étude de l'équilibre
+//!   et du mouvement des solides élastiques*, Gauthier-Villars, Paris.
+//! * K. L. Johnson (1985), *Contact Mechanics*, Cambridge University Press,
+//!   §3.8, [doi:10.1017/CBO9781139171731](https://doi.org/10.1017/CBO9781139171731).
+//! * F. M. Borodich, B. A. Galanov, M. M. Suarez-Alvarez (2014), "The JKR-type
+//!   adhesive contact problems for power-law shaped axisymmetric punches",
+//!   J. Mech. Phys. Solids 68, 14–32,
+//!   [doi:10.1016/j.jmps.2014.03.003](https://doi.org/10.1016/j.jmps.2014.03.003)
+//!   (the no-slip factor).
 
 use super::batch::{eval_pointwise, Pointwise};
 use super::{

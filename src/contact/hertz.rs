@@ -8,6 +8,26 @@
 //! With the Galanov effective radius ([`Hertz::sphere_in_crater`], thesis
 //! (2-19)) the same law describes a sphere unloading from its own plastic
 //! crater.
+//!
+//! # Formulas
+//!
+//! $$a = \sqrt{R\delta}, \qquad P = \tfrac{4}{3} E^\ast R^{1/2} \delta^{3/2}, \qquad \frac{dP}{d\delta} = 2E^\ast a,$$
+//!
+//! $$a = \left(\frac{3PR}{4E^\ast}\right)^{1/3}, \qquad p_0 = \frac{3P}{2\pi a^2},$$
+//!
+//! with $E^\ast$ the contact modulus and, for a sphere in its crater,
+//! $1/R_\mathrm{eff} = 1/R - 1/R_\mathrm{medium}$ (2-19).
+//!
+//! # References
+//!
+//! * Thesis (1-15)–(1-17) (Hertz), (2-19) (Galanov's sphere in a crater); the
+//!   thesis is the seed PhD thesis on multi-scale dry friction (see the crate
+//!   docs, *Sources*).
+//! * H. Hertz (1882), "Über die Berührung fester elastischer Körper",
+//!   J. reine angew. Math. 92, 156–171,
+//!   [doi:10.1515/crll.1882.92.156](https://doi.org/10.1515/crll.1882.92.156).
+//! * K. L. Johnson (1985), *Contact Mechanics*, Cambridge University Press,
+//!   §4.2, [doi:10.1017/CBO9781139171731](https://doi.org/10.1017/CBO9781139171731).
 
 use super::batch::{eval_pointwise, Pointwise};
 use super::{

@@ -54,6 +54,24 @@
 //! `η⁴ − η − Δ`. Accuracy: ≤ 1e-13 relative against a bracketed reference
 //! away from the fold (tests/jkr.rs); within `|Δ − Δ_c| ≲ 1e-3` the root
 //! itself is ill-conditioned (`∂η/∂Δ → ∞`), as for any method.
+//!
+//! # Formulas
+//!
+//! $$P(a) = \frac{4E^\ast a^3}{3R} - \sqrt{8\pi w E^\ast a^3}, \qquad \delta(a) = \frac{a^2}{R} - \sqrt{\frac{2\pi w a}{E^\ast}},$$
+//!
+//! $$\frac{dP}{d\delta} = 2E^\ast a\\,\frac{4a^{3/2} - 3kR}{4a^{3/2} - kR}, \qquad k = \sqrt{2\pi w/E^\ast},$$
+//!
+//! $$P_c = -\tfrac{3}{2}\pi w R \ \ \text{at}\ \ a = \left(\frac{9\pi w R^2}{8E^\ast}\right)^{1/3}, \qquad \delta_c = -\frac{3}{4}\left(\frac{\pi^2 w^2 R}{E^{\ast 2}}\right)^{1/3}, \ \ P(\delta_c) = -\tfrac{5}{6}\pi w R .$$
+//!
+//! # References
+//!
+//! * Thesis (1-34)–(1-36).
+//! * K. L. Johnson, K. Kendall, A. D. Roberts (1971), "Surface energy and the
+//!   contact of elastic solids", Proc. R. Soc. Lond. A 324, 301–313,
+//!   [doi:10.1098/rspa.1971.0141](https://doi.org/10.1098/rspa.1971.0141).
+//! * D. Maugis (1992), "Adhesion of spheres: the JKR-DMT transition using a
+//!   Dugdale model", J. Colloid Interface Sci. 150, 243–269 (critical points
+//!   under both controls).
 
 use super::batch::{BatchError, RawBatch};
 use super::{check_delta, check_force, ContactState, Control, NormalContact, NormalResponse};

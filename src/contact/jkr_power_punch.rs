@@ -63,6 +63,35 @@
 //!
 //! Hysteresis under displacement control is that of [`super::Jkr`]: jump-in at
 //! δ = 0 to the stable branch, jump-out below the minimum δ_c of δ(a).
+//!
+//! # Formulas
+//!
+//! Frictionless (1-37), (1-38):
+//!
+//! $$P(a) = C(d)\\,B\\,E^\ast a^{d+1} - \sqrt{8\pi w E^\ast a^3}, \qquad \delta(a) = D(d)\\,B\\,a^d - \sqrt{\frac{2\pi w a}{E^\ast}} .$$
+//!
+//! No slip (1-39), (1-40):
+//!
+//! $$P(a) = \frac{C_\mathrm{NS}\\, C(d)\\,B\\,E^\ast a^{d+1}}{k^\ast(d)} - \sqrt{8\pi w E^\ast C_\mathrm{NS}\\, a^3}, \qquad \delta(a) = \frac{D(d)\\,B\\,a^d}{k^\ast(d)} - \sqrt{\frac{2\pi w a}{E^\ast C_\mathrm{NS}}},$$
+//!
+//! $$k^\ast(d) = d\int_0^1 x^{d-1} \cos\Bigl(\varepsilon \ln\frac{1-x}{1+x}\Bigr)\\,dx, \qquad \varepsilon = \frac{\ln(3-4\nu)}{2\pi} .$$
+//!
+//! Load-controlled pull-off, with $A = C(d)BE^\ast$ (no slip: $C_\mathrm{NS}C(d)BE^\ast/k^\ast$) and $b = \sqrt{8\pi w E^\ast}$ (no slip: $\sqrt{8\pi w E^\ast C_\mathrm{NS}}$):
+//!
+//! $$a_c^{d-1/2} = \frac{3b}{2(d+1)A}, \qquad P_c = -\frac{b(2d-1)}{2(d+1)}\left(\frac{3b}{2(d+1)A}\right)^{3/(2d-1)} .$$
+//!
+//! # References
+//!
+//! * Thesis (1-37)–(1-40); REFERENCE.md §1, §7.
+//! * F. M. Borodich, B. A. Galanov, M. M. Suarez-Alvarez (2014), "The JKR-type
+//!   adhesive contact problems for power-law shaped axisymmetric punches",
+//!   J. Mech. Phys. Solids 68, 14–32,
+//!   [doi:10.1016/j.jmps.2014.03.003](https://doi.org/10.1016/j.jmps.2014.03.003).
+//! * K. L. Johnson, K. Kendall, A. D. Roberts (1971), Proc. R. Soc. Lond. A 324,
+//!   301–313, [doi:10.1098/rspa.1971.0141](https://doi.org/10.1098/rspa.1971.0141)
+//!   (d = 2).
+//! * L. A. Galin (1946), J. Appl. Math. Mech. (PMM) 10, 425–448 (the shape
+//!   terms $C(d)$, $D(d)$).
 
 use super::jkr::contact_state;
 use super::out_of_contact;

@@ -69,6 +69,25 @@
 //! scheduler fills with operations waiting on a division). The divider alone would
 //! allow ≈ 15 cycles per contact (`vdivpd` ymm ≈ 5.5, `vsqrtpd` ymm ≈ 9 cycles
 //! reciprocal throughput).
+//!
+//! # Formulas
+//!
+//! Each lane solves the reduced JKR equilibrium of [`super::jkr`],
+//!
+//! $$\eta^4 - \eta - \Delta = 0, \qquad \delta = L\Delta, \quad L = \left(\frac{4\pi^2 w^2 R}{E^{\ast 2}}\right)^{1/3},$$
+//!
+//! and the exact quotient of the cube-root seed is
+//! $\lfloor x/3 \rfloor = \lfloor x M / 2^{65} \rfloor$ with
+//! $M = \mathrm{AAAAAAAAAAAAAAAB}_{16}$ for every 64-bit $x$.
+//!
+//! # References
+//!
+//! * K. L. Johnson, K. Kendall, A. D. Roberts (1971), Proc. R. Soc. Lond. A 324,
+//!   301–313, [doi:10.1098/rspa.1971.0141](https://doi.org/10.1098/rspa.1971.0141)
+//!   (the law; thesis (1-34)–(1-36)).
+//! * T. Granlund, P. L. Montgomery (1994), "Division by invariant integers
+//!   using multiplication", Proc. ACM SIGPLAN PLDI '94, 61–72 (the reciprocal
+//!   multiplication for the division by 3).
 
 use super::batch::{eval_elementwise, BatchError, RawBatch};
 use super::jkr::Jkr;

@@ -18,6 +18,23 @@
 //! all-zero fresh state) the punch touches at δ ≥ 0; in contact it stays
 //! down to δ_c inclusive, and below δ_c it jumps out (force 0,
 //! `in_contact = 0`).
+//!
+//! # Formulas
+//!
+//! $$P = 2E^\ast C_\mathrm{NS}\\, a\\, \delta, \qquad P_c = -\sqrt{8\pi w E^\ast C_\mathrm{NS} a^3}, \qquad \delta_c = \frac{P_c}{2E^\ast C_\mathrm{NS} a} = -\sqrt{\frac{2\pi w a}{E^\ast C_\mathrm{NS}}},$$
+//!
+//! with $C_\mathrm{NS} = 1$ for a frictionless punch.
+//!
+//! # References
+//!
+//! * Thesis §4.4 (the no-slip form for a nano-asperity).
+//! * K. Kendall (1971), "The adhesion and surface energy of elastic solids",
+//!   J. Phys. D: Appl. Phys. 4, 1186–1195,
+//!   [doi:10.1088/0022-3727/4/8/320](https://doi.org/10.1088/0022-3727/4/8/320).
+//! * F. M. Borodich, B. A. Galanov, M. M. Suarez-Alvarez (2014), J. Mech. Phys.
+//!   Solids 68, 14–32,
+//!   [doi:10.1016/j.jmps.2014.03.003](https://doi.org/10.1016/j.jmps.2014.03.003)
+//!   (the no-slip factor $C_\mathrm{NS}$).
 
 use super::jkr::contact_state;
 use super::out_of_contact;

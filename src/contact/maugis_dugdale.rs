@@ -85,6 +85,35 @@
 //! Evaluations never allocate: a bracketed, safeguarded Newton iteration in
 //! `ln s` on the monotone stable piece, started from the old state's `m = c/a`
 //! when there is one.
+//!
+//! # Formulas
+//!
+//! With $K = 4E^\ast/3$, $h_0 = w/\sigma_0$ and $m = c/a$:
+//!
+//! $$\lambda = 2\sigma_0\left(\frac{R}{\pi w K^2}\right)^{1/3}, \quad \bar A = a\left(\frac{K}{\pi w R^2}\right)^{1/3}, \quad \bar P = \frac{P}{\pi w R}, \quad \bar\Delta = \delta\left(\frac{K^2}{\pi^2 w^2 R}\right)^{1/3},$$
+//!
+//! $$\frac{\lambda \bar A^2}{2}\Bigl(\sqrt{m^2-1} + (m^2-2)\arctan\sqrt{m^2-1}\Bigr) + \frac{4\lambda^2 \bar A}{3}\Bigl(\sqrt{m^2-1}\arctan\sqrt{m^2-1} - m + 1\Bigr) = 1,$$
+//!
+//! $$\bar P = \bar A^3 - \lambda \bar A^2\Bigl(\sqrt{m^2-1} + m^2 \arctan\sqrt{m^2-1}\Bigr), \qquad \bar\Delta = \bar A^2 - \tfrac{4}{3}\lambda \bar A\sqrt{m^2-1},$$
+//!
+//! and on the non-contact branch ($a = 0$, cohesive disk of reduced radius $\bar C$)
+//!
+//! $$\bar P = -\frac{\lambda\pi \bar C^2}{2}, \qquad \bar\Delta = \frac{\bar C^2}{2} - \frac{8\lambda \bar C}{3\pi} - \frac{2}{\pi\lambda} .$$
+//!
+//! # References
+//!
+//! * Thesis (1-43), (1-44).
+//! * D. Maugis (1992), "Adhesion of spheres: the JKR-DMT transition using a
+//!   Dugdale model", J. Colloid Interface Sci. 150, 243–269,
+//!   [doi:10.1016/0021-9797(92)90285-T](https://doi.org/10.1016/0021-9797(92)90285-T).
+//! * K. L. Johnson, J. A. Greenwood (1997), "An adhesion map for the contact of
+//!   elastic spheres", J. Colloid Interface Sci. 192, 326–333 (the non-contact
+//!   branch).
+//! * K. L. Johnson (1985), *Contact Mechanics*, Cambridge University Press,
+//!   ch. 3, [doi:10.1017/CBO9781139171731](https://doi.org/10.1017/CBO9781139171731)
+//!   (displacements of a uniformly loaded disk).
+//! * D. S. Dugdale (1960), "Yielding of steel sheets containing slits",
+//!   J. Mech. Phys. Solids 8, 100–104 (the constant-stress cohesive zone).
 
 use super::{
     check_delta, check_force, finite_response, ContactState, Control, NormalContact, NormalResponse,

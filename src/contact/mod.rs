@@ -18,6 +18,32 @@
 //! all-zero state means "never touched" (the surfaces approach from afar).
 //!
 //! Evaluations never allocate.
+//!
+//! # Formulas
+//!
+//! The laws, each detailed (with its sources) in its module:
+//!
+//! | law | force at overlap δ | pull-off |
+//! |---|---|---|
+//! | [`hertz`] | $P = \tfrac43 E^\ast R^{1/2}\delta^{3/2}$ | 0 |
+//! | [`power_punch`] | $P = C(d)BE^\ast a^{d+1}$, $\delta = D(d)Ba^d$ | 0 |
+//! | [`flat_punch`] | $P = 2E^\ast a\delta$ | 0 |
+//! | [`dmt`] | $P = \tfrac43 E^\ast R^{1/2}\delta^{3/2} - 2\pi wR$ | $-2\pi wR$ |
+//! | [`jkr`] | $P = \frac{4E^\ast a^3}{3R} - \sqrt{8\pi wE^\ast a^3}$, $\delta = \frac{a^2}{R} - \sqrt{\frac{2\pi wa}{E^\ast}}$ | $-\tfrac32\pi wR$ |
+//! | [`jkr_power_punch`] | $P = C(d)BE^\ast a^{d+1} - \sqrt{8\pi wE^\ast a^3}$ | see module |
+//! | [`kendall`] | $P = 2E^\ast C_\mathrm{NS} a\delta$ | $-\sqrt{8\pi wE^\ast C_\mathrm{NS}a^3}$ |
+//! | [`maugis_dugdale`] | Maugis (1992), parameter $\lambda$ | $-2\pi wR \ldots -\tfrac32\pi wR$ |
+//! | [`derjaguin`] | $P = -2\pi R\int_D^\infty p(z)\\,dz$ | $-2\pi wR$ |
+//! | [`lj_sphere`] | Lennard-Jones 3-9 law, elastic sphere | $-2\pi wR \ldots -\tfrac32\pi wR$ |
+//!
+//! The contact modulus is $1/E^\ast = (1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2$.
+//!
+//! # References
+//!
+//! * Thesis chapter 1 (1-15)–(1-44) and §4.4; REFERENCE.md §1, §6, §7.
+//! * K. L. Johnson (1985), *Contact Mechanics*, Cambridge University Press,
+//!   [doi:10.1017/CBO9781139171731](https://doi.org/10.1017/CBO9781139171731).
+//! * The original papers are cited in each law's module.
 
 use crate::error::{Error, Result};
 

@@ -11,6 +11,26 @@
 //! cone of equal projected area ([`BERKOVICH_EQUIVALENT_HALF_ANGLE`], …). A cone
 //! unloading from its own imprint uses Galanov's effective cone
 //! ([`PowerPunch::cone_in_imprint`], thesis (2-18)).
+//!
+//! # Formulas
+//!
+//! $$\delta(a) = D(d)\\,B\\,a^d, \qquad P(a) = C(d)\\,B\\,E^\ast a^{d+1}, \qquad \frac{dP}{d\delta} = 2E^\ast a,$$
+//!
+//! $$D(d) = \frac{\sqrt{\pi}\\,\Gamma(d/2 + 1)}{\Gamma(d/2 + 1/2)}, \qquad C(d) = \frac{2d}{d+1}\\,D(d).$$
+//!
+//! # References
+//!
+//! * Thesis (1-19)–(1-22) (Galin's solution), §3.6.2 (equivalent cones), (2-18)
+//!   (Galanov's cone in its imprint).
+//! * L. A. Galin (1946), "Spatial contact problems of the theory of elasticity
+//!   for punches of circular shape in planar projection", J. Appl. Math. Mech.
+//!   (PMM) 10, 425–448 (in Russian); L. A. Galin (1953/1961), *Contact Problems
+//!   in the Theory of Elasticity*.
+//! * F. M. Borodich (1983), "Similarity in the problem of contact between elastic
+//!   bodies", J. Appl. Math. Mech. (PMM) 47, 440–442.
+//! * I. N. Sneddon (1965), "The relation between load and penetration in the
+//!   axisymmetric Boussinesq problem for a punch of arbitrary profile",
+//!   Int. J. Eng. Sci. 3, 47–57.
 
 use super::{
     check_delta, check_force, stateless, ContactState, Control, NormalContact, NormalResponse,

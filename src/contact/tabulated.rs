@@ -75,6 +75,32 @@
 //! bit-identically. Loading validates everything (finite numbers, lengths,
 //! strictly increasing knots, monotone knot data, branch ranges) and rebuilds
 //! the lookup index; a corrupted table is an error, never a panic.
+//!
+//! # Formulas
+//!
+//! On a stable piece, with $u = \sqrt{\Delta - \Delta_\mathrm{turn}}$, each interval
+//! $[u_k, u_{k+1}]$ of length $h$ carries the cubic Hermite interpolant
+//! ($t = (u - u_k)/h$)
+//!
+//! $$F(u) = (2t^3 - 3t^2 + 1)F_k + (t^3 - 2t^2 + t)\\,h m_k + (-2t^3 + 3t^2)F_{k+1} + (t^3 - t^2)\\,h m_{k+1},$$
+//!
+//! with $m_k = dF/du$ at $u_k$ (the source's exact slope), monotone when
+//! $\alpha^2 + \beta^2 \le 9$ with $\alpha = m_k/\Delta_k$,
+//! $\beta = m_{k+1}/\Delta_k$, $\Delta_k = (F_{k+1} - F_k)/h$.
+//! The error measure is
+//!
+//! $$e_F = \frac{\lvert F_\mathrm{table} - F_\mathrm{exact}\rvert}{\max(\lvert F_\mathrm{exact}\rvert,\ 10^{-3}\lvert P_c\rvert)} .$$
+//!
+//! # References
+//!
+//! * F. N. Fritsch, R. E. Carlson (1980), "Monotone piecewise cubic
+//!   interpolation", SIAM J. Numer. Anal. 17, 238–246,
+//!   [doi:10.1137/0717021](https://doi.org/10.1137/0717021).
+//! * The tabulated sources: D. Maugis (1992), J. Colloid Interface Sci. 150,
+//!   243–269 ([`super::maugis_dugdale`]); J. A. Greenwood (1997), Proc. R. Soc.
+//!   Lond. A 453, 1277–1297,
+//!   [doi:10.1098/rspa.1997.0070](https://doi.org/10.1098/rspa.1997.0070)
+//!   ([`super::lj_sphere`]).
 
 // NaN-aware comparisons (`!(x <= hi)`) are intended.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::type_complexity)]

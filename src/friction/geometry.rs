@@ -60,6 +60,18 @@
 //! record; they also suggest a rod width (the thesis says the width "should
 //! correspond to some statistical property of the roughness profile", line
 //! 6692).
+//!
+//!
+//! # Formulas
+//!
+//! Micro-rods (6-1) and the statistics of 5.6.1:
+//!
+//! $$x_k = x_0 + k\\,w, \qquad h_k = \frac{Z(x_k) + Z(x_k + w)}{2}, \qquad Z_j = z_j - \bar z, \qquad \lambda_a = \frac{2\pi R_q}{R_{\Delta q}} \ \ \text{(5-18), (5-19)} .$$
+//!
+//! # References
+//!
+//! * Thesis §5.6.1 ((5-15)–(5-19)) and §6.2.1 ((6-1)–(6-3)).
+//! * ISO 4287:1997 (mean line, $R_q$, $R_{\Delta q}$); see [`crate::surface::iso`].
 
 use crate::error::{check, Error, Result};
 use crate::surface::{mean, roughness_parameters, ParameterOptions, Profile};

@@ -64,6 +64,35 @@
 //!
 //! The step is rate independent: the time increment is validated and
 //! otherwise unused, so rate-dependent laws can share the signature.
+//!
+//!
+//! # Formulas
+//!
+//! Interpolation (Fritsch–Butland slopes at interior knots, $h_k = p_{k+1} - p_k$,
+//! secants $\delta_k$):
+//!
+//! $$m_k = \frac{w_1 + w_2}{w_1/\delta_{k-1} + w_2/\delta_k}, \qquad w_1 = 2h_k + h_{k-1}, \qquad w_2 = h_k + 2h_{k-1} .$$
+//!
+//! Return mapping of one step, $p = N/A_n$:
+//!
+//! $$F_\mathrm{lim} = \mu(p)\\,(N + A), \quad A = p_\mathrm{adh}(p)\\,A_n, \qquad F_\mathrm{tr} = F_\mathrm{old} - k\\,\Delta s,$$
+//!
+//! $$F = F_\mathrm{tr} \ \ \text{if}\ \lvert F_\mathrm{tr}\rvert \le F_\mathrm{lim}, \quad \text{else} \quad F = F_\mathrm{lim}\frac{F_\mathrm{tr}}{\lvert F_\mathrm{tr}\rvert}, \quad \Delta\lambda = \frac{\lvert F_\mathrm{tr}\rvert - F_\mathrm{lim}}{k}, \quad \Delta s_p = -\Delta\lambda\frac{F_\mathrm{tr}}{\lvert F_\mathrm{tr}\rvert}, \quad \Delta D = F_\mathrm{lim}\\,\Delta\lambda \ge 0 .$$
+//!
+//! # References
+//!
+//! * Thesis (1-1), (1-2), (4-3).
+//! * F. N. Fritsch, R. E. Carlson (1980), "Monotone piecewise cubic
+//!   interpolation", SIAM J. Numer. Anal. 17, 238–246,
+//!   [doi:10.1137/0717021](https://doi.org/10.1137/0717021).
+//! * F. N. Fritsch, J. Butland (1984), "A method for constructing local monotone
+//!   piecewise cubic interpolants", SIAM J. Sci. Stat. Comput. 5, 300–304,
+//!   [doi:10.1137/0905021](https://doi.org/10.1137/0905021).
+//! * P. Wriggers (2006), *Computational Contact Mechanics*, 2nd ed., Springer,
+//!   §5.2, §6.2.
+//! * J. C. Simo, T. J. R. Hughes (1998), *Computational Inelasticity*,
+//!   Springer, §1.2.
+//! * Abaqus User Subroutines Reference Guide, VFRIC (sign convention).
 
 use super::ledger::{CofForm, Dissipation};
 use crate::contact::BatchError;

@@ -14,6 +14,25 @@
 //! | 4.3.3 "energy dissipated for every time-step" | [`ledger_step`] |
 //! | 4.4 hand calculation (μ = 1.0156) | [`apparent_friction`], [`yielded_slider_friction`] |
 //! | 5.2 single-rod model (μ ≈ 6.2) | [`single_rod`] |
+//!
+//!
+//! # Formulas
+//!
+//! Over a slip increment $\Delta x$ with $N_c$ nano-asperities in contact:
+//!
+//! $$\Delta U_\mathrm{chem} = N_c\\,n_\mathrm{chem}U_\mathrm{chem}\frac{\Delta x}{D_\mathrm{chem}}, \qquad \Delta U_\mathrm{vdW} = N_c\\,n_\mathrm{vdW}U_\mathrm{vdW}\frac{\Delta x}{D_\mathrm{chem}}, \qquad F = \frac{\Delta U}{\Delta x} \ \ \text{(4-1)},$$
+//!
+//! $$\mu = \frac{F}{N} \ \ \text{(1-1)}, \qquad F = A + \mu N \ \ \text{(1-2)}, \qquad \mu = \frac{F}{N + A} \ \ \text{(4-3)}, \qquad A = N_c F_\mathrm{adh,1} .$$
+//!
+//! The hand calculation of 4.4:
+//!
+//! $$\mu = \frac{N\bigl(n_\mathrm{chem}U_\mathrm{chem} + n_\mathrm{vdW}U_\mathrm{vdW}\bigr)}{(F_\mathrm{ext} + F_\mathrm{adh})\\,D_\mathrm{chem}} = 1.0156 .$$
+//!
+//! # References
+//!
+//! * Thesis (1-1)–(1-3), (4-1)–(4-5), §4.3.3, §4.4, §5.2; REFERENCE.md §5.
+//! * B. V. Derjaguin (1934), "Molekulartheorie der äußeren Reibung", Z. Phys. 88,
+//!   661–675 (the two-term law $F = \mu(N + A)$).
 
 use super::geometry::{NanoAsperities, SliderGeometry};
 use super::mechanisms::{FrictionMaterial, NanoAsperityBonds};

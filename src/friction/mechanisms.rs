@@ -22,6 +22,36 @@
 //! | 4.4 W₁₂ = A/(12πD₀²) | [`crate::material::hamaker_work_of_adhesion`] |
 //!
 //! All quantities SI: m, N, Pa, J, J/m², J/m (energy per unit slip = N).
+//!
+//!
+//! # Formulas
+//!
+//! Bonds of one nano-asperity (4-6)–(4-9) and their dissipation per unit slip:
+//!
+//! $$n_\mathrm{chem} = \Bigl(\frac{w_\mathrm{chem}}{D_\mathrm{chem}}\Bigr)^2, \qquad n_\mathrm{vdW} = \Bigl(\frac{w_\mathrm{vdW}}{D_\mathrm{chem}}\Bigr)^2, \qquad \frac{dU}{dx} = \frac{n_\mathrm{chem}U_\mathrm{chem} + n_\mathrm{vdW}U_\mathrm{vdW}}{D_\mathrm{chem}} .$$
+//!
+//! Lennard-Jones nano-asperity (4-11)–(4-14), $\rho = 2^{1/6}\sigma = D_\mathrm{chem}$:
+//!
+//! $$U(r) = 4\epsilon\Bigl(\Bigl(\frac{\sigma}{r}\Bigr)^{12} - \Bigl(\frac{\sigma}{r}\Bigr)^{6}\Bigr), \qquad F(r) = 24\epsilon\Bigl(\frac{2\sigma^{12}}{r^{13}} - \frac{\sigma^6}{r^7}\Bigr), \qquad \Sigma(\varepsilon_s) = \frac{E}{6}\bigl((1-\varepsilon_s)^{-13} - (1-\varepsilon_s)^{-7}\bigr), \qquad E = \frac{72\\,\epsilon N_A}{\rho} .$$
+//!
+//! Micro-rod energies (4-10), (4-15), (4-16) and the holding force (4.4):
+//!
+//! $$\delta = \frac{PL}{EA}, \qquad \Delta U_e = \frac{E A_c\\,\delta_e^2}{2L}, \qquad \Delta U_p = \sigma_y\\,\varepsilon_p V_d, \qquad F_\mathrm{adh,1} = \sqrt{8\pi W_{12} E^\ast C_\mathrm{NS}\\, a_1^3}, \quad a_1 = \frac{w_\mathrm{vdW}}{2}, \quad W_{12} = \frac{A}{12\pi D_0^2} .$$
+//!
+//! # References
+//!
+//! * Thesis chapter 4: (4-6)–(4-16), §4.3.1–4.3.3, §4.4; REFERENCE.md §5.
+//! * K. Kendall (1971), "The adhesion and surface energy of elastic solids",
+//!   J. Phys. D: Appl. Phys. 4, 1186–1195,
+//!   [doi:10.1088/0022-3727/4/8/320](https://doi.org/10.1088/0022-3727/4/8/320).
+//! * F. M. Borodich, B. A. Galanov, M. M. Suarez-Alvarez (2014), J. Mech. Phys.
+//!   Solids 68, 14–32,
+//!   [doi:10.1016/j.jmps.2014.03.003](https://doi.org/10.1016/j.jmps.2014.03.003)
+//!   (no-slip factor).
+//! * J. E. Lennard-Jones (1924), "On the determination of molecular fields",
+//!   Proc. R. Soc. Lond. A 106, 463–477 (the 12-6 potential).
+//! * J. N. Israelachvili, *Intermolecular and Surface Forces*, Academic Press,
+//!   §13 (Hamaker work of adhesion).
 
 use super::geometry::NanoAsperities;
 use crate::contact::kendall::Kendall;

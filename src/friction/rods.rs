@@ -181,6 +181,36 @@
 //! ([`RodBed::solution`]) the sweep and warm-start solves do not allocate
 //! (the new state's vectors are resized only when their length differs).
 //! The dense reference and the coupled model allocate their matrices.
+//!
+//!
+//! # Formulas
+//!
+//! Rod $i$ (stiffness $k_i = EA/L_i$, yield force $F_y = \sigma_y A$, overlap
+//! $o_i = g_i + H_i - b$):
+//!
+//! $$f_i = \min\bigl(k_i\max(o_i, 0),\ F_y\bigr), \qquad F(b) = \sum_i f_i(o_i), \qquad s_i = \frac{o_i - \varepsilon_y L_i}{1 - \varepsilon_y}, \quad \varepsilon_y = \frac{\sigma_y}{E},$$
+//!
+//! fixed gap (6-9)–(6-12): $k_B\\,\delta_B = \sum_i f_i$ with $b = b_0 + \delta_B$;
+//! fixed load (6-13)–(6-16): $P = \sum_i f_i$. Energies (4-15), (4-16):
+//!
+//! $$U_{e,i} = \tfrac12 f_i e_i, \quad e_i = \frac{f_i}{k_i}, \qquad U_{p,i} = F_y\\, s_i, \qquad U_\mathrm{released} = \sum_i \max(0,\ U_{e,i}^\mathrm{old} - U_{e,i}^\mathrm{new}) .$$
+//!
+//! On an elastic substrate the base of rod $i$ sinks by
+//! $u_i = \sum_j C_{ij} f_j$, with the Boussinesq kernel $1/(\pi E^\ast r)$ and
+//! $(M f)_i = o_i$ for $0 < f_i < F_y$, $M = \mathrm{diag}(1/k) + C$.
+//!
+//! # References
+//!
+//! * Thesis §4.3.1 ((4-10), (4-15), (4-16)), §6.2.2–6.2.3, §6.3–6.4
+//!   ((6-8)–(6-16)); REFERENCE.md §5.
+//! * I. V. Kragelsky, M. N. Dobychin, V. S. Kombalov (1982), *Friction and Wear:
+//!   Calculation Methods*, Pergamon Press, Oxford (rod models).
+//! * K. L. Johnson (1985), *Contact Mechanics*, Cambridge University Press,
+//!   §3.2, [doi:10.1017/CBO9781139171731](https://doi.org/10.1017/CBO9781139171731)
+//!   (Boussinesq point load; uniformly loaded rectangle, after Love 1929).
+//! * A. E. H. Love (1929), "The stress produced in a semi-infinite solid by
+//!   pressure on part of the boundary", Phil. Trans. R. Soc. Lond. A 228,
+//!   377–420.
 
 // Rod arrays (heights, stiffnesses, onsets, forces) are indexed in lockstep.
 #![allow(clippy::needless_range_loop)]

@@ -35,6 +35,29 @@
 //! For h > 37.5 the value underflows (F_{3/2}(37) ≈ 3.4e-302): the functions
 //! return the subnormal or zero value, never NaN. The results are strictly
 //! decreasing in h up to h = 37 (tested on a 0.05 grid).
+//!
+//! # Formulas
+//!
+//! $$F_q(h) = \int_h^\infty (s-h)^q\\,\varphi(s)\\,ds, \qquad \varphi(s) = \frac{e^{-s^2/2}}{\sqrt{2\pi}},$$
+//!
+//! $$F_0 = Q(h) = \tfrac12\operatorname{erfc}(h/\sqrt2), \qquad F_1 = \varphi(h) - hQ(h), \qquad F_2 = (1+h^2)Q(h) - h\varphi(h),$$
+//!
+//! $$F_{m-1/2}(h) = \frac{1}{\sqrt{2\pi}}\int_{-\infty}^{\infty} u^{2m} e^{-(u^2+h)^2/2}\\,du, \qquad F_q(h) = \frac{\Gamma(q+1)\\,e^{-h^2/4}\\,D_{-q-1}(h)}{\sqrt{2\pi}},$$
+//!
+//! with $D_\nu$ the parabolic-cylinder function.
+//!
+//! # References
+//!
+//! * Thesis (1-29), (1-30).
+//! * J. A. Greenwood, J. B. P. Williamson (1966), "Contact of nominally flat
+//!   surfaces", Proc. R. Soc. Lond. A 295, 300–319,
+//!   [doi:10.1098/rspa.1966.0242](https://doi.org/10.1098/rspa.1966.0242).
+//! * L. N. Trefethen, J. A. C. Weideman (2014), "The exponentially convergent
+//!   trapezoidal rule", SIAM Rev. 56, 385–458,
+//!   [doi:10.1137/130932132](https://doi.org/10.1137/130932132).
+//! * H. Takahasi, M. Mori (1974), "Double exponential formulas for numerical
+//!   integration", Publ. RIMS Kyoto Univ. 9, 721–741,
+//!   [doi:10.2977/prims/1195192451](https://doi.org/10.2977/prims/1195192451).
 
 use super::quadrature::{tanh_sinh, Quadrature};
 use crate::error::{check, Error, Result};

@@ -24,6 +24,25 @@
 //! decades (d/σ from 1 to 3.33), the local exponent d ln A / d ln P rising
 //! from 0.922 to 0.972; for exponential heights it is exactly constant,
 //! `E* √(σ/(πR))`.
+//!
+//! # Formulas
+//!
+//! $$P = \tfrac43 N E^\ast R^{1/2}\int_d^\infty (z-d)^{3/2}\varphi(z)\\,dz, \qquad A = \pi N R\int_d^\infty (z-d)\\,\varphi(z)\\,dz, \qquad n = N\int_d^\infty \varphi(z)\\,dz,$$
+//!
+//! $$-\frac{dP}{dd} = 2NE^\ast R^{1/2}\int_d^\infty (z-d)^{1/2}\varphi(z)\\,dz, \qquad \psi = \frac{E^\ast}{H}\sqrt{\frac{\sigma}{R}} .$$
+//!
+//! For Gaussian heights of standard deviation $\sigma$ the integrals are
+//! $\sigma^q F_q(d/\sigma)$ ([`super::gaussian`]).
+//!
+//! # References
+//!
+//! * Thesis §1.7, (1-29)–(1-31).
+//! * J. A. Greenwood, J. B. P. Williamson (1966), "Contact of nominally flat
+//!   surfaces", Proc. R. Soc. Lond. A 295, 300–319,
+//!   [doi:10.1098/rspa.1966.0242](https://doi.org/10.1098/rspa.1966.0242).
+//! * J. A. Greenwood, J. H. Tripp (1970), "The contact of two nominally flat
+//!   rough surfaces", Proc. Inst. Mech. Eng. 185, 625–633,
+//!   [doi:10.1243/PIME_PROC_1970_185_069_02](https://doi.org/10.1243/PIME_PROC_1970_185_069_02).
 
 use super::gaussian;
 use super::heights::HeightDistribution;

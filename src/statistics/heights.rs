@@ -7,6 +7,24 @@
 //! the counter-surface's reference plane in the same frame. The parametric
 //! distributions have zero mean, so d is measured from the mean summit height
 //! (GW 1966's convention); an empirical list is used in its own frame.
+//!
+//! # Formulas
+//!
+//! $$M_q(d) = \int_d^\infty (z-d)^q\\,\varphi(z)\\,dz \quad (\mathrm{m}^q),$$
+//!
+//! for Gaussian heights $M_q(d) = \sigma^q F_q(d/\sigma)$ ([`super::gaussian`]);
+//! for the zero-mean exponential $\varphi(z) = e^{-(z+\sigma)/\sigma}/\sigma$
+//! ($z \ge -\sigma$)
+//!
+//! $$M_q(d) = \sigma^q\\,\Gamma(q+1)\\,e^{-(d+\sigma)/\sigma} \quad (d \ge -\sigma), \qquad M_q(d) = \sigma^q e^{x}\\,\Gamma(q+1, x), \ \ x = -\frac{d+\sigma}{\sigma} \quad (d < -\sigma);$$
+//!
+//! for an empirical list of $M$ heights $M_q(d) = \frac{1}{M}\sum_{z_i > d}(z_i - d)^q$.
+//!
+//! # References
+//!
+//! * Thesis (1-29), (1-30), (5-7).
+//! * J. A. Greenwood, J. B. P. Williamson (1966), Proc. R. Soc. Lond. A 295,
+//!   300–319, [doi:10.1098/rspa.1966.0242](https://doi.org/10.1098/rspa.1966.0242).
 
 use super::gaussian;
 use crate::error::{check, Error, Result};

@@ -21,6 +21,24 @@
 //! contour area, a the approach, γ₁, γ₂ factors of the distribution, K the
 //! stiffness), and it is checked against [`KragelskyRods`] on a sampled
 //! bearing curve in `tests/statistics.rs`.
+//!
+//! # Formulas
+//!
+//! Rods of stiffness $k$ and section $A_\mathrm{rod}$:
+//!
+//! $$P = Nk\int_d^\infty (z-d)\\,\varphi(z)\\,dz, \qquad A = N A_\mathrm{rod}\int_d^\infty \varphi(z)\\,dz, \qquad n = N\int_d^\infty \varphi(z)\\,dz .$$
+//!
+//! Bearing-area curve $\eta(\varepsilon) = b\\,\varepsilon^\nu$, $\varepsilon = a/R_\mathrm{max}$:
+//!
+//! $$A_r = A_c\\, b\\,\varepsilon^\nu, \qquad N = \frac{K A_c\\, b\\, R_\mathrm{max}\\,\varepsilon^{\nu+1}}{\nu+1} = \gamma_1\gamma_2 A_c K a^{\nu+1}, \qquad \gamma_1 = \frac{b}{R_\mathrm{max}^\nu}, \ \ \gamma_2 = \frac{1}{\nu+1} .$$
+//!
+//! # References
+//!
+//! * Thesis §5.3.4, (5-7).
+//! * I. V. Kragelsky (1948), the rod model of rough contact (in Russian; as
+//!   cited by the thesis, §5.3.4).
+//! * I. V. Kragelsky, M. N. Dobychin, V. S. Kombalov (1982), *Friction and Wear:
+//!   Calculation Methods*, Pergamon Press, Oxford.
 
 use super::heights::HeightDistribution;
 use super::{solve_separation, MultiAsperityResponse, SeparationSolution};

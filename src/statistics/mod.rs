@@ -24,6 +24,29 @@
 //! reference plane in the frame of the summit heights (zero-mean for the
 //! parametric distributions); approaches x (m) are measured downwards from the
 //! first touch. Every result is a [`MultiAsperityResponse`].
+//!
+//! # Formulas
+//!
+//! Every model is a sum of single-asperity responses over the summit heights,
+//!
+//! $$P(d) = N\int_d^\infty f(z-d)\\,\varphi(z)\\,dz,$$
+//!
+//! with $f(w) = \tfrac43 E^\ast R^{1/2} w^{3/2}$ (Greenwood–Williamson), $f(w) = kw$
+//! (Kragelsky), $f(w) \propto w^{(2+\kappa(d-1))/d}$ (power-law asperities), or
+//! the pair double integral of Zhuravlev, $P \propto x^{11/2}$ for a summit
+//! density linear in depth.
+//!
+//! # References
+//!
+//! * Thesis §§1.6–1.7, 3.7, 5.3–5.4.
+//! * V. A. Zhuravlev (1940), "On the question of theoretical justification of
+//!   the Amontons–Coulomb law for friction of unlubricated surfaces",
+//!   Zh. Tekh. Fiz. 10 (in Russian).
+//! * J. A. Greenwood, J. B. P. Williamson (1966), Proc. R. Soc. Lond. A 295,
+//!   300–319, [doi:10.1098/rspa.1966.0242](https://doi.org/10.1098/rspa.1966.0242).
+//! * I. V. Kragelsky, M. N. Dobychin, V. S. Kombalov (1982), *Friction and Wear:
+//!   Calculation Methods*, Pergamon Press, Oxford.
+//! * The single modules cite the details.
 
 pub mod gaussian;
 pub mod greenwood_williamson;

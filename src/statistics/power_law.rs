@@ -23,6 +23,25 @@
 //!
 //! κ = 1, d = 2 with a Hertz solution is Greenwood–Williamson, resp.
 //! Zhuravlev: `q = 3/2`, area exponent 1 (tested in `tests/statistics.rs`).
+//!
+//! # Formulas
+//!
+//! With $q = (2 + \kappa(d-1))/d$ and $\lambda = B/B_1$:
+//!
+//! $$P(w) = \lambda^{(\kappa-2)/d} P_1 \Bigl(\frac{w}{\delta_1}\Bigr)^q, \qquad a(w) = a_1\lambda^{-1/d}\Bigl(\frac{w}{\delta_1}\Bigr)^{1/d},$$
+//!
+//! $$P = N\lambda^{(\kappa-2)/d}\frac{P_1}{\delta_1^q}\int_d^\infty (z-d)^q\varphi\\,dz, \qquad A = N\pi a_1^2\lambda^{-2/d}\delta_1^{-2/d}\int_d^\infty (z-d)^{2/d}\varphi\\,dz .$$
+//!
+//! # References
+//!
+//! * Thesis §3.7, (3-13), (3-14), (3-24), (3-27), (3-28).
+//! * F. M. Borodich (1983), "Similarity in the problem of contact between
+//!   elastic bodies", J. Appl. Math. Mech. (PMM) 47, 440–442; F. M. Borodich
+//!   (1993), "The Hertz frictional contact between nonlinear elastic
+//!   anisotropic bodies (the similarity approach)", Int. J. Solids Struct. 30,
+//!   1513–1526.
+//! * J. A. Greenwood, J. B. P. Williamson (1966), Proc. R. Soc. Lond. A 295,
+//!   300–319, [doi:10.1098/rspa.1966.0242](https://doi.org/10.1098/rspa.1966.0242).
 
 use super::heights::HeightDistribution;
 use super::MultiAsperityResponse;

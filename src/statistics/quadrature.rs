@@ -9,6 +9,16 @@
 //! level halves the step and reuses the previous nodes; the difference between
 //! two successive levels is the error estimate (a pessimistic one: the error
 //! roughly squares from one level to the next).
+//!
+//! # Formulas
+//!
+//! $$x = c + w\tanh\Bigl(\frac{\pi}{2}\sinh t\Bigr), \qquad \int_{c-w}^{c+w} f(x)\\,dx \approx h\sum_{k} f(x_k)\\,\frac{w\\,\frac{\pi}{2}\cosh t_k}{\cosh^2\bigl(\frac{\pi}{2}\sinh t_k\bigr)}, \qquad t_k = kh .$$
+//!
+//! # References
+//!
+//! * H. Takahasi, M. Mori (1974), "Double exponential formulas for numerical
+//!   integration", Publ. RIMS Kyoto Univ. 9, 721–741,
+//!   [doi:10.2977/prims/1195192451](https://doi.org/10.2977/prims/1195192451).
 
 use crate::error::{Error, Result};
 

@@ -25,6 +25,24 @@
 //! prefactors, the inversion at a given load and the friction law. The
 //! power-law asperity version (3-27), (3-28) is
 //! [`super::PowerLawAsperities::zhuravlev_linear`].
+//!
+//! # Formulas
+//!
+//! $$P = \tfrac43 E^\ast R_\mathrm{eff}^{1/2}\\,\frac1N\iint_{\xi_1+\xi_2 \le x}\bigl(x - (\xi_1+\xi_2)\bigr)^{3/2} n(\xi_1)\\,n(\xi_2)\\,d\xi_1\\,d\xi_2, \qquad S = \pi R_\mathrm{eff}\\,\frac1N\iint \bigl(x - (\xi_1+\xi_2)\bigr)\\,n\\,n\\,d\xi_1\\,d\xi_2,$$
+//!
+//! and for $n(\xi) = \alpha\xi$
+//!
+//! $$\alpha^2\int_0^x (x-s)^q\\,\frac{s^3}{6}\\,ds = \alpha^2 x^{q+4}\\,\frac{\Gamma(q+1)}{\Gamma(q+5)}, \qquad P = C_1 x^{11/2}, \quad S = C_2 x^5, \quad F = \tau S \propto P^{10/11}, \quad \mu \propto P^{-1/11} .$$
+//!
+//! # References
+//!
+//! * Thesis §1.7, (1-23)–(1-28).
+//! * V. A. Zhuravlev (1940), "On the question of theoretical justification of
+//!   the Amontons–Coulomb law for friction of unlubricated surfaces",
+//!   Zh. Tekh. Fiz. 10 (in Russian); English translation with a commentary by
+//!   F. M. Borodich in Proc. Inst. Mech. Eng. J 221 (2007).
+//! * H. Hertz (1882), J. reine angew. Math. 92, 156–171,
+//!   [doi:10.1515/crll.1882.92.156](https://doi.org/10.1515/crll.1882.92.156).
 
 use super::MultiAsperityResponse;
 use crate::error::{check, Error, Result};

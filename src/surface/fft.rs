@@ -5,6 +5,23 @@
 //! Plans: planning a 5·10⁵-point transform costs about as much as running it,
 //! so the plans of the last [`PLAN_CACHE`] lengths are kept per thread
 //! (bounded memory: a plan holds its twiddle table, 16 bytes per point).
+//!
+//!
+//! # Formulas
+//!
+//! The real-input forward transform computes, for $n$ even,
+//!
+//! $$X_k = \sum_{j=0}^{n-1} x_j e^{-2\pi ijk/n}$$
+//!
+//! from one complex FFT of length $n/2$ of $y_j = x_{2j} + i\\,x_{2j+1}$, with
+//! $X_k = \tfrac12\bigl(Y_k + \overline{Y_{n/2-k}}\bigr) - \tfrac{i}{2}e^{-2\pi ik/n}\bigl(Y_k - \overline{Y_{n/2-k}}\bigr)$.
+//!
+//! # References
+//!
+//! * The `rustfft` crate (mixed-radix and Bluestein algorithms).
+//! * W. H. Press, S. A. Teukolsky, W. T. Vetterling, B. P. Flannery (2007),
+//!   *Numerical Recipes*, 3rd ed., Cambridge University Press, §12.3 (FFT of
+//!   real data by a half-length complex transform).
 
 use rustfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};

@@ -19,6 +19,17 @@
 //! ([`FilterEnds::Discard`]) the first and last λc/2 — the run-in and run-out
 //! of ISO 4288 — are then dropped: on the part kept, at most
 //! erfc(√π/(2α)) ≈ 0.8 % of the kernel weight was cut off.
+//!
+//! # Formulas
+//!
+//! $$s(x) = \frac{1}{\alpha\lambda_c}\exp\Bigl(-\pi\Bigl(\frac{x}{\alpha\lambda_c}\Bigr)^2\Bigr), \qquad \alpha = \sqrt{\frac{\ln 2}{\pi}} \approx 0.4697, \qquad \frac{a_1}{a_0} = \exp\Bigl(-\pi\Bigl(\frac{\alpha\lambda_c}{\lambda}\Bigr)^2\Bigr).$$
+//!
+//! # References
+//!
+//! * ISO 16610-21:2011, *Geometrical product specifications (GPS) — Filtration —
+//!   Part 21: Linear profile filters: Gaussian filters* (formerly ISO 11562:1996).
+//! * ISO 16610-28:2016 (end effects); ISO 4288:1996 (run-in and run-out).
+//! * Thesis §1.5.
 
 use super::check_heights;
 use super::fft::{fast_len, fft1};

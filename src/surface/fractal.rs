@@ -1,4 +1,20 @@
 //! Box-counting dimension of a profile's graph (thesis 1.5.3).
+//!
+//! # Formulas
+//!
+//! With boxes of side $\varepsilon = 2^s\\,dx$ and $N(\varepsilon)$ boxes needed to
+//! cover the graph,
+//!
+//! $$D = -\frac{d\ln N(\varepsilon)}{d\ln\varepsilon},$$
+//!
+//! fitted by least squares; for a self-affine profile the spectral estimate
+//! is $D = 2 - H$.
+//!
+//! # References
+//!
+//! * Thesis §1.5.3.
+//! * K. Falconer (2014), *Fractal Geometry: Mathematical Foundations and
+//!   Applications*, 3rd ed., Wiley (box-counting dimension).
 
 use super::check_heights;
 use crate::error::{check, Error, Result};

@@ -18,6 +18,28 @@
 //!   1991; Borodich & Onishchenko 1993) with two descendants, or three
 //!   (Warren & Krajcinovic 1995), and its box-counting dimension
 //!   dim = 1 + ln(mβ)/ln(1/α) (thesis 1.5.3 for m = 2).
+//!
+//! # Formulas
+//!
+//! $$G(q) \propto q^{-(1+2H)} \ \ \text{(profile)}, \qquad G(q) \propto q^{-2(1+H)} \ \ \text{(map)},$$
+//!
+//! $$z(x) = A\sum_{k=0}^{K}\gamma^{(D-2)k}\Bigl(\cos\phi_k - \cos\Bigl(\frac{2\pi\gamma^k x}{L} + \phi_k\Bigr)\Bigr) \ \ \text{(Weierstrass–Mandelbrot)},$$
+//!
+//! $$z(x) = h\sum_{k=1}^{n}\beta^{k-1}\\,\mathbb{1}\bigl(x \in C_k\bigr), \qquad \dim = 1 + \frac{\ln(m\beta)}{\ln(1/\alpha)} \ \ \text{(Cantor–Borodich)}.$$
+//!
+//! # References
+//!
+//! * Thesis §1.5.3, §5.4.2.
+//! * M. V. Berry, Z. V. Lewis (1980), "On the Weierstrass–Mandelbrot fractal
+//!   function", Proc. R. Soc. Lond. A 370, 459–484,
+//!   [doi:10.1098/rspa.1980.0044](https://doi.org/10.1098/rspa.1980.0044).
+//! * M. Ausloos, D. H. Berman (1985), "A multivariate Weierstrass–Mandelbrot
+//!   function", Proc. R. Soc. Lond. A 400, 331–350.
+//! * F. M. Borodich, A. B. Mosolov (1991), Cantor-type fractal profiles (in
+//!   Russian; as cited by the thesis); F. M. Borodich, D. A. Onishchenko (1993).
+//! * T. L. Warren, D. Krajcinovic (1995), "Fractal models of elastic–perfectly
+//!   plastic contact of rough surfaces based on the Cantor set", Int. J. Solids
+//!   Struct. 32, 2907–2922.
 
 use super::fft::{fft1, fft2};
 use super::{Profile, Topography};

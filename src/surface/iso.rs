@@ -27,6 +27,26 @@
 //!   dZ/dX_j = (Z_{j+3} − 9Z_{j+2} + 45Z_{j+1} − 45Z_{j−1} + 9Z_{j−2} −
 //!   Z_{j−3}) / (60 dx), with the 5- and 3-point central formulas within
 //!   three samples of the ends and one-sided differences at the end points.
+//!
+//!
+//! # Formulas
+//!
+//! Over a sampling length of $m$ samples, $Z_j = z_j - \bar z$:
+//!
+//! $$R_a = \frac1m\sum_j \lvert Z_j\rvert, \qquad R_q = \sqrt{\frac1m\sum_j Z_j^2}, \qquad R_{sk} = \frac{1}{R_q^3}\\,\frac1m\sum_j Z_j^3, \qquad R_{ku} = \frac{1}{R_q^4}\\,\frac1m\sum_j Z_j^4,$$
+//!
+//! $$R_{\Delta q} = \sqrt{\frac1m\sum_j\Bigl(\frac{dZ}{dX}\Bigr)\_j^2}, \qquad \Bigl(\frac{dZ}{dX}\Bigr)\_j = \frac{Z_{j+3} - 9Z_{j+2} + 45Z_{j+1} - 45Z_{j-1} + 9Z_{j-2} - Z_{j-3}}{60\\,dx} .$$
+//!
+//! For $z = A\sin(2\pi x/\Lambda)$ over whole periods: $R_a = 2A/\pi$,
+//! $R_q = A/\sqrt2$, $R_{sk} = 0$, $R_{ku} = 1.5$, $R_{\Delta q} = \sqrt2\\,\pi A/\Lambda$,
+//! $R_{Sm} = \Lambda$.
+//!
+//! # References
+//!
+//! * ISO 4287:1997, *Geometrical Product Specifications (GPS) — Surface texture:
+//!   Profile method — Terms, definitions and surface texture parameters*.
+//! * ISO 4288:1996 (sampling lengths); ISO 25178-2:2012 (areal parameters).
+//! * Thesis §1.5.1, (1-5).
 
 use super::{check_heights, mean, Topography};
 use crate::error::{check, Error, Result};

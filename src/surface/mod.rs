@@ -37,6 +37,23 @@
 //! Every function that works on a [`Profile`] has a slice form
 //! (`heights: &[f64], dx: f64`) so that callers holding plain arrays (the C
 //! ABI) need not build one.
+//!
+//!
+//! # Formulas
+//!
+//! The central quantities, detailed in the submodules:
+//!
+//! $$R_q = \sqrt{\frac1n\sum_j Z_j^2} = \sqrt{\int_0^\infty G(q)\\,dq}, \qquad G(\omega) = \frac2\pi\int_0^\infty R(\delta)\cos(\omega\delta)\\,d\delta, \qquad D = 2 - H .$$
+//!
+//! # References
+//!
+//! * Thesis §§1.5, 1.7.
+//! * ISO 4287:1997 (profile parameters), ISO 16610-21:2011 (Gaussian filter),
+//!   ISO 25178-2:2012 (areal parameters).
+//! * P. R. Nayak (1971), "Random process model of rough surfaces", J. Lubr.
+//!   Technol. 93, 398–407.
+//! * The generators' and the pattern's sources are cited in [`generate`] and
+//!   [`pattern`].
 
 mod fft;
 pub mod filter;

@@ -20,6 +20,19 @@
 //! ±n to a suffix of groups, and D = max_g |V(g)| / (n k) is read at the root.
 //! Integer arithmetic makes D exact and the choice among equal D
 //! deterministic (the first start wins).
+//!
+//!
+//! # Formulas
+//!
+//! $$D(s) = \sup_z\bigl\lvert F_{s,k}(z) - F_n(z)\bigr\rvert = \frac{\max_g\lvert V(g)\rvert}{nk}, \qquad V(g) = n\\,C_w(g) - k\\,E(g) .$$
+//!
+//! # References
+//!
+//! * Thesis §1.5.4.
+//! * A. Pepelyshev (2015) and F. M. Borodich et al. (2015): the representative
+//!   elementary pattern of roughness, as cited by the thesis (§1.5.4).
+//! * A. N. Kolmogorov (1933); N. V. Smirnov (1939): the (two-sample)
+//!   Kolmogorov–Smirnov statistic.
 
 use super::check_heights;
 use crate::error::{Error, Result};

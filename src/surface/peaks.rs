@@ -10,6 +10,19 @@
 //!   principal curvatures, from central second differences.
 //!
 //! Heights are measured from the mean line (mean plane).
+//!
+//!
+//! # Formulas
+//!
+//! $$\kappa_\mathrm{peak} = -\frac{z_{j+1} - 2z_j + z_{j-1}}{dx^2}, \qquad \kappa_\mathrm{summit} = -\frac{z_{xx} + z_{yy}}{2} .$$
+//!
+//! # References
+//!
+//! * Thesis §1.5, §1.7.
+//! * J. A. Greenwood (1984), "A unified theory of surface roughness", Proc. R.
+//!   Soc. Lond. A 393, 133–157 (summits on a sampled map).
+//! * J. A. Greenwood, J. B. P. Williamson (1966), Proc. R. Soc. Lond. A 295,
+//!   300–319, [doi:10.1098/rspa.1966.0242](https://doi.org/10.1098/rspa.1966.0242).
 
 use super::{check_heights, mean, Topography};
 use crate::error::{check, Result};

@@ -1,5 +1,18 @@
 //! Uniformly sampled line scans ([`Profile`]) and height maps
 //! ([`Topography`]), and least-squares form removal ([`Form`], [`MapForm`]).
+//!
+//!
+//! # Formulas
+//!
+//! Form removal fits, by least squares over the samples $(x_j, z_j)$, a
+//! polynomial of degree 0, 1 or 2 (a plane or a quadric for maps) and removes
+//! it:
+//!
+//! $$Z_j = z_j - \sum_{i=0}^{p} c_i x_j^i, \qquad c = \arg\min_c \sum_j \Bigl(z_j - \sum_{i=0}^{p} c_i x_j^i\Bigr)^2 .$$
+//!
+//! # References
+//!
+//! * ISO 4287:1997 §3.1 (form removal and the mean line); thesis §1.5.1.
 
 use super::{check_heights, mean};
 use crate::error::{check, Error, Result};

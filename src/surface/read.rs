@@ -21,6 +21,18 @@
 //! Positions must be uniformly spaced (every analysis here assumes a uniform
 //! grid). Instruments round positions, so the check has a tolerance chosen by
 //! [`Spacing`].
+//!
+//!
+//! # Formulas
+//!
+//! No physics: the readers fit a uniform grid $x_0 + j\\,dx$ to the positions
+//! and check $\lvert x_j - (x_0 + j\\,dx)\rvert \le \tau\\,dx$, with $\tau$ chosen
+//! by [`Spacing`] ($10^{-3}$ strict, $0.5$ by default).
+//!
+//! # References
+//!
+//! * No external source: the formats are those of common profilometer and AFM
+//!   exports (for example `x,z` line scans and gridded height maps).
 
 use super::{Profile, Topography};
 use crate::error::{Error, Result};

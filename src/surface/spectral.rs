@@ -26,6 +26,21 @@
 //!
 //! Windowed PSDs (Hann) divide by the window's mean square, so ∫ G dq still
 //! estimates the variance; Parseval is then no longer exact.
+//!
+//!
+//! # Formulas
+//!
+//! $$G(\omega) = \frac2\pi\int_0^\infty R(\delta)\cos(\omega\delta)\\,d\delta, \qquad R(\delta) = \int_0^\infty G(q)\cos(q\delta)\\,dq, \qquad R_q^2 = R(0) = \int_0^\infty G(q)\\,dq,$$
+//!
+//! $$q_k = \frac{2\pi k}{L}, \qquad G_k = \frac{dx}{\pi n}\lvert X_k\rvert^2, \qquad R_k = \frac1n\sum_{j<n-k} Z_j Z_{j+k}, \qquad m_p = \int q^p G(q)\\,dq, \qquad \alpha = \frac{m_0 m_4}{m_2^2} .$$
+//!
+//! # References
+//!
+//! * Thesis §1.5.2–1.5.3, (1-6)–(1-9).
+//! * P. R. Nayak (1971), "Random process model of rough surfaces", J. Lubr.
+//!   Technol. 93, 398–407 (spectral moments and the bandwidth parameter).
+//! * J. S. Bendat, A. G. Piersol (2010), *Random Data: Analysis and Measurement
+//!   Procedures*, 4th ed., Wiley (periodogram and the Hann window).
 
 use super::fft::{fast_even_len, RealFft};
 use super::{check_heights, mean};

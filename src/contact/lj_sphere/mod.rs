@@ -116,6 +116,44 @@
 //! displacement-controlled loop (outer
 //! branch up to the jump-in, jump at fixed ᾱ, contact branch back down to the
 //! jump-out, jump back), `∮ P̄ dᾱ` in units of `πRΔγ z₀`.
+//!
+//! # Formulas
+//!
+//! Dimensional form (REFERENCE §6; attraction positive, $P > 0$ repulsive):
+//!
+//! $$h(r) = -\alpha + \frac{r^2}{2R} + z_0 + u(r), \qquad p(h) = \frac{8\Delta\gamma}{3z_0}\left(\Bigl(\frac{z_0}{h}\Bigr)^3 - \Bigl(\frac{z_0}{h}\Bigr)^9\right),$$
+//!
+//! $$u(r) = -\frac{4}{\pi E^\ast}\int_0^\infty p(s)\\,\frac{s}{r+s}\\,K\\!\left(\frac{2\sqrt{rs}}{r+s}\right) ds, \qquad P = -2\pi\int_0^\infty p(r)\\, r\\, dr,$$
+//!
+//! with $K(k)$ the complete elliptic integral of the first kind of modulus $k$
+//! and the Tabor parameter $\mu = \bigl(R\\,\Delta\gamma^2/(E^{\ast 2} z_0^3)\bigr)^{1/3}$.
+//! Rigid limit ($\mu \to 0$), $h_m = 1 - \bar\alpha$:
+//!
+//! $$\frac{P}{\pi R\\,\Delta\gamma} = -\frac{8}{3}\left(h_m^{-2} - \frac{h_m^{-8}}{4}\right).$$
+//!
+//! Influence of a uniform pressure $p$ on a disk of radius $c$:
+//!
+//! $$u = \frac{4pc}{\pi E^\ast}\\,E(r/c) \ \ (r \le c), \qquad u = \frac{4pr}{\pi E^\ast}\Bigl(E(c/r) - \bigl(1 - c^2/r^2\bigr)K(c/r)\Bigr) \ \ (r \ge c).$$
+//!
+//! # References
+//!
+//! * J. A. Greenwood (1997), "Adhesion of elastic spheres", Proc. R. Soc. Lond.
+//!   A 453, 1277–1297,
+//!   [doi:10.1098/rspa.1997.0070](https://doi.org/10.1098/rspa.1997.0070).
+//! * J. Q. Feng (2000), "Contact behavior of spherical elastic particles: a
+//!   computational study of particle adhesion and deformations", Colloids
+//!   Surf. A 172, 175–198.
+//! * W. G. Lee, W. W. F. Chong (2015), "Adhesive contact modelling based on
+//!   Lennard-Jones force law", Jurnal Teknologi 76(10) (seed 001), Eqs. 1–5.
+//! * K. L. Johnson (1985), *Contact Mechanics*, Cambridge University Press,
+//!   §3.4, [doi:10.1017/CBO9781139171731](https://doi.org/10.1017/CBO9781139171731)
+//!   (the uniformly loaded disk).
+//! * D. Tabor (1977), "Surface forces and surface interactions", J. Colloid
+//!   Interface Sci. 58, 2–13 (the parameter μ).
+//! * Y. Saad, M. H. Schultz (1986), "GMRES: a generalized minimal residual
+//!   algorithm for solving nonsymmetric linear systems", SIAM J. Sci. Stat.
+//!   Comput. 7, 856–869; E. L. Allgower, K. Georg (1990), *Numerical
+//!   Continuation Methods*, Springer (pseudo-arclength continuation).
 
 // Index loops mirror the matrix algebra; options are built by field
 // assignment (documented pattern); NaN-aware `!(x < y)` is intended.
