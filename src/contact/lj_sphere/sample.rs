@@ -215,7 +215,7 @@ impl LjSolver {
     ///   sampled in τ.
     ///
     /// Above μ = 1 the path comes from the edge continuation
-    /// ([`super::edge`]): its neck phase (one fixed mesh) is sampled as
+    /// (module `edge`): its neck phase (one fixed mesh) is sampled as
     /// above; its edge phase is a family of meshes banded at the marker
     /// radius `m`, so there the parameter is `m`: derivatives by central
     /// differences in `m` (step 1e-4·w, each a solve on its own banded
