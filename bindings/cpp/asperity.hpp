@@ -10,9 +10,10 @@
  *   the status code (`status()`, one of `ASPERITY_ERR_*`) and the library's
  *   message naming the argument and its bound (`what()`).
  * - Opaque handles are RAII classes (`Table`, `GwEmpirical`,
- *   `HomogenisedFriction`, `SliderGeometry`): move-only, `noexcept` moves, the
- *   destructor calls `asperity_<thing>_free`; `get()` gives the C pointer for
- *   mixing with C calls and `release()` gives up ownership.
+ *   `HomogenisedFriction`, `SliderGeometry`, `Slider`, `SliderWork`):
+ *   move-only, `noexcept` moves, the destructor calls `asperity_<thing>_free`;
+ *   `get()` gives the C pointer for mixing with C calls and `release()` gives
+ *   up ownership.
  * - The plain `repr(C)` structs of the C header (`AsperityNormalLaw`,
  *   `AsperityContactState`, `AsperityFrictionIncrement`, ...) and the
  *   `ASPERITY_*` constants are used as they are.
@@ -333,6 +334,15 @@ struct free_homogenised_friction {
 /// `asperity::SliderGeometry`.
 struct free_slider_geometry {
     static void free(AsperitySliderGeometry* p) noexcept { asperity_slider_geometry_free(p); }
+};
+/// `asperity_slider_free`, called by the destructor of `asperity::Slider`.
+struct free_slider {
+    static void free(AsperitySlider* p) noexcept { asperity_slider_free(p); }
+};
+/// `asperity_slider_work_free`, called by the destructor of
+/// `asperity::SliderWork`.
+struct free_slider_work {
+    static void free(AsperitySliderWork* p) noexcept { asperity_slider_work_free(p); }
 };
 
 /// Calls a C++ callable from a C callback; an exception is kept and rethrown
@@ -889,6 +899,134 @@ public:
             detail::optional(dissipation, n, f, "dissipation")));
     }
 };
+
+// ---------------------------------------------------------------------------
+// The slider as a per-increment friction law of surface patches
+
+class Slider;
+
+/// Scratch buffers of the slider step (`AsperitySliderWork`): one per
+/// thread, built once with `SliderWork(slider)`; it may serve any slider
+/// with the same number of rods. Not shared: a step writes into it.
+class SliderWork
+    : public detail::unique_handle<AsperitySliderWork, detail::free_slider_work> {
+public:
+    using unique_handle::unique_handle;
+    SliderWork() noexcept = default;
+
+    /// `asperity_slider_work_new`: the buffers of a step with `slider`.
+    explicit SliderWork(const Slider& slider);
+};
+
+/// The full hierarchical slider against its counter-surface
+/// (`AsperitySlider`), the friction law of a surface patch stepped once per
+/// time increment. Immutable; safe to share between threads, each thread
+/// stepping with its own `SliderWork`. Per-patch states are caller-owned
+/// arrays of `state_size()` doubles (all-zero = fresh; layout: the
+/// `ASPERITY_SLIDER_STATE_*` indices). Sign convention: the slip increment
+/// is the motion of the patch relative to the counter-surface, the force is
+/// the force on the patch and opposes slip.
+class Slider : public detail::unique_handle<AsperitySlider, detail::free_slider> {
+public:
+    using unique_handle::unique_handle;
+    Slider() noexcept = default;
+
+    /// `asperity_slider_from_scene_json`: a slider from the scene JSON text
+    /// `json` (the format of `examples/scenes/*.json`); relative file paths
+    /// in the scene are resolved against `base_dir` (NULL: the current
+    /// directory). A JSON or field error throws `ASPERITY_ERR_PARSE` with the
+    /// line, column and field.
+    [[nodiscard]] static Slider from_scene_json(std::string_view json,
+                                                const char* base_dir = nullptr)
+    {
+        AsperitySlider* p = nullptr;
+        check(asperity_slider_from_scene_json(json.data(), json.size(), base_dir, &p));
+        return Slider(p);
+    }
+
+    /// `asperity_slider_from_scene_json` with the scene's directory
+    /// `base_dir`.
+    [[nodiscard]] static Slider from_scene_json(std::string_view json,
+                                                const std::string& base_dir)
+    {
+        return from_scene_json(json, base_dir.c_str());
+    }
+
+    /// `asperity_slider_state_size`: the number of doubles of one patch
+    /// state (8 + 2 x rods).
+    [[nodiscard]] std::size_t state_size() const
+    {
+        std::size_t n = 0;
+        check(asperity_slider_state_size(get(), &n));
+        return n;
+    }
+
+    /// `asperity_slider_info`: sizes and capacities (SI).
+    [[nodiscard]] AsperitySliderInfo info() const
+    {
+        AsperitySliderInfo out{};
+        check(asperity_slider_info(get(), &out));
+        return out;
+    }
+
+    /// `asperity_slider_step`: one increment of one patch from `old_state`
+    /// into `new_state` (each at least `state_size()` doubles; the same
+    /// array for both steps in place). The same old state and increment give
+    /// bit-identical results, so an increment can be re-evaluated or cut
+    /// back. On failure `new_state` is untouched.
+    [[nodiscard]] AsperitySliderResponse step(SliderWork& work,
+                                              const AsperitySliderIncrement& increment,
+                                              span<const double> old_state,
+                                              span<double> new_state) const
+    {
+        const char* f = "asperity::Slider::step";
+        const std::size_t m = state_size();
+        const double* old_p = detail::at_least(old_state, m, f, "old_state");
+        double* new_p = detail::at_least(new_state, m, f, "new_state");
+        AsperitySliderResponse out{};
+        check(asperity_slider_step(get(), work.get(), &increment, old_p, new_p, &out));
+        return out;
+    }
+
+    /// `asperity_slider_step` with the patch's `state` updated in place.
+    AsperitySliderResponse step(SliderWork& work, const AsperitySliderIncrement& increment,
+                                span<double> state) const
+    {
+        return step(work, increment, span<const double>(state), state);
+    }
+
+    /// `asperity_slider_step_block`: `normal_force.size()` patches at once
+    /// (Abaqus VFRIC shape) under fixed loads `normal_force[i]` (N, <= the
+    /// capacity). `slip` and `tangential_force` hold two values per patch (x,
+    /// y interleaved), `old_states` and `new_states` `state_size()` per patch
+    /// (pass one vector as both to step in place), `dissipation` is empty
+    /// (not wanted) or one per patch (J). No tangents (use `step`). On an
+    /// error at patch i, patches before i are written and the message names
+    /// element i.
+    void step_block(SliderWork& work, span<const double> normal_force, span<const double> slip,
+                    double dt, span<const double> old_states, span<double> new_states,
+                    span<double> tangential_force, span<double> dissipation = {}) const
+    {
+        const char* f = "asperity::Slider::step_block";
+        const std::size_t n = normal_force.size();
+        const std::size_t m = state_size();
+        // Checked in the C order, so the first short array is the one named.
+        const double* slip_p = detail::at_least(slip, 2 * n, f, "slip");
+        const double* old_p = detail::at_least(old_states, n * m, f, "old_states");
+        double* new_p = detail::at_least(new_states, n * m, f, "new_states");
+        double* force_p = detail::at_least(tangential_force, 2 * n, f, "tangential_force");
+        double* diss_p = detail::optional(dissipation, n, f, "dissipation");
+        check(asperity_slider_step_block(get(), work.get(), n, detail::required(normal_force),
+                                         slip_p, dt, old_p, new_p, force_p, diss_p));
+    }
+};
+
+inline SliderWork::SliderWork(const Slider& slider)
+{
+    AsperitySliderWork* p = nullptr;
+    check(asperity_slider_work_new(slider.get(), &p));
+    reset(p);
+}
 
 // ---------------------------------------------------------------------------
 // Indentation and rescaling

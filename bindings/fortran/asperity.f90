@@ -201,6 +201,37 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_PAIR_GEOMETRIC_MEAN = 0
   !> Pair rule of seed 001: `Δγ = (√γ₁ − √γ₂)²`.
   integer(c_int32_t), parameter, public :: ASPERITY_PAIR_SEED001_DIFFERENCE = 1
+  !> `asperity_slider_increment%control`: the slider's own loading (the scene's); `normal_force`
+  !  and `gap` are ignored.
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_CONTROL_SCENE = 0
+  !> `asperity_slider_increment%control`: fixed load `normal_force` (N).
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_CONTROL_LOAD = 1
+  !> `asperity_slider_increment%control`: fixed gap, the slider's mean line at `gap` (m) above
+  !  the counter-surface's mean line.
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_CONTROL_GAP = 2
+  !> `asperity_slider_increment%tangents` bit: compute dF/dN.
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_TANGENT_NORMAL = 1
+  !> `asperity_slider_increment%tangents` bit: compute dF/d(slip).
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_TANGENT_SLIP = 2
+  ! The slider state indices are C's, from 0: in Fortran the position is
+  ! `state(ASPERITY_SLIDER_STATE_POSITION + 1)`.
+  !> Index (from 0) in a slider state of its flag: 0 fresh, 1 stepped.
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_FLAG = 0
+  !> Index (from 0) in a slider state of the slider position X along its track (m). A fresh
+  !  state (flag 0) starts there: set it to place patches at different points of the
+  !  counter-surface.
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_POSITION = 1
+  !> Index (from 0) in a slider state of the rod-bed position b of the last equilibrium (m;
+  !  NaN: none).
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_ROD_POSITION = 2
+  !> Index (from 0) in a slider state of the accumulated slip path (m).
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_SLIP_PATH = 3
+  !> Index (from 0) in a slider state of the accumulated dissipation (J), 4 values: chemical,
+  !  van der Waals, elastic, plastic.
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_DISSIPATION = 4
+  !> Index (from 0) in a slider state of the rod heights (m, one per rod), followed by the
+  !  rods' stored elastic energies (J, one per rod).
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_HEIGHTS = 8
   !> Summit heights: Gaussian of zero mean and standard deviation σ.
   integer(c_int32_t), parameter, public :: ASPERITY_HEIGHTS_GAUSSIAN = 1
   !> Summit heights: exponential tail shifted to zero mean, standard deviation (decay length) σ.
@@ -721,6 +752,112 @@ module asperity
     integer(c_int32_t) :: segments_from_labels = 0_c_int32_t
   end type asperity_indentation_result
 
+  !> `AsperitySliderInfo` (read with `asperity_slider_get_info`: the name `asperity_slider_info`
+  !  is this type's).
+  type, bind(c), public :: asperity_slider_info
+    !> Doubles per patch state (8 + 2 x rods).
+    integer(c_size_t) :: state_size = 0_c_size_t
+    !> Number of rods (micro-asperities of the finest level).
+    integer(c_size_t) :: rods = 0_c_size_t
+    !> Nano-asperities per rod.
+    integer(c_size_t) :: nano_per_rod = 0_c_size_t
+    !> Samples of the counter-surface profile.
+    integer(c_size_t) :: counter_samples = 0_c_size_t
+    !> Rod width along the track (m).
+    real(c_double) :: rod_width = 0.0_c_double
+    !> Rod depth across the track (m).
+    real(c_double) :: depth = 0.0_c_double
+    !> Nominal area of the patch, rods x width x depth (m^2).
+    real(c_double) :: nominal_area = 0.0_c_double
+    !> Load capacity of the rods, n sigma_y A (N): the largest normal force.
+    real(c_double) :: capacity = 0.0_c_double
+    !> Counter-surface sample spacing (m).
+    real(c_double) :: counter_dx = 0.0_c_double
+    !> The scene's loading value: its load (N) or gap (m), per `scene_control`.
+    real(c_double) :: scene_loading = 0.0_c_double
+    !> The scene's loading: `ASPERITY_SLIDER_CONTROL_LOAD` or `_GAP`.
+    integer(c_int32_t) :: scene_control = 0_c_int32_t
+    !> 1 when the counter-surface repeats past its end, 0 when running past it is an error.
+    integer(c_int32_t) :: periodic = 0_c_int32_t
+  end type asperity_slider_info
+
+  !> `AsperitySliderIncrement`: one time increment of a slider patch. SI units. An all-zero
+  !  increment seats a fresh patch under the scene's loading without sliding.
+  type, bind(c), public :: asperity_slider_increment
+    !> Normal force on the patch (N), finite, >= 0 and <= the capacity; read when `control` is
+    !  `ASPERITY_SLIDER_CONTROL_LOAD`.
+    real(c_double) :: normal_force = 0.0_c_double
+    !> Position of the slider's mean line above the counter-surface's mean line (m), finite;
+    !  read when `control` is `ASPERITY_SLIDER_CONTROL_GAP`.
+    real(c_double) :: gap = 0.0_c_double
+    !> Slip increment of the patch relative to the counter-surface (m), two finite components
+    !  in the caller's tangent basis; a track uses `slip(2) = 0`. The slider advances along its
+    !  track by |slip|.
+    real(c_double) :: slip(2) = 0.0_c_double
+    !> Time increment (s), finite and >= 0 (unused: rate independent).
+    real(c_double) :: dt = 0.0_c_double
+    !> `ASPERITY_SLIDER_CONTROL_SCENE` (0), `_LOAD` (1) or `_GAP` (2).
+    integer(c_int32_t) :: control = 0_c_int32_t
+    !> Tangents wanted: 0, or `ASPERITY_SLIDER_TANGENT_NORMAL` + `ASPERITY_SLIDER_TANGENT_SLIP`
+    !  (each costs two more evaluations).
+    integer(c_int32_t) :: tangents = 0_c_int32_t
+  end type asperity_slider_increment
+
+  !> `AsperitySliderResponse`: the response of one slider step (SI).
+  type, bind(c), public :: asperity_slider_response
+    !> Tangential force on the patch from the counter-surface (N), in the basis of the slip
+    !  increment: F = -F_t ds/|ds|, opposing slip; 0 for a zero slip increment.
+    real(c_double) :: force(2) = 0.0_c_double
+    !> Its magnitude, the friction force F_t = dU/|ds| (N), thesis (4-1); 0 for a zero slip
+    !  increment.
+    real(c_double) :: friction_force = 0.0_c_double
+    !> Normal load N carried by the rods (N): the given load, or at a fixed gap the rods' total
+    !  force.
+    real(c_double) :: normal_force = 0.0_c_double
+    !> Coefficient of friction in the slider's COF form; 0 when undefined (`regime` no contact)
+    !  and for a zero slip increment.
+    real(c_double) :: cof = 0.0_c_double
+    !> Adhesive holding force A = N_c F_adh,1 (N), 4.4.
+    real(c_double) :: adhesion = 0.0_c_double
+    !> Energy dissipated in the increment dU (J), >= 0.
+    real(c_double) :: dissipated = 0.0_c_double
+    !> dU by mechanism (J), each >= 0.
+    type(asperity_dissipation) :: dissipation
+    !> True contact area N_c w_vdW^2 (m^2), thesis 6.5.3.
+    real(c_double) :: true_contact_area = 0.0_c_double
+    !> Fraction of the nano-asperities in contact touching only thanks to adhesion, in [0, 1].
+    real(c_double) :: adhesion_area_share = 0.0_c_double
+    !> Slider position X along its track after the increment (m).
+    real(c_double) :: position = 0.0_c_double
+    !> Rod-bed position b after the increment (m).
+    real(c_double) :: rod_position = 0.0_c_double
+    !> Slip path length of the increment |ds| (m): the distance the slider advanced along its
+    !  track.
+    real(c_double) :: slip_length = 0.0_c_double
+    !> dF/dN (dimensionless), a finite-difference secant; 0 unless asked for.
+    real(c_double) :: dforce_dnormal(2) = 0.0_c_double
+    !> dF_i/d(ds_j) (N/m), `dforce_dslip[i][j]` is `dforce_dslip(j+1, i+1)`; 0 unless asked
+    !  for, and for a zero slip increment (rigid stick: unbounded).
+    real(c_double) :: dforce_dslip(2,2) = 0.0_c_double
+    !> Nano-asperities in contact N_c.
+    integer(c_int64_t) :: nano_contacts = 0_c_int64_t
+    !> Of those, in contact only thanks to adhesion.
+    integer(c_int64_t) :: adhesive_contacts = 0_c_int64_t
+    !> Rods carrying force.
+    integer(c_int64_t) :: rods_in_contact = 0_c_int64_t
+    !> Rods at the yield force.
+    integer(c_int64_t) :: yielded_rods = 0_c_int64_t
+    !> 0 stick (zero slip increment), 1 slip, 2 no contact.
+    integer(c_int32_t) :: regime = 0_c_int32_t
+    !> 1 when this call seated a fresh state first, else 0.
+    integer(c_int32_t) :: seated = 0_c_int32_t
+    !> The tangents computed, as bits: 1 dF/dN (`ASPERITY_SLIDER_TANGENT_NORMAL`), 2 dF/d(ds)
+    !  (`ASPERITY_SLIDER_TANGENT_SLIP`).
+    integer(c_int32_t) :: tangents = 0_c_int32_t
+    !> Reserved, always 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_slider_response
+
   !> `AsperityGwParams`
   type, bind(c), public :: asperity_gw_params
     !> `ASPERITY_HEIGHTS_GAUSSIAN` or `ASPERITY_HEIGHTS_EXPONENTIAL`.
@@ -939,6 +1076,30 @@ module asperity
     final :: asperity_slider_geometry_final
   end type asperity_slider_geometry
 
+  !> Handle of `AsperitySlider`: the slider as the friction law of a surface patch (`asperity_slider_from_scene_json`).
+  !> `ptr` is the C pointer (NULL when empty) for the raw layer.
+  type, public :: asperity_slider
+    type(c_ptr) :: ptr = c_null_ptr
+  contains
+    !> Release the object (nothing when empty); the handle becomes empty.
+    procedure :: free => asperity_slider_free
+    procedure, private :: asperity_slider_assign
+    generic :: assignment(=) => asperity_slider_assign
+    final :: asperity_slider_final
+  end type asperity_slider
+
+  !> Handle of `AsperitySliderWork`: scratch buffers of the slider step, one per thread (`asperity_slider_work_new`).
+  !> `ptr` is the C pointer (NULL when empty) for the raw layer.
+  type, public :: asperity_slider_work
+    type(c_ptr) :: ptr = c_null_ptr
+  contains
+    !> Release the object (nothing when empty); the handle becomes empty.
+    procedure :: free => asperity_slider_work_free
+    procedure, private :: asperity_slider_work_assign
+    generic :: assignment(=) => asperity_slider_work_assign
+    final :: asperity_slider_work_final
+  end type asperity_slider_work
+
   abstract interface
     !> A summit density per unit depth n(xi) (1/m) at depth `xi` (m, >= 0)
     !> below the highest summit, for `asperity_zhuravlev_eval`; `user_data` is
@@ -956,7 +1117,8 @@ module asperity
   !> Release any handle: `call asperity_free(h)`.
   interface asperity_free
     module procedure asperity_table_free, asperity_gw_empirical_free, &
-        asperity_homogenised_friction_free, asperity_slider_geometry_free
+        asperity_homogenised_friction_free, asperity_slider_geometry_free, asperity_slider_free, &
+        asperity_slider_work_free
   end interface asperity_free
   public :: asperity_free
 
@@ -1846,6 +2008,118 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_hamaker_work_of_adhesion
 
+    !> Build a slider from the scene JSON text of `len` bytes at `json` (UTF-8, no NUL needed;
+    !  the format of `examples/scenes/*.json`). Relative file paths in the scene are resolved
+    !  against `base_dir` (a NUL-terminated UTF-8 directory path), or against the current
+    !  directory when `base_dir` is NULL. The scene's `sliding` and `outputs` are validated but
+    !  unused by the step. Writes a new handle to `*out` (NULL on failure). Errors: NULL `json`
+    !  or `out`; invalid UTF-8 (`json`, `base_dir`); `ASPERITY_ERR_PARSE` for a JSON or field
+    !  error (the message gives line, column and the field); the scene's value errors naming the
+    !  field; a file the scene names that cannot be read (`ASPERITY_ERR_IO`).
+    function c_asperity_slider_from_scene_json(json, len, base_dir, out) result(r) bind(c, &
+        name="asperity_slider_from_scene_json")
+      import
+      implicit none
+      character(kind=c_char), intent(in) :: json(*)
+      integer(c_size_t), value :: len
+      type(c_ptr), value :: base_dir
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_from_scene_json
+
+    !> Release a slider; NULL is accepted and ignored.
+    subroutine c_asperity_slider_free(slider) bind(c, name="asperity_slider_free")
+      import
+      implicit none
+      type(c_ptr), value :: slider
+    end subroutine c_asperity_slider_free
+
+    !> Write the number of doubles of one patch state (8 + 2 x rods) to `*n`.
+    function c_asperity_slider_state_size(slider, n) result(r) bind(c, &
+        name="asperity_slider_state_size")
+      import
+      implicit none
+      type(c_ptr), value :: slider
+      integer(c_size_t), intent(out) :: n
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_state_size
+
+    !> Write the sizes and capacities of `slider` to `*info`.
+    function c_asperity_slider_info(slider, info) result(r) bind(c, name="asperity_slider_info")
+      import
+      implicit none
+      type(c_ptr), value :: slider
+      type(asperity_slider_info), intent(inout) :: info
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_info
+
+    !> Build the scratch buffers of a step with `slider` and write the handle to `*out` (NULL on
+    !  failure). Use one per thread; it may serve any slider with the same number of rods.
+    function c_asperity_slider_work_new(slider, out) result(r) bind(c, &
+        name="asperity_slider_work_new")
+      import
+      implicit none
+      type(c_ptr), value :: slider
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_work_new
+
+    !> Release work buffers; NULL is accepted and ignored.
+    subroutine c_asperity_slider_work_free(work) bind(c, name="asperity_slider_work_free")
+      import
+      implicit none
+      type(c_ptr), value :: work
+    end subroutine c_asperity_slider_work_free
+
+    !> One friction step of one patch: the increment `*increment` from the state `old_state`
+    !  (`asperity_slider_state_size` doubles; all-zero = fresh: seated first under the
+    !  increment's loading) into `new_state` (same size; may equal `old_state` to step in place,
+    !  must not partially overlap it) and the response into `*out`. The same old state and
+    !  increment give bit-identical results, so a host can re-evaluate or cut back an
+    !  increment. No allocation. On failure `new_state` and `*out` are untouched; the message
+    !  names the argument and its bound. The states are addresses (`c_loc`), so that one array
+    !  may be passed as both.
+    function c_asperity_slider_step(slider, work, increment, old_state, new_state, out) &
+        result(r) bind(c, name="asperity_slider_step")
+      import
+      implicit none
+      type(c_ptr), value :: slider
+      type(c_ptr), value :: work
+      type(asperity_slider_increment), intent(in) :: increment
+      type(c_ptr), value :: old_state
+      type(c_ptr), value :: new_state
+      type(asperity_slider_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_step
+
+    !> Step `n` patches at once, in the shape of Abaqus/Explicit VFRIC: the normal force on
+    !  patch i `normal_force[i]` (N, a fixed load, <= the capacity), its slip increment
+    !  `slip[2i]`, `[2i+1]` (m, x and y interleaved), one `dt` (s) for all, states
+    !  `old_states[i*m .. (i+1)*m]` -> `new_states[...]` with m = `asperity_slider_state_size`,
+    !  tangential forces out in `tangential_force[2i]`, `[2i+1]` (N, interleaved, opposing slip)
+    !  and the dissipated energy of the increment in `dissipation[i]` (J). `dissipation` may be
+    !  NULL (not wanted); `new_states` may equal `old_states` (in place) but must not partially
+    !  overlap it. No tangents (use `asperity_slider_step`). On an error at element i,
+    !  elements before i are written, those from i on are untouched, and the message names i.
+    !  The states are addresses (`c_loc`), so that one array may be passed as both.
+    function c_asperity_slider_step_block(slider, work, n, normal_force, slip, dt, old_states, &
+        new_states, tangential_force, dissipation) result(r) bind(c, &
+        name="asperity_slider_step_block")
+      import
+      implicit none
+      type(c_ptr), value :: slider
+      type(c_ptr), value :: work
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: normal_force(*)
+      real(c_double), intent(in) :: slip(*)
+      real(c_double), value :: dt
+      type(c_ptr), value :: old_states
+      type(c_ptr), value :: new_states
+      real(c_double), intent(inout) :: tangential_force(*)
+      type(c_ptr), value :: dissipation
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_step_block
+
     !> Greenwood–Williamson load, real area, number of contacts and stiffness at `separation` d
     !  (m, finite) (thesis (1-29), (1-30)).
     function c_asperity_gw_eval(gw, separation, out) result(r) bind(c, &
@@ -2486,6 +2760,14 @@ module asperity
   public :: c_asperity_weir_surface_energy_with
   public :: c_asperity_pair_work_of_adhesion
   public :: c_asperity_hamaker_work_of_adhesion
+  public :: c_asperity_slider_from_scene_json
+  public :: c_asperity_slider_free
+  public :: c_asperity_slider_state_size
+  public :: c_asperity_slider_info
+  public :: c_asperity_slider_work_new
+  public :: c_asperity_slider_work_free
+  public :: c_asperity_slider_step
+  public :: c_asperity_slider_step_block
   public :: c_asperity_gw_eval
   public :: c_asperity_gw_eval_batch
   public :: c_asperity_gw_separation_at_load
@@ -2563,6 +2845,12 @@ module asperity
   public :: asperity_homogenised_friction_state_size
   public :: asperity_homogenised_friction_step
   public :: asperity_homogenised_friction_step_block
+  public :: asperity_slider_from_scene_json
+  public :: asperity_slider_state_size
+  public :: asperity_slider_get_info
+  public :: asperity_slider_work_new
+  public :: asperity_slider_step
+  public :: asperity_slider_step_block
   public :: asperity_indentation_default_options
   public :: asperity_indentation_fit
   public :: asperity_indentation_flag_name
@@ -2628,6 +2916,8 @@ module asperity
   public :: asperity_gw_empirical_free
   public :: asperity_homogenised_friction_free
   public :: asperity_slider_geometry_free
+  public :: asperity_slider_free
+  public :: asperity_slider_work_free
 
   ! The friendly layer's own argument errors (per thread under OpenMP).
   logical :: fortran_error_set = .false.
@@ -2928,6 +3218,50 @@ contains
     type(asperity_slider_geometry), intent(inout) :: geometry
     call asperity_slider_geometry_free(geometry)
   end subroutine asperity_slider_geometry_final
+
+  !> Release `slider` (an empty handle is accepted); `slider` becomes empty.
+  subroutine asperity_slider_free(slider)
+    class(asperity_slider), intent(inout) :: slider
+    call c_asperity_slider_free(slider%ptr)
+    slider%ptr = c_null_ptr
+  end subroutine asperity_slider_free
+
+  subroutine asperity_slider_assign(lhs, rhs)
+    class(asperity_slider), intent(inout) :: lhs
+    type(asperity_slider), intent(in) :: rhs
+    if (c_associated(rhs%ptr)) then
+      if (c_associated(lhs%ptr, rhs%ptr)) return
+      call stop_copy('asperity_slider')
+    end if
+    call asperity_slider_free(lhs)
+  end subroutine asperity_slider_assign
+
+  impure elemental subroutine asperity_slider_final(slider)
+    type(asperity_slider), intent(inout) :: slider
+    call asperity_slider_free(slider)
+  end subroutine asperity_slider_final
+
+  !> Release `work` (an empty handle is accepted); `work` becomes empty.
+  subroutine asperity_slider_work_free(work)
+    class(asperity_slider_work), intent(inout) :: work
+    call c_asperity_slider_work_free(work%ptr)
+    work%ptr = c_null_ptr
+  end subroutine asperity_slider_work_free
+
+  subroutine asperity_slider_work_assign(lhs, rhs)
+    class(asperity_slider_work), intent(inout) :: lhs
+    type(asperity_slider_work), intent(in) :: rhs
+    if (c_associated(rhs%ptr)) then
+      if (c_associated(lhs%ptr, rhs%ptr)) return
+      call stop_copy('asperity_slider_work')
+    end if
+    call asperity_slider_work_free(lhs)
+  end subroutine asperity_slider_work_assign
+
+  impure elemental subroutine asperity_slider_work_final(work)
+    type(asperity_slider_work), intent(inout) :: work
+    call asperity_slider_work_free(work)
+  end subroutine asperity_slider_work_final
 
   ! ------------------------------------------------------------------------
   ! Friendly layer: version, errors, layouts.
@@ -3442,6 +3776,214 @@ contains
         normal_forces, areas, slip_increments, dt, stick_stiffness, p_old, p_new, &
         tangential_forces, loc_d(dissipation)), what, status)
   end subroutine asperity_homogenised_friction_step_block
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: the slider as the friction law of surface patches.
+
+  !> A slider from the scene JSON text `json` (the format of
+  !> `examples/scenes/*.json`); relative file paths in the scene are resolved
+  !> against `base_dir` (absent: the current directory). A JSON or field
+  !> error is `ASPERITY_ERR_PARSE`, its message giving the line, column and
+  !> field. An object `slider` held is freed first.
+  subroutine asperity_slider_from_scene_json(json, slider, base_dir, status)
+    character(len=*, kind=c_char), intent(in) :: json
+    type(asperity_slider), intent(inout) :: slider
+    character(len=*), intent(in), optional :: base_dir
+    integer(c_int32_t), intent(out), optional :: status
+    character(kind=c_char), allocatable, target :: dir(:)
+    type(c_ptr) :: p_dir
+    integer :: i, n
+    call slider%free()
+    p_dir = c_null_ptr
+    if (present(base_dir)) then
+      n = len_trim(base_dir)
+      allocate (dir(n + 1))
+      do i = 1, n
+        dir(i) = base_dir(i:i)
+      end do
+      dir(n + 1) = c_null_char
+      p_dir = c_loc(dir)
+    end if
+    call check(c_asperity_slider_from_scene_json(json, len(json, kind=c_size_t), p_dir, &
+        slider%ptr), 'asperity_slider_from_scene_json', status)
+  end subroutine asperity_slider_from_scene_json
+
+  !> The number of doubles `n` of one patch state (8 + 2 x rods).
+  subroutine asperity_slider_state_size(slider, n, status)
+    type(asperity_slider), intent(in) :: slider
+    integer, intent(out) :: n
+    integer(c_int32_t), intent(out), optional :: status
+    integer(c_size_t) :: c
+    c = 0
+    call check(c_asperity_slider_state_size(slider%ptr, c), 'asperity_slider_state_size', status)
+    n = int(c)
+  end subroutine asperity_slider_state_size
+
+  !> The sizes and capacities of `slider` into `info` (C: `asperity_slider_info`; in Fortran
+  !> that name is the type of `info`, and a type and a procedure cannot share a name).
+  subroutine asperity_slider_get_info(slider, info, status)
+    type(asperity_slider), intent(in) :: slider
+    type(asperity_slider_info), intent(out) :: info
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_slider_info(slider%ptr, info), 'asperity_slider_info', status)
+  end subroutine asperity_slider_get_info
+
+  !> The scratch buffers of a step with `slider` into `work`: one per thread;
+  !> it may serve any slider with the same number of rods. An object `work`
+  !> held is freed first.
+  subroutine asperity_slider_work_new(slider, work, status)
+    type(asperity_slider), intent(in) :: slider
+    type(asperity_slider_work), intent(inout) :: work
+    integer(c_int32_t), intent(out), optional :: status
+    call work%free()
+    call check(c_asperity_slider_work_new(slider%ptr, work%ptr), 'asperity_slider_work_new', &
+        status)
+  end subroutine asperity_slider_work_new
+
+  !> The state size of `slider` for the size checks of `what`; -1 (and the
+  !> library's error reported) when the library cannot give it.
+  function slider_state_len(slider, what, status) result(m)
+    type(asperity_slider), intent(in) :: slider
+    character(len=*), intent(in) :: what
+    integer(c_int32_t), intent(out), optional :: status
+    integer :: m
+    integer(c_size_t) :: c
+    integer(c_int32_t) :: st
+    c = 0
+    st = c_asperity_slider_state_size(slider%ptr, c)
+    m = int(c)
+    if (st /= ASPERITY_OK) then
+      m = -1
+      call check(st, what, status)
+    end if
+  end function slider_state_len
+
+  !> One increment of one patch into `out`, with this thread's `work`:
+  !> `old_state` to `new_state` (each at least `asperity_slider_state_size`
+  !> values; all-zero = fresh), or `state` in place. The same old state and
+  !> increment give bit-identical results, so an increment can be
+  !> re-evaluated or cut back. On failure the states are untouched.
+  subroutine asperity_slider_step(slider, work, increment, out, old_state, new_state, state, &
+      status)
+    type(asperity_slider), intent(in) :: slider
+    type(asperity_slider_work), intent(inout) :: work
+    type(asperity_slider_increment), intent(in) :: increment
+    type(asperity_slider_response), intent(out) :: out
+    real(c_double), intent(in), optional, target, contiguous :: old_state(:)
+    real(c_double), intent(inout), optional, target, contiguous :: new_state(:)
+    real(c_double), intent(inout), optional, target, contiguous :: state(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_slider_step'
+    integer :: m
+    if (state_clash(what, present(state), present(old_state) .or. present(new_state), status)) &
+        return
+    if (.not. (present(state) .or. (present(old_state) .and. present(new_state)))) then
+      call local_error(what, 'invalid argument `state`: give `state` (in place) or both '// &
+          '`old_state` and `new_state`', status)
+      return
+    end if
+    m = slider_state_len(slider, what, status)
+    if (m < 0) return
+    if (present(state)) then
+      if (too_small(what, 'state', size(state), m, 'the state size', status)) return
+      call check(c_asperity_slider_step(slider%ptr, work%ptr, increment, c_loc(state), &
+          c_loc(state), out), what, status)
+    else
+      if (too_small(what, 'old_state', size(old_state), m, 'the state size', status)) return
+      if (too_small(what, 'new_state', size(new_state), m, 'the state size', status)) return
+      call check(c_asperity_slider_step(slider%ptr, work%ptr, increment, c_loc(old_state), &
+          c_loc(new_state), out), what, status)
+    end if
+  end subroutine asperity_slider_step
+
+  !> Step `size(normal_force)` patches at once (the call of an Abaqus VFRIC)
+  !> with this thread's `work`, under fixed loads `normal_force(i)` (N, at
+  !> most the capacity): slip increments `slip(1:2, i)` (m), one `dt` (s),
+  !> tangential forces out in `tangential_force(1:2, i)` (N, opposing slip)
+  !> and, when given, the dissipated energy in `dissipation(i)` (J). States
+  !> are columns of `asperity_slider_state_size` values: `old_states(:, i)`
+  !> to `new_states(:, i)`, or `states(:, i)` in place. No tangents (use
+  !> `asperity_slider_step`). On an error at C's element i (Fortran's patch
+  !> i + 1), the patches before it are written and the rest untouched.
+  subroutine asperity_slider_step_block(slider, work, normal_force, slip, dt, tangential_force, &
+      old_states, new_states, dissipation, states, status)
+    type(asperity_slider), intent(in) :: slider
+    type(asperity_slider_work), intent(inout) :: work
+    real(c_double), intent(in) :: normal_force(:), slip(:, :)
+    real(c_double), intent(in) :: dt
+    real(c_double), intent(inout) :: tangential_force(:, :)
+    real(c_double), intent(in), optional, target, contiguous :: old_states(:, :)
+    real(c_double), intent(inout), optional, target, contiguous :: new_states(:, :)
+    real(c_double), intent(inout), optional, target, contiguous :: dissipation(:)
+    real(c_double), intent(inout), optional, target, contiguous :: states(:, :)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_slider_step_block'
+    type(c_ptr) :: p_old, p_new
+    integer :: n, m
+    n = size(normal_force)
+    if (size(slip, 1) /= 2) then
+      call local_error(what, 'invalid argument `slip`: the first dimension must be 2 (x and '// &
+          'y), not '//itoa(int(size(slip, 1), c_int64_t)), status)
+      return
+    end if
+    if (size(tangential_force, 1) /= 2) then
+      call local_error(what, 'invalid argument `tangential_force`: the first dimension must '// &
+          'be 2 (x and y), not '//itoa(int(size(tangential_force, 1), c_int64_t)), status)
+      return
+    end if
+    if (too_small(what, 'slip', size(slip, 2), n, 'columns, the size of `normal_force`', &
+        status)) return
+    if (too_small(what, 'tangential_force', size(tangential_force, 2), n, &
+        'columns, the size of `normal_force`', status)) return
+    if (present(dissipation)) then
+      if (too_small(what, 'dissipation', size(dissipation), n, 'the size of `normal_force`', &
+          status)) return
+    end if
+    if (state_clash(what, present(states), present(old_states) .or. present(new_states), &
+        status)) return
+    if (.not. (present(states) .or. (present(old_states) .and. present(new_states)))) then
+      call local_error(what, 'invalid argument `states`: give `states` (in place) or both '// &
+          '`old_states` and `new_states`', status)
+      return
+    end if
+    m = slider_state_len(slider, what, status)
+    if (m < 0) return
+    p_old = c_null_ptr
+    p_new = c_null_ptr
+    if (present(states)) then
+      if (bad_states('states', states)) return
+      if (n > 0) p_old = c_loc(states)
+      p_new = p_old
+    else
+      if (bad_states('old_states', old_states)) return
+      if (bad_states('new_states', new_states)) return
+      if (n > 0) then
+        p_old = c_loc(old_states)
+        p_new = c_loc(new_states)
+      end if
+    end if
+    call check(c_asperity_slider_step_block(slider%ptr, work%ptr, int(n, c_size_t), &
+        normal_force, slip, dt, p_old, p_new, tangential_force, loc_d(dissipation)), what, &
+        status)
+
+  contains
+
+    !> True (and the error reported) unless `x` has columns of the state size
+    !> and one per patch.
+    logical function bad_states(arg, x)
+      character(len=*), intent(in) :: arg
+      real(c_double), intent(in) :: x(:, :)
+      bad_states = .false.
+      if (size(x, 1) /= m) then
+        call local_error(what, 'invalid argument `'//arg//'`: the first dimension must be '// &
+            'the state size '//itoa(int(m, c_int64_t))//', not '// &
+            itoa(int(size(x, 1), c_int64_t)), status)
+        bad_states = .true.
+        return
+      end if
+      bad_states = too_small(what, arg, size(x, 2), n, 'columns, one per patch', status)
+    end function bad_states
+  end subroutine asperity_slider_step_block
 
   ! ------------------------------------------------------------------------
   ! Friendly layer: indentation, rescaling, hardness (indentation.rs).

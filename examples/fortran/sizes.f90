@@ -40,6 +40,9 @@ program sizes
   type(asperity_friction_response) :: friction_response
   type(asperity_indentation_options) :: indentation_options
   type(asperity_indentation_result) :: indentation_result
+  type(asperity_slider_info) :: slider_info
+  type(asperity_slider_increment) :: slider_increment
+  type(asperity_slider_response) :: slider_response
   type(asperity_gw_params) :: gw_params
   type(asperity_gw_response) :: gw_response
   type(asperity_separation) :: separation
@@ -73,6 +76,9 @@ program sizes
   call row('AsperityFrictionResponse', c_sizeof(friction_response))
   call row('AsperityIndentationOptions', c_sizeof(indentation_options))
   call row('AsperityIndentationResult', c_sizeof(indentation_result))
+  call row('AsperitySliderInfo', c_sizeof(slider_info))
+  call row('AsperitySliderIncrement', c_sizeof(slider_increment))
+  call row('AsperitySliderResponse', c_sizeof(slider_response))
   call row('AsperityGwParams', c_sizeof(gw_params))
   call row('AsperityGwResponse', c_sizeof(gw_response))
   call row('AsperitySeparation', c_sizeof(separation))
