@@ -12,13 +12,12 @@
 //! `cargo build --lib` with the same profile and target directory as this test
 //! executable before compiling anything. Everything is built once per test run
 //! and shared by the tests; outputs go to `target/tmp/c_examples/<profile>/`.
-//! The toolchain, run and report helpers are shared with
-//! `tests/cpp_bindings.rs` (`tests/common/native.rs`).
+//! The toolchain, run and report helpers are shared with the C++ and Fortran
+//! tests (`tests/common/native.rs`).
 
-#[path = "common/native.rs"]
-mod native;
+mod common;
 
-use native::{Binaries, Linkage, Report, Run};
+use common::native::{self, Binaries, Linkage, Report, Run};
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
@@ -50,16 +49,16 @@ fn compile(
     let mut cmd = tool.to_command();
     cmd.args(C_FLAGS)
         .arg("-I")
-        .arg(native::manifest_dir().join("include"))
+        .arg(common::manifest().join("include"))
         .arg(source)
         .arg("-o")
         .arg(out);
     if needs_pthreads(source) {
         cmd.arg("-pthread");
     }
-    native::link_args(&mut cmd, linkage, lib_dir);
-    native::run_tool(
-        cmd,
+    cmd.args(linkage.link_args(lib_dir));
+    native::run_ok(
+        &mut cmd,
         &format!("compiling {} ({linkage:?})", source.display()),
     )?;
     Ok(out.to_path_buf())
@@ -70,24 +69,13 @@ fn needs_pthreads(source: &Path) -> bool {
     source.file_stem().is_some_and(|s| s == "tabulated_threads")
 }
 
-fn example_sources() -> Vec<PathBuf> {
-    let dir = native::manifest_dir().join("examples/c");
-    let mut v: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("reading {}: {e}", dir.display()))
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "c"))
-        .collect();
-    v.sort();
-    v
-}
-
 fn build_all() -> Result<Built, String> {
     let l = native::layout()?;
     native::build_library(&l)?;
     let out = native::out_dir(&l, "c_examples");
     std::fs::create_dir_all(&out).map_err(|e| format!("creating {}: {e}", out.display()))?;
-    let tool = native::compiler(&l, &out, false)?;
-    let jobs: Vec<(String, PathBuf, Linkage)> = example_sources()
+    let tool = native::c_compiler(&l, &out)?;
+    let jobs: Vec<(String, PathBuf, Linkage)> = native::sources("examples/c", "c")
         .into_iter()
         .flat_map(|src| {
             let name = src.file_stem().unwrap().to_string_lossy().into_owned();
@@ -126,7 +114,7 @@ fn run(name: &str, linkage: Linkage) -> Run {
         linkage,
         &format!("examples/c/{name}.c"),
     );
-    native::run(&bin, format!("{name} ({linkage:?} linkage)"))
+    native::run(&bin, &[], &format!("{name} ({linkage:?} linkage)"))
 }
 
 // ---------------------------------------------------------------------------

@@ -17,10 +17,9 @@
 //!
 //! Without a C++ compiler the compiling tests print why and pass.
 
-#[path = "common/native.rs"]
-mod native;
+mod common;
 
-use native::{Binaries, Linkage, Report, Run};
+use common::native::{self, Binaries, Linkage, Report, Run};
 use std::collections::{BTreeMap, BTreeSet};
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
@@ -59,7 +58,7 @@ const LJ: &str =
     "the Lennard-Jones sphere and the advisor (src/contact/lj_sphere, src/fidelity.rs)";
 
 fn hpp_path() -> PathBuf {
-    native::manifest_dir().join("bindings/cpp/asperity.hpp")
+    common::manifest().join("bindings/cpp/asperity.hpp")
 }
 
 fn read(path: &Path) -> String {
@@ -120,7 +119,7 @@ fn called_names(code: &str, prefix: &str) -> BTreeSet<String> {
 
 /// The functions the C header declares.
 fn header_functions() -> BTreeSet<String> {
-    let (code, _) = split_comments(&read(&native::manifest_dir().join("include/asperity.h")));
+    let (code, _) = split_comments(&read(&common::manifest().join("include/asperity.h")));
     called_names(&code, "asperity_")
 }
 
@@ -167,7 +166,7 @@ fn every_c_function_has_a_cpp_counterpart() {
 
 #[test]
 fn every_opaque_handle_has_an_raii_class() {
-    let header = read(&native::manifest_dir().join("include/asperity.h"));
+    let header = read(&common::manifest().join("include/asperity.h"));
     let handles: Vec<&str> = header
         .lines()
         .filter_map(|l| l.strip_prefix("typedef struct "))
@@ -199,15 +198,8 @@ enum Built {
 
 /// Programs of `examples/cpp`: `<name>_<letter>.cpp` files form one program.
 fn programs() -> BTreeMap<String, Vec<PathBuf>> {
-    let dir = native::manifest_dir().join("examples/cpp");
-    let mut sources: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("reading {}: {e}", dir.display()))
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "cpp"))
-        .collect();
-    sources.sort();
     let mut out: BTreeMap<String, Vec<PathBuf>> = BTreeMap::new();
-    for s in sources {
+    for s in native::sources("examples/cpp", "cpp") {
         let stem = s.file_stem().unwrap().to_string_lossy().into_owned();
         let name = match stem.rsplit_once('_') {
             Some((base, unit))
@@ -223,7 +215,7 @@ fn programs() -> BTreeMap<String, Vec<PathBuf>> {
 }
 
 fn includes(cmd: &mut Command) {
-    let root = native::manifest_dir();
+    let root = common::manifest();
     cmd.arg("-I")
         .arg(root.join("include"))
         .arg("-I")
@@ -236,7 +228,7 @@ fn compile_object(tool: &cc::Tool, source: &Path, object: &Path) -> Result<(), S
     cmd.args(CXX_FLAGS);
     includes(&mut cmd);
     cmd.arg("-c").arg(source).arg("-o").arg(object);
-    native::run_tool(cmd, &format!("compiling {}", source.display()))
+    native::run_ok(&mut cmd, &format!("compiling {}", source.display()))
 }
 
 fn link(
@@ -248,14 +240,17 @@ fn link(
 ) -> Result<PathBuf, String> {
     let mut cmd = tool.to_command();
     cmd.args(objects).arg("-o").arg(out);
-    native::link_args(&mut cmd, linkage, lib_dir);
-    native::run_tool(cmd, &format!("linking {} ({linkage:?})", out.display()))?;
+    cmd.args(linkage.link_args(lib_dir));
+    native::run_ok(
+        &mut cmd,
+        &format!("linking {} ({linkage:?})", out.display()),
+    )?;
     Ok(out.to_path_buf())
 }
 
 /// The C++ compiler, or why there is none.
 fn cxx(l: &native::Layout, scratch: &Path) -> Result<cc::Tool, String> {
-    let tool = native::compiler(l, scratch, true)?;
+    let tool = native::cpp_compiler(l, scratch)?;
     match tool.to_command().arg("--version").output() {
         Ok(o) if o.status.success() => Ok(tool),
         Ok(o) => Err(format!(
@@ -335,7 +330,11 @@ fn built() -> Option<&'static Binaries> {
 
 fn run(name: &str, linkage: Linkage) -> Option<Run> {
     let bin = native::binary(built()?, name, linkage, &format!("examples/cpp/{name}"));
-    Some(native::run(&bin, format!("{name} ({linkage:?} linkage)")))
+    Some(native::run(
+        &bin,
+        &[],
+        &format!("{name} ({linkage:?} linkage)"),
+    ))
 }
 
 #[test]
@@ -394,8 +393,8 @@ fn header_alone_is_clean_under_strict_warnings() {
             .arg(&source)
             .arg("-o")
             .arg(out.join(format!("strict{}.o", &std[5..])));
-        native::run_tool(
-            cmd,
+        native::run_ok(
+            &mut cmd,
             &format!("compiling the header alone ({std}, strict warnings)"),
         )
         .unwrap_or_else(|e| panic!("{e}"));

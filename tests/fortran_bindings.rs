@@ -22,10 +22,9 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::OnceLock;
 
-#[allow(dead_code)]
 mod common;
 
-use common::native::{self, Linkage, Report, Run};
+use common::native::{self, Binaries, ByLinkage, Linkage, Report, Run};
 
 const MODULE: &str = "bindings/fortran/asperity.f90";
 const HEADER: &str = "include/asperity.h";
@@ -718,12 +717,9 @@ fn every_mirror_has_the_fields_of_its_struct() {
 // ---------------------------------------------------------------------------
 // Compiling and running.
 
-/// Linkage → binary, or the compiler's or linker's complaint.
-type ByLinkage = BTreeMap<Linkage, Result<PathBuf, String>>;
-
 struct Built {
     /// example name → binaries
-    binaries: BTreeMap<String, ByLinkage>,
+    binaries: Binaries,
 }
 
 /// The Fortran compiler, if there is one.
@@ -736,17 +732,6 @@ fn gfortran() -> Option<PathBuf> {
         .output()
         .is_ok_and(|o| o.status.success());
     ok.then_some(fc)
-}
-
-fn example_sources() -> Vec<PathBuf> {
-    let dir = manifest().join("examples/fortran");
-    let mut v: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("reading {}: {e}", dir.display()))
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "f90"))
-        .collect();
-    v.sort();
-    v
 }
 
 fn build_all(fc: &Path) -> Result<Built, String> {
@@ -768,21 +753,12 @@ fn build_all(fc: &Path) -> Result<Built, String> {
             .arg(&module_obj),
         "compiling the Fortran module",
     )?;
-    let results: Vec<(String, Result<ByLinkage, String>)> = std::thread::scope(|s| {
-        let handles: Vec<_> = example_sources()
-            .into_iter()
-            .map(|src| {
-                let (out, mods, module_obj, lib_dir) = (&out, &mods, &module_obj, &l.profile_dir);
-                s.spawn(move || {
-                    let name = src.file_stem().unwrap().to_string_lossy().into_owned();
-                    let r = build_example(fc, &name, &src, out, mods, module_obj, lib_dir);
-                    (name, r)
-                })
-            })
-            .collect();
-        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    let results = native::parallel(&native::sources("examples/fortran", "f90"), |src| {
+        let name = src.file_stem().unwrap().to_string_lossy().into_owned();
+        let r = build_example(fc, &name, src, &out, &mods, &module_obj, &l.profile_dir);
+        (name, r)
     });
-    let mut binaries = BTreeMap::new();
+    let mut binaries = Binaries::new();
     for (name, r) in results {
         let by_linkage = match r {
             Ok(m) => m,
@@ -829,7 +805,7 @@ fn build_example(
     )?;
     let mut m = BTreeMap::new();
     for k in Linkage::BOTH {
-        let bin = out.join(format!("{name}-{}", k.name()));
+        let bin = out.join(format!("{name}-{}", k.suffix()));
         let mut cmd = Command::new(fc);
         cmd.arg(&obj).arg(module_obj).arg("-o").arg(&bin);
         if k == Linkage::Static {
@@ -885,16 +861,12 @@ fn built() -> Option<&'static Built> {
 }
 
 fn run(name: &str, linkage: Linkage, args: &[&str]) -> Option<Run> {
-    let b = built()?;
-    let bin = match b.binaries.get(name).and_then(|m| m.get(&linkage)) {
-        None => panic!("examples/fortran/{name}.f90 not found"),
-        Some(Err(e)) => panic!("{e}"),
-        Some(Ok(bin)) => bin.clone(),
-    };
+    let source = format!("examples/fortran/{name}.f90");
+    let bin = native::binary(&built()?.binaries, name, linkage, &source);
     Some(native::run(
         &bin,
         args,
-        &format!("examples/fortran/{name}.f90 ({linkage:?} linkage)"),
+        &format!("{source} ({linkage:?} linkage)"),
     ))
 }
 
@@ -918,14 +890,7 @@ const E_STAR: f64 = 1e9;
 #[test]
 fn every_example_compiles_and_links_both_ways() {
     let Some(b) = built() else { return };
-    let mut errors = String::new();
-    for (name, by_linkage) in &b.binaries {
-        for (k, r) in by_linkage {
-            if let Err(e) = r {
-                errors.push_str(&format!("{name} ({k:?}): {e}\n"));
-            }
-        }
-    }
+    let errors = native::build_errors(&b.binaries);
     assert!(
         !b.binaries.is_empty(),
         "no Fortran examples in examples/fortran"
@@ -1166,8 +1131,8 @@ fn check_jkr_hysteresis(linkage: Linkage) {
     c.close(JKR, "jkr_old_state_unchanged", 1.0, 0.0);
     c.close(JKR, "jkr_reeval_identical", 1.0, 0.0);
     // Every row against the closed form: (δ, δ/|δ_c|, P, P/πwR, a, in_contact).
-    let approach = r.rows("approach");
-    let retract = r.rows("retract");
+    let approach = r.rows(&["approach"]);
+    let retract = r.rows(&["retract"]);
     c.ok(JKR, approach.len() == 61 && retract.len() == 62, || {
         format!(
             "expected 61 approach and 62 retract rows, got {} and {}",
@@ -1176,11 +1141,7 @@ fn check_jkr_hysteresis(linkage: Linkage) {
         )
     });
     let mut min_ref = 0.0f64;
-    for (phase, v) in approach
-        .iter()
-        .map(|v| ("approach", v))
-        .chain(retract.iter().map(|v| ("retract", v)))
-    {
+    for (phase, v) in approach.iter().chain(&retract) {
         if v.len() < 6 {
             c.fail(JKR, format!("short row: {phase} {v:?}"));
             continue;
@@ -1283,9 +1244,10 @@ fn check_pull_off_table(linkage: Linkage) {
     let a_unit = (PI * W * R * R / k).cbrt();
     let mut state = ContactState::default();
     let rows: Vec<Vec<f64>> = r
-        .rows("approach")
+        .rows(&["approach"])
         .into_iter()
-        .chain(r.rows("retract"))
+        .chain(r.rows(&["retract"]))
+        .map(|(_, v)| v)
         .collect();
     c.ok(MD, rows.len() == 62, || {
         format!("{} curve rows, expected 62", rows.len())
@@ -1403,7 +1365,7 @@ fn check_fe_strip_friction(linkage: Linkage) {
     c.close(FFI, "bad_area_names_element", 1.0, 0.0);
     c.close(FFI, "bad_area_names_area", 1.0, 0.0);
     c.close(FFI, "null_handle_status", -1.0, 0.0);
-    let history = r.rows("history").len();
+    let history = r.rows(&["history"]).len();
     c.ok(HOMOGENISED, history == 30, || {
         format!("{history} history rows, expected 30")
     });
@@ -1448,11 +1410,11 @@ fn check_vfric(linkage: Linkage) {
         .iter()
         .map(|&(p, mu, p_adh)| mu * (p * area + p_adh * area))
         .collect();
-    let rows = r.rows("friction");
+    let rows = r.rows(&["friction"]);
     c.ok(HOMOGENISED, rows.len() == 100, || {
         format!("{} friction rows, expected 100", rows.len())
     });
-    for v in &rows {
+    for (_, v) in &rows {
         if v.len() != 6 {
             c.fail(HOMOGENISED, format!("malformed friction row {v:?}"));
             continue;

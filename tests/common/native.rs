@@ -1,17 +1,20 @@
 //! Shared by the tests that compile native programs against the library
-//! (`tests/c_examples.rs`, `tests/cpp_bindings.rs`): where the test
-//! executable's profile lives, building `libasperity.a` / the shared library
-//! with that profile, finding the `cc` crate's C or C++ compiler, the link
-//! lines (static and shared), running a program with a time limit, parsing
-//! its `CHECK <name> <value>` lines, and reporting failed checks grouped by
-//! the part of the library they depend on.
+//! (`tests/c_examples.rs`, `tests/cpp_bindings.rs`,
+//! `tests/fortran_bindings.rs`, `tests/packaging.rs`, `tests/abi_layout.rs`):
+//! where the test executable's profile lives, building `libasperity.a` / the
+//! shared library with that profile, finding the `cc` crate's C or C++
+//! compiler, the link lines (static and shared), running a compiler or other
+//! tool, running a program with a time limit, parsing its
+//! `CHECK <name> <value>` lines, and reporting failed checks grouped by the
+//! part of the library they depend on.
 //!
-//! Included with `#[path = "common/native.rs"] mod native;`; each test crate
-//! uses a subset.
+//! Reached as `common::native` (`mod common;` in the test crate); each test
+//! crate uses a subset.
 
 #![allow(dead_code)]
 
 use std::collections::BTreeMap;
+use std::ffi::OsString;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -39,6 +42,7 @@ pub const SHARED_LIB: &str = "libasperity.dylib";
 #[cfg(not(target_os = "macos"))]
 pub const SHARED_LIB: &str = "libasperity.so";
 
+/// How a program links the library.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Linkage {
     Static,
@@ -55,10 +59,27 @@ impl Linkage {
             Linkage::Shared => "shared",
         }
     }
-}
 
-pub fn manifest_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+    /// The linker arguments for the library in `lib_dir` (they follow the
+    /// objects or sources on the command line).
+    pub fn link_args(self, lib_dir: &Path) -> Vec<OsString> {
+        match self {
+            Linkage::Static => std::iter::once(lib_dir.join("libasperity.a").into())
+                .chain(NATIVE_STATIC_LIBS.iter().map(OsString::from))
+                .collect(),
+            Linkage::Shared => {
+                let mut rpath = OsString::from("-Wl,-rpath,");
+                rpath.push(lib_dir);
+                vec![
+                    "-L".into(),
+                    lib_dir.into(),
+                    "-lasperity".into(),
+                    rpath,
+                    "-lm".into(),
+                ]
+            }
+        }
+    }
 }
 
 /// `target/<profile>` (or `target/<triple>/<profile>`) of this test executable,
@@ -118,11 +139,12 @@ pub fn layout() -> Result<Layout, String> {
     })
 }
 
-/// Build `libasperity.a` and the shared library with the test's profile.
+/// Build `libasperity.a` and the shared library with the test's profile
+/// (integration tests do not get them for free).
 pub fn build_library(l: &Layout) -> Result<(), String> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut cmd = Command::new(cargo);
-    cmd.current_dir(manifest_dir())
+    cmd.current_dir(super::manifest())
         .args(["build", "--lib", "--profile", &l.profile, "--target-dir"])
         .arg(&l.target_dir);
     if let Some(t) = &l.cross_target {
@@ -193,9 +215,18 @@ fn host_triple() -> String {
     )
 }
 
-/// The C (or, with `cpp`, C++) compiler `cc` would use for this target,
-/// without any cargo metadata.
-pub fn compiler(l: &Layout, scratch: &Path, cpp: bool) -> Result<cc::Tool, String> {
+/// The C compiler `cc` would use for this target, without any cargo metadata.
+pub fn c_compiler(l: &Layout, scratch: &Path) -> Result<cc::Tool, String> {
+    compiler(l, scratch, false)
+}
+
+/// The C++ compiler `cc` would use for this target, without any cargo
+/// metadata.
+pub fn cpp_compiler(l: &Layout, scratch: &Path) -> Result<cc::Tool, String> {
+    compiler(l, scratch, true)
+}
+
+fn compiler(l: &Layout, scratch: &Path, cpp: bool) -> Result<cc::Tool, String> {
     let host = host_triple();
     let target = l.cross_target.clone().unwrap_or_else(|| host.clone());
     cc::Build::new()
@@ -218,24 +249,9 @@ pub fn compiler(l: &Layout, scratch: &Path, cpp: bool) -> Result<cc::Tool, Strin
         })
 }
 
-/// Append the link line for `linkage` against the library in `lib_dir`.
-pub fn link_args(cmd: &mut Command, linkage: Linkage, lib_dir: &Path) {
-    match linkage {
-        Linkage::Static => {
-            cmd.arg(lib_dir.join("libasperity.a"));
-            cmd.args(NATIVE_STATIC_LIBS);
-        }
-        Linkage::Shared => {
-            cmd.arg("-L").arg(lib_dir).arg("-lasperity");
-            cmd.arg(format!("-Wl,-rpath,{}", lib_dir.display()));
-            cmd.arg("-lm");
-        }
-    }
-}
-
-/// Run a compiler or linker command; on failure the error gives `what`, the
-/// command line and the tool's output.
-pub fn run_tool(mut cmd: Command, what: &str) -> Result<(), String> {
+/// Run a compiler, linker or other tool; on failure the error gives `what`,
+/// the command line and the tool's output.
+pub fn run_ok(cmd: &mut Command, what: &str) -> Result<(), String> {
     // The program and its arguments, without the environment `cc` sets.
     let line = std::iter::once(cmd.get_program())
         .chain(cmd.get_args())
@@ -244,7 +260,7 @@ pub fn run_tool(mut cmd: Command, what: &str) -> Result<(), String> {
         .join(" ");
     let o = cmd
         .output()
-        .map_err(|e| format!("running the compiler `{line}`: {e}"))?;
+        .map_err(|e| format!("{what}: running `{line}`: {e}"))?;
     if !o.status.success() {
         return Err(format!(
             "{what} failed:\n{line}\n{}{}",
@@ -255,8 +271,11 @@ pub fn run_tool(mut cmd: Command, what: &str) -> Result<(), String> {
     Ok(())
 }
 
+/// One program: linkage → binary, or the compiler's or linker's complaint.
+pub type ByLinkage = BTreeMap<Linkage, Result<PathBuf, String>>;
+
 /// Built programs: name → (linkage → binary or the compiler's error).
-pub type Binaries = BTreeMap<String, BTreeMap<Linkage, Result<PathBuf, String>>>;
+pub type Binaries = BTreeMap<String, ByLinkage>;
 
 /// The binary of `name` linked `linkage`; panics with the compiler's error,
 /// or naming `source` when there is no such program.
@@ -281,7 +300,20 @@ pub fn build_errors(b: &Binaries) -> String {
     errors
 }
 
-/// `<target>/tmp/<name>/<profile>/`, where a test keeps its programs.
+/// The files of `dir` (relative to the crate root) ending in `.ext`, sorted.
+pub fn sources(dir: &str, ext: &str) -> Vec<PathBuf> {
+    let dir = super::manifest().join(dir);
+    let mut v: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("reading {}: {e}", dir.display()))
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == ext))
+        .collect();
+    v.sort();
+    v
+}
+
+/// `<target>/tmp/<name>/<profile>/`, where a test keeps its programs and
+/// other outputs.
 pub fn out_dir(l: &Layout, name: &str) -> PathBuf {
     // `CARGO_TARGET_TMPDIR` is target/tmp of the build that compiled this test.
     let base = option_env!("CARGO_TARGET_TMPDIR")
@@ -304,12 +336,13 @@ pub struct Run {
     pub status: std::process::ExitStatus,
     pub stdout: String,
     pub stderr: String,
+    /// `CHECK <name> <value>` lines.
     pub checks: BTreeMap<String, f64>,
 }
 
 impl Run {
-    /// Rows whose first word is one of `phases`: (phase, the numbers that
-    /// follow).
+    /// Rows whose first word is one of `phases`, in output order: (phase,
+    /// the numbers that follow, up to the first word that is not a number).
     pub fn rows(&self, phases: &[&str]) -> Vec<(String, Vec<f64>)> {
         self.stdout
             .lines()
@@ -323,8 +356,9 @@ impl Run {
     }
 }
 
-/// Run `bin` (at most 120 s) and parse its `CHECK <name> <value>` lines.
-pub fn run(bin: &Path, label: String) -> Run {
+/// Run `bin` with `args` (stdin closed, at most 120 s) and parse its
+/// `CHECK <name> <value>` lines; `label` names the run in failure messages.
+pub fn run(bin: &Path, args: &[&str], label: &str) -> Run {
     // One pair of output files per run: two tests may run the same binary
     // at once, and shared files would truncate each other.
     static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
@@ -332,6 +366,7 @@ pub fn run(bin: &Path, label: String) -> Run {
     let stdout_path = bin.with_extension(format!("{k}.stdout"));
     let stderr_path = bin.with_extension(format!("{k}.stderr"));
     let mut child = Command::new(bin)
+        .args(args)
         .stdin(Stdio::null())
         .stdout(std::fs::File::create(&stdout_path).unwrap())
         .stderr(std::fs::File::create(&stderr_path).unwrap())
@@ -365,7 +400,7 @@ pub fn run(bin: &Path, label: String) -> Run {
         }
     }
     Run {
-        label,
+        label: label.to_string(),
         status,
         stdout,
         stderr,
@@ -374,7 +409,7 @@ pub fn run(bin: &Path, label: String) -> Run {
 }
 
 /// Collects failed checks, each tagged with the part of the library it
-/// depends on.
+/// depends on, and panics with all of them at the end.
 pub struct Report<'a> {
     pub run: &'a Run,
     failures: Vec<(&'static str, String)>,
