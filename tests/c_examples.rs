@@ -650,7 +650,7 @@ fn check_slider_patch(linkage: Linkage) {
     let mut c = Report::new(&r);
     c.exit_ok(SLIDER);
     let slider: Slider =
-        Scene::from_file(manifest_dir().join("examples/scenes/chapter6_copper.json"))
+        Scene::from_file(common::manifest().join("examples/scenes/chapter6_copper.json"))
             .unwrap()
             .build()
             .unwrap();
