@@ -9,46 +9,19 @@
 //! Expected values are closed forms of the return mapping written out here,
 //! never taken from the code.
 
+mod common;
+
 use approx::assert_relative_eq;
 use asperity::contact::BatchError;
 use asperity::error::Error;
 use asperity::friction::*;
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 
 // ------------------------------------------------- allocation counting
 
-/// Counts allocations made by the current thread (tests run in parallel).
-struct Counting;
-
-thread_local! {
-    static ALLOCATIONS: Cell<u64> = const { Cell::new(0) };
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
-        System.alloc(l)
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        System.dealloc(p, l)
-    }
-    unsafe fn alloc_zeroed(&self, l: Layout) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
-        System.alloc_zeroed(l)
-    }
-    unsafe fn realloc(&self, p: *mut u8, l: Layout, n: usize) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
-        System.realloc(p, l, n)
-    }
-}
-
 #[global_allocator]
-static GLOBAL: Counting = Counting;
+static GLOBAL: common::counting::Counting = common::counting::Counting;
 
-fn allocations() -> u64 {
-    ALLOCATIONS.with(|c| c.get())
-}
+use common::counting::allocations;
 
 // ------------------------------------------------------------- helpers
 

@@ -7,38 +7,19 @@
 //! `#[ignore]`d tests stating the figure we get (run them with
 //! `--ignored`); see `examples/chapter6.rs` for the full study.
 
+mod common;
+
 use asperity::friction::{Loading, SlideStep, Slider, SliderOptions, SliderState, TrackEnd};
 use asperity::scene::{LoadingSpec, Scene, SurfaceSpec};
 use asperity::Error;
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 use std::path::Path;
 
 // ------------------------------------------------- counting allocator
 
-struct Counting;
-thread_local! {
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
 #[global_allocator]
-static GLOBAL: Counting = Counting;
+static GLOBAL: common::counting::Counting = common::counting::Counting;
 
-fn allocations() -> usize {
-    ALLOCATIONS.with(|c| c.get())
-}
+use common::counting::allocations;
 
 // ------------------------------------------------------------ helpers
 

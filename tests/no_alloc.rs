@@ -10,36 +10,13 @@ use asperity::contact::ContactState;
 use asperity::ffi::contact::*;
 use asperity::ffi::tabulated::*;
 use asperity::ffi::ASPERITY_OK;
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 
-struct Counting;
+mod common;
 
-thread_local! {
-    static COUNT: Cell<u64> = const { Cell::new(0) };
-}
-
-// SAFETY: forwards to the system allocator; only counts.
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        let _ = COUNT.try_with(|c| c.set(c.get() + 1));
-        System.alloc(l)
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        System.dealloc(p, l)
-    }
-    unsafe fn realloc(&self, p: *mut u8, l: Layout, n: usize) -> *mut u8 {
-        let _ = COUNT.try_with(|c| c.set(c.get() + 1));
-        System.realloc(p, l, n)
-    }
-}
+use common::counting::allocations as count;
 
 #[global_allocator]
-static GLOBAL: Counting = Counting;
-
-fn count() -> u64 {
-    COUNT.with(Cell::get)
-}
+static GLOBAL: common::counting::Counting = common::counting::Counting;
 
 type Law = AsperityNormalLaw;
 

@@ -6,33 +6,14 @@
 
 use asperity::friction::{Loading, SliderIncrement, SliderStates, SliderTangents};
 use asperity::scene::Scene;
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 use std::path::Path;
 
-struct Counting;
-thread_local! {
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
-#[global_allocator]
-static GLOBAL: Counting = Counting;
+mod common;
 
-fn allocations() -> usize {
-    ALLOCATIONS.with(|c| c.get())
-}
+use common::counting::allocations;
+
+#[global_allocator]
+static GLOBAL: common::counting::Counting = common::counting::Counting;
 
 #[test]
 fn flat_step_does_not_allocate() {

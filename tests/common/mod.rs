@@ -3,6 +3,7 @@
 //! (`native`) the helpers of the tests that compile C, C++ and Fortran
 //! programs against the library.
 
+pub mod counting;
 pub mod native;
 
 use std::path::{Path, PathBuf};
