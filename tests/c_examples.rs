@@ -550,45 +550,12 @@ const HOMOGENISED: &str =
 /// `fe_strip_friction`: a toy explicit FE loop over 64 contact points, each a
 /// mass on a spring to a driven base, calling the block step each increment.
 fn check_fe_strip_friction(linkage: Linkage) {
-    use asperity::friction::{CofForm, Dissipation, HomogenisedFriction, HomogenisedSample};
     let r = run("fe_strip_friction", linkage);
     let mut c = Report::new(&r);
     c.exit_ok(HOMOGENISED);
     c.close(FFI, "state_size_matches", 1.0, 0.0);
     c.close(HOMOGENISED, "points", 64.0, 0.0);
-    // The example's table, rebuilt here through the Rust API: the steady
-    // sliding force is Σ μ(p_i)(N_i + A_i) over the strip.
-    let rows = [
-        (10.0, 1.10, 0.90, 0.010, 0.930, 0.067, 0.002),
-        (50.0, 1.02, 4.50, 0.050, 0.925, 0.066, 0.006),
-        (100.0, 0.97, 9.00, 0.100, 0.920, 0.064, 0.010),
-        (150.0, 0.93, 13.5, 0.150, 0.910, 0.062, 0.018),
-        (200.0, 0.90, 18.0, 0.200, 0.900, 0.060, 0.025),
-    ];
-    let samples: Vec<HomogenisedSample> = rows
-        .iter()
-        .map(|&(p, mu, pa, fr, ch, v, e)| HomogenisedSample {
-            pressure: p * 1e6,
-            cof: mu,
-            adhesion_pressure: pa * 1e6,
-            contact_fraction: fr,
-            shares: Dissipation {
-                chemical: ch,
-                van_der_waals: v,
-                elastic: e,
-                plastic: 1.0 - ch - v - e,
-            },
-        })
-        .collect();
-    let law = HomogenisedFriction::from_samples(&samples, CofForm::Derjaguin).unwrap();
-    let area = 1e-6;
-    let expected: f64 = (0..64)
-        .map(|i| {
-            let p = 10e6 + 190e6 * i as f64 / 63.0;
-            let s = law.sample_at(p).unwrap();
-            s.cof * (p * area + s.adhesion_pressure * area)
-        })
-        .sum();
+    let expected = native::fe_strip_steady_force();
     c.close(
         HOMOGENISED,
         "expected_steady_force",

@@ -507,3 +507,49 @@ impl<'a> Report<'a> {
         panic!("{msg}");
     }
 }
+
+/// The homogenised law of the FE-strip examples
+/// (`examples/c/fe_strip_friction.c`, `examples/fortran/fe_strip_friction.f90`):
+/// their table rebuilt through the Rust API.
+pub fn fe_strip_law() -> asperity::friction::HomogenisedFriction {
+    use asperity::friction::{CofForm, Dissipation, HomogenisedFriction, HomogenisedSample};
+    // (p MPa, μ, adhesion MPa, contact fraction, chemical, vdW, elastic shares)
+    let rows = [
+        (10.0, 1.10, 0.90, 0.010, 0.930, 0.067, 0.002),
+        (50.0, 1.02, 4.50, 0.050, 0.925, 0.066, 0.006),
+        (100.0, 0.97, 9.00, 0.100, 0.920, 0.064, 0.010),
+        (150.0, 0.93, 13.5, 0.150, 0.910, 0.062, 0.018),
+        (200.0, 0.90, 18.0, 0.200, 0.900, 0.060, 0.025),
+    ];
+    let samples: Vec<HomogenisedSample> = rows
+        .iter()
+        .map(|&(p, mu, pa, fr, ch, v, e)| HomogenisedSample {
+            pressure: p * 1e6,
+            cof: mu,
+            adhesion_pressure: pa * 1e6,
+            contact_fraction: fr,
+            shares: Dissipation {
+                chemical: ch,
+                van_der_waals: v,
+                elastic: e,
+                plastic: 1.0 - ch - v - e,
+            },
+        })
+        .collect();
+    HomogenisedFriction::from_samples(&samples, CofForm::Derjaguin).unwrap()
+}
+
+/// The steady sliding force (N) of the FE-strip examples: Σ μ(p_i)(N_i + A_i)
+/// (Derjaguin form) over the 64 strip points at pressures 10 … 200 MPa on
+/// 1 mm² each.
+pub fn fe_strip_steady_force() -> f64 {
+    let law = fe_strip_law();
+    let area = 1e-6;
+    (0..64)
+        .map(|i| {
+            let p = 10e6 + 190e6 * i as f64 / 63.0;
+            let s = law.sample_at(p).unwrap();
+            s.cof * (p * area + s.adhesion_pressure * area)
+        })
+        .sum()
+}
