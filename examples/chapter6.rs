@@ -1,12 +1,13 @@
 //! The chapter-6 study (thesis 6.5): Cu–Cu hierarchical slider, fixed load,
-//! on seeded synthetic self-affine profiles (and on a measured profile from
-//! `../shared/data/profiles/` when present). Prints Markdown tables next to
-//! the thesis's numbers.
+//! on seeded synthetic self-affine profiles with copper-like statistics and
+//! on the measured line scans of `../shared/data/profiles/` when present.
+//! Prints Markdown tables next to the thesis's numbers, and the study of the
+//! plastic pile-up rule (thesis 6.2.3) that sets how the COF depends on load.
 //!
 //! `cargo run --release --example chapter6`
 
 use asperity::friction::{SlideSummary, Slider};
-use asperity::scene::{LoadingSpec, Scene, SurfaceSpec};
+use asperity::scene::{FormSpec, LoadingSpec, PlasticSpec, Scene, SurfaceSpec};
 use std::path::Path;
 
 fn scene() -> Scene {
@@ -147,5 +148,105 @@ fn main() {
             s.mean_cof,
             thesis3[k - 1]
         );
+    }
+
+    // The pile-up rule (thesis 6.2.3): where the volume of a yielded rod goes.
+    println!(
+        "\n## The pile-up rule: COF (plastic share of the dissipation) at the loads of Table 6-1\n"
+    );
+    let loads = [0.05, 0.11, 0.25, 0.45, 0.65];
+    let mut head = String::from("| rule |");
+    for f in loads {
+        head += &format!(" {f} σ_y A_n |");
+    }
+    println!("{head}\n|---|{}", "---|".repeat(loads.len()));
+    let rules = [
+        (
+            "nearest neighbours (thesis)",
+            PlasticSpec::NearestNeighbours,
+        ),
+        ("Gaussian ℓ = 5 µm", PlasticSpec::Gaussian { width: 5e-6 }),
+        ("Gaussian ℓ = 10 µm", PlasticSpec::Gaussian { width: 1e-5 }),
+        (
+            "Gaussian ℓ = 20 µm (scene)",
+            PlasticSpec::Gaussian { width: 2e-5 },
+        ),
+        ("Gaussian ℓ = 40 µm", PlasticSpec::Gaussian { width: 4e-5 }),
+        ("shorten only (no pile-up)", PlasticSpec::ShortenOnly),
+    ];
+    let mut failure = None;
+    for (name, rule) in rules {
+        let mut row = format!("| {name} |");
+        for f in loads {
+            let mut sc = base.clone();
+            sc.rods.plastic = rule;
+            sc.loading = LoadingSpec::FixedLoadFraction { fraction: f };
+            row += &match try_run(&sc) {
+                Ok((_, s)) => format!(
+                    " {:.3} ({:.0} %) |",
+                    s.mean_cof,
+                    100.0 * s.dissipation.plastic / s.dissipation.total()
+                ),
+                Err(e) => {
+                    failure.get_or_insert(e);
+                    " fails¹ |".to_string()
+                }
+            };
+        }
+        println!("{row}");
+    }
+    if let Some(e) = failure {
+        println!("\n¹ {e}");
+    }
+
+    // The measured line scans (material undocumented, see the data README).
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/profiles");
+    println!("\n## Measured profiles (slider: the first 135 µm; counter: 300 µm from 1 mm; quadratic form removed)\n");
+    let files = [
+        "hommel_hfm1_stylus_linescan.csv",
+        "dektak1_stylus_linescan.csv",
+    ];
+    if !dir.join(files[0]).exists() {
+        println!("skipped: {} absent", dir.display());
+        return;
+    }
+    println!("| profile | counter Rq (nm) | rms slope | P/(σ_y A_n) | COF | adhesion share of true area | plastic share |\n|---|---|---|---|---|---|---|");
+    for file in files {
+        for f in [0.05, 0.25, 0.45, 0.65] {
+            let mut sc = base.clone();
+            sc.base = dir.clone();
+            sc.loading = LoadingSpec::FixedLoadFraction { fraction: f };
+            let spec = |start: f64, length: f64| SurfaceSpec::File {
+                path: file.into(),
+                form: FormSpec::Quadratic,
+                start,
+                length: Some(length),
+            };
+            sc.surfaces.slider = spec(0.0, 135e-6);
+            sc.surfaces.counter = spec(1e-3, 300e-6);
+            let (sl, s) = match try_run(&sc) {
+                Ok(r) => r,
+                Err(e) => {
+                    println!("| {file} | | | {f} | error: {e} | | |");
+                    continue;
+                }
+            };
+            let c = sl.counter();
+            let rq = (c.iter().map(|z| z * z).sum::<f64>() / c.len() as f64).sqrt();
+            let dx = sl.counter_dx();
+            let slope = (c
+                .windows(2)
+                .map(|w| ((w[1] - w[0]) / dx).powi(2))
+                .sum::<f64>()
+                / (c.len() - 1) as f64)
+                .sqrt();
+            println!(
+                "| {file} | {:.1} | {slope:.3} | {f} | {:.3} | {:.0} % | {:.1} % |",
+                rq * 1e9,
+                s.mean_cof,
+                100.0 * s.mean_adhesion_area_share,
+                100.0 * s.dissipation.plastic / s.dissipation.total()
+            );
+        }
     }
 }

@@ -214,7 +214,9 @@ pub struct RodsSpec {
     /// Root margin below the deepest rod (m); default: the tip width.
     #[serde(default)]
     pub root_margin: Option<f64>,
-    /// Plastic update (default nearest neighbours).
+    /// Plastic update (default nearest neighbours, the thesis's rule; the
+    /// chapter-6 scenes use Gaussian weights, see
+    /// [`PlasticUpdate`](crate::friction::PlasticUpdate)).
     #[serde(default)]
     pub plastic: PlasticSpec,
     /// Solver (default sweep).

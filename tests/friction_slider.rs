@@ -3,14 +3,16 @@
 //! when `../shared/data/profiles/` is present), bad input, extremes, and no
 //! allocation per step.
 //!
-//! Targets the model as written does not meet on our profiles are kept as
-//! `#[ignore]`d tests stating the figure we get (run them with
-//! `--ignored`); see `examples/chapter6.rs` for the full study.
+//! The chapter-6 scenes spread the volume of yielded rods with Gaussian
+//! weights of width 20 µm (thesis 6.2.3's proposed weighting function); the
+//! thesis's nearest-neighbour rule makes the COF grow with load, which
+//! `nearest_neighbour_pile_up_re_yields_with_load` pins down. See
+//! `examples/chapter6.rs` for the full study.
 
 mod common;
 
 use asperity::friction::{Loading, SlideStep, Slider, SliderOptions, SliderState, TrackEnd};
-use asperity::scene::{LoadingSpec, Scene, SurfaceSpec};
+use asperity::scene::{LoadingSpec, PlasticSpec, Scene, SurfaceSpec};
 use asperity::Error;
 use std::path::Path;
 
@@ -81,12 +83,8 @@ fn chapter6_scene_runs_and_chemical_bonds_dominate() {
 }
 
 /// Thesis 6.5.1: average COF 0.9, Cu–Cu literature 0.8–1.2 at 0.18 N.
-/// We get ≈ 1.3 at 0.18 N with the synthetic copper-like profiles: the
-/// plastic work of rods re-yielding as they slide over new counter
-/// asperities is ≈ 25 % of the dissipation (the thesis's smoother measured
-/// profiles yield 3 coarse rods only).
+/// We get 1.05 (chemical bonds 89 %, plastic work 4 %).
 #[test]
-#[ignore = "not met: mean COF ≈ 1.3 at 0.18 N (target 0.8–1.2), plastic work ≈ 25 %"]
 fn chapter6_average_cof_in_literature_range() {
     let s = scene();
     let run = s
@@ -94,6 +92,7 @@ fn chapter6_average_cof_in_literature_range() {
         .unwrap()
         .slide(s.sliding.distance, s.sliding.step)
         .unwrap();
+    println!("0.18 N: mean COF {}", run.summary.mean_cof);
     assert!(
         (0.8..=1.2).contains(&run.summary.mean_cof),
         "{}",
@@ -133,26 +132,57 @@ fn true_contact_area_linear_in_load() {
     assert!(r2 >= 0.95);
 }
 
-/// Table 6-1: COF 1.08 … 0.92, independent of load. We get COF rising from
-/// ≈ 1.10 (0.095 σ_y A_n) to ≈ 1.69 (0.65 σ_y A_n): the plastic share grows
-/// with the number of yielded rods.
+/// The loads of thesis Table 6-1, as fractions of σ_y A_n.
+const TABLE_6_1: [f64; 9] = [0.05, 0.095, 0.11, 0.19, 0.25, 0.35, 0.45, 0.55, 0.65];
+
+fn mean_cof_and_plastic_share(s: &Scene) -> (f64, f64) {
+    let run = s
+        .build()
+        .unwrap()
+        .slide(s.sliding.distance, s.sliding.step)
+        .unwrap();
+    let d = run.summary.dissipation;
+    (run.summary.mean_cof, d.plastic / d.total())
+}
+
+/// Table 6-1: COF 1.08 … 0.92 over 0.05 … 0.65 σ_y A_n, independent of load.
+/// We get 1.05 … 1.19, every load within ±15 % of the mean and in 0.8–1.2.
 #[test]
-#[ignore = "not met: COF rises with load (≈ 1.1 → 1.45 over 0.05–0.45 sigma_y A_n)"]
 fn cof_independent_of_load() {
-    let mut mu = vec![];
-    for f in [0.05, 0.11, 0.25, 0.45] {
-        let s = with_fraction(f);
-        mu.push(
-            s.build()
-                .unwrap()
-                .slide(s.sliding.distance, s.sliding.step)
-                .unwrap()
-                .summary
-                .mean_cof,
+    let mu: Vec<f64> = TABLE_6_1
+        .iter()
+        .map(|&f| mean_cof_and_plastic_share(&with_fraction(f)).0)
+        .collect();
+    let m = mu.iter().sum::<f64>() / mu.len() as f64;
+    println!("COF(P), Table 6-1 loads: {mu:?}, mean {m}");
+    assert!(mu.iter().all(|x| (x / m - 1.0).abs() <= 0.15), "{mu:?}");
+    assert!(mu.iter().all(|x| (0.8..=1.2).contains(x)), "{mu:?}");
+}
+
+/// Why the chapter-6 scenes do not use the thesis's nearest-neighbour
+/// pile-up ([`asperity::friction::PlasticUpdate`]): the volume of a yielded
+/// rod goes to the rods next to the contact spot, which the counter-surface
+/// reaches next, so it yields again, and the plastic share of the
+/// dissipation (and the COF) grows with load. The Gaussian spread of the
+/// scene keeps it small at every load.
+#[test]
+fn nearest_neighbour_pile_up_re_yields_with_load() {
+    let nearest = |f: f64| {
+        let mut s = with_fraction(f);
+        s.rods.plastic = PlasticSpec::NearestNeighbours;
+        mean_cof_and_plastic_share(&s)
+    };
+    let (low, high) = (nearest(0.05), nearest(0.65));
+    println!("nearest neighbours: (COF, plastic share) {low:?} at 0.05, {high:?} at 0.65");
+    assert!(low.1 < 0.05 && high.1 > 0.3, "{low:?} {high:?}");
+    assert!(high.0 > 1.3 * low.0, "{low:?} {high:?}");
+    for f in [0.05, 0.65] {
+        let (_, share) = mean_cof_and_plastic_share(&with_fraction(f));
+        assert!(
+            share < 0.1,
+            "Gaussian pile-up at {f}: plastic share {share}"
         );
     }
-    let m = mu.iter().sum::<f64>() / mu.len() as f64;
-    assert!(mu.iter().all(|x| (x / m - 1.0).abs() <= 0.15), "{mu:?}");
 }
 
 #[test]
