@@ -11,6 +11,16 @@
  * AsperityNormalLaw values are plain immutable data and may be shared between
  * threads. Per-contact AsperityContactState is owned by the caller; an
  * all-zero state means "never touched".
+ *
+ * Threads: the opaque handles AsperityTable, AsperityHomogenisedFriction,
+ * AsperitySliderGeometry, AsperitySlider and AsperityGwEmpirical are immutable
+ * once built: one handle may be used by any number of threads at once
+ * (results are bit-identical to single-threaded calls; only *_free must not
+ * race with other use). Per caller, never shared while in use: an
+ * AsperitySliderWork (one per thread), and every state a call writes
+ * (AsperityContactState, AsperityFrictionPointState, slider flat states,
+ * output arrays). asperity_last_error_message() reports the last failure of
+ * the calling thread only.
  */
 
 #ifndef ASPERITY_H
@@ -1350,8 +1360,10 @@ int32_t asperity_pull_off_force(const struct AsperityNormalLaw *law,
                                 int32_t control,
                                 double *force);
 
-// A characteristic overlap of `law` (m), for non-dimensionalising host-code
-// tolerances.
+// A characteristic overlap of `law` (m, finite and > 0), for
+// non-dimensionalising host-code tolerances. `ASPERITY_ERR_OUT_OF_DOMAIN`
+// (naming `law`, `length` untouched) when the parameters are so extreme
+// (e.g. a subnormal E*) that the scale underflows to 0 or overflows f64.
 int32_t asperity_law_length_scale(const struct AsperityNormalLaw *law,
                                   double *length);
 

@@ -69,6 +69,7 @@ pub mod scene;
 mod serde_exact;
 pub mod statistics;
 pub mod surface;
+mod thread_safety;
 
 pub use contact::{ContactState, Control, NormalContact, NormalLaw, NormalResponse};
 pub use error::{Error, Result};

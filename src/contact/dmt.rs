@@ -113,12 +113,19 @@ impl NormalContact for Dmt {
     }
 
     /// The overlap at which the Hertz force equals the adhesive force,
-    /// `(3πw√R/(2E*))^{2/3}`; the radius when w = 0.
+    /// `(3πw√R/(2E*))^{2/3}`; the radius when w = 0, or when that power
+    /// under- or overflows f64 (found by tests/sweeps.rs: w = 1e-300 gave a
+    /// length scale of 0).
     fn length_scale(&self) -> f64 {
         if self.work_of_adhesion == 0.0 {
             return self.radius;
         }
-        (3.0 * PI * self.work_of_adhesion * self.radius.sqrt() / (2.0 * self.e_star))
-            .powf(2.0 / 3.0)
+        let l = (3.0 * PI * self.work_of_adhesion * self.radius.sqrt() / (2.0 * self.e_star))
+            .powf(2.0 / 3.0);
+        if l.is_normal() {
+            l
+        } else {
+            self.radius
+        }
     }
 }

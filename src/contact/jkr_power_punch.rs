@@ -462,12 +462,18 @@ impl NormalContact for JkrPowerPunch {
     }
 
     /// `|δ_c|` with adhesion; without, the radius at which the punch depth
-    /// equals the radius, `γ^{−1/(d−1)}` (d > 1), or 1 m for the cone.
+    /// equals the radius, `γ^{−1/(d−1)}` (d > 1), or 1 m for the cone (and,
+    /// as for [`super::PowerPunch`], when that power under- or overflows).
     fn length_scale(&self) -> f64 {
-        if self.adhesive() {
+        let l = if self.adhesive() {
             -self.critical_delta
         } else if self.d > 1.0 {
             self.depth_coefficient.powf(-1.0 / (self.d - 1.0))
+        } else {
+            1.0
+        };
+        if l.is_normal() && l > 0.0 {
+            l
         } else {
             1.0
         }

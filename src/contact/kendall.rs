@@ -141,9 +141,11 @@ impl NormalContact for Kendall {
         Ok(self.pull_off)
     }
 
-    /// `|δ_c| = √(2πwa/(E* C_NS))`; the radius when w = 0.
+    /// `|δ_c| = √(2πwa/(E* C_NS))`; the radius when w = 0, or when |δ_c|
+    /// is not a normal number (found by tests/sweeps.rs: E* = 5e-324 gave
+    /// +∞).
     fn length_scale(&self) -> f64 {
-        if self.critical_delta < 0.0 {
+        if self.critical_delta < 0.0 && (-self.critical_delta).is_normal() {
             -self.critical_delta
         } else {
             self.radius

@@ -220,8 +220,8 @@ macro_rules! dispatch {
 }
 
 /// `NormalLaw` adds one guarantee to the laws it dispatches to: an `Ok`
-/// response is finite (an overflow at an extreme overlap or load becomes
-/// [`Error::OutOfDomain`]).
+/// response or pull-off force is finite (an overflow at an extreme overlap,
+/// load or parameter becomes [`Error::OutOfDomain`]).
 impl NormalContact for NormalLaw {
     #[inline]
     fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
@@ -247,9 +247,21 @@ impl NormalContact for NormalLaw {
             })
         }
     }
+    /// A pull-off force that overflows f64 (a DMT sphere of radius 1.8e308
+    /// gave −∞ with `Ok`, found by tests/sweeps.rs) is
+    /// [`Error::OutOfDomain`] naming `law`.
     #[inline]
     fn pull_off_force(&self, control: Control) -> Result<f64> {
-        dispatch!(self, l => l.pull_off_force(control))
+        let f = dispatch!(self, l => l.pull_off_force(control))?;
+        if f.is_finite() {
+            Ok(f)
+        } else {
+            Err(Error::OutOfDomain {
+                name: "law",
+                value: f,
+                reason: "its pull-off force overflows f64",
+            })
+        }
     }
     #[inline]
     fn length_scale(&self) -> f64 {

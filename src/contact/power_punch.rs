@@ -35,7 +35,7 @@
 use super::{
     check_delta, check_force, stateless, ContactState, Control, NormalContact, NormalResponse,
 };
-use crate::error::{check, Result};
+use crate::error::{check, Error, Result};
 
 /// Half-angle (rad) of the cone with the projected area of a Berkovich pyramid
 /// at equal depth: 70.3° (thesis §3.6.2).
@@ -112,9 +112,21 @@ impl PowerPunch {
     }
 
     /// A cone of half-angle `half_angle` (rad, in (0, π/2)): `d = 1`, `B = cot γ`.
+    ///
+    /// A half-angle so small that `cot γ` overflows f64 is an error naming
+    /// `half_angle` (found by tests/sweeps.rs: γ = 5e-324 was refused with a
+    /// message naming `b`, which is not an argument of this function).
     pub fn cone(half_angle: f64, e_star: f64) -> Result<Self> {
         let g = check::half_angle("half_angle", half_angle)?;
-        Self::new(1.0 / g.tan(), 1.0, e_star)
+        let b = 1.0 / g.tan();
+        if !b.is_finite() {
+            return Err(Error::InvalidArgument {
+                name: "half_angle",
+                value: g,
+                bound: "in (0, pi/2) rad with cot(half_angle) finite",
+            });
+        }
+        Self::new(b, 1.0, e_star)
     }
 
     /// Galanov's effective cone for a cone of half-angle `indenter_half_angle`
@@ -179,10 +191,18 @@ impl NormalContact for PowerPunch {
 
     /// The contact radius at which the overlap equals the contact radius,
     /// `(D B)^{−1/(d−1)}` (m), for d > 1. A cone has no intrinsic length
-    /// (`δ/a = D B` is constant); its scale is taken as 1 m.
+    /// (`δ/a = D B` is constant); its scale is taken as 1 m, and so is that
+    /// of a punch so close to a cone that `(D B)^{−1/(d−1)}` under- or
+    /// overflows f64 (found by tests/sweeps.rs: d = 1 + 2⁻⁵², B = 1477 gave
+    /// 0).
     fn length_scale(&self) -> f64 {
-        if self.d > 1.0 {
+        let l = if self.d > 1.0 {
             self.depth_coefficient.powf(-1.0 / (self.d - 1.0))
+        } else {
+            1.0
+        };
+        if l.is_normal() && l > 0.0 {
+            l
         } else {
             1.0
         }

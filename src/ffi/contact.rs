@@ -622,8 +622,10 @@ pub unsafe extern "C" fn asperity_pull_off_force(
     })
 }
 
-/// A characteristic overlap of `law` (m), for non-dimensionalising host-code
-/// tolerances.
+/// A characteristic overlap of `law` (m, finite and > 0), for
+/// non-dimensionalising host-code tolerances. `ASPERITY_ERR_OUT_OF_DOMAIN`
+/// (naming `law`, `length` untouched) when the parameters are so extreme
+/// (e.g. a subnormal E*) that the scale underflows to 0 or overflows f64.
 #[no_mangle]
 pub unsafe extern "C" fn asperity_law_length_scale(
     law: *const AsperityNormalLaw,
@@ -631,7 +633,20 @@ pub unsafe extern "C" fn asperity_law_length_scale(
 ) -> i32 {
     guard(|| {
         let law = input(law, "law")?.to_law()?;
-        *output(length, "length")? = law.length_scale();
+        let out = output(length, "length")?;
+        let l = law.length_scale();
+        // Found by the sweep of tests/sweeps.rs: a Kendall punch with
+        // E* = 5e-324 gave +inf, a power punch with B = 3e165, d = 1.0017
+        // gave 0, both with status OK.
+        if !(l.is_finite() && l > 0.0) {
+            return Err(Error::OutOfDomain {
+                name: "law",
+                value: l,
+                reason: "its length scale is not finite and > 0 (parameters at the ends of f64)",
+            }
+            .into());
+        }
+        *out = l;
         Ok(())
     })
 }
