@@ -13,9 +13,10 @@
 //!     gives, exactly in real arithmetic,
 //!     `−F·Δs = ΔD + ΔE + |ΔF|²/(2k)` with `E = |F|²/(2k)` the stick
 //!     energy: the work over the total slip is the dissipation plus the
-//!     stored energy change plus |ΔF|²/(2k), the end-of-increment force's extra work over a linearly varying force
-//!     `|ΔF|²/(2k)`, which is not booked in `ΔD` (it vanishes as the
-//!     increments shrink). Checked to 1e-12 of Σ|F||Δs|. With k = 0,
+//!     stored energy change plus `|ΔF|²/(2k)`: not a loss but the extra
+//!     work of the end-of-increment force over a force varying linearly
+//!     along the increment; not booked in `ΔD`, second order in the
+//!     increment. Checked to 1e-12 of Σ|F||Δs|. With k = 0,
 //!     `−F·Δs = ΔD`. In the no-contact regime (N + A = 0) the stored
 //!     elastic force is dropped to 0 and its energy `|F_old|²/(2k)` is
 //!     released without being booked (documented: "no friction, the force
