@@ -230,6 +230,56 @@
 // `AsperitySliderIncrement.tangents` bit: compute dF/d(slip).
 #define ASPERITY_SLIDER_TANGENT_SLIP 2
 
+// `AsperitySliderOptions.mechanisms` bit: breaking of chemical bonds (4.1).
+#define ASPERITY_MECHANISM_CHEMICAL 1
+
+// `AsperitySliderOptions.mechanisms` bit: breaking of van der Waals bonds
+// (4.2).
+#define ASPERITY_MECHANISM_VAN_DER_WAALS 2
+
+// `AsperitySliderOptions.mechanisms` bit: elastic strain energy released by
+// unloading rods (4-15).
+#define ASPERITY_MECHANISM_ELASTIC 4
+
+// `AsperitySliderOptions.mechanisms` bit: plastic work of yielding rods
+// (4-16).
+#define ASPERITY_MECHANISM_PLASTIC 8
+
+// `AsperitySliderOptions.mechanisms`: every mechanism (the default).
+#define ASPERITY_MECHANISM_ALL 15
+
+// `AsperitySliderOptions.cof_form`: Derjaguin, mu = F/(N + A) (4-3), the
+// default.
+#define ASPERITY_COF_DERJAGUIN 0
+
+// `AsperitySliderOptions.cof_form`: Amontons, mu = F/N (1-1).
+#define ASPERITY_COF_AMONTONS 1
+
+// `AsperitySliderOptions.cof_form`: Coulomb, mu = (F - A)/N (1-2).
+#define ASPERITY_COF_COULOMB 2
+
+// `AsperitySliderOptions.plastic`: the volume of a yielded rod goes in
+// halves to the nearest non-yielded rod on each side (thesis 6.2.3), the
+// default.
+#define ASPERITY_PLASTIC_NEAREST_NEIGHBOURS 0
+
+// `AsperitySliderOptions.plastic`: Gaussian weights of width
+// `plastic_width` over the non-yielded rods (the thesis's proposed
+// weighting function; the chapter-6 scenes use 20 um).
+#define ASPERITY_PLASTIC_GAUSSIAN 1
+
+// `AsperitySliderOptions.plastic`: yielded rods shorten, no pile-up
+// (volume not conserved).
+#define ASPERITY_PLASTIC_SHORTEN_ONLY 2
+
+// `AsperitySliderOptions.solver`: exact O(n log n) sweep of the rod
+// equilibrium, warm-started (the default).
+#define ASPERITY_ROD_SOLVER_SWEEP 0
+
+// `AsperitySliderOptions.solver`: the thesis's dense formulation
+// (6-12)/(6-16), iterated over active sets (reference; allocates).
+#define ASPERITY_ROD_SOLVER_DENSE 1
+
 // Index in a slider state of its flag: 0 fresh, 1 stepped.
 #define ASPERITY_SLIDER_STATE_FLAG 0
 
@@ -886,6 +936,95 @@ typedef struct AsperityIndentationResult {
     // 1 when the segments came from the labels.
     int32_t segments_from_labels;
 } AsperityIndentationResult;
+
+// How `asperity_slider_new` builds a slider (SI units). Start from
+// `asperity_slider_options_default`, then set the loading.
+typedef struct AsperitySliderOptions {
+    // Fixed load (N), finite, >= 0 and <= the capacity n sigma_y A; read
+    // when `control` is `ASPERITY_SLIDER_CONTROL_LOAD`.
+    double normal_force;
+    // Fixed gap: the slider's mean line this far above the
+    // counter-surface's mean line (m), finite; read when `control` is
+    // `ASPERITY_SLIDER_CONTROL_GAP`.
+    double gap;
+    // Width of the Gaussian pile-up weights (m), finite and > 0; read when
+    // `plastic` is `ASPERITY_PLASTIC_GAUSSIAN`.
+    double plastic_width;
+    // Rod depth across the track (m), finite and > 0, at least the
+    // nano-asperity spacing; 0 = square rods (the rod width).
+    double depth;
+    // Margin of the rod roots below the deepest rod (m), finite and >= 0;
+    // negative = the rod width.
+    double root_margin;
+    // `ASPERITY_SLIDER_CONTROL_LOAD` (1) or `ASPERITY_SLIDER_CONTROL_GAP`
+    // (2).
+    int32_t control;
+    // `ASPERITY_MECHANISM_*` bits: the mechanisms computed (0 = none; the
+    // default `ASPERITY_MECHANISM_ALL`).
+    int32_t mechanisms;
+    // `ASPERITY_COF_DERJAGUIN` (default), `_AMONTONS` or `_COULOMB`.
+    int32_t cof_form;
+    // `ASPERITY_PLASTIC_NEAREST_NEIGHBOURS` (default), `_GAUSSIAN` or
+    // `_SHORTEN_ONLY`.
+    int32_t plastic;
+    // `ASPERITY_ROD_SOLVER_SWEEP` (default) or `_DENSE`.
+    int32_t solver;
+    // 1: the counter-surface repeats with period n x counter_dx; 0 (default):
+    // running past its end is an error.
+    int32_t periodic;
+} AsperitySliderOptions;
+
+// The material constants of the friction model (thesis chapter 4), SI.
+//
+// The slider (`youngs_modulus`, `poisson_ratio`) and the counter-surface
+// (`counter_youngs_modulus`, `counter_poisson_ratio`) are given separately;
+// the contact modulus is `1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂` ([`Self::e_star`]),
+// which for identical bodies is the thesis's `E* = E/(2(1−ν²))` (4.4). The
+// no-slip factor C_NS of the adhesive flat punch ([`Self::c_ns`]) is taken
+// with the counter-surface's ν (the nano-asperity is the punch, the
+// counter-surface the half-space; for identical bodies, as in the thesis, the
+// choice does not matter).
+//
+// A plain value: fields are public, [`Self::validate`] checks them and every
+// function of the friction model that takes a material calls it.
+// Deserialisation validates; `adhesive_layer` and `threshold_strain` default
+// to 5 nm and 0.10, `areal_density` to 1/D_chem². Numbers are written as
+// exact decimal strings; plain JSON numbers are read too.
+//
+// In C this is `AsperityFrictionMaterial` (same fields, same order);
+// `asperity_friction_material_copper` fills it with [`Self::copper`].
+typedef struct AsperityFrictionMaterial {
+    // Yield stress σ_y of the micro-rods (Pa), > 0.
+    double yield_stress;
+    // Young's modulus E of the slider (Pa), finite and > 0.
+    double youngs_modulus;
+    // Poisson's ratio ν of the slider, in [0, 0.5].
+    double poisson_ratio;
+    // Young's modulus of the counter-surface (Pa), finite and > 0.
+    double counter_youngs_modulus;
+    // Poisson's ratio of the counter-surface, in [0, 0.5].
+    double counter_poisson_ratio;
+    // Diameter of the metallic bond D_chem (m), > 0: the bond length of the
+    // bond counts (4-6), (4-8), the slip per broken bond, the LJ equilibrium
+    // separation ρ (4.3.2) and the Hamaker cut-off D₀ of the hand calculation.
+    double bond_diameter;
+    // Energy dissipated by breaking one chemical bond U_chem,1 (J), ≥ 0.
+    double chemical_bond_energy;
+    // Energy dissipated by breaking one van der Waals "bond" U_vdW,1 (J), ≥ 0.
+    double vdw_bond_energy;
+    // Work of adhesion W₁₂ between slider and counter-surface (J/m²), ≥ 0.
+    double work_of_adhesion;
+    // Thickness of the adhesive layer (m), > 0; default 5 nm (thesis 4.2).
+    double adhesive_layer;
+    // Threshold strain of the bilinear elastic–rigid nano-asperity law, in
+    // (0, 1); default 0.10 (thesis 4.3.2).
+    double threshold_strain;
+    // Areal density of surface atoms N_A (m⁻²), > 0, of the Lennard-Jones
+    // stiffness (4-14). The thesis uses 1.53e19 m⁻² for copper, which is
+    // 1/D_chem² = 1.526e19 m⁻² rounded (the bond counts (4-6), (4-8) assume
+    // the same density); [`Self::new`] sets 1/D_chem².
+    double areal_density;
+} AsperityFrictionMaterial;
 
 // What a slider is: sizes and capacities (SI).
 typedef struct AsperitySliderInfo {
@@ -1705,6 +1844,38 @@ int32_t asperity_pair_work_of_adhesion(double gamma1,
 int32_t asperity_hamaker_work_of_adhesion(double hamaker,
                                           double separation,
                                           double *work_of_adhesion);
+
+// Write the library's default slider options to `*out`: fixed load 0 N
+// (set `normal_force`), every mechanism, the Derjaguin COF, the thesis's
+// nearest-neighbour pile-up, the exact sweep, square rods, root margin =
+// the rod width, a non-periodic counter-surface.
+int32_t asperity_slider_options_default(struct AsperitySliderOptions *out);
+
+// Write the thesis's Cu–Cu friction material (REFERENCE.md §5:
+// sigma_y = 276 MPa, E = 120 GPa, nu = 0.355 for both bodies, D_chem =
+// 2.56 A, U_chem = 3.35429e-19 J, U_vdW = U_chem/100, W12 = 0.10928 J/m^2,
+// adhesive layer 5 nm, threshold strain 0.10, N_A = 1.53e19 m^-2) to
+// `*out`.
+int32_t asperity_friction_material_copper(struct AsperityFrictionMaterial *out);
+
+// Build a slider from structs: the rods and nano-asperities of `geometry`
+// (copied; the handle stays the caller's), the friction `material`, the
+// rigid counter-surface `counter` (`n_counter` >= 2 heights from its mean
+// line, m) sampled at `counter_dx` (m), and `options`. Writes a new handle
+// to `*out` (NULL on failure). Equivalent to a scene with the same
+// profiles and settings. Errors: NULL pointers; the material's bounds
+// (each field named); `counter_dx` not finite and > 0; a non-finite
+// counter height; a counter-surface too short to lie under the slider
+// (unless periodic); unknown selectors (`control`, `mechanisms`,
+// `cof_form`, `plastic`, `solver`, `periodic`); the loading, `depth`,
+// `root_margin` and `plastic_width` bounds of `AsperitySliderOptions`.
+int32_t asperity_slider_new(const struct AsperitySliderGeometry *geometry,
+                            const struct AsperityFrictionMaterial *material,
+                            const double *counter,
+                            size_t n_counter,
+                            double counter_dx,
+                            const struct AsperitySliderOptions *options,
+                            struct AsperitySlider **out);
 
 // Build a slider from the scene JSON text of `len` bytes at `json` (UTF-8,
 // no NUL needed; the format of `examples/scenes/*.json`). Relative file

@@ -849,6 +849,50 @@ fn every_function_slider(c: &mut Report) {
     c.close(CPP, "rod_heights_short_threw", 1.0, 0.0);
     c.close(FFI, "rod_heights_short_status", -2.0, 0.0);
     c.close(FFI, "rod_heights_short_names_argument", 1.0, 0.0);
+
+    // asperity_slider_new: the same slider through Slider::new.
+    use asperity::friction::{
+        FrictionMaterial, Loading, NanoAsperities, Slider, SliderIncrement, SliderOptions,
+    };
+    let copper = FrictionMaterial::copper();
+    c.close(FFI, "copper_yield_stress", copper.yield_stress, 0.0);
+    c.close(FFI, "copper_work_of_adhesion", copper.work_of_adhesion, 0.0);
+    c.close(CPP, "options_default", 1.0, 0.0);
+    let nano = NanoAsperities {
+        h_vdw: 20e-9,
+        w_vdw: 430e-9,
+        h_chem: 2e-9,
+        w_chem: 161e-9,
+        spacing: 1.3e-6,
+    };
+    let geometry = SliderGeometry::uniform(13.5e-6, 3, nano, 100).unwrap();
+    let counter: Vec<f64> = (0..64).map(|i| 2e-7 * (0.7 * i as f64).sin()).collect();
+    let slider = Slider::new(
+        geometry,
+        copper,
+        counter,
+        um,
+        SliderOptions::new(Loading::FixedLoad { load: 0.01 }),
+    )
+    .unwrap();
+    let mut state = vec![0.0; slider.state_len()];
+    let increment = SliderIncrement {
+        slip: [um, 0.0],
+        ..SliderIncrement::default()
+    };
+    let r = slider
+        .step_flat_in_place(&mut state, &increment, &mut slider.work())
+        .unwrap();
+    assert!(
+        r.friction_force > 0.0,
+        "the check must see a sliding contact"
+    );
+    c.close(SLIDER, "structs_friction_force", r.friction_force, 0.0);
+    c.close(SLIDER, "structs_cof", r.cof, 0.0);
+    c.close(SLIDER, "structs_nano_contacts", r.nano_contacts as f64, 0.0);
+    c.close(CPP, "structs_bad_plastic_threw", 1.0, 0.0);
+    c.close(FFI, "structs_bad_plastic_status", -2.0, 0.0);
+    c.close(FFI, "structs_bad_plastic_names_argument", 1.0, 0.0);
 }
 
 fn every_function_indentation(c: &mut Report) {

@@ -554,3 +554,322 @@ fn scene_json_errors_and_base_dir() {
     assert!(h.is_null());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+// ------------------------------------------------ built from structs
+
+use asperity::ffi::friction::{
+    asperity_slider_geometry_free, asperity_slider_geometry_new_uniform, AsperityNanoAsperities,
+    AsperitySliderGeometry,
+};
+use asperity::friction::{
+    CofForm, FrictionMaterial, Mechanisms, NanoAsperities, PlasticUpdate, RodOptions,
+    SliderGeometry, SliderOptions, TrackEnd,
+};
+
+fn c_copper() -> FrictionMaterial {
+    let mut m = FrictionMaterial::copper();
+    m.yield_stress = 0.0;
+    assert_eq!(
+        unsafe { asperity_friction_material_copper(&mut m) },
+        ASPERITY_OK
+    );
+    assert_eq!(m, FrictionMaterial::copper());
+    m
+}
+
+fn c_defaults() -> AsperitySliderOptions {
+    let mut o = std::mem::MaybeUninit::<AsperitySliderOptions>::zeroed();
+    assert_eq!(
+        unsafe { asperity_slider_options_default(o.as_mut_ptr()) },
+        ASPERITY_OK
+    );
+    unsafe { o.assume_init() }
+}
+
+/// 90 flat rods of 1.5 µm with the chapter-6 nano-asperities (one across
+/// a tip), through C and through Rust.
+fn uniform_geometry() -> (*mut AsperitySliderGeometry, SliderGeometry) {
+    let rs = rust_slider();
+    let n = rs.geometry().nano();
+    let nano = AsperityNanoAsperities {
+        h_vdw: n.h_vdw,
+        w_vdw: n.w_vdw,
+        h_chem: n.h_chem,
+        w_chem: n.w_chem,
+        spacing: n.spacing,
+        per_rod: 1,
+    };
+    let mut g = null_mut();
+    let st = unsafe { asperity_slider_geometry_new_uniform(1.5e-6, 90, &nano, &mut g) };
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    let parameters = NanoAsperities {
+        h_vdw: n.h_vdw,
+        w_vdw: n.w_vdw,
+        h_chem: n.h_chem,
+        w_chem: n.w_chem,
+        spacing: n.spacing,
+    };
+    (
+        g,
+        SliderGeometry::uniform(1.5e-6, 90, parameters, 1).unwrap(),
+    )
+}
+
+#[test]
+fn slider_from_structs_equals_the_rust_slider() {
+    let (g, geometry) = uniform_geometry();
+    let rs = rust_slider();
+    let counter = rs.counter().to_vec();
+    let dx = rs.counter_dx();
+    let mut material = c_copper();
+    material.adhesive_layer = 8e-9;
+    // Two option sets: the scene's kind (Gaussian pile-up, deep rods, fixed
+    // load, some mechanisms off) and the defaults at a fixed gap.
+    let mut a = c_defaults();
+    a.control = ASPERITY_SLIDER_CONTROL_LOAD;
+    a.normal_force = 0.04;
+    a.plastic = ASPERITY_PLASTIC_GAUSSIAN;
+    a.plastic_width = 2e-5;
+    a.depth = 1.35e-5;
+    a.mechanisms = ASPERITY_MECHANISM_CHEMICAL | ASPERITY_MECHANISM_PLASTIC;
+    a.cof_form = ASPERITY_COF_AMONTONS;
+    let ra = SliderOptions {
+        loading: Loading::FixedLoad { load: 0.04 },
+        rod: RodOptions {
+            plastic: PlasticUpdate::Gaussian { width: 2e-5 },
+            ..RodOptions::default()
+        },
+        mechanisms: Mechanisms {
+            chemical: true,
+            van_der_waals: false,
+            elastic: false,
+            plastic: true,
+        },
+        cof_form: CofForm::Amontons,
+        depth: Some(1.35e-5),
+        root_margin: None,
+        track_end: TrackEnd::Error,
+    };
+    let mut b = c_defaults();
+    b.control = ASPERITY_SLIDER_CONTROL_GAP;
+    b.gap = -3e-7;
+    b.periodic = 1;
+    b.solver = ASPERITY_ROD_SOLVER_DENSE;
+    b.root_margin = 2e-6;
+    let rb = SliderOptions {
+        loading: Loading::FixedGap { position: -3e-7 },
+        rod: RodOptions {
+            solver: asperity::friction::RodSolver::Dense,
+            ..RodOptions::default()
+        },
+        root_margin: Some(2e-6),
+        track_end: TrackEnd::Periodic,
+        ..SliderOptions::new(Loading::FixedLoad { load: 0.0 })
+    };
+    let mut want_material = FrictionMaterial::copper();
+    want_material.adhesive_layer = 8e-9;
+    for (c_opts, r_opts) in [(a, ra), (b, rb)] {
+        let mut h = null_mut();
+        let st = unsafe {
+            asperity_slider_new(
+                g,
+                &material,
+                counter.as_ptr(),
+                counter.len(),
+                dx,
+                &c_opts,
+                &mut h,
+            )
+        };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        let want =
+            Slider::new(geometry.clone(), want_material, counter.clone(), dx, r_opts).unwrap();
+        let mut work = null_mut();
+        assert_eq!(
+            unsafe { asperity_slider_work_new(h, &mut work) },
+            ASPERITY_OK
+        );
+        let m = want.state_len();
+        let (mut c_state, mut r_state) = (vec![0.0; m], vec![0.0; m]);
+        let mut w = want.work();
+        let mut dissipated = 0.0;
+        for k in 0..40 {
+            let inc = AsperitySliderIncrement {
+                slip: [1.5e-6, 0.0],
+                ..Default::default()
+            };
+            let rinc = SliderIncrement {
+                loading: None,
+                slip: inc.slip,
+                dt: 0.0,
+                tangents: SliderTangents::default(),
+            };
+            let mut out = SliderResponse::default();
+            let st = unsafe {
+                asperity_slider_step(
+                    h,
+                    work,
+                    &inc,
+                    c_state.as_ptr(),
+                    c_state.as_mut_ptr(),
+                    &mut out,
+                )
+            };
+            assert_eq!(st, ASPERITY_OK, "{k}: {}", last_message());
+            let r = want
+                .step_flat_in_place(&mut r_state, &rinc, &mut w)
+                .unwrap();
+            assert!(same(&out, &r), "{k}: {out:?}\n{r:?}");
+            assert_eq!(bits(&c_state), bits(&r_state), "{k}");
+            dissipated += out.dissipated;
+        }
+        // The options took effect: the run dissipates, and with only the
+        // chemical and plastic mechanisms nothing else is booked.
+        assert!(dissipated > 0.0);
+        let d = &r_state[Slider::STATE_DISSIPATION..Slider::STATE_DISSIPATION + 4];
+        if c_opts.mechanisms != ASPERITY_MECHANISM_ALL {
+            assert_eq!((d[1], d[2]), (0.0, 0.0));
+            assert!(d[0] > 0.0);
+        }
+        unsafe {
+            asperity_slider_work_free(work);
+            asperity_slider_free(h);
+        }
+    }
+    unsafe { asperity_slider_geometry_free(g) };
+}
+
+#[test]
+fn slider_from_structs_errors_name_the_argument() {
+    let (g, _) = uniform_geometry();
+    let rs = rust_slider();
+    let counter = rs.counter().to_vec();
+    let dx = rs.counter_dx();
+    let material = c_copper();
+    let ok = c_defaults();
+    let new = |g: *const AsperitySliderGeometry,
+               m: *const FrictionMaterial,
+               c: &[f64],
+               dx: f64,
+               o: *const AsperitySliderOptions| {
+        let mut h = 1usize as *mut AsperitySlider;
+        let st = unsafe { asperity_slider_new(g, m, c.as_ptr(), c.len(), dx, o, &mut h) };
+        assert!(h.is_null(), "*out is NULL on failure");
+        st
+    };
+    expect_error(
+        new(null(), &material, &counter, dx, &ok),
+        ASPERITY_ERR_NULL_POINTER,
+        "geometry",
+    );
+    expect_error(
+        new(g, null(), &counter, dx, &ok),
+        ASPERITY_ERR_NULL_POINTER,
+        "material",
+    );
+    let mut bad = material;
+    bad.yield_stress = -1.0;
+    expect_error(
+        new(g, &bad, &counter, dx, &ok),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "yield_stress",
+    );
+    expect_error(
+        new(g, &material, &counter, 0.0, &ok),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "counter_dx",
+    );
+    expect_error(
+        new(g, &material, &counter[..20], dx, &ok),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "n_counter",
+    );
+    let mut nan = counter.clone();
+    nan[7] = f64::NAN;
+    expect_error(
+        new(g, &material, &nan, dx, &ok),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "counter",
+    );
+    let with = |f: &dyn Fn(&mut AsperitySliderOptions)| {
+        let mut o = ok;
+        f(&mut o);
+        o
+    };
+    for (o, code, name) in [
+        (
+            with(&|o| o.control = ASPERITY_SLIDER_CONTROL_SCENE),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.control",
+        ),
+        (
+            with(&|o| o.mechanisms = 16),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.mechanisms",
+        ),
+        (
+            with(&|o| o.cof_form = 3),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.cof_form",
+        ),
+        (
+            with(&|o| o.plastic = -1),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.plastic",
+        ),
+        (
+            with(&|o| o.solver = 2),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.solver",
+        ),
+        (
+            with(&|o| o.periodic = 2),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.periodic",
+        ),
+        (
+            with(&|o| o.normal_force = -1.0),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.normal_force",
+        ),
+        (
+            with(&|o| o.normal_force = 1e3),
+            ASPERITY_ERR_OUT_OF_DOMAIN,
+            "options.normal_force",
+        ),
+        (
+            with(&|o| {
+                o.control = ASPERITY_SLIDER_CONTROL_GAP;
+                o.gap = f64::INFINITY
+            }),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.gap",
+        ),
+        (
+            with(&|o| {
+                o.plastic = ASPERITY_PLASTIC_GAUSSIAN;
+                o.plastic_width = 0.0
+            }),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.plastic_width",
+        ),
+        (
+            with(&|o| o.depth = -1e-6),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.depth",
+        ),
+        (
+            with(&|o| o.depth = 1e-7),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "options.depth",
+        ),
+    ] {
+        expect_error(new(g, &material, &counter, dx, &o), code, name);
+    }
+    expect_error(
+        new(g, &material, &counter, dx, null()),
+        ASPERITY_ERR_NULL_POINTER,
+        "options",
+    );
+    unsafe { asperity_slider_geometry_free(g) };
+}

@@ -905,6 +905,24 @@ public:
 
 class Slider;
 
+/// `asperity_friction_material_copper`: the thesis's Cu–Cu friction
+/// material (REFERENCE.md §5).
+[[nodiscard]] inline AsperityFrictionMaterial friction_material_copper()
+{
+    AsperityFrictionMaterial out{};
+    check(asperity_friction_material_copper(&out));
+    return out;
+}
+
+/// `asperity_slider_options_default`: the library's default slider options
+/// (fixed load 0 N: set `normal_force`).
+[[nodiscard]] inline AsperitySliderOptions slider_options_default()
+{
+    AsperitySliderOptions out{};
+    check(asperity_slider_options_default(&out));
+    return out;
+}
+
 /// Scratch buffers of the slider step (`AsperitySliderWork`): one per
 /// thread, built once with `SliderWork(slider)`; it may serve any slider
 /// with the same number of rods. Not shared: a step writes into it.
@@ -930,6 +948,19 @@ class Slider : public detail::unique_handle<AsperitySlider, detail::free_slider>
 public:
     using unique_handle::unique_handle;
     Slider() noexcept = default;
+
+    /// `asperity_slider_new`: a slider from structs: the rods and
+    /// nano-asperities of `geometry` (copied), the friction `material`, the
+    /// rigid counter-surface `counter` (heights from its mean line, m)
+    /// sampled at `counter_dx` (m), and `options`.
+    Slider(const SliderGeometry& geometry, const AsperityFrictionMaterial& material,
+           span<const double> counter, double counter_dx, const AsperitySliderOptions& options)
+    {
+        AsperitySlider* p = nullptr;
+        check(asperity_slider_new(geometry.get(), &material, detail::required(counter),
+                                  counter.size(), counter_dx, &options, &p));
+        reset(p);
+    }
 
     /// `asperity_slider_from_scene_json`: a slider from the scene JSON text
     /// `json` (the format of `examples/scenes/*.json`); relative file paths

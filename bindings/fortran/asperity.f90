@@ -213,6 +213,35 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_TANGENT_NORMAL = 1
   !> `asperity_slider_increment%tangents` bit: compute dF/d(slip).
   integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_TANGENT_SLIP = 2
+  !> `asperity_slider_options%mechanisms` bit: breaking of chemical bonds (4.1).
+  integer(c_int32_t), parameter, public :: ASPERITY_MECHANISM_CHEMICAL = 1
+  !> `asperity_slider_options%mechanisms` bit: breaking of van der Waals bonds (4.2).
+  integer(c_int32_t), parameter, public :: ASPERITY_MECHANISM_VAN_DER_WAALS = 2
+  !> `asperity_slider_options%mechanisms` bit: elastic strain energy released by unloading
+  !  rods (4-15).
+  integer(c_int32_t), parameter, public :: ASPERITY_MECHANISM_ELASTIC = 4
+  !> `asperity_slider_options%mechanisms` bit: plastic work of yielding rods (4-16).
+  integer(c_int32_t), parameter, public :: ASPERITY_MECHANISM_PLASTIC = 8
+  !> `asperity_slider_options%mechanisms`: every mechanism (the default).
+  integer(c_int32_t), parameter, public :: ASPERITY_MECHANISM_ALL = 15
+  !> `asperity_slider_options%cof_form`: Derjaguin, mu = F/(N + A) (4-3), the default.
+  integer(c_int32_t), parameter, public :: ASPERITY_COF_DERJAGUIN = 0
+  !> `asperity_slider_options%cof_form`: Amontons, mu = F/N (1-1).
+  integer(c_int32_t), parameter, public :: ASPERITY_COF_AMONTONS = 1
+  !> `asperity_slider_options%cof_form`: Coulomb, mu = (F - A)/N (1-2).
+  integer(c_int32_t), parameter, public :: ASPERITY_COF_COULOMB = 2
+  !> `asperity_slider_options%plastic`: the volume of a yielded rod goes in halves to the
+  !  nearest non-yielded rod on each side (thesis 6.2.3), the default.
+  integer(c_int32_t), parameter, public :: ASPERITY_PLASTIC_NEAREST_NEIGHBOURS = 0
+  !> `asperity_slider_options%plastic`: Gaussian weights of width `plastic_width` over the
+  !  non-yielded rods (the chapter-6 scenes use 20 um).
+  integer(c_int32_t), parameter, public :: ASPERITY_PLASTIC_GAUSSIAN = 1
+  !> `asperity_slider_options%plastic`: yielded rods shorten, no pile-up.
+  integer(c_int32_t), parameter, public :: ASPERITY_PLASTIC_SHORTEN_ONLY = 2
+  !> `asperity_slider_options%solver`: exact O(n log n) sweep, warm-started (the default).
+  integer(c_int32_t), parameter, public :: ASPERITY_ROD_SOLVER_SWEEP = 0
+  !> `asperity_slider_options%solver`: the thesis's dense formulation (reference).
+  integer(c_int32_t), parameter, public :: ASPERITY_ROD_SOLVER_DENSE = 1
   ! The slider state indices are C's, from 0: in Fortran the position is
   ! `state(ASPERITY_SLIDER_STATE_POSITION + 1)`.
   !> Index (from 0) in a slider state of its flag: 0 fresh, 1 stepped.
@@ -751,6 +780,66 @@ module asperity
     !> 1 when the segments came from the labels.
     integer(c_int32_t) :: segments_from_labels = 0_c_int32_t
   end type asperity_indentation_result
+
+  !> `AsperitySliderOptions`: how `asperity_slider_new` builds a slider (SI units). Start from
+  !  `asperity_slider_options_default`, then set the loading.
+  type, bind(c), public :: asperity_slider_options
+    !> Fixed load (N), finite, >= 0 and <= the capacity; read when `control` is
+    !  `ASPERITY_SLIDER_CONTROL_LOAD`.
+    real(c_double) :: normal_force = 0.0_c_double
+    !> Fixed gap: the slider's mean line this far above the counter-surface's mean line (m);
+    !  read when `control` is `ASPERITY_SLIDER_CONTROL_GAP`.
+    real(c_double) :: gap = 0.0_c_double
+    !> Width of the Gaussian pile-up weights (m), > 0; read when `plastic` is
+    !  `ASPERITY_PLASTIC_GAUSSIAN`.
+    real(c_double) :: plastic_width = 0.0_c_double
+    !> Rod depth across the track (m), > 0 and at least the nano-asperity spacing; 0 = square
+    !  rods.
+    real(c_double) :: depth = 0.0_c_double
+    !> Margin of the rod roots below the deepest rod (m), >= 0; negative = the rod width.
+    real(c_double) :: root_margin = 0.0_c_double
+    !> `ASPERITY_SLIDER_CONTROL_LOAD` (1) or `ASPERITY_SLIDER_CONTROL_GAP` (2).
+    integer(c_int32_t) :: control = 0_c_int32_t
+    !> `ASPERITY_MECHANISM_*` bits: the mechanisms computed.
+    integer(c_int32_t) :: mechanisms = 0_c_int32_t
+    !> `ASPERITY_COF_DERJAGUIN` (default), `_AMONTONS` or `_COULOMB`.
+    integer(c_int32_t) :: cof_form = 0_c_int32_t
+    !> `ASPERITY_PLASTIC_NEAREST_NEIGHBOURS` (default), `_GAUSSIAN` or `_SHORTEN_ONLY`.
+    integer(c_int32_t) :: plastic = 0_c_int32_t
+    !> `ASPERITY_ROD_SOLVER_SWEEP` (default) or `_DENSE`.
+    integer(c_int32_t) :: solver = 0_c_int32_t
+    !> 1: the counter-surface repeats; 0 (default): running past its end is an error.
+    integer(c_int32_t) :: periodic = 0_c_int32_t
+  end type asperity_slider_options
+
+  !> `AsperityFrictionMaterial`: the material constants of the friction model (thesis
+  !  chapter 4), SI. `asperity_friction_material_copper` gives the thesis's Cu-Cu values.
+  type, bind(c), public :: asperity_friction_material
+    !> Yield stress sigma_y of the micro-rods (Pa), > 0.
+    real(c_double) :: yield_stress = 0.0_c_double
+    !> Young's modulus E of the slider (Pa), > 0.
+    real(c_double) :: youngs_modulus = 0.0_c_double
+    !> Poisson's ratio of the slider, in [0, 0.5].
+    real(c_double) :: poisson_ratio = 0.0_c_double
+    !> Young's modulus of the counter-surface (Pa), > 0.
+    real(c_double) :: counter_youngs_modulus = 0.0_c_double
+    !> Poisson's ratio of the counter-surface, in [0, 0.5].
+    real(c_double) :: counter_poisson_ratio = 0.0_c_double
+    !> Diameter of the metallic bond D_chem (m), > 0.
+    real(c_double) :: bond_diameter = 0.0_c_double
+    !> Energy dissipated by breaking one chemical bond (J), >= 0.
+    real(c_double) :: chemical_bond_energy = 0.0_c_double
+    !> Energy dissipated by breaking one van der Waals bond (J), >= 0.
+    real(c_double) :: vdw_bond_energy = 0.0_c_double
+    !> Work of adhesion W12 (J/m^2), >= 0.
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Thickness of the adhesive layer (m), > 0 (5 nm in the thesis).
+    real(c_double) :: adhesive_layer = 0.0_c_double
+    !> Threshold strain of the nano-asperity law, in (0, 1) (0.10 in the thesis).
+    real(c_double) :: threshold_strain = 0.0_c_double
+    !> Areal density of surface atoms N_A (1/m^2), > 0.
+    real(c_double) :: areal_density = 0.0_c_double
+  end type asperity_friction_material
 
   !> `AsperitySliderInfo` (read with `asperity_slider_get_info`: the name `asperity_slider_info`
   !  is this type's).
@@ -2008,6 +2097,43 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_hamaker_work_of_adhesion
 
+    !> Write the library's default slider options to `*out` (fixed load 0 N: set
+    !  `normal_force`).
+    function c_asperity_slider_options_default(out) result(r) &
+        bind(c, name="asperity_slider_options_default")
+      import
+      implicit none
+      type(asperity_slider_options), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_options_default
+
+    !> Write the thesis's Cu-Cu friction material (REFERENCE.md §5) to `*out`.
+    function c_asperity_friction_material_copper(out) result(r) &
+        bind(c, name="asperity_friction_material_copper")
+      import
+      implicit none
+      type(asperity_friction_material), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_friction_material_copper
+
+    !> Build a slider from structs: the rods and nano-asperities of `geometry` (copied), the
+    !  friction `material`, the rigid counter-surface `counter` (`n_counter` >= 2 heights, m)
+    !  sampled at `counter_dx` (m), and `options`. Writes a new handle to `*out` (NULL on
+    !  failure).
+    function c_asperity_slider_new(geometry, material, counter, n_counter, counter_dx, options, &
+        out) result(r) bind(c, name="asperity_slider_new")
+      import
+      implicit none
+      type(c_ptr), value :: geometry
+      type(asperity_friction_material), intent(in) :: material
+      real(c_double), intent(in) :: counter(*)
+      integer(c_size_t), value :: n_counter
+      real(c_double), value :: counter_dx
+      type(asperity_slider_options), intent(in) :: options
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_slider_new
+
     !> Build a slider from the scene JSON text of `len` bytes at `json` (UTF-8, no NUL needed;
     !  the format of `examples/scenes/*.json`). Relative file paths in the scene are resolved
     !  against `base_dir` (a NUL-terminated UTF-8 directory path), or against the current
@@ -2760,6 +2886,9 @@ module asperity
   public :: c_asperity_weir_surface_energy_with
   public :: c_asperity_pair_work_of_adhesion
   public :: c_asperity_hamaker_work_of_adhesion
+  public :: c_asperity_slider_options_default
+  public :: c_asperity_friction_material_copper
+  public :: c_asperity_slider_new
   public :: c_asperity_slider_from_scene_json
   public :: c_asperity_slider_free
   public :: c_asperity_slider_state_size
@@ -2834,6 +2963,9 @@ module asperity
   public :: asperity_fidelity_advise
   public :: asperity_slider_geometry_new
   public :: asperity_slider_geometry_new_uniform
+  public :: asperity_slider_options_default
+  public :: asperity_friction_material_copper
+  public :: asperity_slider_new
   public :: asperity_slider_geometry_nano
   public :: asperity_slider_geometry_level_count
   public :: asperity_slider_geometry_rod_count
@@ -3779,6 +3911,39 @@ contains
 
   ! ------------------------------------------------------------------------
   ! Friendly layer: the slider as the friction law of surface patches.
+
+  !> The library's default slider options (fixed load 0 N: set `normal_force`).
+  subroutine asperity_slider_options_default(options, status)
+    type(asperity_slider_options), intent(out) :: options
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_slider_options_default(options), 'asperity_slider_options_default', &
+        status)
+  end subroutine asperity_slider_options_default
+
+  !> The thesis's Cu-Cu friction material (REFERENCE.md §5).
+  subroutine asperity_friction_material_copper(material, status)
+    type(asperity_friction_material), intent(out) :: material
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_friction_material_copper(material), &
+        'asperity_friction_material_copper', status)
+  end subroutine asperity_friction_material_copper
+
+  !> A slider from structs into `slider`: the rods of `geometry` (copied), `material`, the
+  !> counter-surface heights `counter` (m) at spacing `counter_dx` (m), and `options`. An
+  !> object `slider` held is freed first.
+  subroutine asperity_slider_new(geometry, material, counter, counter_dx, options, slider, status)
+    type(asperity_slider_geometry), intent(in) :: geometry
+    type(asperity_friction_material), intent(in) :: material
+    real(c_double), intent(in) :: counter(:)
+    real(c_double), intent(in) :: counter_dx
+    type(asperity_slider_options), intent(in) :: options
+    type(asperity_slider), intent(inout) :: slider
+    integer(c_int32_t), intent(out), optional :: status
+    call slider%free()
+    call check(c_asperity_slider_new(geometry%ptr, material, counter, &
+        size(counter, kind=c_size_t), counter_dx, options, slider%ptr), 'asperity_slider_new', &
+        status)
+  end subroutine asperity_slider_new
 
   !> A slider from the scene JSON text `json` (the format of
   !> `examples/scenes/*.json`); relative file paths in the scene are resolved

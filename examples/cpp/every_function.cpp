@@ -263,6 +263,38 @@ void slider()
         std::vector<double> room(1);
         g.rod_heights(1, room);
     });
+
+    // A slider from structs: the uniform rods over a sine counter-surface,
+    // copper, the default options at 10 mN; one step of 1 um.
+    const AsperityFrictionMaterial copper = asperity::friction_material_copper();
+    check("copper_yield_stress", copper.yield_stress);
+    check("copper_work_of_adhesion", copper.work_of_adhesion);
+    AsperitySliderOptions options = asperity::slider_options_default();
+    check_bool("options_default",
+               options.control == ASPERITY_SLIDER_CONTROL_LOAD &&
+                   options.mechanisms == ASPERITY_MECHANISM_ALL &&
+                   options.cof_form == ASPERITY_COF_DERJAGUIN &&
+                   options.plastic == ASPERITY_PLASTIC_NEAREST_NEIGHBOURS &&
+                   options.solver == ASPERITY_ROD_SOLVER_SWEEP && options.depth == 0.0 &&
+                   options.root_margin < 0.0 && options.periodic == 0);
+    options.normal_force = 0.01;
+    std::vector<double> counter(64);
+    for (std::size_t i = 0; i < counter.size(); ++i) {
+        counter[i] = 2e-7 * std::sin(0.7 * static_cast<double>(i));
+    }
+    const asperity::Slider from_structs(uniform, copper, counter, um, options);
+    asperity::SliderWork work(from_structs);
+    std::vector<double> state(from_structs.state_size(), 0.0);
+    AsperitySliderIncrement step{};
+    step.slip[0] = um;
+    const AsperitySliderResponse r = from_structs.step(work, step, state);
+    check("structs_friction_force", r.friction_force);
+    check("structs_cof", r.cof);
+    check("structs_nano_contacts", static_cast<double>(r.nano_contacts));
+    options.plastic = 7;
+    expect_error("structs_bad_plastic", "`options.plastic`", [&] {
+        const asperity::Slider bad(uniform, copper, counter, um, options);
+    });
 }
 
 void indentation()

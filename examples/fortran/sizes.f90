@@ -41,6 +41,8 @@ program sizes
   type(asperity_indentation_options) :: indentation_options
   type(asperity_indentation_result) :: indentation_result
   type(asperity_slider_info) :: slider_info
+  type(asperity_slider_options) :: slider_options
+  type(asperity_friction_material) :: friction_material
   type(asperity_slider_increment) :: slider_increment
   type(asperity_slider_response) :: slider_response
   type(asperity_gw_params) :: gw_params
@@ -77,6 +79,8 @@ program sizes
   call row('AsperityIndentationOptions', c_sizeof(indentation_options))
   call row('AsperityIndentationResult', c_sizeof(indentation_result))
   call row('AsperitySliderInfo', c_sizeof(slider_info))
+  call row('AsperitySliderOptions', c_sizeof(slider_options))
+  call row('AsperityFrictionMaterial', c_sizeof(friction_material))
   call row('AsperitySliderIncrement', c_sizeof(slider_increment))
   call row('AsperitySliderResponse', c_sizeof(slider_response))
   call row('AsperityGwParams', c_sizeof(gw_params))

@@ -63,6 +63,8 @@ const TYPES: &[TypeLayout] = layouts![
     "AsperityPeakStatistics" => super::surface::AsperityPeakStatistics,
     "AsperitySliderIncrement" => super::slider::AsperitySliderIncrement,
     "AsperitySliderInfo" => super::slider::AsperitySliderInfo,
+    "AsperitySliderOptions" => super::slider::AsperitySliderOptions,
+    "AsperityFrictionMaterial" => crate::friction::FrictionMaterial,
     "AsperitySliderResponse" => crate::friction::SliderResponse,
 ];
 

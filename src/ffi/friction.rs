@@ -15,7 +15,7 @@ use crate::friction::{NanoAsperities, RodLevel, SliderGeometry};
 /// with `asperity_slider_geometry_new` or
 /// `asperity_slider_geometry_new_uniform`, release it with
 /// `asperity_slider_geometry_free`. Immutable; safe to share between threads.
-pub struct AsperitySliderGeometry(SliderGeometry);
+pub struct AsperitySliderGeometry(pub(crate) SliderGeometry);
 
 /// The nano-asperities on the rod tips (thesis 6.2.1). Lengths in m.
 #[repr(C)]

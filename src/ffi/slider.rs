@@ -2,7 +2,9 @@
 //! friction step per time increment of a surface patch (issue 6 §4 (a)).
 //!
 //! * `AsperitySlider` (opaque, a boxed [`Slider`]) is built from a scene's
-//!   JSON text ([`Scene::from_json`], [`Scene::build`]); immutable, one
+//!   JSON text ([`Scene::from_json`], [`Scene::build`]) or from structs
+//!   (`asperity_slider_new`: a geometry handle, `AsperityFrictionMaterial`,
+//!   a counter-surface array, `AsperitySliderOptions`); immutable, one
 //!   handle may be used by any number of threads at once.
 //! * `AsperitySliderWork` (opaque, a boxed [`SliderWork`]) holds the
 //!   scratch buffers of a step: one per thread, built once.
@@ -17,10 +19,12 @@
 //! is the motion of the patch relative to the counter-surface, the
 //! tangential force is the force on the patch and opposes slip.
 
+use super::friction::AsperitySliderGeometry;
 use super::{guard, input, output, read_text, set_last_error, Failure};
 use crate::error::{Error, Result};
 use crate::friction::{
-    Loading, Slider, SliderIncrement, SliderResponse, SliderStates, SliderTangents, SliderWork,
+    CofForm, FrictionMaterial, Loading, Mechanisms, PlasticUpdate, RodOptions, RodSolver, Slider,
+    SliderIncrement, SliderOptions, SliderResponse, SliderStates, SliderTangents, SliderWork,
     TrackEnd,
 };
 use crate::scene::{Scene, SceneError};
@@ -39,6 +43,47 @@ pub const ASPERITY_SLIDER_CONTROL_GAP: i32 = 2;
 pub const ASPERITY_SLIDER_TANGENT_NORMAL: i32 = 1;
 /// `AsperitySliderIncrement.tangents` bit: compute dF/d(slip).
 pub const ASPERITY_SLIDER_TANGENT_SLIP: i32 = 2;
+
+/// `AsperitySliderOptions.mechanisms` bit: breaking of chemical bonds (4.1).
+pub const ASPERITY_MECHANISM_CHEMICAL: i32 = 1;
+/// `AsperitySliderOptions.mechanisms` bit: breaking of van der Waals bonds
+/// (4.2).
+pub const ASPERITY_MECHANISM_VAN_DER_WAALS: i32 = 2;
+/// `AsperitySliderOptions.mechanisms` bit: elastic strain energy released by
+/// unloading rods (4-15).
+pub const ASPERITY_MECHANISM_ELASTIC: i32 = 4;
+/// `AsperitySliderOptions.mechanisms` bit: plastic work of yielding rods
+/// (4-16).
+pub const ASPERITY_MECHANISM_PLASTIC: i32 = 8;
+/// `AsperitySliderOptions.mechanisms`: every mechanism (the default).
+pub const ASPERITY_MECHANISM_ALL: i32 = 15;
+
+/// `AsperitySliderOptions.cof_form`: Derjaguin, mu = F/(N + A) (4-3), the
+/// default.
+pub const ASPERITY_COF_DERJAGUIN: i32 = 0;
+/// `AsperitySliderOptions.cof_form`: Amontons, mu = F/N (1-1).
+pub const ASPERITY_COF_AMONTONS: i32 = 1;
+/// `AsperitySliderOptions.cof_form`: Coulomb, mu = (F - A)/N (1-2).
+pub const ASPERITY_COF_COULOMB: i32 = 2;
+
+/// `AsperitySliderOptions.plastic`: the volume of a yielded rod goes in
+/// halves to the nearest non-yielded rod on each side (thesis 6.2.3), the
+/// default.
+pub const ASPERITY_PLASTIC_NEAREST_NEIGHBOURS: i32 = 0;
+/// `AsperitySliderOptions.plastic`: Gaussian weights of width
+/// `plastic_width` over the non-yielded rods (the thesis's proposed
+/// weighting function; the chapter-6 scenes use 20 um).
+pub const ASPERITY_PLASTIC_GAUSSIAN: i32 = 1;
+/// `AsperitySliderOptions.plastic`: yielded rods shorten, no pile-up
+/// (volume not conserved).
+pub const ASPERITY_PLASTIC_SHORTEN_ONLY: i32 = 2;
+
+/// `AsperitySliderOptions.solver`: exact O(n log n) sweep of the rod
+/// equilibrium, warm-started (the default).
+pub const ASPERITY_ROD_SOLVER_SWEEP: i32 = 0;
+/// `AsperitySliderOptions.solver`: the thesis's dense formulation
+/// (6-12)/(6-16), iterated over active sets (reference; allocates).
+pub const ASPERITY_ROD_SOLVER_DENSE: i32 = 1;
 
 /// Index in a slider state of its flag: 0 fresh, 1 stepped.
 pub const ASPERITY_SLIDER_STATE_FLAG: usize = 0;
@@ -158,6 +203,229 @@ pub struct AsperitySliderInfo {
     /// 1 when the counter-surface repeats past its end, 0 when running
     /// past it is an error.
     pub periodic: i32,
+}
+
+/// How `asperity_slider_new` builds a slider (SI units). Start from
+/// `asperity_slider_options_default`, then set the loading.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AsperitySliderOptions {
+    /// Fixed load (N), finite, >= 0 and <= the capacity n sigma_y A; read
+    /// when `control` is `ASPERITY_SLIDER_CONTROL_LOAD`.
+    pub normal_force: f64,
+    /// Fixed gap: the slider's mean line this far above the
+    /// counter-surface's mean line (m), finite; read when `control` is
+    /// `ASPERITY_SLIDER_CONTROL_GAP`.
+    pub gap: f64,
+    /// Width of the Gaussian pile-up weights (m), finite and > 0; read when
+    /// `plastic` is `ASPERITY_PLASTIC_GAUSSIAN`.
+    pub plastic_width: f64,
+    /// Rod depth across the track (m), finite and > 0, at least the
+    /// nano-asperity spacing; 0 = square rods (the rod width).
+    pub depth: f64,
+    /// Margin of the rod roots below the deepest rod (m), finite and >= 0;
+    /// negative = the rod width.
+    pub root_margin: f64,
+    /// `ASPERITY_SLIDER_CONTROL_LOAD` (1) or `ASPERITY_SLIDER_CONTROL_GAP`
+    /// (2).
+    pub control: i32,
+    /// `ASPERITY_MECHANISM_*` bits: the mechanisms computed (0 = none; the
+    /// default `ASPERITY_MECHANISM_ALL`).
+    pub mechanisms: i32,
+    /// `ASPERITY_COF_DERJAGUIN` (default), `_AMONTONS` or `_COULOMB`.
+    pub cof_form: i32,
+    /// `ASPERITY_PLASTIC_NEAREST_NEIGHBOURS` (default), `_GAUSSIAN` or
+    /// `_SHORTEN_ONLY`.
+    pub plastic: i32,
+    /// `ASPERITY_ROD_SOLVER_SWEEP` (default) or `_DENSE`.
+    pub solver: i32,
+    /// 1: the counter-surface repeats with period n x counter_dx; 0 (default):
+    /// running past its end is an error.
+    pub periodic: i32,
+}
+
+impl AsperitySliderOptions {
+    /// The library's defaults ([`SliderOptions::new`]) with a zero fixed
+    /// load.
+    fn defaults() -> Self {
+        Self {
+            normal_force: 0.0,
+            gap: 0.0,
+            plastic_width: 0.0,
+            depth: 0.0,
+            root_margin: -1.0,
+            control: ASPERITY_SLIDER_CONTROL_LOAD,
+            mechanisms: ASPERITY_MECHANISM_ALL,
+            cof_form: ASPERITY_COF_DERJAGUIN,
+            plastic: ASPERITY_PLASTIC_NEAREST_NEIGHBOURS,
+            solver: ASPERITY_ROD_SOLVER_SWEEP,
+            periodic: 0,
+        }
+    }
+
+    fn options(&self) -> Result<SliderOptions> {
+        let selector = |name: &'static str, value: i32| Error::UnknownSelector {
+            name,
+            value: value as i64,
+        };
+        let loading = match self.control {
+            ASPERITY_SLIDER_CONTROL_LOAD => Loading::FixedLoad {
+                load: self.normal_force,
+            },
+            ASPERITY_SLIDER_CONTROL_GAP => Loading::FixedGap { position: self.gap },
+            other => return Err(selector("options.control", other)),
+        };
+        if self.mechanisms & !ASPERITY_MECHANISM_ALL != 0 {
+            return Err(selector("options.mechanisms", self.mechanisms));
+        }
+        let bit = |b: i32| self.mechanisms & b != 0;
+        let mechanisms = Mechanisms {
+            chemical: bit(ASPERITY_MECHANISM_CHEMICAL),
+            van_der_waals: bit(ASPERITY_MECHANISM_VAN_DER_WAALS),
+            elastic: bit(ASPERITY_MECHANISM_ELASTIC),
+            plastic: bit(ASPERITY_MECHANISM_PLASTIC),
+        };
+        let cof_form = match self.cof_form {
+            ASPERITY_COF_DERJAGUIN => CofForm::Derjaguin,
+            ASPERITY_COF_AMONTONS => CofForm::Amontons,
+            ASPERITY_COF_COULOMB => CofForm::Coulomb,
+            other => return Err(selector("options.cof_form", other)),
+        };
+        let plastic = match self.plastic {
+            ASPERITY_PLASTIC_NEAREST_NEIGHBOURS => PlasticUpdate::NearestNeighbours,
+            ASPERITY_PLASTIC_GAUSSIAN => PlasticUpdate::Gaussian {
+                width: self.plastic_width,
+            },
+            ASPERITY_PLASTIC_SHORTEN_ONLY => PlasticUpdate::ShortenOnly,
+            other => return Err(selector("options.plastic", other)),
+        };
+        let solver = match self.solver {
+            ASPERITY_ROD_SOLVER_SWEEP => RodSolver::Sweep,
+            ASPERITY_ROD_SOLVER_DENSE => RodSolver::Dense,
+            other => return Err(selector("options.solver", other)),
+        };
+        let track_end = match self.periodic {
+            0 => TrackEnd::Error,
+            1 => TrackEnd::Periodic,
+            other => return Err(selector("options.periodic", other)),
+        };
+        let depth = if self.depth == 0.0 {
+            None
+        } else {
+            Some(self.depth)
+        };
+        let root_margin = if self.root_margin < 0.0 {
+            None
+        } else {
+            Some(self.root_margin)
+        };
+        Ok(SliderOptions {
+            loading,
+            rod: RodOptions {
+                solver,
+                plastic,
+                ..RodOptions::default()
+            },
+            mechanisms,
+            cof_form,
+            depth,
+            root_margin,
+            track_end,
+        })
+    }
+}
+
+/// Write the library's default slider options to `*out`: fixed load 0 N
+/// (set `normal_force`), every mechanism, the Derjaguin COF, the thesis's
+/// nearest-neighbour pile-up, the exact sweep, square rods, root margin =
+/// the rod width, a non-periodic counter-surface.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_slider_options_default(out: *mut AsperitySliderOptions) -> i32 {
+    guard(|| {
+        *output(out, "out")? = AsperitySliderOptions::defaults();
+        Ok(())
+    })
+}
+
+/// Write the thesis's Cu–Cu friction material (REFERENCE.md §5:
+/// sigma_y = 276 MPa, E = 120 GPa, nu = 0.355 for both bodies, D_chem =
+/// 2.56 A, U_chem = 3.35429e-19 J, U_vdW = U_chem/100, W12 = 0.10928 J/m^2,
+/// adhesive layer 5 nm, threshold strain 0.10, N_A = 1.53e19 m^-2) to
+/// `*out`.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_friction_material_copper(out: *mut FrictionMaterial) -> i32 {
+    guard(|| {
+        *output(out, "out")? = FrictionMaterial::copper();
+        Ok(())
+    })
+}
+
+/// Build a slider from structs: the rods and nano-asperities of `geometry`
+/// (copied; the handle stays the caller's), the friction `material`, the
+/// rigid counter-surface `counter` (`n_counter` >= 2 heights from its mean
+/// line, m) sampled at `counter_dx` (m), and `options`. Writes a new handle
+/// to `*out` (NULL on failure). Equivalent to a scene with the same
+/// profiles and settings. Errors: NULL pointers; the material's bounds
+/// (each field named); `counter_dx` not finite and > 0; a non-finite
+/// counter height; a counter-surface too short to lie under the slider
+/// (unless periodic); unknown selectors (`control`, `mechanisms`,
+/// `cof_form`, `plastic`, `solver`, `periodic`); the loading, `depth`,
+/// `root_margin` and `plastic_width` bounds of `AsperitySliderOptions`.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_slider_new(
+    geometry: *const AsperitySliderGeometry,
+    material: *const FrictionMaterial,
+    counter: *const f64,
+    n_counter: usize,
+    counter_dx: f64,
+    options: *const AsperitySliderOptions,
+    out: *mut *mut AsperitySlider,
+) -> i32 {
+    guard(|| {
+        let out = output(out, "out")?;
+        *out = core::ptr::null_mut();
+        let geometry = input(geometry, "geometry")?.0.clone();
+        let material = *input(material, "material")?;
+        let counter = input(counter, "counter")?;
+        // SAFETY: the caller provides `n_counter` readable values at `counter`.
+        let counter = core::slice::from_raw_parts(counter, n_counter).to_vec();
+        let options = input(options, "options")?.options()?;
+        let slider =
+            Slider::new(geometry, material, counter, counter_dx, options).map_err(c_names)?;
+        *out = Box::into_raw(Box::new(AsperitySlider(slider)));
+        Ok(())
+    })
+}
+
+/// A `Slider::new` error with the argument named as `asperity_slider_new`
+/// names it.
+fn c_names(e: Error) -> Error {
+    let c = |name: &'static str| match name {
+        "load" => "options.normal_force",
+        "position" => "options.gap",
+        "width" => "options.plastic_width",
+        "depth" => "options.depth",
+        "root_margin" => "options.root_margin",
+        "counter.len()" => "n_counter",
+        other => other,
+    };
+    match e {
+        Error::InvalidArgument { name, value, bound } => Error::InvalidArgument {
+            name: c(name),
+            value,
+            bound,
+        },
+        Error::OutOfDomain {
+            name,
+            value,
+            reason,
+        } => Error::OutOfDomain {
+            name: c(name),
+            value,
+            reason,
+        },
+        other => other,
+    }
 }
 
 /// The library error a scene error maps to, and its full message.

@@ -88,6 +88,10 @@ const DEFAULT_THRESHOLD_STRAIN: f64 = 0.10;
 /// Deserialisation validates; `adhesive_layer` and `threshold_strain` default
 /// to 5 nm and 0.10, `areal_density` to 1/D_chem². Numbers are written as
 /// exact decimal strings; plain JSON numbers are read too.
+///
+/// In C this is `AsperityFrictionMaterial` (same fields, same order);
+/// `asperity_friction_material_copper` fills it with [`Self::copper`].
+#[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(try_from = "FrictionMaterialData")]
 pub struct FrictionMaterial {
