@@ -36,7 +36,11 @@
 //!   heights under the rods, the rod equilibrium, nano-asperities in contact
 //!   (adhesive snap-in, yielded rods), the ledger of every increment, true
 //!   contact area (6.5.3), runs and their summaries ([`Slider`]).
+//! * [`dynamic`]: the dynamic friction models of chapter 5 (LuGre with
+//!   Stribeck weakening, Maxwell-slip elements) in the same per-increment
+//!   shape, behind one trait ([`dynamic::DynamicFriction`]).
 
+pub mod dynamic;
 pub mod geometry;
 pub mod homogenised;
 pub mod ledger;

@@ -1,0 +1,181 @@
+//! Time per call of the dynamic friction steps (issue 9 §3: a LuGre or
+//! Maxwell-slip (N ≤ 10) step ≤ 50 ns), next to what a host code would
+//! write itself: LuGre integrated by explicit Euler with sub-steps (the
+//! usual scheme), at the sub-step counts that reach 1e-3 and 1e-6 relative
+//! force error against the exact increment, and an inline 1-D Maxwell-slip
+//! loop without validation.
+//!
+//! `cargo bench --bench friction_dynamic`. A calibrated timing loop, median
+//! over rounds, paths interleaved round by round. Tunables:
+//! `ASPERITY_BENCH_ROUNDS` (default 11), `ASPERITY_BENCH_RUN_MS` (default
+//! 40).
+
+use asperity::friction::dynamic::{DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip};
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+const N: usize = 1024;
+
+fn env(name: &str, default: u64) -> u64 {
+    std::env::var(name)
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(default)
+}
+
+/// μ_c 0.3, μ_s 0.5, v_s 1 mm/s, σ₀ 1e5 /m, σ₁ at half its passivity bound
+/// (v_d 1 mm/s), σ₂ 0.4 N s/m.
+fn lugre() -> LuGre {
+    let vd = 1e-3;
+    let s1 = 0.5 * 4.0 * 0.3 * (2.0 * std::f64::consts::E).sqrt() / vd;
+    LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, s1, vd, 0.4).unwrap()
+}
+
+/// Increments of an explicit dynamics host: dt = 1 µs, speeds 0.1–10 mm/s
+/// with reversals, N around 10 N.
+fn increments() -> Vec<DynamicIncrement> {
+    (0..N)
+        .map(|i| {
+            let t = i as f64;
+            let v = 1e-3 * (0.1 + 9.9 * (0.5 + 0.5 * (0.37 * t).sin())) * (0.05 * t).cos().signum();
+            DynamicIncrement {
+                normal_force: 10.0 + (0.11 * t).cos(),
+                slip: [v * 1e-6, 0.0],
+                dt: 1e-6,
+                ..Default::default()
+            }
+        })
+        .collect()
+}
+
+/// The hand-written explicit-Euler LuGre of a host code (1-D, same
+/// parameters, Amontons-scaled), `m` sub-steps per increment; returns the
+/// friction force along the motion.
+#[inline(never)]
+fn euler(z: &mut f64, n: f64, ds: f64, dt: f64, m: usize) -> f64 {
+    let (mu_c, mu_s, vs, s0, vd, s2) = (0.3, 0.5, 1e-3, 1e5, 1e-3, 0.4);
+    let s1 = 0.5 * 4.0 * 0.3 * (2.0 * std::f64::consts::E).sqrt() / vd;
+    let v = ds / dt;
+    let g = mu_c + (mu_s - mu_c) * (-(v / vs) * (v / vs)).exp();
+    let a = s0 * v.abs() / g;
+    let h = dt / m as f64;
+    for _ in 0..m {
+        *z += h * (v - a * *z);
+    }
+    n * (s0 * *z + s1 * (-(v / vd) * (v / vd)).exp() * (v - a * *z)) + s2 * v
+}
+
+/// Median time per call (ns) of `f` (which makes `N` calls).
+fn time(rounds: u64, run_ms: u64, mut f: impl FnMut()) -> f64 {
+    let start = Instant::now();
+    let mut reps = 0u64;
+    while start.elapsed() < Duration::from_millis(run_ms) {
+        f();
+        reps += 1;
+    }
+    let mut best = vec![];
+    for _ in 0..rounds {
+        let t = Instant::now();
+        for _ in 0..reps {
+            f();
+        }
+        best.push(t.elapsed().as_nanos() as f64 / (reps * N as u64) as f64);
+    }
+    best.sort_by(|a, b| a.total_cmp(b));
+    best[best.len() / 2]
+}
+
+fn main() {
+    let rounds = env("ASPERITY_BENCH_ROUNDS", 11);
+    let run_ms = env("ASPERITY_BENCH_RUN_MS", 40);
+    let incs = increments();
+    let m = lugre();
+    let len = m.state_len();
+
+    // Exact reference forces along the sequence.
+    let mut state = vec![0.0; len];
+    let mut next = state.clone();
+    let exact: Vec<f64> = incs
+        .iter()
+        .map(|i| {
+            let r = m.step(&state, &mut next, i).unwrap();
+            state.copy_from_slice(&next);
+            -r.force[0]
+        })
+        .collect();
+    // Euler's error at m sub-steps, and the counts that reach 1e-3, 1e-6.
+    let error = |sub: usize| {
+        let mut z = 0.0;
+        incs.iter()
+            .zip(&exact)
+            .map(|(i, f)| ((euler(&mut z, i.normal_force, i.slip[0], i.dt, sub) - f) / f).abs())
+            .fold(0.0, f64::max)
+    };
+    let reach = |tol: f64| (0..24).map(|p| 1usize << p).find(|&s| error(s) <= tol);
+    println!("# Dynamic friction steps, time per call (median of {rounds} rounds)\n");
+    println!("| path | sub-steps | max relative force error | ns per call |");
+    println!("|---|---:|---:|---:|");
+    let t = time(rounds, run_ms, || {
+        let mut s = [0.0; 4];
+        let mut n = [0.0; 4];
+        for i in &incs {
+            black_box(m.step(&s, &mut n, black_box(i)).unwrap());
+            s = n;
+        }
+    });
+    println!("| LuGre, exact increment (`LuGre::step`) | – | 0 (reference) | {t:.1} |");
+    for tol in [1e-3, 1e-6] {
+        match reach(tol) {
+            Some(sub) => {
+                let e = error(sub);
+                // A million sub-steps per call: one short round is enough.
+                let (r, ms) = if sub > 1 << 16 {
+                    (1, 1)
+                } else {
+                    (rounds, run_ms)
+                };
+                let te = time(r, ms, || {
+                    let mut z = 0.0;
+                    for i in &incs {
+                        black_box(euler(&mut z, i.normal_force, i.slip[0], i.dt, sub));
+                    }
+                });
+                println!(
+                    "| LuGre, hand-written explicit Euler | {sub} | {e:.1e} | {te:.1} ({:.1}× the exact step) |",
+                    te / t
+                );
+            }
+            None => println!("| LuGre, explicit Euler | > 8e6 | not reached {tol:e} | – |"),
+        }
+    }
+
+    for elements in [1usize, 4, 10] {
+        let k: Vec<f64> = (0..elements).map(|i| 2e5 / (1 << i) as f64).collect();
+        let mu: Vec<f64> = (0..elements).map(|_| 0.5 / elements as f64).collect();
+        let ms = MaxwellSlip::new(&k, &mu, 0.0).unwrap();
+        let len = ms.state_len();
+        let t = time(rounds, run_ms, || {
+            let mut s = vec![0.0; len];
+            let mut n = vec![0.0; len];
+            for i in &incs {
+                black_box(ms.step(&s, &mut n, black_box(i)).unwrap());
+                std::mem::swap(&mut s, &mut n);
+            }
+        });
+        let reach: Vec<f64> = k.iter().zip(&mu).map(|(k, m)| m / k).collect();
+        let ti = time(rounds, run_ms, || {
+            let mut d = vec![0.0; elements];
+            for i in &incs {
+                let mut f = 0.0;
+                for ((d, r), k) in d.iter_mut().zip(&reach).zip(&k) {
+                    *d = (*d + i.slip[0]).clamp(-r, *r);
+                    f += k * *d;
+                }
+                black_box(i.normal_force * f);
+            }
+        });
+        println!(
+            "| Maxwell-slip, {elements} elements (`MaxwellSlip::step`, 2-D) | – | – | {t:.1} (inline 1-D loop without checks: {ti:.1}) |"
+        );
+    }
+}

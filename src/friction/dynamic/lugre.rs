@@ -1,0 +1,309 @@
+//! The LuGre friction model (Canudas de Wit, Olsson, Åström and Lischinsky
+//! 1995), the continuous form of the bristle model of Haessig and Friedland
+//! (1991; thesis 5.3.6, (5-8)), with Stribeck velocity weakening, scaled by
+//! the normal force.
+//!
+//! # Formulas
+//!
+//! The mean bristle deflection z (m, a 2-vector) obeys, at slip velocity v,
+//!
+//! $$\dot z = v - \frac{\sigma_0 |v|}{\mu(|v|)}\, z,\qquad
+//! \mu(v) = \mu_c + (\mu_s - \mu_c)\, e^{-(v/v_s)^{\delta}},$$
+//!
+//! and the friction force (along the motion, resisting it) is
+//!
+//! $$F = N\left(\sigma_0 z + \sigma_1(|v|)\,\dot z\right) + \sigma_2 v,\qquad
+//! \sigma_1(v) = \sigma_1 e^{-(v/v_d)^2},$$
+//!
+//! with N the normal force: the bristle stiffness N σ₀ and damping N σ₁ are
+//! proportional to N (Amontons scaling), σ₀ in 1/m and σ₁ in s/m. At steady
+//! sliding z = μ(v)/σ₀ · v/|v| and F = N μ(v) + σ₂ v: the Stribeck curve.
+//! The velocity-dependent damping σ₁(v) is Canudas de Wit et al.'s (1995)
+//! remedy for the loss of passivity of constant damping.
+//!
+//! # Integration
+//!
+//! Over an increment at constant v = Δs/Δt the equation is linear with the
+//! constant rate a = σ₀|v|/μ(|v|), so it is integrated exactly:
+//! z(t) = z_ss + (z₀ − z_ss) e^{−a t}, z_ss = μ(|v|)/σ₀ · v/|v|. No step-size
+//! limit, no sub-stepping; an increment of any length is exact.
+//!
+//! # Energy
+//!
+//! The stored energy is E = ½ N σ₀ |z|². The dissipation rate, the power of
+//! F less dE/dt, is
+//!
+//! $$\dot D = N\sigma_0 a\,\bigl|z - c\bigr|^2 + |v|^2\Bigl(N\sigma_1(1 - \tfrac{\sigma_1 a}{4\sigma_0}) + \sigma_2\Bigr), \qquad c = \frac{\sigma_1 v}{2\sigma_0},$$
+//!
+//! which is ≥ 0 for every z when σ₁(|v|)|v| ≤ 4 μ(|v|) (exactly when, if
+//! σ₂ = 0). [`LuGre::new`] checks the sufficient condition
+//! σ₁ v_d /√(2e) ≤ 4 min(μ_c, μ_s) (the maximum of v e^{−(v/v_d)²} is
+//! v_d/√(2e)), so every increment dissipates ≥ 0. The increment's
+//! dissipation is the exact integral of Ḋ along z(t).
+//!
+//! # State
+//!
+//! `[dissipation, slip path, z_x, z_y]` (J, m, m, m); all-zero = undeflected
+//! bristles.
+//!
+//! # References
+//!
+//! * C. Canudas de Wit, H. Olsson, K. J. Åström, P. Lischinsky, "A new
+//!   model for control of systems with friction", IEEE Trans. Automatic
+//!   Control 40 (1995) 419–425.
+//! * D. A. Haessig, B. Friedland, "On the modeling and simulation of
+//!   friction", J. Dyn. Sys., Meas., Control 113 (1991) 354–362.
+//! * N. Barabanov, R. Ortega, "Necessary and sufficient conditions for
+//!   passivity of the LuGre friction model", IEEE Trans. Automatic Control
+//!   45 (2000) 830–832.
+
+use super::{
+    book, check_increment, check_states, norm, respond, DynamicFriction, DynamicIncrement,
+    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+};
+use crate::error::{check, Error, Result};
+
+/// The LuGre model's parameters (immutable; share between threads).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LuGre {
+    mu_coulomb: f64,
+    mu_static: f64,
+    stribeck_velocity: f64,
+    stribeck_exponent: f64,
+    sigma0: f64,
+    sigma1: f64,
+    damping_velocity: f64,
+    sigma2: f64,
+}
+
+/// e^{−x^p} for x ≥ 0, 0 for x = +∞ (p = 2 without `powf`).
+#[inline]
+fn decay(x: f64, p: f64) -> f64 {
+    if p == 2.0 {
+        (-x * x).exp()
+    } else {
+        (-x.powf(p)).exp()
+    }
+}
+
+impl LuGre {
+    /// Index of z (2 values, m) in a state.
+    pub const STATE_Z: usize = STATE_MODEL;
+    /// Doubles of a state.
+    pub const STATE_LEN: usize = STATE_MODEL + 2;
+
+    /// A LuGre model: Coulomb and static coefficients `mu_coulomb` μ_c and
+    /// `mu_static` μ_s (finite, ≥ 0, at least one > 0), Stribeck velocity
+    /// `stribeck_velocity` v_s (m/s, finite, > 0) and exponent
+    /// `stribeck_exponent` δ (finite, > 0; 2 is Gaussian), bristle stiffness
+    /// `sigma0` σ₀ (1/m, per unit normal force, finite, > 0), bristle damping
+    /// `sigma1` σ₁ (s/m, per unit normal force, finite, ≥ 0) decaying with
+    /// `damping_velocity` v_d (m/s, > 0, may be +∞ only when σ₁ = 0), and
+    /// viscous coefficient `sigma2` σ₂ (N·s/m, finite, ≥ 0).
+    ///
+    /// Errors name the argument; σ₁ > 0 must satisfy the passivity bound
+    /// σ₁ v_d/√(2e) ≤ 4 min(μ_c, μ_s) (module docs), named `sigma1`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        mu_coulomb: f64,
+        mu_static: f64,
+        stribeck_velocity: f64,
+        stribeck_exponent: f64,
+        sigma0: f64,
+        sigma1: f64,
+        damping_velocity: f64,
+        sigma2: f64,
+    ) -> Result<Self> {
+        check::non_negative("mu_coulomb", mu_coulomb)?;
+        check::non_negative("mu_static", mu_static)?;
+        if mu_coulomb == 0.0 && mu_static == 0.0 {
+            return Err(Error::InvalidArgument {
+                name: "mu_static",
+                value: mu_static,
+                bound: "> 0 or mu_coulomb > 0 (a frictionless LuGre model has no bristles)",
+            });
+        }
+        check::positive("stribeck_velocity", stribeck_velocity)?;
+        check::positive("stribeck_exponent", stribeck_exponent)?;
+        check::positive("sigma0", sigma0)?;
+        check::non_negative("sigma1", sigma1)?;
+        if damping_velocity.is_nan() || damping_velocity <= 0.0 {
+            return Err(Error::InvalidArgument {
+                name: "damping_velocity",
+                value: damping_velocity,
+                bound: "> 0 (+inf allowed when sigma1 = 0)",
+            });
+        }
+        check::non_negative("sigma2", sigma2)?;
+        if sigma1 > 0.0 {
+            let peak = damping_velocity / (2.0 * core::f64::consts::E).sqrt();
+            if sigma1 * peak > 4.0 * mu_coulomb.min(mu_static) {
+                return Err(Error::InvalidArgument {
+                    name: "sigma1",
+                    value: sigma1,
+                    bound: "<= 4 min(mu_coulomb, mu_static) sqrt(2e)/damping_velocity (passivity: every increment dissipates >= 0)",
+                });
+            }
+        }
+        Ok(Self {
+            mu_coulomb,
+            mu_static,
+            stribeck_velocity,
+            stribeck_exponent,
+            sigma0,
+            sigma1,
+            damping_velocity,
+            sigma2,
+        })
+    }
+
+    /// The Stribeck coefficient μ(v) = μ_c + (μ_s − μ_c) e^{−(v/v_s)^δ} at
+    /// speed `v` ≥ 0 (m/s).
+    #[inline]
+    pub fn stribeck(&self, v: f64) -> f64 {
+        self.mu_coulomb
+            + (self.mu_static - self.mu_coulomb)
+                * decay(v / self.stribeck_velocity, self.stribeck_exponent)
+    }
+
+    /// The steady sliding friction force N μ(v) + σ₂ v (N) at speed `v` ≥ 0
+    /// (m/s) under normal force `normal_force` (N): the Stribeck curve.
+    pub fn steady_force(&self, normal_force: f64, v: f64) -> f64 {
+        normal_force * self.stribeck(v) + self.sigma2 * v
+    }
+
+    /// The damping σ₁(v) = σ₁ e^{−(v/v_d)²} (s/m) at speed `v` ≥ 0.
+    #[inline]
+    fn damping(&self, v: f64) -> f64 {
+        if self.sigma1 == 0.0 {
+            0.0
+        } else {
+            let x = v / self.damping_velocity;
+            self.sigma1 * (-x * x).exp()
+        }
+    }
+
+    /// z at the end of an increment, the bristle force per unit normal
+    /// force σ₀z + σ₁ż (along the motion, resisting it), the viscous force
+    /// σ₂v (N) and the dissipation (J); no checks.
+    #[inline]
+    fn advance(&self, z0: [f64; 2], n: f64, ds: [f64; 2], dt: f64) -> Advance {
+        let s0 = self.sigma0;
+        let len = norm(ds[0], ds[1]);
+        if len == 0.0 {
+            // No motion: the bristles hold their deflection.
+            return Advance {
+                z: z0,
+                bristle: [s0 * z0[0], s0 * z0[1]],
+                viscous: [0.0; 2],
+                dissipated: 0.0,
+            };
+        }
+        let v = [ds[0] / dt, ds[1] / dt];
+        let speed = len / dt;
+        let mu = self.stribeck(speed);
+        let a = s0 * speed / mu;
+        let zs = [mu / s0 * ds[0] / len, mu / s0 * ds[1] / len];
+        let x = a * dt;
+        // e^{−x}, (1 − e^{−x})/a and (1 − e^{−2x})/(2a), accurate for
+        // small x.
+        let em1 = (-x).exp_m1();
+        let e = 1.0 + em1;
+        let i1 = -em1 / a;
+        let i2 = 0.5 * i1 * (1.0 + e);
+        let q = [z0[0] - zs[0], z0[1] - zs[1]];
+        let z = [zs[0] + q[0] * e, zs[1] + q[1] * e];
+        let s1 = self.damping(speed);
+        let bristle = [
+            s0 * z[0] + s1 * a * (zs[0] - z[0]),
+            s0 * z[1] + s1 * a * (zs[1] - z[1]),
+        ];
+        // ∫|z − c|² dt with z − c = p + q e^{−at}, c = σ₁v/(2σ₀).
+        let p = [
+            zs[0] - s1 * v[0] / (2.0 * s0),
+            zs[1] - s1 * v[1] / (2.0 * s0),
+        ];
+        let square = (p[0] * p[0] + p[1] * p[1]) * dt
+            + 2.0 * (p[0] * q[0] + p[1] * q[1]) * i1
+            + (q[0] * q[0] + q[1] * q[1]) * i2;
+        let rest = n * s1 * (1.0 - s1 * a / (4.0 * s0)) + self.sigma2;
+        // Both terms are ≥ 0 in exact arithmetic; max(0) drops rounding.
+        let dissipated = n * s0 * a * square.max(0.0) + (speed * speed * dt * rest).max(0.0);
+        Advance {
+            z,
+            bristle,
+            viscous: [self.sigma2 * v[0], self.sigma2 * v[1]],
+            dissipated,
+        }
+    }
+}
+
+/// One exact LuGre increment.
+struct Advance {
+    z: [f64; 2],
+    bristle: [f64; 2],
+    viscous: [f64; 2],
+    dissipated: f64,
+}
+
+impl Advance {
+    /// The friction force along the motion (N) under normal force `n`.
+    #[inline]
+    fn force(&self, n: f64) -> [f64; 2] {
+        [
+            n * self.bristle[0] + self.viscous[0],
+            n * self.bristle[1] + self.viscous[1],
+        ]
+    }
+}
+
+impl DynamicFriction for LuGre {
+    fn state_len(&self) -> usize {
+        Self::STATE_LEN
+    }
+
+    /// One increment (module docs). Regime: 0 when Δs = 0 (the bristles
+    /// hold), 2 otherwise. Tangents: dF/dN = −(σ₀z + σ₁ż) exactly (z does
+    /// not depend on N); dF/dΔs by central differences of the exact
+    /// increment (4 more evaluations; 0 when Δt = 0).
+    fn step(
+        &self,
+        old: &[f64],
+        new: &mut [f64],
+        inc: &DynamicIncrement,
+    ) -> Result<DynamicResponse> {
+        check_increment(inc, true)?;
+        check_states(old, new, Self::STATE_LEN)?;
+        let z0 = [old[Self::STATE_Z], old[Self::STATE_Z + 1]];
+        let n = inc.normal_force;
+        let step = self.advance(z0, n, inc.slip, inc.dt);
+        new.copy_from_slice(old);
+        new[Self::STATE_Z] = step.z[0];
+        new[Self::STATE_Z + 1] = step.z[1];
+        book(new, step.dissipated, inc.slip);
+        let mut r = respond(step.force(n), n);
+        r.dissipated = step.dissipated;
+        r.stored_energy = 0.5 * n * self.sigma0 * (step.z[0] * step.z[0] + step.z[1] * step.z[1]);
+        r.regime = if inc.slip == [0.0, 0.0] { 0 } else { 2 };
+        if inc.tangents & TANGENT_NORMAL != 0 {
+            r.dforce_dnormal = [-step.bristle[0], -step.bristle[1]];
+        }
+        if inc.tangents & TANGENT_SLIP != 0 && inc.dt > 0.0 {
+            let scale =
+                inc.slip[0].hypot(inc.slip[1]) + self.mu_static.max(self.mu_coulomb) / self.sigma0;
+            let h = 1e-6 * scale;
+            for j in 0..2 {
+                let (mut plus, mut minus) = (inc.slip, inc.slip);
+                plus[j] += h;
+                minus[j] -= h;
+                let fp = self.advance(z0, n, plus, inc.dt).force(n);
+                let fm = self.advance(z0, n, minus, inc.dt).force(n);
+                for i in 0..2 {
+                    r.dforce_dslip[i][j] = -(fp[i] - fm[i]) / (2.0 * h);
+                }
+            }
+        }
+        r.tangents = inc.tangents;
+        Ok(r)
+    }
+}

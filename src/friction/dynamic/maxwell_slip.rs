@@ -1,0 +1,223 @@
+//! Maxwell-slip elements in parallel (Al-Bender, Lampaert and Swevers 2004;
+//! Lampaert, Al-Bender and Swevers 2003; thesis 5.3.7, (5-9)..(5-12) reduced
+//! to the tangential direction), scaled by the normal force: pre-sliding
+//! hysteresis with non-local memory.
+//!
+//! # Formulas
+//!
+//! Element i is a spring of stiffness N kᵢ (kᵢ in 1/m, per unit normal
+//! force) in series with a Coulomb slip block of break-away force N μᵢ; its
+//! spring deflection δᵢ (m, a 2-vector) obeys |δᵢ| ≤ rᵢ = μᵢ/kᵢ. Over an
+//! increment Δs the trial deflection is tᵢ = δᵢ + Δs; if |tᵢ| ≤ rᵢ the
+//! element sticks (δᵢ = tᵢ), otherwise it slips by |tᵢ| − rᵢ and
+//! δᵢ = rᵢ tᵢ/|tᵢ| (the radial return; exact in one dimension). The friction
+//! force along the motion is
+//!
+//! $$F = N \sum_i k_i \delta_i + \sigma_2 v,\qquad v = \Delta s/\Delta t.$$
+//!
+//! The virgin curve of a one-dimensional loading from rest is
+//! F_v(x) = N Σ min(kᵢ x, μᵢ); the elements give the Masing rules exactly:
+//! after a reversal at x_r the force is F(x_r) − 2 F_v((x_r − x)/2), and a
+//! closed inner loop is forgotten (non-local memory).
+//!
+//! # Energy
+//!
+//! Stored energy E = ½ N Σ kᵢ|δᵢ|²; the increment dissipates
+//! N Σ μᵢ (|tᵢ| − rᵢ)⁺ in the slip blocks and σ₂|Δs|²/Δt in the viscous term
+//! (0 when Δt = 0: then σ₂ is not used), each ≥ 0.
+//!
+//! # State
+//!
+//! `[dissipation, slip path, δ₁x, δ₁y, δ₂x, δ₂y, …]` (J, m, m…); all-zero =
+//! every spring relaxed.
+//!
+//! # References
+//!
+//! * F. Al-Bender, V. Lampaert, J. Swevers, "Modeling of dry sliding
+//!   friction dynamics: from heuristic models to physically motivated
+//!   models and back", Chaos 14 (2004) 446–460.
+//! * V. Lampaert, F. Al-Bender, J. Swevers, "A generalized Maxwell-slip
+//!   friction model appropriate for control purposes", Proc. IEEE PhysCon
+//!   (2003) 1170–1177.
+//! * G. Masing, "Eigenspannungen und Verfestigung beim Messing", Proc. 2nd
+//!   Int. Congress of Applied Mechanics (1926) 332–335.
+
+use super::{
+    book, check_increment, check_states, norm, respond, DynamicFriction, DynamicIncrement,
+    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+};
+use crate::error::{check, Error, Result};
+
+/// The parameters of N Maxwell-slip elements (immutable; share between
+/// threads).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MaxwellSlip {
+    /// Element stiffness kᵢ per unit normal force (1/m).
+    stiffness: Vec<f64>,
+    /// Element break-away coefficient μᵢ (break-away force N μᵢ).
+    capacity: Vec<f64>,
+    /// Element slip deflection rᵢ = μᵢ/kᵢ (m).
+    reach: Vec<f64>,
+    sigma2: f64,
+}
+
+impl MaxwellSlip {
+    /// Elements with stiffnesses `stiffness` kᵢ (1/m per unit normal force,
+    /// finite, > 0) and break-away coefficients `capacity` μᵢ (finite, ≥ 0;
+    /// the model's static coefficient is Σμᵢ), of equal length ≥ 1, and the
+    /// viscous coefficient `sigma2` σ₂ (N·s/m, finite, ≥ 0). Errors name the
+    /// argument.
+    pub fn new(stiffness: &[f64], capacity: &[f64], sigma2: f64) -> Result<Self> {
+        if stiffness.is_empty() || capacity.len() != stiffness.len() {
+            return Err(Error::InvalidArgument {
+                name: "capacity.len()",
+                value: capacity.len() as f64,
+                bound: "equal to stiffness.len() >= 1",
+            });
+        }
+        for &k in stiffness {
+            check::positive("stiffness", k)?;
+        }
+        for &m in capacity {
+            check::non_negative("capacity", m)?;
+        }
+        check::non_negative("sigma2", sigma2)?;
+        Ok(Self {
+            stiffness: stiffness.to_vec(),
+            capacity: capacity.to_vec(),
+            reach: stiffness.iter().zip(capacity).map(|(k, m)| m / k).collect(),
+            sigma2,
+        })
+    }
+
+    /// Number of elements.
+    pub fn elements(&self) -> usize {
+        self.stiffness.len()
+    }
+
+    /// The static coefficient Σμᵢ: |F| ≤ N Σμᵢ + σ₂|v|.
+    pub fn static_coefficient(&self) -> f64 {
+        self.capacity.iter().sum()
+    }
+
+    /// The virgin curve F_v(x) = N Σ min(kᵢ x, μᵢ) (N) of a one-dimensional
+    /// loading from rest to slip `x` ≥ 0 (m) under normal force
+    /// `normal_force` (N), without the viscous term.
+    pub fn virgin_force(&self, normal_force: f64, x: f64) -> f64 {
+        normal_force
+            * self
+                .stiffness
+                .iter()
+                .zip(&self.capacity)
+                .map(|(k, m)| (k * x).min(*m))
+                .sum::<f64>()
+    }
+}
+
+impl DynamicFriction for MaxwellSlip {
+    fn state_len(&self) -> usize {
+        STATE_MODEL + 2 * self.elements()
+    }
+
+    /// One increment (module docs). Regime: 0 every element sticks, 1 some
+    /// slip (pre-sliding), 2 every element with μᵢ > 0 slips (gross
+    /// sliding). Tangents are the consistent tangents of the radial return:
+    /// dF/dN = −Σ kᵢδᵢ, dF/dΔs = −N Σ kᵢ ∂δᵢ/∂Δs (kᵢ I sticking,
+    /// kᵢ rᵢ/|tᵢ| (I − nᵢnᵢᵀ) slipping) − σ₂/Δt I.
+    fn step(
+        &self,
+        old: &[f64],
+        new: &mut [f64],
+        inc: &DynamicIncrement,
+    ) -> Result<DynamicResponse> {
+        check_increment(inc, false)?;
+        check_states(old, new, self.state_len())?;
+        let n = inc.normal_force;
+        let ds = inc.slip;
+        new.copy_from_slice(old);
+        let mut spring = [0.0; 2];
+        let mut energy = 0.0;
+        let mut slipped = 0.0;
+        let (mut slipping, mut active) = (0usize, 0usize);
+        let mut tangent = [[0.0; 2]; 2];
+        let want_slip = inc.tangents & TANGENT_SLIP != 0;
+        for (i, ((&k, &m), &r)) in self
+            .stiffness
+            .iter()
+            .zip(&self.capacity)
+            .zip(&self.reach)
+            .enumerate()
+        {
+            let j = STATE_MODEL + 2 * i;
+            let t = [new[j] + ds[0], new[j + 1] + ds[1]];
+            // Stick when |t| ≤ r, decided on the squares (no square root for
+            // a sticking element); a slipping element takes |t| exactly.
+            let len2 = t[0] * t[0] + t[1] * t[1];
+            let d = if len2 > r * r || (len2.is_infinite() && norm(t[0], t[1]) > r) {
+                let len = norm(t[0], t[1]);
+                slipping += 1;
+                slipped += m * (len - r);
+                let s = r / len;
+                if want_slip {
+                    let u = [t[0] / len, t[1] / len];
+                    for a in 0..2 {
+                        for b in 0..2 {
+                            let id = if a == b { 1.0 } else { 0.0 };
+                            tangent[a][b] += k * s * (id - u[a] * u[b]);
+                        }
+                    }
+                }
+                [t[0] * s, t[1] * s]
+            } else {
+                if want_slip {
+                    tangent[0][0] += k;
+                    tangent[1][1] += k;
+                }
+                t
+            };
+            if m > 0.0 {
+                active += 1;
+            }
+            new[j] = d[0];
+            new[j + 1] = d[1];
+            spring[0] += k * d[0];
+            spring[1] += k * d[1];
+            energy += k * (d[0] * d[0] + d[1] * d[1]);
+        }
+        let viscous = if inc.dt > 0.0 {
+            [self.sigma2 * ds[0] / inc.dt, self.sigma2 * ds[1] / inc.dt]
+        } else {
+            [0.0; 2]
+        };
+        let dissipated = n * slipped + (viscous[0] * ds[0] + viscous[1] * ds[1]);
+        book(new, dissipated, ds);
+        let mut resp = respond([n * spring[0] + viscous[0], n * spring[1] + viscous[1]], n);
+        resp.dissipated = dissipated;
+        resp.stored_energy = 0.5 * n * energy;
+        resp.regime = if slipping == 0 {
+            0
+        } else if slipping >= active {
+            2
+        } else {
+            1
+        };
+        if inc.tangents & TANGENT_NORMAL != 0 {
+            resp.dforce_dnormal = [-spring[0], -spring[1]];
+        }
+        if want_slip {
+            let c = if inc.dt > 0.0 {
+                self.sigma2 / inc.dt
+            } else {
+                0.0
+            };
+            for (a, (row, t)) in resp.dforce_dslip.iter_mut().zip(&tangent).enumerate() {
+                for (b, (out, t)) in row.iter_mut().zip(t).enumerate() {
+                    let id = if a == b { c } else { 0.0 };
+                    *out = -(n * t + id);
+                }
+            }
+        }
+        resp.tangents = inc.tangents;
+        Ok(resp)
+    }
+}

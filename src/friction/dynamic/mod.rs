@@ -1,0 +1,205 @@
+//! The dynamic friction models of thesis chapter 5 (issue 9), through the
+//! friction step's conventions: a pure function of the model's parameters,
+//! a caller-owned old state and one increment, giving the new state and the
+//! response. Nothing is allocated, old and new states are separate (a host
+//! can re-evaluate or cut back an increment), and an all-zero state is a
+//! fresh one.
+//!
+//! * [`LuGre`]: the bristle model of Haessig and Friedland (thesis 5.3.6,
+//!   (5-8)) in its standard continuous form, LuGre (Canudas de Wit et al.
+//!   1995), with Stribeck velocity weakening, integrated exactly over each
+//!   increment.
+//! * [`MaxwellSlip`]: N Maxwell-slip elements in parallel (Al-Bender,
+//!   Lampaert and Swevers 2004; thesis 5.3.7, (5-9)..(5-12) reduced to the
+//!   tangential direction): pre-sliding hysteresis with non-local memory.
+//!
+//! # Conventions
+//!
+//! Both models are **Amontons-scaled**: every force is proportional to the
+//! normal force N of the increment (bristle and element stiffnesses and
+//! break-away forces are given per unit normal force), so μ = |F|/N does not
+//! depend on N and a change of N between increments rescales the stored
+//! forces without slip. A viscous term σ₂·v (N·s/m) is added on top.
+//!
+//! The slip increment Δs is the motion of the point relative to the
+//! counter-surface (two components in the caller's tangent basis; a track
+//! uses `slip[1] = 0`); the force is the force on the point from the
+//! counter-surface, opposing slip, as in [`super::HomogenisedFriction`].
+//! Each increment is taken at constant velocity v = Δs/Δt and constant N.
+//!
+//! **Energy.** The response gives the energy dissipated in the increment
+//! (≥ 0, the integral of the dissipation rate along the increment) and the
+//! elastic energy stored at its end. At constant N the work of the friction
+//! force along the increment equals the dissipation plus the change of the
+//! stored energy. The work of the *end-of-increment* force, −F·Δs, differs
+//! from it by a term of second order in the increment.
+//!
+//! # State layout
+//!
+//! `state_len()` doubles: `[dissipation, slip path, model state…]` with the
+//! accumulated dissipation (J) and slip path Σ|Δs| (m) first
+//! ([`STATE_DISSIPATION`], [`STATE_SLIP_PATH`]), then the model's own
+//! variables (see each model).
+
+pub mod lugre;
+pub mod maxwell_slip;
+
+pub use lugre::LuGre;
+pub use maxwell_slip::MaxwellSlip;
+
+use crate::error::{check, Error, Result};
+
+/// Index of the accumulated dissipation (J) in a state.
+pub const STATE_DISSIPATION: usize = 0;
+/// Index of the accumulated slip path Σ|Δs| (m) in a state.
+pub const STATE_SLIP_PATH: usize = 1;
+/// Index of the first model variable in a state.
+pub const STATE_MODEL: usize = 2;
+
+/// [`DynamicIncrement::tangents`] bit: compute dF/dN.
+pub const TANGENT_NORMAL: i32 = 1;
+/// [`DynamicIncrement::tangents`] bit: compute dF/dΔs.
+pub const TANGENT_SLIP: i32 = 2;
+
+/// One increment of a contact point (SI units).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct DynamicIncrement {
+    /// Normal force N (N), finite and ≥ 0 (compressive), constant over the
+    /// increment.
+    pub normal_force: f64,
+    /// Slip increment Δs of the point relative to the counter-surface (m),
+    /// two finite components.
+    pub slip: [f64; 2],
+    /// Time increment Δt (s), finite and ≥ 0; > 0 when the slip is not zero
+    /// and the model is rate dependent.
+    pub dt: f64,
+    /// Tangents wanted: 0, or [`TANGENT_NORMAL`] | [`TANGENT_SLIP`].
+    pub tangents: i32,
+    /// Reserved, 0.
+    pub reserved: i32,
+}
+
+/// The response of one increment (SI units).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct DynamicResponse {
+    /// Tangential force on the point from the counter-surface at the end of
+    /// the increment (N), in the basis of the slip.
+    pub force: [f64; 2],
+    /// |F| (N).
+    pub force_magnitude: f64,
+    /// Normal force N (N), as given.
+    pub normal_force: f64,
+    /// |F|/N; 0 when N = 0.
+    pub cof: f64,
+    /// Energy dissipated in the increment (J), ≥ 0.
+    pub dissipated: f64,
+    /// Elastic energy stored in the model at the end of the increment (J).
+    pub stored_energy: f64,
+    /// dF/dN at fixed slip increment and old state (dimensionless), when
+    /// asked for.
+    pub dforce_dnormal: [f64; 2],
+    /// dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, at fixed N, Δt and old state,
+    /// when asked for.
+    pub dforce_dslip: [[f64; 2]; 2],
+    /// What the increment did (each model documents its values): 0 stick,
+    /// 1 partial slip (pre-sliding), 2 gross sliding.
+    pub regime: i32,
+    /// The tangents computed, as [`TANGENT_NORMAL`] | [`TANGENT_SLIP`] bits.
+    pub tangents: i32,
+}
+
+/// A friction model stepped once per increment.
+pub trait DynamicFriction {
+    /// Doubles of one point's state.
+    fn state_len(&self) -> usize;
+
+    /// One increment from `old` into `new` (each [`Self::state_len`]
+    /// doubles; all-zero `old` = fresh). On error `new` is untouched.
+    fn step(
+        &self,
+        old: &[f64],
+        new: &mut [f64],
+        increment: &DynamicIncrement,
+    ) -> Result<DynamicResponse>;
+}
+
+/// Checks an increment: N finite and ≥ 0, Δs finite, Δt finite and ≥ 0
+/// (and > 0 with a non-zero slip when `rate_dependent`), tangent bits known.
+pub(crate) fn check_increment(inc: &DynamicIncrement, rate_dependent: bool) -> Result<()> {
+    check::non_negative("normal_force", inc.normal_force)?;
+    check::finite("slip", inc.slip[0])?;
+    check::finite("slip", inc.slip[1])?;
+    check::non_negative("dt", inc.dt)?;
+    if rate_dependent && inc.dt == 0.0 && (inc.slip[0] != 0.0 || inc.slip[1] != 0.0) {
+        return Err(Error::InvalidArgument {
+            name: "dt",
+            value: inc.dt,
+            bound: "> 0 when the slip increment is not zero (the model is rate dependent)",
+        });
+    }
+    if inc.tangents & !(TANGENT_NORMAL | TANGENT_SLIP) != 0 {
+        return Err(Error::UnknownSelector {
+            name: "tangents",
+            value: inc.tangents as i64,
+        });
+    }
+    Ok(())
+}
+
+/// Checks the state lengths and the common part of an old state
+/// (accumulators finite and ≥ 0, every value finite).
+pub(crate) fn check_states(old: &[f64], new: &[f64], len: usize) -> Result<()> {
+    for (name, n) in [("old.len()", old.len()), ("new.len()", new.len())] {
+        if n != len {
+            return Err(Error::InvalidArgument {
+                name,
+                value: n as f64,
+                bound: "equal to the model's state_len()",
+            });
+        }
+    }
+    check::non_negative("old.dissipation", old[STATE_DISSIPATION])?;
+    check::non_negative("old.slip_path", old[STATE_SLIP_PATH])?;
+    for &v in &old[STATE_MODEL..] {
+        check::finite("old", v)?;
+    }
+    Ok(())
+}
+
+/// |(x, y)|: √(x² + y²), with `hypot`'s care only where the squares
+/// overflow or underflow (`hypot` costs several times more per call).
+#[inline]
+pub(crate) fn norm(x: f64, y: f64) -> f64 {
+    let s = x * x + y * y;
+    if s.is_finite() && s >= f64::MIN_POSITIVE {
+        s.sqrt()
+    } else {
+        x.hypot(y)
+    }
+}
+
+/// Books an increment's dissipation and slip into the common part of `new`.
+pub(crate) fn book(new: &mut [f64], dissipated: f64, slip: [f64; 2]) {
+    new[STATE_DISSIPATION] += dissipated;
+    new[STATE_SLIP_PATH] += norm(slip[0], slip[1]);
+}
+
+/// Fills the force, its magnitude, N and μ of a response from the friction
+/// force `f` (N, along the motion, resisting it).
+pub(crate) fn respond(f: [f64; 2], normal_force: f64) -> DynamicResponse {
+    let force = [-f[0], -f[1]];
+    let magnitude = norm(force[0], force[1]);
+    DynamicResponse {
+        force,
+        force_magnitude: magnitude,
+        normal_force,
+        cof: if normal_force > 0.0 {
+            magnitude / normal_force
+        } else {
+            0.0
+        },
+        ..DynamicResponse::default()
+    }
+}
