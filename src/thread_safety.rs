@@ -69,6 +69,8 @@ const _: () = {
     shared::<FrictionMaterial>();
     // Friction.
     shared::<HomogenisedFriction>();
+    shared::<crate::friction::dynamic::LuGre>();
+    shared::<crate::friction::dynamic::MaxwellSlip>();
     shared::<AsperityHomogenisedFriction>();
     shared::<SliderGeometry>();
     shared::<AsperitySliderGeometry>();
