@@ -551,3 +551,77 @@ fn maxwell_slip_bad_input_names_the_argument() {
     // A rate-independent model accepts dt = 0 with a slip.
     m.step(&s, &mut t, &inc(1.0, [1e-6, 0.0], 0.0)).unwrap();
 }
+
+// ------------------------------------------- one interface, block calls
+
+use asperity::friction::dynamic::DynamicModel;
+
+#[test]
+fn model_choice_in_place_and_block_equal_the_single_steps() {
+    for model in [
+        DynamicModel::LuGre(lugre()),
+        DynamicModel::MaxwellSlip(maxwell()),
+    ] {
+        let direct: &dyn DynamicFriction = match &model {
+            DynamicModel::LuGre(m) => m,
+            DynamicModel::MaxwellSlip(m) => m,
+        };
+        let m = model.state_len();
+        assert_eq!(m, direct.state_len());
+        let points = 5;
+        let normal: Vec<f64> = (0..points).map(|i| 1.0 + i as f64).collect();
+        let slip: Vec<f64> = (0..2 * points).map(|i| 1e-7 * (i as f64 - 4.5)).collect();
+        let dt = 1e-4;
+        let mut states = vec![0.0; points * m];
+        let mut forces = vec![0.0; 2 * points];
+        let mut diss = vec![0.0; points];
+        let mut single = vec![vec![0.0; m]; points];
+        for round in 0..4 {
+            model
+                .step_block(
+                    &normal,
+                    &slip,
+                    dt,
+                    &mut states,
+                    &mut forces,
+                    Some(&mut diss),
+                )
+                .unwrap();
+            for i in 0..points {
+                let inc = inc(normal[i], [slip[2 * i], slip[2 * i + 1]], dt);
+                let mut next = vec![0.0; m];
+                let r = direct.step(&single[i], &mut next, &inc).unwrap();
+                let mut in_place = single[i].clone();
+                let q = model.step_in_place(&mut in_place, &inc).unwrap();
+                assert_eq!(format!("{r:?}"), format!("{q:?}"));
+                assert_eq!(in_place, next);
+                single[i] = next;
+                assert_eq!([forces[2 * i], forces[2 * i + 1]], r.force, "{round} {i}");
+                assert_eq!(diss[i], r.dissipated);
+                assert_eq!(&states[i * m..(i + 1) * m], &single[i][..]);
+            }
+        }
+        // An error at point 3 names it; points 0..3 are written.
+        let mut bad = normal.clone();
+        bad[3] = -1.0;
+        let before = states.clone();
+        let e = model
+            .step_block(&bad, &slip, dt, &mut states, &mut forces, None)
+            .unwrap_err();
+        assert_eq!((e.index, name(e.error)), (3, "normal_force"));
+        assert_ne!(&states[..3 * m], &before[..3 * m]);
+        assert_eq!(&states[3 * m..], &before[3 * m..]);
+        let e = model
+            .step_block(&normal, &slip[1..], dt, &mut states, &mut forces, None)
+            .unwrap_err();
+        assert_eq!((e.index, name(e.error)), (0, "slip.len()"));
+        // In place: a bad state is refused and left untouched.
+        let mut s = vec![0.0; m];
+        s[STATE_SLIP_PATH] = -1.0;
+        let e = model
+            .step_in_place(&mut s, &inc(1.0, [0.0; 2], 1.0))
+            .unwrap_err();
+        assert_eq!(name(e), "state.slip_path");
+        assert_eq!(s[STATE_SLIP_PATH], -1.0);
+    }
+}

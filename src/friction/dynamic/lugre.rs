@@ -58,8 +58,8 @@
 //!   45 (2000) 830–832.
 
 use super::{
-    book, check_increment, check_states, norm, respond, DynamicFriction, DynamicIncrement,
-    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book, norm, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
+    STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 
@@ -187,12 +187,12 @@ impl LuGre {
     /// force σ₀z + σ₁ż (along the motion, resisting it), the viscous force
     /// σ₂v (N) and the dissipation (J); no checks.
     #[inline]
-    fn advance(&self, z0: [f64; 2], n: f64, ds: [f64; 2], dt: f64) -> Advance {
+    fn increment(&self, z0: [f64; 2], n: f64, ds: [f64; 2], dt: f64) -> Increment {
         let s0 = self.sigma0;
         let len = norm(ds[0], ds[1]);
         if len == 0.0 {
             // No motion: the bristles hold their deflection.
-            return Advance {
+            return Increment {
                 z: z0,
                 bristle: [s0 * z0[0], s0 * z0[1]],
                 viscous: [0.0; 2],
@@ -229,7 +229,7 @@ impl LuGre {
         let rest = n * s1 * (1.0 - s1 * a / (4.0 * s0)) + self.sigma2;
         // Both terms are ≥ 0 in exact arithmetic; max(0) drops rounding.
         let dissipated = n * s0 * a * square.max(0.0) + (speed * speed * dt * rest).max(0.0);
-        Advance {
+        Increment {
             z,
             bristle,
             viscous: [self.sigma2 * v[0], self.sigma2 * v[1]],
@@ -239,14 +239,14 @@ impl LuGre {
 }
 
 /// One exact LuGre increment.
-struct Advance {
+struct Increment {
     z: [f64; 2],
     bristle: [f64; 2],
     viscous: [f64; 2],
     dissipated: f64,
 }
 
-impl Advance {
+impl Increment {
     /// The friction force along the motion (N) under normal force `n`.
     #[inline]
     fn force(&self, n: f64) -> [f64; 2] {
@@ -261,26 +261,24 @@ impl DynamicFriction for LuGre {
     fn state_len(&self) -> usize {
         Self::STATE_LEN
     }
+}
 
-    /// One increment (module docs). Regime: 0 when Δs = 0 (the bristles
-    /// hold), 2 otherwise. Tangents: dF/dN = −(σ₀z + σ₁ż) exactly (z does
-    /// not depend on N); dF/dΔs by central differences of the exact
-    /// increment (4 more evaluations; 0 when Δt = 0).
-    fn step(
-        &self,
-        old: &[f64],
-        new: &mut [f64],
-        inc: &DynamicIncrement,
-    ) -> Result<DynamicResponse> {
-        check_increment(inc, true)?;
-        check_states(old, new, Self::STATE_LEN)?;
-        let z0 = [old[Self::STATE_Z], old[Self::STATE_Z + 1]];
+/// One increment (module docs). Regime: 0 when Δs = 0 (the bristles hold),
+/// 2 otherwise. Tangents: dF/dN = −(σ₀z + σ₁ż) exactly (z does not depend
+/// on N); dF/dΔs by central differences of the exact increment (4 more
+/// evaluations; 0 when Δt = 0).
+impl Advance for LuGre {
+    fn rate_dependent(&self) -> bool {
+        true
+    }
+
+    fn advance(&self, state: &mut [f64], inc: &DynamicIncrement) -> DynamicResponse {
+        let z0 = [state[Self::STATE_Z], state[Self::STATE_Z + 1]];
         let n = inc.normal_force;
-        let step = self.advance(z0, n, inc.slip, inc.dt);
-        new.copy_from_slice(old);
-        new[Self::STATE_Z] = step.z[0];
-        new[Self::STATE_Z + 1] = step.z[1];
-        book(new, step.dissipated, inc.slip);
+        let step = self.increment(z0, n, inc.slip, inc.dt);
+        state[Self::STATE_Z] = step.z[0];
+        state[Self::STATE_Z + 1] = step.z[1];
+        book(state, step.dissipated, inc.slip);
         let mut r = respond(step.force(n), n);
         r.dissipated = step.dissipated;
         r.stored_energy = 0.5 * n * self.sigma0 * (step.z[0] * step.z[0] + step.z[1] * step.z[1]);
@@ -290,20 +288,20 @@ impl DynamicFriction for LuGre {
         }
         if inc.tangents & TANGENT_SLIP != 0 && inc.dt > 0.0 {
             let scale =
-                inc.slip[0].hypot(inc.slip[1]) + self.mu_static.max(self.mu_coulomb) / self.sigma0;
+                norm(inc.slip[0], inc.slip[1]) + self.mu_static.max(self.mu_coulomb) / self.sigma0;
             let h = 1e-6 * scale;
             for j in 0..2 {
                 let (mut plus, mut minus) = (inc.slip, inc.slip);
                 plus[j] += h;
                 minus[j] -= h;
-                let fp = self.advance(z0, n, plus, inc.dt).force(n);
-                let fm = self.advance(z0, n, minus, inc.dt).force(n);
+                let fp = self.increment(z0, n, plus, inc.dt).force(n);
+                let fm = self.increment(z0, n, minus, inc.dt).force(n);
                 for i in 0..2 {
                     r.dforce_dslip[i][j] = -(fp[i] - fm[i]) / (2.0 * h);
                 }
             }
         }
         r.tangents = inc.tangents;
-        Ok(r)
+        r
     }
 }

@@ -43,8 +43,8 @@
 //!   Int. Congress of Applied Mechanics (1926) 332–335.
 
 use super::{
-    book, check_increment, check_states, norm, respond, DynamicFriction, DynamicIncrement,
-    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book, norm, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
+    STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 
@@ -118,23 +118,21 @@ impl DynamicFriction for MaxwellSlip {
     fn state_len(&self) -> usize {
         STATE_MODEL + 2 * self.elements()
     }
+}
 
-    /// One increment (module docs). Regime: 0 every element sticks, 1 some
-    /// slip (pre-sliding), 2 every element with μᵢ > 0 slips (gross
-    /// sliding). Tangents are the consistent tangents of the radial return:
-    /// dF/dN = −Σ kᵢδᵢ, dF/dΔs = −N Σ kᵢ ∂δᵢ/∂Δs (kᵢ I sticking,
-    /// kᵢ rᵢ/|tᵢ| (I − nᵢnᵢᵀ) slipping) − σ₂/Δt I.
-    fn step(
-        &self,
-        old: &[f64],
-        new: &mut [f64],
-        inc: &DynamicIncrement,
-    ) -> Result<DynamicResponse> {
-        check_increment(inc, false)?;
-        check_states(old, new, self.state_len())?;
+/// One increment (module docs). Regime: 0 every element sticks, 1 some slip
+/// (pre-sliding), 2 every element with μᵢ > 0 slips (gross sliding).
+/// Tangents are the consistent tangents of the radial return: dF/dN =
+/// −Σ kᵢδᵢ, dF/dΔs = −N Σ kᵢ ∂δᵢ/∂Δs (kᵢ I sticking, kᵢ rᵢ/|tᵢ| (I − nᵢnᵢᵀ)
+/// slipping) − σ₂/Δt I.
+impl Advance for MaxwellSlip {
+    fn rate_dependent(&self) -> bool {
+        false
+    }
+
+    fn advance(&self, new: &mut [f64], inc: &DynamicIncrement) -> DynamicResponse {
         let n = inc.normal_force;
         let ds = inc.slip;
-        new.copy_from_slice(old);
         let mut spring = [0.0; 2];
         let mut energy = 0.0;
         let mut slipped = 0.0;
@@ -218,6 +216,6 @@ impl DynamicFriction for MaxwellSlip {
             }
         }
         resp.tangents = inc.tangents;
-        Ok(resp)
+        resp
     }
 }

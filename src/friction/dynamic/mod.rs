@@ -9,6 +9,8 @@
 //!   (5-8)) in its standard continuous form, LuGre (Canudas de Wit et al.
 //!   1995), with Stribeck velocity weakening, integrated exactly over each
 //!   increment.
+//! * [`DynamicModel`]: either, chosen by configuration; every model
+//!   implements [`DynamicFriction`] (step, in place, VFRIC-shaped block).
 //! * [`MaxwellSlip`]: N Maxwell-slip elements in parallel (Al-Bender,
 //!   Lampaert and Swevers 2004; thesis 5.3.7, (5-9)..(5-12) reduced to the
 //!   tangential direction): pre-sliding hysteresis with non-local memory.
@@ -47,6 +49,7 @@ pub mod maxwell_slip;
 pub use lugre::LuGre;
 pub use maxwell_slip::MaxwellSlip;
 
+use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
 
 /// Index of the accumulated dissipation (J) in a state.
@@ -110,24 +113,138 @@ pub struct DynamicResponse {
     pub tangents: i32,
 }
 
-/// A friction model stepped once per increment.
-pub trait DynamicFriction {
+/// A friction model stepped once per increment. Implemented by [`LuGre`],
+/// [`MaxwellSlip`] and [`DynamicModel`] (the choice by configuration).
+pub trait DynamicFriction: sealed::Advance {
     /// Doubles of one point's state.
     fn state_len(&self) -> usize;
 
     /// One increment from `old` into `new` (each [`Self::state_len`]
-    /// doubles; all-zero `old` = fresh). On error `new` is untouched.
+    /// doubles; all-zero `old` = fresh). Errors name the argument: the
+    /// increment's `normal_force`, `slip`, `dt`, `tangents`; `old.len()`,
+    /// `new.len()`; `old.dissipation`, `old.slip_path` (finite, ≥ 0), `old`
+    /// (finite). On error `new` is untouched.
     fn step(
         &self,
         old: &[f64],
         new: &mut [f64],
         increment: &DynamicIncrement,
-    ) -> Result<DynamicResponse>;
+    ) -> Result<DynamicResponse> {
+        check_increment(increment, self.rate_dependent())?;
+        check_len("new.len()", new.len(), self.state_len())?;
+        check_state(old, "old", self.state_len())?;
+        new.copy_from_slice(old);
+        Ok(self.advance(new, increment))
+    }
+
+    /// [`Self::step`] with the state updated in place (errors name
+    /// `state…`); on error `state` is untouched.
+    fn step_in_place(
+        &self,
+        state: &mut [f64],
+        increment: &DynamicIncrement,
+    ) -> Result<DynamicResponse> {
+        check_increment(increment, self.rate_dependent())?;
+        check_state(state, "state", self.state_len())?;
+        Ok(self.advance(state, increment))
+    }
+
+    /// n points at once, in the shape of Abaqus/Explicit VFRIC: normal
+    /// forces `normal_force[i]` (N), slip increments `slip[2i]`, `[2i+1]`
+    /// (m), one `dt` (s), states `states[i·m..(i+1)·m]` (m =
+    /// [`Self::state_len`]) stepped in place, forces on the points into
+    /// `tangential_force[2i]`, `[2i+1]` (N) and the increments' dissipation
+    /// into `dissipation[i]` (J) when given. No tangents. On an error at
+    /// point i, the points before i are written and the error names i.
+    fn step_block(
+        &self,
+        normal_force: &[f64],
+        slip: &[f64],
+        dt: f64,
+        states: &mut [f64],
+        tangential_force: &mut [f64],
+        mut dissipation: Option<&mut [f64]>,
+    ) -> core::result::Result<(), BatchError> {
+        let n = normal_force.len();
+        let m = self.state_len();
+        let size = |name: &'static str, got: usize, want: usize| {
+            check_len(name, got, want).map_err(|error| BatchError { index: 0, error })
+        };
+        size("slip.len()", slip.len(), 2 * n)?;
+        size("tangential_force.len()", tangential_force.len(), 2 * n)?;
+        size("states.len()", states.len(), n * m)?;
+        if let Some(d) = dissipation.as_deref() {
+            size("dissipation.len()", d.len(), n)?;
+        }
+        for i in 0..n {
+            let inc = DynamicIncrement {
+                normal_force: normal_force[i],
+                slip: [slip[2 * i], slip[2 * i + 1]],
+                dt,
+                ..DynamicIncrement::default()
+            };
+            let r = self
+                .step_in_place(&mut states[i * m..(i + 1) * m], &inc)
+                .map_err(|error| BatchError { index: i, error })?;
+            tangential_force[2 * i] = r.force[0];
+            tangential_force[2 * i + 1] = r.force[1];
+            if let Some(d) = dissipation.as_deref_mut() {
+                d[i] = r.dissipated;
+            }
+        }
+        Ok(())
+    }
+}
+
+pub(crate) mod sealed {
+    use super::{DynamicIncrement, DynamicResponse};
+
+    /// The body of a step, after every check (not callable from outside the
+    /// crate: an unchecked state would give unchecked results).
+    pub trait Advance {
+        /// Whether a non-zero slip needs Δt > 0.
+        fn rate_dependent(&self) -> bool;
+        /// Steps the checked `state` in place.
+        fn advance(&self, state: &mut [f64], increment: &DynamicIncrement) -> DynamicResponse;
+    }
+}
+
+/// A dynamic friction model chosen by configuration.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DynamicModel {
+    /// [`LuGre`].
+    LuGre(LuGre),
+    /// [`MaxwellSlip`].
+    MaxwellSlip(MaxwellSlip),
+}
+
+impl sealed::Advance for DynamicModel {
+    fn rate_dependent(&self) -> bool {
+        match self {
+            Self::LuGre(m) => m.rate_dependent(),
+            Self::MaxwellSlip(m) => m.rate_dependent(),
+        }
+    }
+    fn advance(&self, state: &mut [f64], increment: &DynamicIncrement) -> DynamicResponse {
+        match self {
+            Self::LuGre(m) => m.advance(state, increment),
+            Self::MaxwellSlip(m) => m.advance(state, increment),
+        }
+    }
+}
+
+impl DynamicFriction for DynamicModel {
+    fn state_len(&self) -> usize {
+        match self {
+            Self::LuGre(m) => m.state_len(),
+            Self::MaxwellSlip(m) => m.state_len(),
+        }
+    }
 }
 
 /// Checks an increment: N finite and ≥ 0, Δs finite, Δt finite and ≥ 0
 /// (and > 0 with a non-zero slip when `rate_dependent`), tangent bits known.
-pub(crate) fn check_increment(inc: &DynamicIncrement, rate_dependent: bool) -> Result<()> {
+fn check_increment(inc: &DynamicIncrement, rate_dependent: bool) -> Result<()> {
     check::non_negative("normal_force", inc.normal_force)?;
     check::finite("slip", inc.slip[0])?;
     check::finite("slip", inc.slip[1])?;
@@ -148,22 +265,33 @@ pub(crate) fn check_increment(inc: &DynamicIncrement, rate_dependent: bool) -> R
     Ok(())
 }
 
-/// Checks the state lengths and the common part of an old state
-/// (accumulators finite and ≥ 0, every value finite).
-pub(crate) fn check_states(old: &[f64], new: &[f64], len: usize) -> Result<()> {
-    for (name, n) in [("old.len()", old.len()), ("new.len()", new.len())] {
-        if n != len {
-            return Err(Error::InvalidArgument {
-                name,
-                value: n as f64,
-                bound: "equal to the model's state_len()",
-            });
-        }
+/// A length that must equal `want`.
+fn check_len(name: &'static str, got: usize, want: usize) -> Result<()> {
+    if got == want {
+        Ok(())
+    } else {
+        Err(Error::InvalidArgument {
+            name,
+            value: got as f64,
+            bound: "equal to the model's state_len() (points times it for a block; slips and forces twice the points)",
+        })
     }
-    check::non_negative("old.dissipation", old[STATE_DISSIPATION])?;
-    check::non_negative("old.slip_path", old[STATE_SLIP_PATH])?;
-    for &v in &old[STATE_MODEL..] {
-        check::finite("old", v)?;
+}
+
+/// Checks a state's length and content: accumulators finite and ≥ 0,
+/// every value finite. Errors name `{what}.len()`, `{what}.dissipation`,
+/// `{what}.slip_path` or `{what}` (`what` is `old` or `state`).
+fn check_state(state: &[f64], what: &'static str, len: usize) -> Result<()> {
+    let (n_len, n_d, n_p) = if what == "old" {
+        ("old.len()", "old.dissipation", "old.slip_path")
+    } else {
+        ("state.len()", "state.dissipation", "state.slip_path")
+    };
+    check_len(n_len, state.len(), len)?;
+    check::non_negative(n_d, state[STATE_DISSIPATION])?;
+    check::non_negative(n_p, state[STATE_SLIP_PATH])?;
+    for &v in &state[STATE_MODEL..] {
+        check::finite(what, v)?;
     }
     Ok(())
 }
