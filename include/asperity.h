@@ -81,6 +81,23 @@
 // Surface law: exponential, `range` = decay length ℓ (m).
 #define ASPERITY_SURFACE_LAW_EXPONENTIAL 3
 
+// `AsperityDynamicIncrement.tangents` bit: compute dF/dN.
+#define ASPERITY_DYNAMIC_TANGENT_NORMAL 1
+
+// `AsperityDynamicIncrement.tangents` bit: compute dF/d(slip).
+#define ASPERITY_DYNAMIC_TANGENT_SLIP 2
+
+// Index in a dynamic-friction state of the accumulated dissipation (J).
+#define ASPERITY_DYNAMIC_STATE_DISSIPATION 0
+
+// Index in a dynamic-friction state of the accumulated slip path (m).
+#define ASPERITY_DYNAMIC_STATE_SLIP_PATH 1
+
+// Index in a dynamic-friction state of the model's first variable: LuGre's
+// bristle deflection z (x, y; m); Maxwell-slip's element deflections
+// (x, y per element; m).
+#define ASPERITY_DYNAMIC_STATE_MODEL 2
+
 // Fidelity: DMT.
 #define ASPERITY_FIDELITY_DMT 0
 
@@ -372,6 +389,12 @@
 // PSD data window: periodic Hann, normalised by its mean square.
 #define ASPERITY_WINDOW_HANN 1
 
+// A dynamic friction model (opaque): LuGre or Maxwell-slip. Create it with
+// `asperity_dynamic_lugre_new` or `asperity_dynamic_maxwell_slip_new`,
+// release it with `asperity_dynamic_friction_free`. Immutable; safe to
+// share between threads.
+typedef struct AsperityDynamicFriction AsperityDynamicFriction;
+
 // A Greenwood–Williamson surface over a measured or generated list of
 // summits (opaque). Create it with `asperity_gw_empirical_new`, release it
 // with `asperity_gw_empirical_free`. Immutable: safe to share between
@@ -655,6 +678,73 @@ typedef struct AsperityNormalResponse {
     // Reserved, always 0.
     int32_t reserved;
 } AsperityNormalResponse;
+
+// The LuGre model's parameters (see `LuGre::new`). SI units.
+typedef struct AsperityLuGreParams {
+    // Coulomb coefficient mu_c, finite and >= 0.
+    double mu_coulomb;
+    // Static coefficient mu_s, finite and >= 0 (mu_c or mu_s > 0).
+    double mu_static;
+    // Stribeck velocity v_s (m/s), finite and > 0.
+    double stribeck_velocity;
+    // Stribeck exponent delta, finite and > 0 (2: Gaussian).
+    double stribeck_exponent;
+    // Bristle stiffness per unit normal force sigma_0 (1/m), finite, > 0.
+    double sigma0;
+    // Bristle damping per unit normal force sigma_1 (s/m), finite, >= 0,
+    // with sigma_1 v_d / sqrt(2e) <= 4 min(mu_c, mu_s) (passivity).
+    double sigma1;
+    // Velocity v_d (m/s) of the damping's decay sigma_1 exp(-(v/v_d)^2),
+    // > 0; +infinity only when sigma_1 = 0.
+    double damping_velocity;
+    // Viscous coefficient sigma_2 (N s/m), finite and >= 0.
+    double sigma2;
+} AsperityLuGreParams;
+
+// One increment of a contact point (SI units).
+typedef struct AsperityDynamicIncrement {
+    // Normal force N (N), finite and ≥ 0 (compressive), constant over the
+    // increment.
+    double normal_force;
+    // Slip increment Δs of the point relative to the counter-surface (m),
+    // two finite components.
+    double slip[2];
+    // Time increment Δt (s), finite and ≥ 0; > 0 when the slip is not zero
+    // and the model is rate dependent.
+    double dt;
+    // Tangents wanted: 0, or [`TANGENT_NORMAL`] | [`TANGENT_SLIP`].
+    int32_t tangents;
+    // Reserved, 0.
+    int32_t reserved;
+} AsperityDynamicIncrement;
+
+// The response of one increment (SI units).
+typedef struct AsperityDynamicResponse {
+    // Tangential force on the point from the counter-surface at the end of
+    // the increment (N), in the basis of the slip.
+    double force[2];
+    // |F| (N).
+    double force_magnitude;
+    // Normal force N (N), as given.
+    double normal_force;
+    // |F|/N; 0 when N = 0.
+    double cof;
+    // Energy dissipated in the increment (J), ≥ 0.
+    double dissipated;
+    // Elastic energy stored in the model at the end of the increment (J).
+    double stored_energy;
+    // dF/dN at fixed slip increment and old state (dimensionless), when
+    // asked for.
+    double dforce_dnormal[2];
+    // dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, at fixed N, Δt and old state,
+    // when asked for.
+    double dforce_dslip[2][2];
+    // What the increment did (each model documents its values): 0 stick,
+    // 1 partial slip (pre-sliding), 2 gross sliding.
+    int32_t regime;
+    // The tangents computed, as [`TANGENT_NORMAL`] | [`TANGENT_SLIP`] bits.
+    int32_t tangents;
+} AsperityDynamicResponse;
 
 // One model measured against the converged Lennard-Jones sphere.
 typedef struct AsperityFidelityAssessment {
@@ -1505,6 +1595,61 @@ int32_t asperity_pull_off_force(const struct AsperityNormalLaw *law,
 // (e.g. a subnormal E*) that the scale underflows to 0 or overflows f64.
 int32_t asperity_law_length_scale(const struct AsperityNormalLaw *law,
                                   double *length);
+
+// Build a LuGre model from `*params` (Canudas de Wit et al. 1995, scaled
+// by the normal force, integrated exactly per increment). Writes a new
+// handle to `*out` (NULL on failure). Errors name the parameter and its
+// bound (`sigma1` for the passivity bound).
+int32_t asperity_dynamic_lugre_new(const struct AsperityLuGreParams *params,
+                                   struct AsperityDynamicFriction **out);
+
+// Build `n` >= 1 Maxwell-slip elements in parallel: stiffnesses
+// `stiffness[i]` (1/m per unit normal force, > 0), break-away
+// coefficients `capacity[i]` (>= 0), viscous coefficient `sigma2`
+// (N s/m, >= 0). Writes a new handle to `*out` (NULL on failure).
+int32_t asperity_dynamic_maxwell_slip_new(const double *stiffness,
+                                          const double *capacity,
+                                          size_t n,
+                                          double sigma2,
+                                          struct AsperityDynamicFriction **out);
+
+// Release a model; NULL is accepted and ignored.
+void asperity_dynamic_friction_free(struct AsperityDynamicFriction *model);
+
+// Write the number of doubles of one point's state to `*n` (LuGre: 4;
+// Maxwell-slip: 2 + 2 x elements).
+int32_t asperity_dynamic_friction_state_size(const struct AsperityDynamicFriction *model,
+                                             size_t *n);
+
+// One increment of one point: `*increment` from the state `old_state`
+// (`asperity_dynamic_friction_state_size` doubles; all-zero = fresh) into
+// `new_state` (same size; may equal `old_state` to step in place, must not
+// partially overlap it) and the response into `*out`. The same old state
+// and increment give bit-identical results (cut-backs). No allocation. On
+// failure `new_state` and `*out` are untouched; the message names the
+// argument and its bound.
+int32_t asperity_dynamic_friction_step(const struct AsperityDynamicFriction *model,
+                                       const struct AsperityDynamicIncrement *increment,
+                                       const double *old_state,
+                                       double *new_state,
+                                       struct AsperityDynamicResponse *out);
+
+// Step `n` points at once, in the shape of Abaqus/Explicit VFRIC: normal
+// forces `normal_forces[i]` (N), slip increments `slip_increments[2i]`,
+// `[2i+1]` (m, interleaved), one `dt` (s), the states
+// `states[i*m .. (i+1)*m]` (m = `asperity_dynamic_friction_state_size`)
+// stepped in place, tangential forces out in `tangential_forces[2i]`,
+// `[2i+1]` (N) and the dissipated energy of the increment in
+// `dissipation[i]` (J; may be NULL). No tangents. On an error at point i,
+// the points before i are written and the message names i.
+int32_t asperity_dynamic_friction_step_block(const struct AsperityDynamicFriction *model,
+                                             size_t n,
+                                             const double *normal_forces,
+                                             const double *slip_increments,
+                                             double dt,
+                                             double *states,
+                                             double *tangential_forces,
+                                             double *dissipation);
 
 // The cheapest adhesive-sphere model whose pull-off and force–approach
 // errors against the converged Lennard-Jones sphere are within

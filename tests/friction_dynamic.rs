@@ -137,11 +137,11 @@ fn lugre_increment_is_exact_against_runge_kutta() {
     ] {
         let n = 7.0;
         let mut old = vec![0.0; m.state_len()];
-        old[LuGre::STATE_Z] = z0;
+        old[asperity::friction::dynamic::lugre::STATE_Z] = z0;
         let mut new = old.clone();
         let r = m.step(&old, &mut new, &inc(n, [ds, 0.0], dt)).unwrap();
         let (z, d) = rk4(&p, z0, n, ds, dt, 200_000);
-        let z1 = new[LuGre::STATE_Z];
+        let z1 = new[asperity::friction::dynamic::lugre::STATE_Z];
         assert!((z1 - z).abs() <= 1e-9 * z.abs().max(1e-9), "{z1} vs {z}");
         assert!(
             (r.dissipated - d).abs() <= 1e-7 * d.abs().max(1e-18),
@@ -229,7 +229,7 @@ fn lugre_random_increments_dissipate_and_cut_back_exactly() {
 fn lugre_sticks_at_zero_slip_and_pre_slides_elastically() {
     let m = lugre();
     let mut s = vec![0.0; m.state_len()];
-    s[LuGre::STATE_Z] = 2e-6;
+    s[asperity::friction::dynamic::lugre::STATE_Z] = 2e-6;
     let mut t = s.clone();
     let r = m.step(&s, &mut t, &inc(3.0, [0.0, 0.0], 0.0)).unwrap();
     assert_eq!(t, s);
@@ -251,8 +251,8 @@ fn lugre_sticks_at_zero_slip_and_pre_slides_elastically() {
 fn lugre_tangents_match_finite_differences() {
     let m = lugre();
     let mut s = vec![0.0; m.state_len()];
-    s[LuGre::STATE_Z] = 1e-6;
-    s[LuGre::STATE_Z + 1] = -2e-6;
+    s[asperity::friction::dynamic::lugre::STATE_Z] = 1e-6;
+    s[asperity::friction::dynamic::lugre::STATE_Z + 1] = -2e-6;
     let mut t = s.clone();
     let i = DynamicIncrement {
         normal_force: 5.0,
@@ -343,7 +343,7 @@ fn lugre_bad_input_names_the_argument() {
         "old.dissipation"
     );
     bad[STATE_DISSIPATION] = 0.0;
-    bad[LuGre::STATE_Z] = f64::NAN;
+    bad[asperity::friction::dynamic::lugre::STATE_Z] = f64::NAN;
     assert_eq!(
         name(m.step(&bad, &mut t, &inc(1.0, [0.0; 2], 1.0)).unwrap_err()),
         "old"

@@ -65,6 +65,9 @@ const TYPES: &[TypeLayout] = layouts![
     "AsperitySliderInfo" => super::slider::AsperitySliderInfo,
     "AsperitySliderOptions" => super::slider::AsperitySliderOptions,
     "AsperityFrictionMaterial" => crate::friction::FrictionMaterial,
+    "AsperityLuGreParams" => super::dynamic::AsperityLuGreParams,
+    "AsperityDynamicIncrement" => crate::friction::dynamic::DynamicIncrement,
+    "AsperityDynamicResponse" => crate::friction::dynamic::DynamicResponse,
     "AsperitySliderResponse" => crate::friction::SliderResponse,
 ];
 

@@ -10,6 +10,7 @@
 
 pub mod abi;
 pub mod contact;
+pub mod dynamic;
 pub mod fidelity;
 pub mod friction;
 pub mod homogenised;

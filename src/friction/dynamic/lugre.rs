@@ -86,12 +86,12 @@ fn decay(x: f64, p: f64) -> f64 {
     }
 }
 
-impl LuGre {
-    /// Index of z (2 values, m) in a state.
-    pub const STATE_Z: usize = STATE_MODEL;
-    /// Doubles of a state.
-    pub const STATE_LEN: usize = STATE_MODEL + 2;
+/// Index of LuGre's bristle deflection z (2 values, m) in a state.
+pub const STATE_Z: usize = STATE_MODEL;
+/// Doubles of a LuGre state.
+const STATE_LEN: usize = STATE_MODEL + 2;
 
+impl LuGre {
     /// A LuGre model: Coulomb and static coefficients `mu_coulomb` μ_c and
     /// `mu_static` μ_s (finite, ≥ 0, at least one > 0), Stribeck velocity
     /// `stribeck_velocity` v_s (m/s, finite, > 0) and exponent
@@ -259,7 +259,7 @@ impl Increment {
 
 impl DynamicFriction for LuGre {
     fn state_len(&self) -> usize {
-        Self::STATE_LEN
+        STATE_LEN
     }
 }
 
@@ -273,11 +273,11 @@ impl Advance for LuGre {
     }
 
     fn advance(&self, state: &mut [f64], inc: &DynamicIncrement) -> DynamicResponse {
-        let z0 = [state[Self::STATE_Z], state[Self::STATE_Z + 1]];
+        let z0 = [state[STATE_Z], state[STATE_Z + 1]];
         let n = inc.normal_force;
         let step = self.increment(z0, n, inc.slip, inc.dt);
-        state[Self::STATE_Z] = step.z[0];
-        state[Self::STATE_Z + 1] = step.z[1];
+        state[STATE_Z] = step.z[0];
+        state[STATE_Z + 1] = step.z[1];
         book(state, step.dissipated, inc.slip);
         let mut r = respond(step.force(n), n);
         r.dissipated = step.dissipated;

@@ -1,0 +1,249 @@
+//! C ABI for `crate::friction::dynamic`: the dynamic friction models of
+//! thesis chapter 5 (LuGre, Maxwell-slip) as per-increment friction steps
+//! (issue 9 §3).
+//!
+//! * `AsperityDynamicFriction` (opaque, a boxed [`DynamicModel`]) is built by
+//!   `asperity_dynamic_lugre_new` or `asperity_dynamic_maxwell_slip_new`;
+//!   immutable, one handle may be used by any number of threads at once.
+//! * Per-point states are caller-owned arrays of
+//!   `asperity_dynamic_friction_state_size` doubles (all-zero = fresh;
+//!   layout: `ASPERITY_DYNAMIC_STATE_*`, then the model's variables).
+//! * `asperity_dynamic_friction_step` steps one point with every output and
+//!   optional tangents; `asperity_dynamic_friction_step_block` steps n points
+//!   in the shape of Abaqus/Explicit VFRIC.
+//!
+//! Sign convention (as VFRIC and the other friction steps): the slip
+//! increment is the motion of the point relative to the counter-surface, the
+//! tangential force is the force on the point and opposes slip.
+
+use super::{guard, input, output, Failure};
+use crate::error::{Error, Result};
+use crate::friction::dynamic::{
+    DynamicFriction, DynamicIncrement, DynamicModel, DynamicResponse, LuGre, MaxwellSlip,
+    STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
+};
+
+/// `AsperityDynamicIncrement.tangents` bit: compute dF/dN.
+pub const ASPERITY_DYNAMIC_TANGENT_NORMAL: i32 = 1;
+/// `AsperityDynamicIncrement.tangents` bit: compute dF/d(slip).
+pub const ASPERITY_DYNAMIC_TANGENT_SLIP: i32 = 2;
+/// Index in a dynamic-friction state of the accumulated dissipation (J).
+pub const ASPERITY_DYNAMIC_STATE_DISSIPATION: usize = 0;
+/// Index in a dynamic-friction state of the accumulated slip path (m).
+pub const ASPERITY_DYNAMIC_STATE_SLIP_PATH: usize = 1;
+/// Index in a dynamic-friction state of the model's first variable: LuGre's
+/// bristle deflection z (x, y; m); Maxwell-slip's element deflections
+/// (x, y per element; m).
+pub const ASPERITY_DYNAMIC_STATE_MODEL: usize = 2;
+
+const _: () = {
+    assert!(ASPERITY_DYNAMIC_TANGENT_NORMAL == TANGENT_NORMAL);
+    assert!(ASPERITY_DYNAMIC_TANGENT_SLIP == TANGENT_SLIP);
+    assert!(ASPERITY_DYNAMIC_STATE_DISSIPATION == STATE_DISSIPATION);
+    assert!(ASPERITY_DYNAMIC_STATE_SLIP_PATH == STATE_SLIP_PATH);
+    assert!(ASPERITY_DYNAMIC_STATE_MODEL == STATE_MODEL);
+};
+
+/// A dynamic friction model (opaque): LuGre or Maxwell-slip. Create it with
+/// `asperity_dynamic_lugre_new` or `asperity_dynamic_maxwell_slip_new`,
+/// release it with `asperity_dynamic_friction_free`. Immutable; safe to
+/// share between threads.
+pub struct AsperityDynamicFriction(DynamicModel);
+
+/// The LuGre model's parameters (see `LuGre::new`). SI units.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AsperityLuGreParams {
+    /// Coulomb coefficient mu_c, finite and >= 0.
+    pub mu_coulomb: f64,
+    /// Static coefficient mu_s, finite and >= 0 (mu_c or mu_s > 0).
+    pub mu_static: f64,
+    /// Stribeck velocity v_s (m/s), finite and > 0.
+    pub stribeck_velocity: f64,
+    /// Stribeck exponent delta, finite and > 0 (2: Gaussian).
+    pub stribeck_exponent: f64,
+    /// Bristle stiffness per unit normal force sigma_0 (1/m), finite, > 0.
+    pub sigma0: f64,
+    /// Bristle damping per unit normal force sigma_1 (s/m), finite, >= 0,
+    /// with sigma_1 v_d / sqrt(2e) <= 4 min(mu_c, mu_s) (passivity).
+    pub sigma1: f64,
+    /// Velocity v_d (m/s) of the damping's decay sigma_1 exp(-(v/v_d)^2),
+    /// > 0; +infinity only when sigma_1 = 0.
+    pub damping_velocity: f64,
+    /// Viscous coefficient sigma_2 (N s/m), finite and >= 0.
+    pub sigma2: f64,
+}
+
+unsafe fn emit(
+    out: *mut *mut AsperityDynamicFriction,
+    make: impl FnOnce() -> Result<DynamicModel>,
+) -> i32 {
+    guard(|| {
+        let out = output(out, "out")?;
+        *out = core::ptr::null_mut();
+        *out = Box::into_raw(Box::new(AsperityDynamicFriction(make()?)));
+        Ok(())
+    })
+}
+
+/// Build a LuGre model from `*params` (Canudas de Wit et al. 1995, scaled
+/// by the normal force, integrated exactly per increment). Writes a new
+/// handle to `*out` (NULL on failure). Errors name the parameter and its
+/// bound (`sigma1` for the passivity bound).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_lugre_new(
+    params: *const AsperityLuGreParams,
+    out: *mut *mut AsperityDynamicFriction,
+) -> i32 {
+    emit(out, || {
+        let p = input(params, "params")?;
+        LuGre::new(
+            p.mu_coulomb,
+            p.mu_static,
+            p.stribeck_velocity,
+            p.stribeck_exponent,
+            p.sigma0,
+            p.sigma1,
+            p.damping_velocity,
+            p.sigma2,
+        )
+        .map(DynamicModel::LuGre)
+    })
+}
+
+/// Build `n` >= 1 Maxwell-slip elements in parallel: stiffnesses
+/// `stiffness[i]` (1/m per unit normal force, > 0), break-away
+/// coefficients `capacity[i]` (>= 0), viscous coefficient `sigma2`
+/// (N s/m, >= 0). Writes a new handle to `*out` (NULL on failure).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_maxwell_slip_new(
+    stiffness: *const f64,
+    capacity: *const f64,
+    n: usize,
+    sigma2: f64,
+    out: *mut *mut AsperityDynamicFriction,
+) -> i32 {
+    emit(out, || {
+        let k = input(stiffness, "stiffness")?;
+        let m = input(capacity, "capacity")?;
+        // SAFETY: the caller provides `n` readable values at each pointer.
+        let (k, m) = (
+            core::slice::from_raw_parts(k, n),
+            core::slice::from_raw_parts(m, n),
+        );
+        MaxwellSlip::new(k, m, sigma2).map(DynamicModel::MaxwellSlip)
+    })
+}
+
+/// Release a model; NULL is accepted and ignored.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_friction_free(model: *mut AsperityDynamicFriction) {
+    if !model.is_null() {
+        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            drop(Box::from_raw(model));
+        }));
+    }
+}
+
+/// Write the number of doubles of one point's state to `*n` (LuGre: 4;
+/// Maxwell-slip: 2 + 2 x elements).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_friction_state_size(
+    model: *const AsperityDynamicFriction,
+    n: *mut usize,
+) -> i32 {
+    guard(|| {
+        let m = &input(model, "model")?.0;
+        *output(n, "n")? = m.state_len();
+        Ok(())
+    })
+}
+
+/// One increment of one point: `*increment` from the state `old_state`
+/// (`asperity_dynamic_friction_state_size` doubles; all-zero = fresh) into
+/// `new_state` (same size; may equal `old_state` to step in place, must not
+/// partially overlap it) and the response into `*out`. The same old state
+/// and increment give bit-identical results (cut-backs). No allocation. On
+/// failure `new_state` and `*out` are untouched; the message names the
+/// argument and its bound.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_friction_step(
+    model: *const AsperityDynamicFriction,
+    increment: *const DynamicIncrement,
+    old_state: *const f64,
+    new_state: *mut f64,
+    out: *mut DynamicResponse,
+) -> i32 {
+    guard(|| {
+        let m = &input(model, "model")?.0;
+        let inc = input(increment, "increment")?;
+        input(old_state, "old_state")?;
+        output(new_state, "new_state")?;
+        let out = output(out, "out")?;
+        let len = m.state_len();
+        let r = if core::ptr::eq(old_state, new_state) {
+            // SAFETY: the caller provides `len` writable values.
+            m.step_in_place(core::slice::from_raw_parts_mut(new_state, len), inc)
+        } else {
+            let bytes = len * core::mem::size_of::<f64>();
+            let (a, b) = (old_state as usize, new_state as usize);
+            if a < b.saturating_add(bytes) && b < a.saturating_add(bytes) {
+                return Err(Error::InvalidArgument {
+                    name: "new_state",
+                    value: len as f64,
+                    bound: "equal to old_state or not overlapping it",
+                }
+                .into());
+            }
+            // SAFETY: distinct, non-overlapping arrays of `len` values.
+            m.step(
+                core::slice::from_raw_parts(old_state, len),
+                core::slice::from_raw_parts_mut(new_state, len),
+                inc,
+            )
+        }?;
+        *out = r;
+        Ok(())
+    })
+}
+
+/// Step `n` points at once, in the shape of Abaqus/Explicit VFRIC: normal
+/// forces `normal_forces[i]` (N), slip increments `slip_increments[2i]`,
+/// `[2i+1]` (m, interleaved), one `dt` (s), the states
+/// `states[i*m .. (i+1)*m]` (m = `asperity_dynamic_friction_state_size`)
+/// stepped in place, tangential forces out in `tangential_forces[2i]`,
+/// `[2i+1]` (N) and the dissipated energy of the increment in
+/// `dissipation[i]` (J; may be NULL). No tangents. On an error at point i,
+/// the points before i are written and the message names i.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_friction_step_block(
+    model: *const AsperityDynamicFriction,
+    n: usize,
+    normal_forces: *const f64,
+    slip_increments: *const f64,
+    dt: f64,
+    states: *mut f64,
+    tangential_forces: *mut f64,
+    dissipation: *mut f64,
+) -> i32 {
+    guard(|| {
+        let m = &input(model, "model")?.0;
+        if n == 0 {
+            return Ok(());
+        }
+        let len = m.state_len();
+        // SAFETY: the caller provides arrays of the documented lengths.
+        let normal = core::slice::from_raw_parts(input(normal_forces, "normal_forces")?, n);
+        let slip = core::slice::from_raw_parts(input(slip_increments, "slip_increments")?, 2 * n);
+        let states = core::slice::from_raw_parts_mut(output(states, "states")?, n * len);
+        let forces =
+            core::slice::from_raw_parts_mut(output(tangential_forces, "tangential_forces")?, 2 * n);
+        let diss = if dissipation.is_null() {
+            None
+        } else {
+            Some(core::slice::from_raw_parts_mut(dissipation, n))
+        };
+        m.step_block(normal, slip, dt, states, forces, diss)
+            .map_err(|e| Failure::at(e.index, e.error))
+    })
+}

@@ -1,0 +1,220 @@
+//! The C ABI of the dynamic friction models, called from Rust: equality
+//! with the Rust API bit for bit (scalar, in place, block), errors naming
+//! the argument with outputs untouched, NULL pointers.
+
+use asperity::ffi::dynamic::*;
+use asperity::ffi::*;
+use asperity::friction::dynamic::{
+    DynamicFriction, DynamicIncrement, DynamicResponse, LuGre, MaxwellSlip,
+};
+use std::ptr::{null, null_mut};
+
+fn last_message() -> String {
+    unsafe {
+        let n = asperity_last_error_message(null_mut(), 0);
+        let mut buf = vec![0u8; n + 1];
+        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
+        String::from_utf8(buf[..n].to_vec()).unwrap()
+    }
+}
+
+#[track_caller]
+fn expect_error(status: i32, code: i32, what: &str) {
+    let msg = last_message();
+    assert_eq!(status, code, "status (message: {msg})");
+    assert!(msg.contains(what), "message `{msg}` should name {what}");
+}
+
+fn params() -> AsperityLuGreParams {
+    AsperityLuGreParams {
+        mu_coulomb: 0.3,
+        mu_static: 0.5,
+        stribeck_velocity: 1e-3,
+        stribeck_exponent: 2.0,
+        sigma0: 1e5,
+        sigma1: 1000.0,
+        damping_velocity: 1e-3,
+        sigma2: 0.4,
+    }
+}
+
+const K: [f64; 3] = [2e5, 5e4, 1e4];
+const MU: [f64; 3] = [0.2, 0.2, 0.1];
+
+/// The two models through C, and the same through Rust.
+fn models() -> Vec<(*mut AsperityDynamicFriction, Box<dyn DynamicFriction>)> {
+    let p = params();
+    let mut a = null_mut();
+    assert_eq!(
+        unsafe { asperity_dynamic_lugre_new(&p, &mut a) },
+        ASPERITY_OK
+    );
+    let mut b = null_mut();
+    assert_eq!(
+        unsafe { asperity_dynamic_maxwell_slip_new(K.as_ptr(), MU.as_ptr(), 3, 0.1, &mut b) },
+        ASPERITY_OK
+    );
+    vec![
+        (
+            a,
+            Box::new(LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4).unwrap()),
+        ),
+        (b, Box::new(MaxwellSlip::new(&K, &MU, 0.1).unwrap())),
+    ]
+}
+
+fn increment(k: usize) -> DynamicIncrement {
+    let th = 0.7 * k as f64;
+    DynamicIncrement {
+        normal_force: 2.0 + (0.3 * k as f64).sin(),
+        slip: [2e-6 * th.cos(), 1e-6 * th.sin()],
+        dt: 1e-3,
+        tangents: (k % 4) as i32,
+        reserved: 0,
+    }
+}
+
+#[test]
+fn steps_equal_the_rust_api_bit_for_bit() {
+    for (h, rust) in models() {
+        let mut n = 0usize;
+        assert_eq!(
+            unsafe { asperity_dynamic_friction_state_size(h, &mut n) },
+            ASPERITY_OK
+        );
+        assert_eq!(n, rust.state_len());
+        let (mut c, mut c_new, mut r) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        for k in 0..30 {
+            let inc = increment(k);
+            let mut out = DynamicResponse::default();
+            let st = unsafe {
+                asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c_new.as_mut_ptr(), &mut out)
+            };
+            assert_eq!(st, ASPERITY_OK, "{}", last_message());
+            let want = rust.step_in_place(&mut r, &inc).unwrap();
+            assert_eq!(format!("{out:?}"), format!("{want:?}"));
+            assert_eq!(c_new, r);
+            // In place gives the same.
+            let mut out2 = DynamicResponse::default();
+            let st = unsafe {
+                asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), &mut out2)
+            };
+            assert_eq!(st, ASPERITY_OK, "{}", last_message());
+            assert_eq!(out, out2);
+            assert_eq!(c, c_new);
+        }
+        // The block: 4 points, against the Rust block.
+        let pts = 4;
+        let normal: Vec<f64> = (0..pts).map(|i| 1.0 + i as f64).collect();
+        let slip: Vec<f64> = (0..2 * pts).map(|i| 1e-6 * (i as f64 - 3.5)).collect();
+        let (mut cs, mut rs) = (vec![0.0; pts * n], vec![0.0; pts * n]);
+        let (mut cf, mut rf) = (vec![0.0; 2 * pts], vec![0.0; 2 * pts]);
+        let (mut cd, mut rd) = (vec![0.0; pts], vec![0.0; pts]);
+        for _ in 0..3 {
+            let st = unsafe {
+                asperity_dynamic_friction_step_block(
+                    h,
+                    pts,
+                    normal.as_ptr(),
+                    slip.as_ptr(),
+                    1e-3,
+                    cs.as_mut_ptr(),
+                    cf.as_mut_ptr(),
+                    cd.as_mut_ptr(),
+                )
+            };
+            assert_eq!(st, ASPERITY_OK, "{}", last_message());
+            rust.step_block(&normal, &slip, 1e-3, &mut rs, &mut rf, Some(&mut rd))
+                .unwrap();
+            assert_eq!((&cs, &cf, &cd), (&rs, &rf, &rd));
+        }
+        unsafe { asperity_dynamic_friction_free(h) };
+    }
+}
+
+#[test]
+fn errors_name_the_argument_and_leave_outputs_untouched() {
+    let mut p = params();
+    p.sigma1 = 1e6;
+    let mut h = 1usize as *mut AsperityDynamicFriction;
+    expect_error(
+        unsafe { asperity_dynamic_lugre_new(&p, &mut h) },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "sigma1",
+    );
+    assert!(h.is_null());
+    expect_error(
+        unsafe { asperity_dynamic_lugre_new(null(), &mut h) },
+        ASPERITY_ERR_NULL_POINTER,
+        "params",
+    );
+    expect_error(
+        unsafe { asperity_dynamic_maxwell_slip_new(K.as_ptr(), MU.as_ptr(), 0, 0.0, &mut h) },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "capacity.len()",
+    );
+    expect_error(
+        unsafe { asperity_dynamic_maxwell_slip_new(null(), MU.as_ptr(), 3, 0.0, &mut h) },
+        ASPERITY_ERR_NULL_POINTER,
+        "stiffness",
+    );
+    for (h, _) in models() {
+        let mut n = 0usize;
+        unsafe { asperity_dynamic_friction_state_size(h, &mut n) };
+        let old = vec![0.0; 2 * n];
+        let mut new = vec![7.0; n];
+        let mut out = DynamicResponse {
+            cof: 9.0,
+            ..Default::default()
+        };
+        let mut bad = increment(1);
+        bad.dt = -1.0;
+        expect_error(
+            unsafe {
+                asperity_dynamic_friction_step(h, &bad, old.as_ptr(), new.as_mut_ptr(), &mut out)
+            },
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "dt",
+        );
+        assert!(new.iter().all(|&x| x == 7.0) && out.cof == 9.0);
+        // Partially overlapping states.
+        let mut both = vec![0.0; 2 * n];
+        let p = both.as_mut_ptr();
+        expect_error(
+            unsafe { asperity_dynamic_friction_step(h, &increment(1), p, p.add(1), &mut out) },
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "new_state",
+        );
+        expect_error(
+            unsafe {
+                asperity_dynamic_friction_step(h, null(), old.as_ptr(), new.as_mut_ptr(), &mut out)
+            },
+            ASPERITY_ERR_NULL_POINTER,
+            "increment",
+        );
+        // A bad point in a block names its index.
+        let normal = [1.0, 1.0, f64::NAN];
+        let slip = [1e-6; 6];
+        let mut states = vec![0.0; 3 * n];
+        let mut forces = [0.0; 6];
+        expect_error(
+            unsafe {
+                asperity_dynamic_friction_step_block(
+                    h,
+                    3,
+                    normal.as_ptr(),
+                    slip.as_ptr(),
+                    1e-3,
+                    states.as_mut_ptr(),
+                    forces.as_mut_ptr(),
+                    null_mut(),
+                )
+            },
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "element 2: ",
+        );
+        assert!(last_message().contains("normal_force"));
+        assert!(forces[..4].iter().all(|&f| f != 0.0) && forces[4..] == [0.0, 0.0]);
+        unsafe { asperity_dynamic_friction_free(h) };
+    }
+}
