@@ -680,7 +680,7 @@ typedef struct AsperityNormalResponse {
 } AsperityNormalResponse;
 
 // The LuGre model's parameters (see `LuGre::new`). SI units.
-typedef struct AsperityLuGreParams {
+typedef struct AsperityLugreParams {
     // Coulomb coefficient mu_c, finite and >= 0.
     double mu_coulomb;
     // Static coefficient mu_s, finite and >= 0 (mu_c or mu_s > 0).
@@ -699,7 +699,7 @@ typedef struct AsperityLuGreParams {
     double damping_velocity;
     // Viscous coefficient sigma_2 (N s/m), finite and >= 0.
     double sigma2;
-} AsperityLuGreParams;
+} AsperityLugreParams;
 
 // One increment of a contact point (SI units).
 typedef struct AsperityDynamicIncrement {
@@ -1600,7 +1600,7 @@ int32_t asperity_law_length_scale(const struct AsperityNormalLaw *law,
 // by the normal force, integrated exactly per increment). Writes a new
 // handle to `*out` (NULL on failure). Errors name the parameter and its
 // bound (`sigma1` for the passivity bound).
-int32_t asperity_dynamic_lugre_new(const struct AsperityLuGreParams *params,
+int32_t asperity_dynamic_lugre_new(const struct AsperityLugreParams *params,
                                    struct AsperityDynamicFriction **out);
 
 // Build `n` >= 1 Maxwell-slip elements in parallel: stiffnesses

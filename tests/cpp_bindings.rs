@@ -895,6 +895,42 @@ fn every_function_slider(c: &mut Report) {
     c.close(FFI, "structs_bad_plastic_names_argument", 1.0, 0.0);
 }
 
+fn every_function_dynamic(c: &mut Report) {
+    use asperity::friction::dynamic::{DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip};
+    const DYN: &str = "the dynamic friction models (src/friction/dynamic)";
+    let lugre = LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4).unwrap();
+    c.close(DYN, "lugre_state_size", 4.0, 0.0);
+    // One second at 2 mm/s: e^{-a dt} underflows, the Stribeck curve.
+    c.close(
+        DYN,
+        "lugre_steady_force",
+        lugre.steady_force(3.0, 2e-3),
+        1e-12,
+    );
+    let mut s = [0.0; 4];
+    let inc = DynamicIncrement {
+        normal_force: 3.0,
+        slip: [2e-3, 0.0],
+        dt: 1.0,
+        ..Default::default()
+    };
+    let r = lugre.step_in_place(&mut s, &inc).unwrap();
+    c.close(DYN, "lugre_dissipation", r.dissipated, 0.0);
+    // Maxwell-slip, two elements of reach 2 and 15 µm: loaded 3 µm, back
+    // 2 µm: Masing F = F_v(3) − 2 F_v(1) on the point (the force on the
+    // point is minus that).
+    let ms = MaxwellSlip::new(&[1e5, 2e4], &[0.2, 0.3], 0.0).unwrap();
+    let masing = |n: f64| ms.virgin_force(n, 3e-6) - 2.0 * ms.virgin_force(n, 1e-6);
+    c.close(DYN, "maxwell_force_0", -masing(1.0), 1e-12);
+    c.close(DYN, "maxwell_force_1", -masing(2.0), 1e-12);
+    // Point 1 (N = 2) slid 1 µm on the first element in the first
+    // increment and nothing in the second (the reversal is elastic).
+    c.close(DYN, "maxwell_dissipation_1", 0.0, 0.0);
+    c.close(CPP, "maxwell_bad_threw", 1.0, 0.0);
+    c.close(FFI, "maxwell_bad_status", -2.0, 0.0);
+    c.close(FFI, "maxwell_bad_names_argument", 1.0, 0.0);
+}
+
 fn every_function_indentation(c: &mut Report) {
     c.close(CPP, "default_options", 1.0, 0.0);
     // The synthetic curve: κ = 0.3, d = 2, E_r = 70 GPa, β = 1, rigid tip.
@@ -1272,6 +1308,7 @@ fn check_every_function(linkage: Linkage) {
     every_function_laws(&mut c);
     every_function_lj_and_tables(&mut c);
     every_function_slider(&mut c);
+    every_function_dynamic(&mut c);
     every_function_indentation(&mut c);
     every_function_material(&mut c);
     every_function_statistics(&mut c);

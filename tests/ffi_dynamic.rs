@@ -25,8 +25,8 @@ fn expect_error(status: i32, code: i32, what: &str) {
     assert!(msg.contains(what), "message `{msg}` should name {what}");
 }
 
-fn params() -> AsperityLuGreParams {
-    AsperityLuGreParams {
+fn params() -> AsperityLugreParams {
+    AsperityLugreParams {
         mu_coulomb: 0.3,
         mu_static: 0.5,
         stribeck_velocity: 1e-3,

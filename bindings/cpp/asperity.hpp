@@ -339,6 +339,11 @@ struct free_slider_geometry {
 struct free_slider {
     static void free(AsperitySlider* p) noexcept { asperity_slider_free(p); }
 };
+/// `asperity_dynamic_friction_free`, called by the destructor of
+/// `asperity::DynamicFriction`.
+struct free_dynamic_friction {
+    static void free(AsperityDynamicFriction* p) noexcept { asperity_dynamic_friction_free(p); }
+};
 /// `asperity_slider_work_free`, called by the destructor of
 /// `asperity::SliderWork`.
 struct free_slider_work {
@@ -895,6 +900,98 @@ public:
             detail::at_least(slip_increments, 2 * n, f, "slip_increments"), dt, stick_stiffness,
             detail::optional(old_state, n, f, "old_state"),
             detail::optional(new_state, n, f, "new_state"),
+            detail::at_least(tangential_forces, 2 * n, f, "tangential_forces"),
+            detail::optional(dissipation, n, f, "dissipation")));
+    }
+};
+
+// ---------------------------------------------------------------------------
+// Dynamic friction models (thesis chapter 5) as per-increment friction steps
+
+/// A dynamic friction model (`AsperityDynamicFriction`): LuGre or
+/// Maxwell-slip, stepped once per increment with caller-owned states of
+/// `state_size()` doubles (all-zero = fresh). Immutable; safe to share
+/// between threads. Sign convention: the slip increment is the motion of the
+/// point relative to the counter-surface, the force is the force on the
+/// point and opposes slip.
+class DynamicFriction
+    : public detail::unique_handle<AsperityDynamicFriction, detail::free_dynamic_friction> {
+public:
+    using unique_handle::unique_handle;
+    DynamicFriction() noexcept = default;
+
+    /// `asperity_dynamic_lugre_new`: the LuGre model of `params`.
+    [[nodiscard]] static DynamicFriction lugre(const AsperityLugreParams& params)
+    {
+        AsperityDynamicFriction* p = nullptr;
+        check(asperity_dynamic_lugre_new(&params, &p));
+        return DynamicFriction(p);
+    }
+
+    /// `asperity_dynamic_maxwell_slip_new`: Maxwell-slip elements of
+    /// stiffnesses `stiffness` (1/m per unit normal force) and break-away
+    /// coefficients `capacity` (one per element), viscous `sigma2` (N s/m).
+    [[nodiscard]] static DynamicFriction maxwell_slip(span<const double> stiffness,
+                                                      span<const double> capacity,
+                                                      double sigma2 = 0.0)
+    {
+        const std::size_t n = stiffness.size();
+        AsperityDynamicFriction* p = nullptr;
+        check(asperity_dynamic_maxwell_slip_new(
+            detail::required(stiffness),
+            detail::at_least(capacity, n, "asperity::DynamicFriction::maxwell_slip", "capacity"),
+            n, sigma2, &p));
+        return DynamicFriction(p);
+    }
+
+    /// `asperity_dynamic_friction_state_size`: doubles of one point's state.
+    [[nodiscard]] std::size_t state_size() const
+    {
+        std::size_t n = 0;
+        check(asperity_dynamic_friction_state_size(get(), &n));
+        return n;
+    }
+
+    /// `asperity_dynamic_friction_step`: one increment of one point from
+    /// `old_state` into `new_state` (each at least `state_size()` doubles).
+    /// On failure `new_state` is untouched.
+    [[nodiscard]] AsperityDynamicResponse step(const AsperityDynamicIncrement& increment,
+                                               span<const double> old_state,
+                                               span<double> new_state) const
+    {
+        const char* f = "asperity::DynamicFriction::step";
+        const std::size_t m = state_size();
+        const double* old_p = detail::at_least(old_state, m, f, "old_state");
+        double* new_p = detail::at_least(new_state, m, f, "new_state");
+        AsperityDynamicResponse out{};
+        check(asperity_dynamic_friction_step(get(), &increment, old_p, new_p, &out));
+        return out;
+    }
+
+    /// `asperity_dynamic_friction_step` with the point's `state` updated in
+    /// place.
+    AsperityDynamicResponse step(const AsperityDynamicIncrement& increment,
+                                 span<double> state) const
+    {
+        return step(increment, span<const double>(state), state);
+    }
+
+    /// `asperity_dynamic_friction_step_block`: `normal_forces.size()` points
+    /// at once (Abaqus VFRIC shape), states stepped in place (`state_size()`
+    /// doubles per point); `slip_increments` and `tangential_forces` hold
+    /// two values per point (x, y interleaved), `dissipation` is empty or
+    /// one per point.
+    void step_block(span<const double> normal_forces, span<const double> slip_increments,
+                    double dt, span<double> states, span<double> tangential_forces,
+                    span<double> dissipation = {}) const
+    {
+        const char* f = "asperity::DynamicFriction::step_block";
+        const std::size_t n = normal_forces.size();
+        const std::size_t m = state_size();
+        check(asperity_dynamic_friction_step_block(
+            get(), n, detail::required(normal_forces),
+            detail::at_least(slip_increments, 2 * n, f, "slip_increments"), dt,
+            detail::at_least(states, n * m, f, "states"),
             detail::at_least(tangential_forces, 2 * n, f, "tangential_forces"),
             detail::optional(dissipation, n, f, "dissipation")));
     }

@@ -242,6 +242,17 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_ROD_SOLVER_SWEEP = 0
   !> `asperity_slider_options%solver`: the thesis's dense formulation (reference).
   integer(c_int32_t), parameter, public :: ASPERITY_ROD_SOLVER_DENSE = 1
+  !> `asperity_dynamic_increment%tangents` bit: compute dF/dN.
+  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_TANGENT_NORMAL = 1
+  !> `asperity_dynamic_increment%tangents` bit: compute dF/d(slip).
+  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_TANGENT_SLIP = 2
+  ! The dynamic-friction state indices are C's, from 0.
+  !> Index (from 0) in a dynamic-friction state of the accumulated dissipation (J).
+  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_STATE_DISSIPATION = 0
+  !> Index (from 0) in a dynamic-friction state of the accumulated slip path (m).
+  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_STATE_SLIP_PATH = 1
+  !> Index (from 0) in a dynamic-friction state of the model's first variable.
+  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_STATE_MODEL = 2
   ! The slider state indices are C's, from 0: in Fortran the position is
   ! `state(ASPERITY_SLIDER_STATE_POSITION + 1)`.
   !> Index (from 0) in a slider state of its flag: 0 fresh, 1 stepped.
@@ -781,6 +792,64 @@ module asperity
     integer(c_int32_t) :: segments_from_labels = 0_c_int32_t
   end type asperity_indentation_result
 
+  !> `AsperityLugreParams`: the LuGre model's parameters (SI).
+  type, bind(c), public :: asperity_lugre_params
+    !> Coulomb coefficient mu_c, >= 0.
+    real(c_double) :: mu_coulomb = 0.0_c_double
+    !> Static coefficient mu_s, >= 0.
+    real(c_double) :: mu_static = 0.0_c_double
+    !> Stribeck velocity v_s (m/s), > 0.
+    real(c_double) :: stribeck_velocity = 0.0_c_double
+    !> Stribeck exponent delta, > 0 (2: Gaussian).
+    real(c_double) :: stribeck_exponent = 0.0_c_double
+    !> Bristle stiffness per unit normal force sigma_0 (1/m), > 0.
+    real(c_double) :: sigma0 = 0.0_c_double
+    !> Bristle damping per unit normal force sigma_1 (s/m), >= 0, within the passivity bound.
+    real(c_double) :: sigma1 = 0.0_c_double
+    !> Velocity v_d (m/s) of the damping's decay, > 0 (+infinity only when sigma_1 = 0).
+    real(c_double) :: damping_velocity = 0.0_c_double
+    !> Viscous coefficient sigma_2 (N s/m), >= 0.
+    real(c_double) :: sigma2 = 0.0_c_double
+  end type asperity_lugre_params
+
+  !> `AsperityDynamicIncrement`: one increment of a contact point (SI).
+  type, bind(c), public :: asperity_dynamic_increment
+    !> Normal force N (N), >= 0.
+    real(c_double) :: normal_force = 0.0_c_double
+    !> Slip increment of the point relative to the counter-surface (m).
+    real(c_double) :: slip(2) = 0.0_c_double
+    !> Time increment (s), >= 0; > 0 with a non-zero slip for LuGre.
+    real(c_double) :: dt = 0.0_c_double
+    !> Tangents wanted: 0, or `ASPERITY_DYNAMIC_TANGENT_NORMAL` + `ASPERITY_DYNAMIC_TANGENT_SLIP`.
+    integer(c_int32_t) :: tangents = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_dynamic_increment
+
+  !> `AsperityDynamicResponse`: the response of one increment (SI).
+  type, bind(c), public :: asperity_dynamic_response
+    !> Tangential force on the point at the end of the increment (N), opposing slip.
+    real(c_double) :: force(2) = 0.0_c_double
+    !> |F| (N).
+    real(c_double) :: force_magnitude = 0.0_c_double
+    !> Normal force N (N).
+    real(c_double) :: normal_force = 0.0_c_double
+    !> |F|/N; 0 when N = 0.
+    real(c_double) :: cof = 0.0_c_double
+    !> Energy dissipated in the increment (J), >= 0.
+    real(c_double) :: dissipated = 0.0_c_double
+    !> Elastic energy stored at the end of the increment (J).
+    real(c_double) :: stored_energy = 0.0_c_double
+    !> dF/dN (dimensionless), when asked for.
+    real(c_double) :: dforce_dnormal(2) = 0.0_c_double
+    !> dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, when asked for.
+    real(c_double) :: dforce_dslip(2,2) = 0.0_c_double
+    !> 0 stick, 1 partial slip (pre-sliding), 2 gross sliding.
+    integer(c_int32_t) :: regime = 0_c_int32_t
+    !> The tangents computed, as bits.
+    integer(c_int32_t) :: tangents = 0_c_int32_t
+  end type asperity_dynamic_response
+
   !> `AsperitySliderOptions`: how `asperity_slider_new` builds a slider (SI units). Start from
   !  `asperity_slider_options_default`, then set the loading.
   type, bind(c), public :: asperity_slider_options
@@ -1177,6 +1246,18 @@ module asperity
     final :: asperity_slider_final
   end type asperity_slider
 
+  !> Handle of `AsperityDynamicFriction`: a LuGre or Maxwell-slip friction model (`asperity_dynamic_*_new`).
+  !> `ptr` is the C pointer (NULL when empty) for the raw layer.
+  type, public :: asperity_dynamic_friction
+    type(c_ptr) :: ptr = c_null_ptr
+  contains
+    !> Release the object (nothing when empty); the handle becomes empty.
+    procedure :: free => asperity_dynamic_friction_free
+    procedure, private :: asperity_dynamic_friction_assign
+    generic :: assignment(=) => asperity_dynamic_friction_assign
+    final :: asperity_dynamic_friction_final
+  end type asperity_dynamic_friction
+
   !> Handle of `AsperitySliderWork`: scratch buffers of the slider step, one per thread (`asperity_slider_work_new`).
   !> `ptr` is the C pointer (NULL when empty) for the raw layer.
   type, public :: asperity_slider_work
@@ -1207,7 +1288,7 @@ module asperity
   interface asperity_free
     module procedure asperity_table_free, asperity_gw_empirical_free, &
         asperity_homogenised_friction_free, asperity_slider_geometry_free, asperity_slider_free, &
-        asperity_slider_work_free
+        asperity_slider_work_free, asperity_dynamic_friction_free
   end interface asperity_free
   public :: asperity_free
 
@@ -2097,6 +2178,76 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_hamaker_work_of_adhesion
 
+    !> Build a LuGre model from `*params`. Writes a new handle to `*out` (NULL on failure).
+    function c_asperity_dynamic_lugre_new(params, out) result(r) &
+        bind(c, name="asperity_dynamic_lugre_new")
+      import
+      implicit none
+      type(asperity_lugre_params), intent(in) :: params
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_dynamic_lugre_new
+
+    !> Build `n` >= 1 Maxwell-slip elements in parallel. Writes a new handle to `*out`.
+    function c_asperity_dynamic_maxwell_slip_new(stiffness, capacity, n, sigma2, out) result(r) &
+        bind(c, name="asperity_dynamic_maxwell_slip_new")
+      import
+      implicit none
+      real(c_double), intent(in) :: stiffness(*)
+      real(c_double), intent(in) :: capacity(*)
+      integer(c_size_t), value :: n
+      real(c_double), value :: sigma2
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_dynamic_maxwell_slip_new
+
+    !> Release a model; NULL is accepted and ignored.
+    subroutine c_asperity_dynamic_friction_free(model) bind(c, name="asperity_dynamic_friction_free")
+      import
+      implicit none
+      type(c_ptr), value :: model
+    end subroutine c_asperity_dynamic_friction_free
+
+    !> Write the number of doubles of one point's state to `*n`.
+    function c_asperity_dynamic_friction_state_size(model, n) result(r) &
+        bind(c, name="asperity_dynamic_friction_state_size")
+      import
+      implicit none
+      type(c_ptr), value :: model
+      integer(c_size_t), intent(out) :: n
+      integer(c_int32_t) :: r
+    end function c_asperity_dynamic_friction_state_size
+
+    !> One increment of one point from `old_state` into `new_state` (may be equal).
+    function c_asperity_dynamic_friction_step(model, increment, old_state, new_state, out) &
+        result(r) bind(c, name="asperity_dynamic_friction_step")
+      import
+      implicit none
+      type(c_ptr), value :: model
+      type(asperity_dynamic_increment), intent(in) :: increment
+      type(c_ptr), value :: old_state
+      type(c_ptr), value :: new_state
+      type(asperity_dynamic_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_dynamic_friction_step
+
+    !> Step `n` points at once (Abaqus/Explicit VFRIC shape), states in place.
+    function c_asperity_dynamic_friction_step_block(model, n, normal_forces, slip_increments, dt, &
+        states, tangential_forces, dissipation) result(r) &
+        bind(c, name="asperity_dynamic_friction_step_block")
+      import
+      implicit none
+      type(c_ptr), value :: model
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: normal_forces(*)
+      real(c_double), intent(in) :: slip_increments(*)
+      real(c_double), value :: dt
+      real(c_double), intent(inout) :: states(*)
+      real(c_double), intent(inout) :: tangential_forces(*)
+      type(c_ptr), value :: dissipation
+      integer(c_int32_t) :: r
+    end function c_asperity_dynamic_friction_step_block
+
     !> Write the library's default slider options to `*out` (fixed load 0 N: set
     !  `normal_force`).
     function c_asperity_slider_options_default(out) result(r) &
@@ -2886,6 +3037,12 @@ module asperity
   public :: c_asperity_weir_surface_energy_with
   public :: c_asperity_pair_work_of_adhesion
   public :: c_asperity_hamaker_work_of_adhesion
+  public :: c_asperity_dynamic_lugre_new
+  public :: c_asperity_dynamic_maxwell_slip_new
+  public :: c_asperity_dynamic_friction_free
+  public :: c_asperity_dynamic_friction_state_size
+  public :: c_asperity_dynamic_friction_step
+  public :: c_asperity_dynamic_friction_step_block
   public :: c_asperity_slider_options_default
   public :: c_asperity_friction_material_copper
   public :: c_asperity_slider_new
@@ -2963,6 +3120,11 @@ module asperity
   public :: asperity_fidelity_advise
   public :: asperity_slider_geometry_new
   public :: asperity_slider_geometry_new_uniform
+  public :: asperity_dynamic_lugre_new
+  public :: asperity_dynamic_maxwell_slip_new
+  public :: asperity_dynamic_friction_state_size
+  public :: asperity_dynamic_friction_step
+  public :: asperity_dynamic_friction_step_block
   public :: asperity_slider_options_default
   public :: asperity_friction_material_copper
   public :: asperity_slider_new
@@ -3049,6 +3211,7 @@ module asperity
   public :: asperity_homogenised_friction_free
   public :: asperity_slider_geometry_free
   public :: asperity_slider_free
+  public :: asperity_dynamic_friction_free
   public :: asperity_slider_work_free
 
   ! The friendly layer's own argument errors (per thread under OpenMP).
@@ -3328,6 +3491,28 @@ contains
     type(asperity_homogenised_friction), intent(inout) :: friction
     call asperity_homogenised_friction_free(friction)
   end subroutine asperity_homogenised_friction_final
+
+  !> Release `model` (an empty handle is accepted); `model` becomes empty.
+  subroutine asperity_dynamic_friction_free(model)
+    class(asperity_dynamic_friction), intent(inout) :: model
+    call c_asperity_dynamic_friction_free(model%ptr)
+    model%ptr = c_null_ptr
+  end subroutine asperity_dynamic_friction_free
+
+  subroutine asperity_dynamic_friction_assign(lhs, rhs)
+    class(asperity_dynamic_friction), intent(inout) :: lhs
+    type(asperity_dynamic_friction), intent(in) :: rhs
+    if (c_associated(rhs%ptr)) then
+      if (c_associated(lhs%ptr, rhs%ptr)) return
+      call stop_copy('asperity_dynamic_friction')
+    end if
+    call asperity_dynamic_friction_free(lhs)
+  end subroutine asperity_dynamic_friction_assign
+
+  impure elemental subroutine asperity_dynamic_friction_final(model)
+    type(asperity_dynamic_friction), intent(inout) :: model
+    call asperity_dynamic_friction_free(model)
+  end subroutine asperity_dynamic_friction_final
 
   !> Release `geometry` (an empty handle is accepted); `geometry` becomes empty.
   subroutine asperity_slider_geometry_free(geometry)
@@ -3911,6 +4096,118 @@ contains
 
   ! ------------------------------------------------------------------------
   ! Friendly layer: the slider as the friction law of surface patches.
+
+  !> A LuGre model from `params` into `model` (an object held is freed first).
+  subroutine asperity_dynamic_lugre_new(params, model, status)
+    type(asperity_lugre_params), intent(in) :: params
+    type(asperity_dynamic_friction), intent(inout) :: model
+    integer(c_int32_t), intent(out), optional :: status
+    call model%free()
+    call check(c_asperity_dynamic_lugre_new(params, model%ptr), 'asperity_dynamic_lugre_new', &
+        status)
+  end subroutine asperity_dynamic_lugre_new
+
+  !> Maxwell-slip elements of stiffnesses `stiffness` (1/m per unit normal force) and
+  !> break-away coefficients `capacity` (same size), viscous `sigma2` (N s/m), into `model`.
+  subroutine asperity_dynamic_maxwell_slip_new(stiffness, capacity, sigma2, model, status)
+    real(c_double), intent(in) :: stiffness(:)
+    real(c_double), intent(in) :: capacity(:)
+    real(c_double), intent(in) :: sigma2
+    type(asperity_dynamic_friction), intent(inout) :: model
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_dynamic_maxwell_slip_new'
+    call model%free()
+    if (too_small(what, 'capacity', size(capacity), size(stiffness), 'size(stiffness)', status)) &
+        return
+    call check(c_asperity_dynamic_maxwell_slip_new(stiffness, capacity, &
+        size(stiffness, kind=c_size_t), sigma2, model%ptr), what, status)
+  end subroutine asperity_dynamic_maxwell_slip_new
+
+  !> The number of doubles `n` of one point's state.
+  subroutine asperity_dynamic_friction_state_size(model, n, status)
+    type(asperity_dynamic_friction), intent(in) :: model
+    integer, intent(out) :: n
+    integer(c_int32_t), intent(out), optional :: status
+    integer(c_size_t) :: c
+    c = 0
+    call check(c_asperity_dynamic_friction_state_size(model%ptr, c), &
+        'asperity_dynamic_friction_state_size', status)
+    n = int(c)
+  end subroutine asperity_dynamic_friction_state_size
+
+  !> One increment of one point into `out`: `old_state` to `new_state` (each at least the
+  !> state size; all-zero = fresh), or `state` in place. On failure the states are untouched.
+  subroutine asperity_dynamic_friction_step(model, increment, out, old_state, new_state, state, &
+      status)
+    type(asperity_dynamic_friction), intent(in) :: model
+    type(asperity_dynamic_increment), intent(in) :: increment
+    type(asperity_dynamic_response), intent(out) :: out
+    real(c_double), intent(in), optional, target, contiguous :: old_state(:)
+    real(c_double), intent(inout), optional, target, contiguous :: new_state(:)
+    real(c_double), intent(inout), optional, target, contiguous :: state(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_dynamic_friction_step'
+    integer :: m
+    if (state_clash(what, present(state), present(old_state) .or. present(new_state), status)) &
+        return
+    if (.not. (present(state) .or. (present(old_state) .and. present(new_state)))) then
+      call local_error(what, 'invalid argument `state`: give `state` (in place) or both '// &
+          '`old_state` and `new_state`', status)
+      return
+    end if
+    call asperity_dynamic_friction_state_size(model, m, status)
+    if (present(status)) then
+      if (status /= ASPERITY_OK) return
+    end if
+    if (present(state)) then
+      if (too_small(what, 'state', size(state), m, 'the state size', status)) return
+      call check(c_asperity_dynamic_friction_step(model%ptr, increment, c_loc(state), &
+          c_loc(state), out), what, status)
+    else
+      if (too_small(what, 'old_state', size(old_state), m, 'the state size', status)) return
+      if (too_small(what, 'new_state', size(new_state), m, 'the state size', status)) return
+      call check(c_asperity_dynamic_friction_step(model%ptr, increment, c_loc(old_state), &
+          c_loc(new_state), out), what, status)
+    end if
+  end subroutine asperity_dynamic_friction_step
+
+  !> Step `size(normal_force)` points at once (the call of an Abaqus VFRIC): slip increments
+  !> `slip(1:2, i)` (m), one `dt` (s), states `states(:, i)` in place (columns of the state
+  !> size), tangential forces out in `tangential_force(1:2, i)` (N, opposing slip) and, when
+  !> given, the dissipated energy in `dissipation(i)` (J). On an error at C's element i
+  !> (Fortran's point i + 1), the points before it are written.
+  subroutine asperity_dynamic_friction_step_block(model, normal_force, slip, dt, states, &
+      tangential_force, dissipation, status)
+    type(asperity_dynamic_friction), intent(in) :: model
+    real(c_double), intent(in) :: normal_force(:)
+    real(c_double), intent(in) :: slip(:,:)
+    real(c_double), intent(in) :: dt
+    real(c_double), intent(inout) :: states(:,:)
+    real(c_double), intent(inout) :: tangential_force(:,:)
+    real(c_double), intent(inout), optional, target, contiguous :: dissipation(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_dynamic_friction_step_block'
+    integer :: n, m
+    type(c_ptr) :: p_diss
+    n = size(normal_force)
+    call asperity_dynamic_friction_state_size(model, m, status)
+    if (present(status)) then
+      if (status /= ASPERITY_OK) return
+    end if
+    if (too_small(what, 'slip', size(slip), 2 * n, '2 x size(normal_force)', status)) return
+    if (too_small(what, 'states', size(states), m * n, 'the state size x size(normal_force)', &
+        status)) return
+    if (too_small(what, 'tangential_force', size(tangential_force), 2 * n, &
+        '2 x size(normal_force)', status)) return
+    p_diss = c_null_ptr
+    if (present(dissipation)) then
+      if (too_small(what, 'dissipation', size(dissipation), n, 'size(normal_force)', status)) &
+          return
+      p_diss = c_loc(dissipation)
+    end if
+    call check(c_asperity_dynamic_friction_step_block(model%ptr, int(n, c_size_t), normal_force, &
+        slip, dt, states, tangential_force, p_diss), what, status)
+  end subroutine asperity_dynamic_friction_step_block
 
   !> The library's default slider options (fixed load 0 N: set `normal_force`).
   subroutine asperity_slider_options_default(options, status)

@@ -297,6 +297,50 @@ void slider()
     });
 }
 
+void dynamic_friction()
+{
+    // LuGre: one long increment at 2 mm/s reaches the Stribeck curve.
+    AsperityLugreParams p{};
+    p.mu_coulomb = 0.3;
+    p.mu_static = 0.5;
+    p.stribeck_velocity = 1e-3;
+    p.stribeck_exponent = 2.0;
+    p.sigma0 = 1e5;
+    p.sigma1 = 1000.0;
+    p.damping_velocity = 1e-3;
+    p.sigma2 = 0.4;
+    const asperity::DynamicFriction lugre = asperity::DynamicFriction::lugre(p);
+    std::vector<double> state(lugre.state_size(), 0.0);
+    AsperityDynamicIncrement inc{};
+    inc.normal_force = 3.0;
+    inc.dt = 1.0;
+    inc.slip[0] = 2e-3;
+    const AsperityDynamicResponse r = lugre.step(inc, state);
+    check("lugre_state_size", static_cast<double>(state.size()));
+    check("lugre_steady_force", -r.force[0]);
+    check("lugre_dissipation", state[ASPERITY_DYNAMIC_STATE_DISSIPATION]);
+    // Maxwell-slip: two elements, loaded 3 um then back 2 um (Masing).
+    const std::array<double, 2> k{1e5, 2e4};
+    const std::array<double, 2> mu{0.2, 0.3};
+    const asperity::DynamicFriction ms = asperity::DynamicFriction::maxwell_slip(k, mu);
+    std::vector<double> states(2 * ms.state_size(), 0.0);
+    const std::array<double, 2> normal{1.0, 2.0};
+    std::array<double, 4> forces{};
+    std::array<double, 2> dissipation{};
+    ms.step_block(normal, std::array<double, 4>{3e-6, 0.0, 3e-6, 0.0}, 0.0, states, forces,
+                  dissipation);
+    ms.step_block(normal, std::array<double, 4>{-2e-6, 0.0, -2e-6, 0.0}, 0.0, states, forces,
+                  dissipation);
+    check("maxwell_force_0", forces[0]);
+    check("maxwell_force_1", forces[2]);
+    check("maxwell_dissipation_1", dissipation[1]);
+    expect_error("maxwell_bad", "`stiffness`", [] {
+        const std::array<double, 1> k0{-1.0};
+        const std::array<double, 1> m0{0.1};
+        (void)asperity::DynamicFriction::maxwell_slip(k0, m0);
+    });
+}
+
 void indentation()
 {
     const AsperityIndentationOptions d = asperity::indentation_default_options();
@@ -672,6 +716,7 @@ int main()
         lennard_jones();
         tables();
         slider();
+        dynamic_friction();
         indentation();
         rescaling_and_hardness();
         material();

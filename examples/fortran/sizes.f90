@@ -42,6 +42,9 @@ program sizes
   type(asperity_indentation_result) :: indentation_result
   type(asperity_slider_info) :: slider_info
   type(asperity_slider_options) :: slider_options
+  type(asperity_lugre_params) :: lugre_params
+  type(asperity_dynamic_increment) :: dynamic_increment
+  type(asperity_dynamic_response) :: dynamic_response
   type(asperity_friction_material) :: friction_material
   type(asperity_slider_increment) :: slider_increment
   type(asperity_slider_response) :: slider_response
@@ -80,6 +83,9 @@ program sizes
   call row('AsperityIndentationResult', c_sizeof(indentation_result))
   call row('AsperitySliderInfo', c_sizeof(slider_info))
   call row('AsperitySliderOptions', c_sizeof(slider_options))
+  call row('AsperityLugreParams', c_sizeof(lugre_params))
+  call row('AsperityDynamicIncrement', c_sizeof(dynamic_increment))
+  call row('AsperityDynamicResponse', c_sizeof(dynamic_response))
   call row('AsperityFrictionMaterial', c_sizeof(friction_material))
   call row('AsperitySliderIncrement', c_sizeof(slider_increment))
   call row('AsperitySliderResponse', c_sizeof(slider_response))

@@ -53,7 +53,7 @@ pub struct AsperityDynamicFriction(DynamicModel);
 /// The LuGre model's parameters (see `LuGre::new`). SI units.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct AsperityLuGreParams {
+pub struct AsperityLugreParams {
     /// Coulomb coefficient mu_c, finite and >= 0.
     pub mu_coulomb: f64,
     /// Static coefficient mu_s, finite and >= 0 (mu_c or mu_s > 0).
@@ -92,7 +92,7 @@ unsafe fn emit(
 /// bound (`sigma1` for the passivity bound).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_dynamic_lugre_new(
-    params: *const AsperityLuGreParams,
+    params: *const AsperityLugreParams,
     out: *mut *mut AsperityDynamicFriction,
 ) -> i32 {
     emit(out, || {
