@@ -768,6 +768,132 @@ fn slider_patch_shared() {
     check_slider_patch(Linkage::Shared);
 }
 
+/// `friction_models`: one track through LuGre, Maxwell-slip and the
+/// homogenised law; every row equals the Rust API's step, and the physics
+/// holds where it is known in closed form.
+fn check_friction_models(linkage: Linkage) {
+    use asperity::friction::dynamic::{DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip};
+    use asperity::friction::{
+        CofForm, Dissipation, FrictionIncrement, FrictionPointState, HomogenisedFriction,
+        HomogenisedSample,
+    };
+    const DYN: &str = "the dynamic friction models (src/friction/dynamic)";
+    let r = run("friction_models", linkage);
+    let mut c = Report::new(&r);
+    c.exit_ok(DYN);
+    let (n, area, dt, h) = (2.0, 1e-6, 1e-3, 1e-6);
+    let lugre = LuGre::new(0.8, 1.05, 2e-4, 2.0, 2e5, 0.0, f64::INFINITY, 0.0).unwrap();
+    let maxwell =
+        MaxwellSlip::new(&[4e5, 1e5, 2.5e4, 6.25e3], &[0.3, 0.3, 0.25, 0.2], 0.0).unwrap();
+    let homog = HomogenisedFriction::from_samples(
+        &[HomogenisedSample {
+            pressure: n / area,
+            cof: 1.05,
+            adhesion_pressure: 0.0,
+            contact_fraction: 0.01,
+            shares: Dissipation {
+                chemical: 1.0,
+                ..Dissipation::default()
+            },
+        }],
+        CofForm::Derjaguin,
+    )
+    .unwrap();
+    let (mut sl, mut sm) = (vec![0.0; lugre.state_len()], vec![0.0; maxwell.state_len()]);
+    let mut sh = FrictionPointState::default();
+    let mut rows = r.stdout.lines().filter_map(|l| l.strip_prefix("row "));
+    let (mut x, mut dh) = (0.0, 0.0);
+    let mut forces = vec![];
+    for i in 0..65 {
+        let dx = if i < 20 {
+            h
+        } else if i < 50 {
+            -h
+        } else {
+            h
+        };
+        let inc = DynamicIncrement {
+            normal_force: n,
+            slip: [dx, 0.0],
+            dt,
+            ..Default::default()
+        };
+        let fl = lugre.step_in_place(&mut sl, &inc).unwrap().force[0];
+        let fm = maxwell.step_in_place(&mut sm, &inc).unwrap().force[0];
+        let (next, rh) = homog
+            .step_value(
+                &sh,
+                &FrictionIncrement {
+                    normal_force: n,
+                    area,
+                    slip: [dx, 0.0],
+                    dt,
+                    stick_stiffness: 2e5 * n,
+                },
+            )
+            .unwrap();
+        sh = next;
+        dh += rh.dissipated;
+        x += dx;
+        let want = [x * 1e6, fl, fm, rh.force[0]];
+        let got: Vec<f64> = rows
+            .next()
+            .map(|l| {
+                l.split_whitespace()
+                    .filter_map(|v| v.parse().ok())
+                    .collect()
+            })
+            .unwrap_or_default();
+        let same = got.len() == 4
+            && got
+                .iter()
+                .zip(&want)
+                .all(|(g, w)| (g - w).abs() <= 1e-8 * w.abs().max(1e-6));
+        c.ok(DYN, same, || format!("row {i}: C {got:?}, Rust {want:?}"));
+        forces.push(want);
+    }
+    c.rel(DYN, "lugre_dissipation", sl[0], 1e-12);
+    c.rel(DYN, "maxwell_dissipation", sm[0], 1e-12);
+    c.rel(HOMOGENISED, "homogenised_dissipation", dh, 1e-12);
+    c.close(DYN, "slip_path_um", 65.0, 1e-9);
+    // Physics at the end of the first leg (20 µm at 1 mm/s): LuGre within
+    // e^{-5} of its Stribeck force (20 ms is five bristle time constants
+    // μ/(σ₀v) = 4 ms); Maxwell-slip on its virgin curve; the homogenised
+    // law at μN.
+    let first = forces[19];
+    let steady = lugre.steady_force(n, 1e-3);
+    c.ok(DYN, (-first[1] / steady - 1.0).abs() < 0.01, || {
+        format!("LuGre at 20 µm: {} vs steady {steady}", -first[1])
+    });
+    let virgin = maxwell.virgin_force(n, 20e-6);
+    c.ok(DYN, (-first[2] - virgin).abs() <= 1e-12 * virgin, || {
+        format!("Maxwell-slip at 20 µm: {} vs virgin {virgin}", -first[2])
+    });
+    c.ok(HOMOGENISED, (-first[3] - 1.05 * n).abs() <= 1e-9, || {
+        format!("homogenised at 20 µm: {} vs μN {}", -first[3], 1.05 * n)
+    });
+    // Masing: 30 µm back from the reversal, F = F(20) − 2 F_v(15).
+    let back = forces[49];
+    let masing = virgin - 2.0 * maxwell.virgin_force(n, 15e-6);
+    c.ok(DYN, (-back[2] - masing).abs() <= 1e-12 * virgin, || {
+        format!(
+            "Maxwell-slip after the reversal: {} vs Masing {masing}",
+            -back[2]
+        )
+    });
+    c.finish();
+}
+
+#[test]
+fn friction_models_static() {
+    check_friction_models(Linkage::Static);
+}
+
+#[test]
+fn friction_models_shared() {
+    check_friction_models(Linkage::Shared);
+}
+
 #[test]
 fn every_example_compiles_and_links_both_ways() {
     let b = built();
@@ -782,6 +908,7 @@ fn every_other_example_runs() {
     let known = [
         "batch_and_errors",
         "fe_strip_friction",
+        "friction_models",
         "indentation_fit",
         "jkr_hysteresis",
         "profile_characterise",
