@@ -1613,6 +1613,20 @@ int32_t asperity_dynamic_maxwell_slip_new(const double *stiffness,
                                           double sigma2,
                                           struct AsperityDynamicFriction **out);
 
+// Build a Prandtl–Tomlinson tip: lattice potential amplitude `amplitude`
+// U0 (J, > 0) and period `period` a (m, > 0), spring stiffness `stiffness`
+// k (N/m, > 0), tip mass `mass` (kg, > 0), damping `damping` (kg/s, >= 0),
+// relative tolerance `tolerance` of the integration (in [1e-13, 1e-2]).
+// One-dimensional: increments need `slip[1]` = 0. Stick-slip when
+// 4 pi^2 U0/(k a^2) > 1. Writes a new handle to `*out` (NULL on failure).
+int32_t asperity_dynamic_prandtl_tomlinson_new(double amplitude,
+                                               double period,
+                                               double stiffness,
+                                               double mass,
+                                               double damping,
+                                               double tolerance,
+                                               struct AsperityDynamicFriction **out);
+
 // Release a model; NULL is accepted and ignored.
 void asperity_dynamic_friction_free(struct AsperityDynamicFriction *model);
 

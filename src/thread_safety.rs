@@ -71,6 +71,9 @@ const _: () = {
     shared::<HomogenisedFriction>();
     shared::<crate::friction::dynamic::LuGre>();
     shared::<crate::friction::dynamic::MaxwellSlip>();
+    shared::<crate::friction::dynamic::PrandtlTomlinson>();
+    shared::<crate::friction::dynamic::DynamicModel>();
+    shared::<crate::ffi::dynamic::AsperityDynamicFriction>();
     shared::<AsperityHomogenisedFriction>();
     shared::<SliderGeometry>();
     shared::<AsperitySliderGeometry>();

@@ -218,3 +218,59 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
         unsafe { asperity_dynamic_friction_free(h) };
     }
 }
+
+#[test]
+fn prandtl_tomlinson_through_c_equals_rust() {
+    use asperity::friction::dynamic::PrandtlTomlinson;
+    let (u0, a, k, m, g) = (2e-21, 3e-10, 1.0, 1e-12, 1e-6);
+    let mut h = null_mut();
+    assert_eq!(
+        unsafe { asperity_dynamic_prandtl_tomlinson_new(u0, a, k, m, g, 1e-9, &mut h) },
+        ASPERITY_OK
+    );
+    let rust = PrandtlTomlinson::new(u0, a, k, m, g, 1e-9).unwrap();
+    let mut n = 0usize;
+    assert_eq!(
+        unsafe { asperity_dynamic_friction_state_size(h, &mut n) },
+        ASPERITY_OK
+    );
+    assert_eq!(n, 5);
+    let (mut c, mut r) = (vec![0.0; n], vec![0.0; n]);
+    for k in 0..50 {
+        let inc = DynamicIncrement {
+            normal_force: 1.0,
+            slip: [1e-11 * (1.0 + (0.3 * k as f64).sin()), 0.0],
+            dt: 1e-6,
+            tangents: k % 4,
+            reserved: 0,
+        };
+        let mut out = DynamicResponse::default();
+        let st = unsafe {
+            asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), &mut out)
+        };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        let want = rust.step_in_place(&mut r, &inc).unwrap();
+        assert_eq!(format!("{out:?}"), format!("{want:?}"));
+        assert_eq!(c, r);
+    }
+    let mut out = DynamicResponse::default();
+    let bad = DynamicIncrement {
+        normal_force: 1.0,
+        slip: [1e-11, 1e-11],
+        dt: 1e-6,
+        ..Default::default()
+    };
+    expect_error(
+        unsafe { asperity_dynamic_friction_step(h, &bad, c.as_ptr(), c.as_mut_ptr(), &mut out) },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "slip",
+    );
+    let mut bad_h = 1usize as *mut AsperityDynamicFriction;
+    expect_error(
+        unsafe { asperity_dynamic_prandtl_tomlinson_new(u0, a, k, 0.0, g, 1e-9, &mut bad_h) },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "mass",
+    );
+    assert!(bad_h.is_null());
+    unsafe { asperity_dynamic_friction_free(h) };
+}

@@ -168,11 +168,16 @@ fn rng(seed: &mut u64) -> f64 {
 /// accumulators grow by it, a re-evaluation from the same old state is
 /// bit-identical.
 fn random_increments(m: &dyn DynamicFriction, seed: u64, rate_dependent: bool) {
+    random_path(m, seed, rate_dependent, false)
+}
+
+/// [`random_increments`], along x only when `track`.
+fn random_path(m: &dyn DynamicFriction, seed: u64, rate_dependent: bool, track: bool) {
     let mut seed = seed;
     let mut old = vec![0.0; m.state_len()];
     let mut new = old.clone();
     let mut again = old.clone();
-    for k in 0..3000 {
+    for k in 0..(if track { 500 } else { 3000 }) {
         let n = if k % 17 == 0 {
             0.0
         } else {
@@ -186,12 +191,19 @@ fn random_increments(m: &dyn DynamicFriction, seed: u64, rate_dependent: bool) {
         };
         let dt = if !rate_dependent && k % 13 == 0 {
             0.0
+        } else if track {
+            // The inertial Prandtl–Tomlinson tip: up to one of its periods.
+            10f64.powf(2.0 * rng(&mut seed) - 8.0)
         } else {
             10f64.powf(4.0 * rng(&mut seed) - 5.0)
         };
         let i = DynamicIncrement {
             normal_force: n,
-            slip: [len * ang.cos(), len * ang.sin()],
+            slip: if track {
+                [len * ang.cos(), 0.0]
+            } else {
+                [len * ang.cos(), len * ang.sin()]
+            },
             dt,
             tangents: k % 4,
             reserved: 0,
@@ -561,16 +573,27 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
     for model in [
         DynamicModel::LuGre(lugre()),
         DynamicModel::MaxwellSlip(maxwell()),
+        DynamicModel::PrandtlTomlinson(tomlinson(3.0, 1e-3)),
     ] {
         let direct: &dyn DynamicFriction = match &model {
             DynamicModel::LuGre(m) => m,
             DynamicModel::MaxwellSlip(m) => m,
+            DynamicModel::PrandtlTomlinson(m) => m,
         };
         let m = model.state_len();
         assert_eq!(m, direct.state_len());
         let points = 5;
         let normal: Vec<f64> = (0..points).map(|i| 1.0 + i as f64).collect();
-        let slip: Vec<f64> = (0..2 * points).map(|i| 1e-7 * (i as f64 - 4.5)).collect();
+        let track = matches!(model, DynamicModel::PrandtlTomlinson(_));
+        let slip: Vec<f64> = (0..2 * points)
+            .map(|i| {
+                if track && i % 2 == 1 {
+                    0.0
+                } else {
+                    1e-7 * (i as f64 - 4.5)
+                }
+            })
+            .collect();
         let dt = 1e-4;
         let mut states = vec![0.0; points * m];
         let mut forces = vec![0.0; 2 * points];
@@ -623,5 +646,109 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
             .unwrap_err();
         assert_eq!(name(e), "state.slip_path");
         assert_eq!(s[STATE_SLIP_PATH], -1.0);
+    }
+}
+
+// --------------------------------------------------- Prandtl–Tomlinson
+
+use asperity::friction::dynamic::PrandtlTomlinson;
+
+/// A tip on a lattice of period 0.3 nm, spring k = 1 N/m, mass 1e-12 kg
+/// (ω = 1e6 /s), at Tomlinson parameter `eta`, damping ratio about `zeta`.
+fn tomlinson(eta: f64, zeta: f64) -> PrandtlTomlinson {
+    let (a, k, m) = (3e-10, 1.0, 1e-12);
+    let u0 = eta * k * a * a / (4.0 * std::f64::consts::PI.powi(2));
+    let gamma = 2.0 * zeta * (k * m).sqrt();
+    PrandtlTomlinson::new(u0, a, k, m, gamma, 1e-9).unwrap()
+}
+
+/// Drives the support over `lattice` periods at speed `v` in increments
+/// of `dt`; returns (max lateral force, mean lateral force, max tip speed,
+/// total dissipation, the work of the end-of-increment force).
+fn drive(m: &PrandtlTomlinson, v: f64, periods: f64, dt: f64) -> (f64, f64, f64, f64, f64) {
+    let a = 3e-10;
+    let steps = (periods * a / (v * dt)).round() as usize;
+    let mut s = vec![0.0; m.state_len()];
+    let (mut fmax, mut fsum, mut vmax, mut work) = (0.0f64, 0.0, 0.0f64, 0.0);
+    let mut f_old = 0.0;
+    let mut d = 0.0;
+    for k in 0..steps {
+        let r = m
+            .step_in_place(&mut s, &inc(1.0, [v * dt, 0.0], dt))
+            .unwrap();
+        let f = -r.force[0]; // resisting force felt along the motion
+        if k > steps / 4 {
+            fmax = fmax.max(f);
+            fsum += f;
+            vmax =
+                vmax.max(s[asperity::friction::dynamic::prandtl_tomlinson::STATE_VELOCITY].abs());
+        }
+        work += 0.5 * (f + f_old) * v * dt;
+        f_old = f;
+        d += r.dissipated;
+    }
+    (fmax, fsum / (steps - steps / 4 - 1) as f64, vmax, d, work)
+}
+
+#[test]
+fn prandtl_tomlinson_sticks_and_slips_only_above_eta_one() {
+    let v = 1e-6; // 1 µm/s: quasi-static (a/v = 3e-4 s ≫ 1/ω = 1e-6 s)
+    let dt = 1e-6;
+    // η = 0.5: smooth sliding, the tip follows at about the support speed,
+    // no friction in the quasi-static limit.
+    let smooth = tomlinson(0.5, 0.5);
+    assert!(smooth.eta() < 1.0);
+    let (fmax, fmean, vmax, d, _) = drive(&smooth, v, 4.0, dt * 50.0);
+    println!("eta 0.5: Fmax {fmax:e}, Fmean {fmean:e}, vmax {vmax:e}, D {d:e}");
+    assert!(
+        vmax < 5.0 * v,
+        "no slip events: max tip speed {vmax} vs support {v}"
+    );
+    // Only the tip's viscous drag γv remains (1e-12 N here).
+    assert!(fmean.abs() < 0.05 * smooth.lattice_force(), "{fmean}");
+    // η = 3: stick-slip, slip events far faster than the support, a finite
+    // mean friction force and dissipation per period.
+    let sticky = tomlinson(3.0, 0.5);
+    let (fmax, fmean, vmax, d, work) = drive(&sticky, v, 4.0, dt);
+    println!("eta 3: Fmax {fmax:e}, Fmean {fmean:e}, vmax {vmax:e}, D {d:e}, W {work:e}");
+    assert!(vmax > 30.0 * v, "slip events: max tip speed {vmax}");
+    assert!(fmean > 0.1 * sticky.lattice_force() && fmax <= sticky.lattice_force() * 1.01);
+    assert!(fmax > fmean, "static above kinetic");
+    // The work of the support goes into dissipation (the stored energy is
+    // bounded): over 4 periods they agree to a few per cent.
+    assert!(
+        (work - d).abs() < 0.05 * d,
+        "work {work:e} vs dissipation {d:e}"
+    );
+}
+
+#[test]
+fn prandtl_tomlinson_energy_balance_and_bad_input() {
+    // Random increments: dissipation ≥ 0, cut-backs exact.
+    random_path(&tomlinson(2.0, 0.3), 7, true, true);
+    let m = tomlinson(2.0, 0.3);
+    let s = vec![0.0; m.state_len()];
+    let mut t = vec![7.0; m.state_len()];
+    assert_eq!(
+        name(
+            m.step(&s, &mut t, &inc(1.0, [1e-9, 1e-9], 1e-3))
+                .unwrap_err()
+        ),
+        "slip"
+    );
+    assert!(t.iter().all(|&x| x == 7.0));
+    for (args, want) in [
+        ((0.0, 3e-10, 1.0, 1e-12, 0.0, 1e-9), "amplitude"),
+        ((1e-20, 0.0, 1.0, 1e-12, 0.0, 1e-9), "period"),
+        ((1e-20, 3e-10, -1.0, 1e-12, 0.0, 1e-9), "stiffness"),
+        ((1e-20, 3e-10, 1.0, 0.0, 0.0, 1e-9), "mass"),
+        ((1e-20, 3e-10, 1.0, 1e-12, -1.0, 1e-9), "damping"),
+        ((1e-20, 3e-10, 1.0, 1e-12, 0.0, 0.5), "tolerance"),
+    ] {
+        let (a, b, c, d, e, f) = args;
+        assert_eq!(
+            name(PrandtlTomlinson::new(a, b, c, d, e, f).unwrap_err()),
+            want
+        );
     }
 }

@@ -944,6 +944,21 @@ public:
         return DynamicFriction(p);
     }
 
+    /// `asperity_dynamic_prandtl_tomlinson_new`: a tip in a lattice
+    /// potential of amplitude `amplitude` (J) and period `period` (m) pulled
+    /// through a spring `stiffness` (N/m), mass `mass` (kg), damping
+    /// `damping` (kg/s), integration tolerance `tolerance`.
+    [[nodiscard]] static DynamicFriction prandtl_tomlinson(double amplitude, double period,
+                                                           double stiffness, double mass,
+                                                           double damping,
+                                                           double tolerance = 1e-9)
+    {
+        AsperityDynamicFriction* p = nullptr;
+        check(asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, damping,
+                                                     tolerance, &p));
+        return DynamicFriction(p);
+    }
+
     /// `asperity_dynamic_friction_state_size`: doubles of one point's state.
     [[nodiscard]] std::size_t state_size() const
     {

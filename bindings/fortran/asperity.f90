@@ -2201,6 +2201,21 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_dynamic_maxwell_slip_new
 
+    !> Build a Prandtl-Tomlinson tip (one-dimensional). Writes a new handle to `*out`.
+    function c_asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
+        damping, tolerance, out) result(r) bind(c, name="asperity_dynamic_prandtl_tomlinson_new")
+      import
+      implicit none
+      real(c_double), value :: amplitude
+      real(c_double), value :: period
+      real(c_double), value :: stiffness
+      real(c_double), value :: mass
+      real(c_double), value :: damping
+      real(c_double), value :: tolerance
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_dynamic_prandtl_tomlinson_new
+
     !> Release a model; NULL is accepted and ignored.
     subroutine c_asperity_dynamic_friction_free(model) bind(c, name="asperity_dynamic_friction_free")
       import
@@ -3039,6 +3054,7 @@ module asperity
   public :: c_asperity_hamaker_work_of_adhesion
   public :: c_asperity_dynamic_lugre_new
   public :: c_asperity_dynamic_maxwell_slip_new
+  public :: c_asperity_dynamic_prandtl_tomlinson_new
   public :: c_asperity_dynamic_friction_free
   public :: c_asperity_dynamic_friction_state_size
   public :: c_asperity_dynamic_friction_step
@@ -3122,6 +3138,7 @@ module asperity
   public :: asperity_slider_geometry_new_uniform
   public :: asperity_dynamic_lugre_new
   public :: asperity_dynamic_maxwell_slip_new
+  public :: asperity_dynamic_prandtl_tomlinson_new
   public :: asperity_dynamic_friction_state_size
   public :: asperity_dynamic_friction_step
   public :: asperity_dynamic_friction_step_block
@@ -4122,6 +4139,19 @@ contains
     call check(c_asperity_dynamic_maxwell_slip_new(stiffness, capacity, &
         size(stiffness, kind=c_size_t), sigma2, model%ptr), what, status)
   end subroutine asperity_dynamic_maxwell_slip_new
+
+  !> A Prandtl-Tomlinson tip into `model`: lattice amplitude `amplitude` (J) and period
+  !> `period` (m), spring `stiffness` (N/m), `mass` (kg), `damping` (kg/s), integration
+  !> `tolerance`.
+  subroutine asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, damping, &
+      tolerance, model, status)
+    real(c_double), intent(in) :: amplitude, period, stiffness, mass, damping, tolerance
+    type(asperity_dynamic_friction), intent(inout) :: model
+    integer(c_int32_t), intent(out), optional :: status
+    call model%free()
+    call check(c_asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
+        damping, tolerance, model%ptr), 'asperity_dynamic_prandtl_tomlinson_new', status)
+  end subroutine asperity_dynamic_prandtl_tomlinson_new
 
   !> The number of doubles `n` of one point's state.
   subroutine asperity_dynamic_friction_state_size(model, n, status)

@@ -1,9 +1,10 @@
 //! C ABI for `crate::friction::dynamic`: the dynamic friction models of
-//! thesis chapter 5 (LuGre, Maxwell-slip) as per-increment friction steps
+//! thesis chapter 5 (LuGre, Maxwell-slip, Prandtl–Tomlinson) as per-increment friction steps
 //! (issue 9 §3).
 //!
 //! * `AsperityDynamicFriction` (opaque, a boxed [`DynamicModel`]) is built by
-//!   `asperity_dynamic_lugre_new` or `asperity_dynamic_maxwell_slip_new`;
+//!   `asperity_dynamic_lugre_new`, `asperity_dynamic_maxwell_slip_new` or
+//!   `asperity_dynamic_prandtl_tomlinson_new`;
 //!   immutable, one handle may be used by any number of threads at once.
 //! * Per-point states are caller-owned arrays of
 //!   `asperity_dynamic_friction_state_size` doubles (all-zero = fresh;
@@ -20,7 +21,8 @@ use super::{guard, input, output, Failure};
 use crate::error::{Error, Result};
 use crate::friction::dynamic::{
     DynamicFriction, DynamicIncrement, DynamicModel, DynamicResponse, LuGre, MaxwellSlip,
-    STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
+    PrandtlTomlinson, STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL,
+    TANGENT_SLIP,
 };
 
 /// `AsperityDynamicIncrement.tangents` bit: compute dF/dN.
@@ -132,6 +134,28 @@ pub unsafe extern "C" fn asperity_dynamic_maxwell_slip_new(
             core::slice::from_raw_parts(m, n),
         );
         MaxwellSlip::new(k, m, sigma2).map(DynamicModel::MaxwellSlip)
+    })
+}
+
+/// Build a Prandtl–Tomlinson tip: lattice potential amplitude `amplitude`
+/// U0 (J, > 0) and period `period` a (m, > 0), spring stiffness `stiffness`
+/// k (N/m, > 0), tip mass `mass` (kg, > 0), damping `damping` (kg/s, >= 0),
+/// relative tolerance `tolerance` of the integration (in [1e-13, 1e-2]).
+/// One-dimensional: increments need `slip[1]` = 0. Stick-slip when
+/// 4 pi^2 U0/(k a^2) > 1. Writes a new handle to `*out` (NULL on failure).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_prandtl_tomlinson_new(
+    amplitude: f64,
+    period: f64,
+    stiffness: f64,
+    mass: f64,
+    damping: f64,
+    tolerance: f64,
+    out: *mut *mut AsperityDynamicFriction,
+) -> i32 {
+    emit(out, || {
+        PrandtlTomlinson::new(amplitude, period, stiffness, mass, damping, tolerance)
+            .map(DynamicModel::PrandtlTomlinson)
     })
 }
 

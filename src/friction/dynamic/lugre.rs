@@ -58,7 +58,7 @@
 //!   45 (2000) 830–832.
 
 use super::{
-    book, norm, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
+    book, norm, read, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
     STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
@@ -272,13 +272,18 @@ impl Advance for LuGre {
         true
     }
 
-    fn advance(&self, state: &mut [f64], inc: &DynamicIncrement) -> DynamicResponse {
-        let z0 = [state[STATE_Z], state[STATE_Z + 1]];
+    fn advance(
+        &self,
+        old: Option<&[f64]>,
+        state: &mut [f64],
+        inc: &DynamicIncrement,
+    ) -> Result<DynamicResponse> {
+        let z0 = [read(old, state, STATE_Z), read(old, state, STATE_Z + 1)];
         let n = inc.normal_force;
         let step = self.increment(z0, n, inc.slip, inc.dt);
         state[STATE_Z] = step.z[0];
         state[STATE_Z + 1] = step.z[1];
-        book(state, step.dissipated, inc.slip);
+        book(old, state, step.dissipated, inc.slip);
         let mut r = respond(step.force(n), n);
         r.dissipated = step.dissipated;
         r.stored_energy = 0.5 * n * self.sigma0 * (step.z[0] * step.z[0] + step.z[1] * step.z[1]);
@@ -302,6 +307,6 @@ impl Advance for LuGre {
             }
         }
         r.tangents = inc.tangents;
-        r
+        Ok(r)
     }
 }

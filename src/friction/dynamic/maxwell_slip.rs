@@ -43,7 +43,7 @@
 //!   Int. Congress of Applied Mechanics (1926) 332–335.
 
 use super::{
-    book, norm, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
+    book, norm, read, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
     STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
@@ -130,7 +130,12 @@ impl Advance for MaxwellSlip {
         false
     }
 
-    fn advance(&self, new: &mut [f64], inc: &DynamicIncrement) -> DynamicResponse {
+    fn advance(
+        &self,
+        old: Option<&[f64]>,
+        new: &mut [f64],
+        inc: &DynamicIncrement,
+    ) -> Result<DynamicResponse> {
         let n = inc.normal_force;
         let ds = inc.slip;
         let mut spring = [0.0; 2];
@@ -147,7 +152,7 @@ impl Advance for MaxwellSlip {
             .enumerate()
         {
             let j = STATE_MODEL + 2 * i;
-            let t = [new[j] + ds[0], new[j + 1] + ds[1]];
+            let t = [read(old, new, j) + ds[0], read(old, new, j + 1) + ds[1]];
             // Stick when |t| ≤ r, decided on the squares (no square root for
             // a sticking element); a slipping element takes |t| exactly.
             let len2 = t[0] * t[0] + t[1] * t[1];
@@ -188,7 +193,7 @@ impl Advance for MaxwellSlip {
             [0.0; 2]
         };
         let dissipated = n * slipped + (viscous[0] * ds[0] + viscous[1] * ds[1]);
-        book(new, dissipated, ds);
+        book(old, new, dissipated, ds);
         let mut resp = respond([n * spring[0] + viscous[0], n * spring[1] + viscous[1]], n);
         resp.dissipated = dissipated;
         resp.stored_energy = 0.5 * n * energy;
@@ -216,6 +221,6 @@ impl Advance for MaxwellSlip {
             }
         }
         resp.tangents = inc.tangents;
-        resp
+        Ok(resp)
     }
 }

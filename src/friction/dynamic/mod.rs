@@ -11,6 +11,9 @@
 //!   increment.
 //! * [`DynamicModel`]: either, chosen by configuration; every model
 //!   implements [`DynamicFriction`] (step, in place, VFRIC-shaped block).
+//! * [`PrandtlTomlinson`]: a tip in a periodic lattice potential pulled
+//!   through a spring (thesis 5.3.1, (5-5), (5-6)), integrated with error
+//!   control; stick-slip when 4π²U₀/(k a²) > 1.
 //! * [`MaxwellSlip`]: N Maxwell-slip elements in parallel (Al-Bender,
 //!   Lampaert and Swevers 2004; thesis 5.3.7, (5-9)..(5-12) reduced to the
 //!   tangential direction): pre-sliding hysteresis with non-local memory.
@@ -45,9 +48,11 @@
 
 pub mod lugre;
 pub mod maxwell_slip;
+pub mod prandtl_tomlinson;
 
 pub use lugre::LuGre;
 pub use maxwell_slip::MaxwellSlip;
+pub use prandtl_tomlinson::PrandtlTomlinson;
 
 use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
@@ -131,10 +136,10 @@ pub trait DynamicFriction: sealed::Advance {
         increment: &DynamicIncrement,
     ) -> Result<DynamicResponse> {
         check_increment(increment, self.rate_dependent())?;
+        self.check(increment)?;
         check_len("new.len()", new.len(), self.state_len())?;
         check_state(old, "old", self.state_len())?;
-        new.copy_from_slice(old);
-        Ok(self.advance(new, increment))
+        self.advance(Some(old), new, increment)
     }
 
     /// [`Self::step`] with the state updated in place (errors name
@@ -145,8 +150,9 @@ pub trait DynamicFriction: sealed::Advance {
         increment: &DynamicIncrement,
     ) -> Result<DynamicResponse> {
         check_increment(increment, self.rate_dependent())?;
+        self.check(increment)?;
         check_state(state, "state", self.state_len())?;
-        Ok(self.advance(state, increment))
+        self.advance(None, state, increment)
     }
 
     /// n points at once, in the shape of Abaqus/Explicit VFRIC: normal
@@ -198,14 +204,26 @@ pub trait DynamicFriction: sealed::Advance {
 
 pub(crate) mod sealed {
     use super::{DynamicIncrement, DynamicResponse};
+    use crate::error::Result;
 
     /// The body of a step, after every check (not callable from outside the
     /// crate: an unchecked state would give unchecked results).
     pub trait Advance {
         /// Whether a non-zero slip needs Δt > 0.
         fn rate_dependent(&self) -> bool;
-        /// Steps the checked `state` in place.
-        fn advance(&self, state: &mut [f64], increment: &DynamicIncrement) -> DynamicResponse;
+        /// The model's own checks of an increment (before anything is
+        /// written).
+        fn check(&self, _increment: &DynamicIncrement) -> Result<()> {
+            Ok(())
+        }
+        /// Steps the checked state `old` (`None`: `new` itself, in place)
+        /// into `new`. On `Err`, `new` is untouched.
+        fn advance(
+            &self,
+            old: Option<&[f64]>,
+            new: &mut [f64],
+            increment: &DynamicIncrement,
+        ) -> Result<DynamicResponse>;
     }
 }
 
@@ -216,29 +234,40 @@ pub enum DynamicModel {
     LuGre(LuGre),
     /// [`MaxwellSlip`].
     MaxwellSlip(MaxwellSlip),
+    /// [`PrandtlTomlinson`].
+    PrandtlTomlinson(PrandtlTomlinson),
+}
+
+macro_rules! each_model {
+    ($self:expr, $m:ident => $e:expr) => {
+        match $self {
+            DynamicModel::LuGre($m) => $e,
+            DynamicModel::MaxwellSlip($m) => $e,
+            DynamicModel::PrandtlTomlinson($m) => $e,
+        }
+    };
 }
 
 impl sealed::Advance for DynamicModel {
     fn rate_dependent(&self) -> bool {
-        match self {
-            Self::LuGre(m) => m.rate_dependent(),
-            Self::MaxwellSlip(m) => m.rate_dependent(),
-        }
+        each_model!(self, m => m.rate_dependent())
     }
-    fn advance(&self, state: &mut [f64], increment: &DynamicIncrement) -> DynamicResponse {
-        match self {
-            Self::LuGre(m) => m.advance(state, increment),
-            Self::MaxwellSlip(m) => m.advance(state, increment),
-        }
+    fn check(&self, increment: &DynamicIncrement) -> Result<()> {
+        each_model!(self, m => m.check(increment))
+    }
+    fn advance(
+        &self,
+        old: Option<&[f64]>,
+        new: &mut [f64],
+        increment: &DynamicIncrement,
+    ) -> Result<DynamicResponse> {
+        each_model!(self, m => m.advance(old, new, increment))
     }
 }
 
 impl DynamicFriction for DynamicModel {
     fn state_len(&self) -> usize {
-        match self {
-            Self::LuGre(m) => m.state_len(),
-            Self::MaxwellSlip(m) => m.state_len(),
-        }
+        each_model!(self, m => m.state_len())
     }
 }
 
@@ -308,10 +337,21 @@ pub(crate) fn norm(x: f64, y: f64) -> f64 {
     }
 }
 
-/// Books an increment's dissipation and slip into the common part of `new`.
-pub(crate) fn book(new: &mut [f64], dissipated: f64, slip: [f64; 2]) {
-    new[STATE_DISSIPATION] += dissipated;
-    new[STATE_SLIP_PATH] += norm(slip[0], slip[1]);
+/// Value `i` of the old state: of `old`, or of `new` when stepping in place.
+#[inline]
+pub(crate) fn read(old: Option<&[f64]>, new: &[f64], i: usize) -> f64 {
+    match old {
+        Some(o) => o[i],
+        None => new[i],
+    }
+}
+
+/// Books an increment's dissipation and slip into the common part of `new`,
+/// from the old state's accumulators.
+#[inline]
+pub(crate) fn book(old: Option<&[f64]>, new: &mut [f64], dissipated: f64, slip: [f64; 2]) {
+    new[STATE_DISSIPATION] = read(old, new, STATE_DISSIPATION) + dissipated;
+    new[STATE_SLIP_PATH] = read(old, new, STATE_SLIP_PATH) + norm(slip[0], slip[1]);
 }
 
 /// Fills the force, its magnitude, N and μ of a response from the friction
