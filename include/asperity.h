@@ -7,6 +7,12 @@
  * out-pointers; after a failure, asperity_last_error_message() gives a
  * message naming the argument and its bound (thread-local).
  *
+ * Failure: a call that returns an error leaves its outputs as they were
+ * (scalars, structs, states, buffers), except that constructors set the
+ * handle they return to NULL, and batch and block calls (*_batch,
+ * *_step_block) write the elements before the failing one, leave those
+ * from it on untouched, and start the message with "element i: ".
+ *
  * Thread safety: every function is reentrant and may be called concurrently;
  * AsperityNormalLaw values are plain immutable data and may be shared between
  * threads. Per-contact AsperityContactState is owned by the caller; an
@@ -1565,8 +1571,8 @@ int32_t asperity_normal_eval(const struct AsperityNormalLaw *law,
 // `new_state[i]`, writing `force[i]` (N), `contact_radius[i]` (m) and
 // `stiffness[i]` (N/m). `delta` and `force` are required; the other arrays may
 // be NULL (fresh states / not wanted). Input and output arrays may be the same
-// memory. On an error at element i, elements before i are written, the status
-// is returned and the message names i.
+// memory. On an error at element i, elements before i are written, those from
+// i on are untouched, the status is returned and the message names i.
 int32_t asperity_normal_eval_batch(const struct AsperityNormalLaw *law,
                                    size_t n,
                                    const double *delta,
@@ -1795,8 +1801,8 @@ int32_t asperity_homogenised_friction_step(const struct AsperityHomogenisedFrict
 // `dissipation[i]` (J). `normal_forces`, `areas`, `slip_increments` and
 // `tangential_forces` are required; `old_state` may be NULL (all fresh),
 // `new_state` and `dissipation` may be NULL (not wanted); `old_state` may
-// equal `new_state`. On an error at element i, elements before i are written
-// and the message names i.
+// equal `new_state`. On an error at element i, elements before i are written,
+// those from i on are untouched, and the message names i.
 int32_t asperity_homogenised_friction_step_block(const struct AsperityHomogenisedFriction *friction,
                                                  size_t n,
                                                  const double *normal_forces,
@@ -2121,7 +2127,8 @@ int32_t asperity_gw_eval(const struct AsperityGwParams *gw,
 // `load[i]` (N) and, where the array is not NULL, `area[i]` (m²),
 // `contacts[i]` and `stiffness[i]` (N/m). `separation` and `load` are
 // required (unless n = 0); inputs and outputs may be the same memory. On an
-// error at element i, elements before i are written and the message names i.
+// error at element i, elements before i are written, those from i on are
+// untouched, and the message names i.
 int32_t asperity_gw_eval_batch(const struct AsperityGwParams *gw,
                                size_t n,
                                const double *separation,
@@ -2431,7 +2438,8 @@ int32_t asperity_table_eval(const struct AsperityTable *table,
 // `delta[i]` (m), `old_state[i]` → `new_state[i]`, `force[i]` (N),
 // `contact_radius[i]` (m), `stiffness[i]` (N/m). `delta` and `force` are
 // required, the others may be NULL; inputs and outputs may alias. On an
-// error at element i, elements before i are written and the message names i.
+// error at element i, elements before i are written, those from i on are
+// untouched, and the message names i.
 int32_t asperity_table_eval_batch(const struct AsperityTable *table,
                                   size_t n,
                                   const double *delta,

@@ -183,6 +183,60 @@ pub mod check {
         }
     }
 
+    /// A computed result that must be finite: `Ok(result)` when it is,
+    /// otherwise [`Error::OutOfDomain`] naming the argument `name` (with its
+    /// value `arg`) that drove it out of `f64`, for `reason`.
+    #[inline]
+    pub fn finite_result(
+        result: f64,
+        name: &'static str,
+        arg: f64,
+        reason: &'static str,
+    ) -> Result<f64> {
+        if result.is_finite() {
+            Ok(result)
+        } else {
+            Err(Error::OutOfDomain {
+                name,
+                value: arg,
+                reason,
+            })
+        }
+    }
+
+    /// Of the arguments `(name, value)`, the one farthest from 1 in
+    /// magnitude (|ln|x||): the one to name when a product or quotient of
+    /// them leaves the range of `f64`.
+    #[inline]
+    pub fn extreme(args: &[(&'static str, f64)]) -> (&'static str, f64) {
+        let mut best = args[0];
+        for &a in &args[1..] {
+            if a.1.abs().ln().abs() > best.1.abs().ln().abs() {
+                best = a;
+            }
+        }
+        best
+    }
+
+    /// [`finite_result`] naming the [`extreme`] of `args`.
+    #[inline]
+    pub fn finite_of(
+        result: f64,
+        args: &[(&'static str, f64)],
+        reason: &'static str,
+    ) -> Result<f64> {
+        if result.is_finite() {
+            Ok(result)
+        } else {
+            let (name, value) = extreme(args);
+            Err(Error::OutOfDomain {
+                name,
+                value,
+                reason,
+            })
+        }
+    }
+
     /// A value in a closed range `[lo, hi]`; `bound` names it for the message.
     #[inline]
     pub fn in_range(

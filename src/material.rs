@@ -48,12 +48,20 @@ use crate::error::{check, Error, Result};
 ///
 /// * `e1`, `e2`: Young's moduli (Pa), `> 0`, `+∞` allowed.
 /// * `nu1`, `nu2`: Poisson's ratios, `0 ≤ ν ≤ 0.5`.
+///
+/// Errors with [`Error::OutOfDomain`] naming the larger modulus when `E*`
+/// overflows `f64` (moduli near `f64::MAX`).
 pub fn effective_modulus(e1: f64, nu1: f64, e2: f64, nu2: f64) -> Result<f64> {
     let c1 = compliance(check_modulus("e1", e1)?, check::poisson("nu1", nu1)?);
     let c2 = compliance(check_modulus("e2", e2)?, check::poisson("nu2", nu2)?);
     let c = c1 + c2;
     if c > 0.0 {
-        Ok(1.0 / c)
+        let name = if e1.is_finite() && (e1 >= e2 || e2.is_infinite()) {
+            ("e1", e1)
+        } else {
+            ("e2", e2)
+        };
+        check::finite_of(1.0 / c, &[name], "the contact modulus overflows f64")
     } else {
         Err(Error::InvalidArgument {
             name: "e2",
@@ -88,13 +96,19 @@ fn check_modulus(name: &'static str, e: f64) -> Result<f64> {
 /// Effective modulus of two elastic rods of equal length and section pressed end
 /// to end (thesis (6-4)..(6-8)): `1/E_eff = 1/E₁ + 1/E₂` (Pa). Used for the
 /// micro- and nano-asperity rods of the hierarchical slider. A rigid rod
-/// (`+∞`) contributes nothing.
+/// (`+∞`) contributes nothing. Errors with [`Error::OutOfDomain`] when the
+/// result overflows `f64` (moduli near `f64::MAX`).
 pub fn rod_effective_modulus(e1: f64, e2: f64) -> Result<f64> {
     let e1 = check_modulus("e1", e1)?;
     let e2 = check_modulus("e2", e2)?;
     let c = 1.0 / e1 + 1.0 / e2;
     if c > 0.0 {
-        Ok(1.0 / c)
+        let name = if e1.is_finite() && (e1 >= e2 || e2.is_infinite()) {
+            ("e1", e1)
+        } else {
+            ("e2", e2)
+        };
+        check::finite_of(1.0 / c, &[name], "the effective modulus overflows f64")
     } else {
         Err(Error::InvalidArgument {
             name: "e2",
@@ -151,6 +165,9 @@ pub fn no_slip_epsilon(nu: f64) -> Result<f64> {
 ///
 /// Small μ: stiff, small, weakly adhering spheres (DMT); large μ: compliant,
 /// large, strongly adhering spheres (JKR).
+///
+/// Errors with [`Error::OutOfDomain`] naming the most extreme argument when
+/// μ is not finite (arguments near the ends of `f64`).
 pub fn tabor_parameter(
     radius: f64,
     work_of_adhesion: f64,
@@ -161,12 +178,24 @@ pub fn tabor_parameter(
     let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
     let e = check::positive("e_star", e_star)?;
     let z0 = check::positive("equilibrium_separation", equilibrium_separation)?;
-    Ok((r * w * w / (e * e * z0 * z0 * z0)).cbrt())
+    check::finite_of(
+        (r * w * w / (e * e * z0 * z0 * z0)).cbrt(),
+        &[
+            ("radius", r),
+            ("work_of_adhesion", w),
+            ("e_star", e),
+            ("equilibrium_separation", z0),
+        ],
+        "the Tabor parameter is not finite (arguments at the ends of f64)",
+    )
 }
 
 /// Maugis parameter (Maugis 1992): `λ = 2σ₀ (R / (π w K²))^{1/3}` with
 /// `K = 4E*/3` and σ₀ the Dugdale cohesive stress (Pa), acting up to the
 /// separation `h₀ = w/σ₀`.
+///
+/// Errors with [`Error::OutOfDomain`] naming the most extreme argument when
+/// λ is not finite (arguments near the ends of `f64`).
 pub fn maugis_parameter(
     radius: f64,
     work_of_adhesion: f64,
@@ -178,7 +207,16 @@ pub fn maugis_parameter(
     let e = check::positive("e_star", e_star)?;
     let s0 = check::positive("cohesive_stress", cohesive_stress)?;
     let k = jkr_k(e);
-    Ok(2.0 * s0 * (r / (core::f64::consts::PI * w * k * k)).cbrt())
+    check::finite_of(
+        2.0 * s0 * (r / (core::f64::consts::PI * w * k * k)).cbrt(),
+        &[
+            ("radius", r),
+            ("work_of_adhesion", w),
+            ("e_star", e),
+            ("cohesive_stress", s0),
+        ],
+        "the Maugis parameter is not finite (arguments at the ends of f64)",
+    )
 }
 
 /// Peak tension of the Lennard-Jones 3-9 surface law
@@ -275,6 +313,9 @@ pub enum WeirPrefactor {
 ///
 /// Diamond (111) (M = 1.99e-26 kg, ρ = 3500 kg/m³, E = 1164 GPa, ν = 0.079)
 /// gives 2.05615 J/m² with the default prefactor.
+///
+/// Errors with [`Error::OutOfDomain`] naming the most extreme of
+/// `atomic_mass`, `density`, `youngs_modulus` when γ overflows `f64`.
 pub fn weir_surface_energy(
     atomic_mass: f64,
     density: f64,
@@ -316,7 +357,15 @@ pub fn weir_surface_energy(
         WeirPrefactor::PlaneSum => 1.0 / ((m - 2.0) * (n - 2.0)),
         WeirPrefactor::ThreeOverMn => 3.0 / (m * n),
     };
-    Ok(k * a * b)
+    check::finite_of(
+        k * a * b,
+        &[
+            ("atomic_mass", mass),
+            ("density", rho),
+            ("youngs_modulus", e),
+        ],
+        "the surface energy overflows f64",
+    )
 }
 
 /// How the work of adhesion of two different solids is formed from their
@@ -337,24 +386,40 @@ pub enum PairRule {
 /// Work of adhesion (J/m²) of a pair with surface energies `gamma1`, `gamma2`
 /// (J/m², ≥ 0) under `rule`. Identical surfaces give `2γ` under
 /// [`PairRule::GeometricMean`] (and 0 under the seed's difference rule).
+/// Errors with [`Error::OutOfDomain`] naming the larger surface energy when
+/// the result overflows `f64`.
 pub fn pair_work_of_adhesion(gamma1: f64, gamma2: f64, rule: PairRule) -> Result<f64> {
     let g1 = check::non_negative("gamma1", gamma1)?;
     let g2 = check::non_negative("gamma2", gamma2)?;
-    Ok(match rule {
+    let larger = if g1 >= g2 {
+        ("gamma1", g1)
+    } else {
+        ("gamma2", g2)
+    };
+    let w = match rule {
         PairRule::GeometricMean => 2.0 * (g1 * g2).sqrt(),
         PairRule::Seed001Difference => {
             let d = g1.sqrt() - g2.sqrt();
             d * d
         }
-    })
+    };
+    check::finite_of(w, &[larger], "the work of adhesion overflows f64")
 }
 
 /// Work of adhesion (J/m²) of two flats across a gap `separation` D₀ (m) from the
 /// Hamaker constant `hamaker` A (J): `W₁₂ = A/(12πD₀²)` (Israelachvili,
 /// *Intermolecular and Surface Forces*, §13; thesis §4.4). A = 2.7e-19 J at
 /// D₀ = 2.56 Å gives 0.10928 J/m².
+///
+/// Errors with [`Error::OutOfDomain`] naming `separation` (or `hamaker`,
+/// whichever is more extreme) when the result overflows `f64` (e.g.
+/// `separation` = 1e-200 m, where D₀² underflows to 0).
 pub fn hamaker_work_of_adhesion(hamaker: f64, separation: f64) -> Result<f64> {
     let a = check::positive("hamaker", hamaker)?;
     let d0 = check::positive("separation", separation)?;
-    Ok(a / (12.0 * core::f64::consts::PI * d0 * d0))
+    check::finite_of(
+        a / (12.0 * core::f64::consts::PI * d0 * d0),
+        &[("separation", d0), ("hamaker", a)],
+        "the work of adhesion A/(12 pi separation^2) overflows f64",
+    )
 }

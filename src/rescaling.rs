@@ -188,47 +188,113 @@ impl Rescaling {
 
     /// Depth (m) at load `load` (N, ≥ 0) for the punch of scale `lambda = B/B₁`
     /// (> 0), (3-13): `δ = λ^{(2−κ)/s} (P/P₁)^{d/s} δ₁`.
+    ///
+    /// Errors with [`Error::OutOfDomain`] naming the most extreme of `lambda`,
+    /// `load`, `known.load`, `known.depth` when δ is not finite (arguments
+    /// near the ends of `f64`).
     pub fn depth(&self, lambda: f64, load: f64, known: &KnownSolution) -> Result<f64> {
         let k = known.checked()?;
         let lambda = check::positive("lambda", lambda)?;
         let load = check::non_negative("load", load)?;
         let s = self.s();
-        Ok(lambda.powf(self.depth_lambda_exponent()) * (load / k.load).powf(self.d / s) * k.depth)
+        check::finite_of(
+            lambda.powf(self.depth_lambda_exponent()) * (load / k.load).powf(self.d / s) * k.depth,
+            &[
+                ("lambda", lambda),
+                ("load", load),
+                ("known.load", k.load),
+                ("known.depth", k.depth),
+            ],
+            "the rescaled depth is not finite",
+        )
     }
 
     /// Contact radius (m) at load `load` (N, ≥ 0), (3-14):
     /// `a = λ^{−κ/s} (P/P₁)^{1/s} a₁`.
+    ///
+    /// Errors with [`Error::OutOfDomain`] naming the most extreme of `lambda`,
+    /// `load`, `known.load`, `known.radius` when a is not finite.
     pub fn radius(&self, lambda: f64, load: f64, known: &KnownSolution) -> Result<f64> {
         let k = known.checked()?;
         let lambda = check::positive("lambda", lambda)?;
         let load = check::non_negative("load", load)?;
         let s = self.s();
-        Ok(lambda.powf(self.radius_lambda_exponent()) * (load / k.load).powf(1.0 / s) * k.radius)
+        check::finite_of(
+            lambda.powf(self.radius_lambda_exponent()) * (load / k.load).powf(1.0 / s) * k.radius,
+            &[
+                ("lambda", lambda),
+                ("load", load),
+                ("known.load", k.load),
+                ("known.radius", k.radius),
+            ],
+            "the rescaled contact radius is not finite",
+        )
     }
 
     /// Load (N) at depth `depth` (m, ≥ 0), (3-24):
     /// `P = λ^{(κ−2)/d} (δ/δ₁)^{s/d} P₁`. With λ = 1 this is (3-19)/(3-25).
+    ///
+    /// Errors with [`Error::OutOfDomain`] naming the most extreme of `lambda`,
+    /// `depth`, `known.load`, `known.depth` when P is not finite.
     pub fn load(&self, lambda: f64, depth: f64, known: &KnownSolution) -> Result<f64> {
         let k = known.checked()?;
         let lambda = check::positive("lambda", lambda)?;
         let depth = check::non_negative("depth", depth)?;
-        Ok(lambda.powf(self.load_lambda_exponent())
-            * (depth / k.depth).powf(self.load_depth_exponent())
-            * k.load)
+        check::finite_of(
+            lambda.powf(self.load_lambda_exponent())
+                * (depth / k.depth).powf(self.load_depth_exponent())
+                * k.load,
+            &[
+                ("lambda", lambda),
+                ("depth", depth),
+                ("known.load", k.load),
+                ("known.depth", k.depth),
+            ],
+            "the rescaled load is not finite",
+        )
     }
 }
 
 /// λ for spheres (3-15): `λ = R₁/R`, `R₁` the radius of the known solution and
-/// `R` the new one (m, both > 0).
+/// `R` the new one (m, both > 0). [`Error::OutOfDomain`] (naming the more
+/// extreme radius) when the ratio leaves `f64` (overflows or underflows to 0).
 pub fn lambda_spheres(known_radius: f64, radius: f64) -> Result<f64> {
-    Ok(check::positive("known_radius", known_radius)? / check::positive("radius", radius)?)
+    let r1 = check::positive("known_radius", known_radius)?;
+    let r = check::positive("radius", radius)?;
+    positive_result(
+        r1 / r,
+        &[("known_radius", r1), ("radius", r)],
+        "lambda = known_radius/radius is not finite and > 0",
+    )
+}
+
+/// `Ok(value)` when finite and > 0, else `OutOfDomain` naming the
+/// [`check::extreme`] of `args`.
+fn positive_result(value: f64, args: &[(&'static str, f64)], reason: &'static str) -> Result<f64> {
+    if value > 0.0 {
+        check::finite_of(value, args, reason)
+    } else {
+        let (name, v) = check::extreme(args);
+        Err(Error::OutOfDomain {
+            name,
+            value: v,
+            reason,
+        })
+    }
 }
 
 /// λ for cones (3-16): `λ = tan γ₁/tan γ`, half-angles in rad, in (0, π/2).
+/// [`Error::OutOfDomain`] (naming the more extreme angle) when the ratio
+/// leaves `f64` (a subnormal angle).
 pub fn lambda_cones(known_half_angle: f64, half_angle: f64) -> Result<f64> {
     let g1 = check::half_angle("known_half_angle", known_half_angle)?;
     let g = check::half_angle("half_angle", half_angle)?;
-    Ok(g1.tan() / g.tan())
+    // tan of a subnormal angle is the angle: the ratio can leave f64.
+    positive_result(
+        g1.tan() / g.tan(),
+        &[("known_half_angle", g1), ("half_angle", g)],
+        "lambda = tan(known_half_angle)/tan(half_angle) is not finite and > 0",
+    )
 }
 
 /// The shape scale λ = B/B₁ that carries the known point `(P₁, δ₁)` into the
@@ -262,6 +328,8 @@ pub fn shape_scale_from_points(
 /// `R₂ = R₁ (P₂/P₁)² (δ₁/δ₂)³`, where `(P₁, δ₁)` is a Hertz solution for the
 /// sphere of radius `R₁` and `(P₂, δ₂)` the measured unloading point, δ₂
 /// measured from the residual depth (the elastic recovery). All > 0; m, N.
+/// [`Error::OutOfDomain`] (naming the most extreme argument) when R₂
+/// overflows `f64`.
 pub fn galanov_unloading_radius(
     r1: f64,
     p1: f64,
@@ -274,7 +342,17 @@ pub fn galanov_unloading_radius(
     let delta1 = check::positive("delta1", delta1)?;
     let p2 = check::positive("p2", p2)?;
     let delta2 = check::positive("delta2", delta2)?;
-    Ok(r1 * (p2 / p1).powi(2) * (delta1 / delta2).powi(3))
+    check::finite_of(
+        r1 * (p2 / p1).powi(2) * (delta1 / delta2).powi(3),
+        &[
+            ("r1", r1),
+            ("p1", p1),
+            ("delta1", delta1),
+            ("p2", p2),
+            ("delta2", delta2),
+        ],
+        "the unloading radius is not finite",
+    )
 }
 
 /// The same effective radius from the Hertz law directly: with
@@ -291,6 +369,7 @@ pub fn hertz_effective_radius(e_star: f64, load: f64, elastic_depth: f64) -> Res
 /// `1/R₂ = 1/R − 1/R_medium` ⇒ `R_medium = R R₂/(R₂ − R)` (m). The unloading
 /// radius must exceed the indenter's (`unloading_radius > radius`); an infinite
 /// `unloading_radius` gives `R_medium = R` (a crater that fits the sphere).
+/// [`Error::OutOfDomain`] when `R R₂` overflows `f64`.
 pub fn medium_radius(radius: f64, unloading_radius: f64) -> Result<f64> {
     let r = check::positive("radius", radius)?;
     if unloading_radius.is_nan() || unloading_radius <= r {
@@ -303,7 +382,11 @@ pub fn medium_radius(radius: f64, unloading_radius: f64) -> Result<f64> {
     if unloading_radius.is_infinite() {
         return Ok(r);
     }
-    Ok(r * unloading_radius / (unloading_radius - r))
+    check::finite_of(
+        r * unloading_radius / (unloading_radius - r),
+        &[("radius", r), ("unloading_radius", unloading_radius)],
+        "the medium radius is not finite",
+    )
 }
 
 /// The inverse of [`medium_radius`]: the effective radius of the unloading
@@ -389,6 +472,7 @@ pub fn d_from_unloading_slope(unloading_slope: f64) -> Result<f64> {
 /// `κ = (d m_l − 2)/(d − 1)` (from (3-26)); d = 2 gives (3-21), `κ = 2m_l − 2`.
 /// Not identifiable for a cone (|d − 1| < 1e-6): [`Error::OutOfDomain`].
 /// The result is returned whatever its sign; the caller flags κ < 0 or κ > 1.
+/// [`Error::OutOfDomain`] when κ overflows `f64`.
 pub fn kappa_from_loading_slope(loading_slope: f64, d: f64) -> Result<f64> {
     let m = check::finite("loading_slope", loading_slope)?;
     let d = check::positive("d", d)?;
@@ -399,11 +483,16 @@ pub fn kappa_from_loading_slope(loading_slope: f64, d: f64) -> Result<f64> {
             reason: "for a cone (d = 1) the loading slope is 2 for every kappa: kappa is not identifiable",
         });
     }
-    Ok((d * m - 2.0) / (d - 1.0))
+    check::finite_of(
+        (d * m - 2.0) / (d - 1.0),
+        &[("loading_slope", m), ("d", d)],
+        "kappa overflows f64",
+    )
 }
 
 /// Bluntness index from the loading slope and a known hardening index:
 /// `d = (2 − κ)/(m_l − κ)` (from (3-26)). Needs `m_l ≠ κ`.
+/// [`Error::OutOfDomain`] when d overflows `f64`.
 pub fn d_from_loading_slope(loading_slope: f64, kappa: f64) -> Result<f64> {
     let m = check::finite("loading_slope", loading_slope)?;
     let k = check::finite("kappa", kappa)?;
@@ -414,7 +503,11 @@ pub fn d_from_loading_slope(loading_slope: f64, kappa: f64) -> Result<f64> {
             reason: "equals kappa: d = (2 - kappa)/(m - kappa) is undefined",
         });
     }
-    Ok((2.0 - k) / (m - k))
+    check::finite_of(
+        (2.0 - k) / (m - k),
+        &[("loading_slope", m), ("kappa", k)],
+        "d overflows f64",
+    )
 }
 
 // ---------------------------------------------------------------------------

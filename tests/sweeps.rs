@@ -22,6 +22,15 @@
 //!   Maugis–Dugdale);
 //! * continuity across the internal switches (`continuity_across_switches`).
 //!
+//! Beyond the closed-form laws (`laws_*`), the same harness sweeps the
+//! scalar C functions of `material` and `rescaling` (`scalars_*`),
+//! Greenwood–Williamson surfaces (`statistics_*`: monotone in the
+//! separation, the inverse reproduces the load), the homogenised friction
+//! step (`homogenised_*`: ΔD ≥ 0, |F| ≤ μ(N + A)) and tabulated
+//! Maugis–Dugdale tables (`tabulated_*`: within tolerance of the closed
+//! form); failing calls must leave outputs untouched (sentinels), batch
+//! calls write exactly the elements before the failing one.
+//!
 //! `cargo test --test sweeps` runs 10⁴ points per family; the 10⁶-point
 //! sweeps are `#[ignore]`d and run in release by `.ci/run`:
 //! `cargo test --release --test sweeps -- --ignored`.
@@ -83,6 +92,14 @@ enum Dom {
     Closed(f64, f64),
     /// In the open interval.
     Open(f64, f64),
+    /// In `[lo, hi)`.
+    HalfOpen(f64, f64),
+    /// Finite and > the bound.
+    Gt(f64),
+    /// > 0, `+∞` allowed (a rigid body's modulus, a flat's radius).
+    PosInf,
+    /// Finite, any sign.
+    Finite,
 }
 
 impl Dom {
@@ -92,6 +109,10 @@ impl Dom {
             Dom::NonNeg => v.is_finite() && v >= 0.0,
             Dom::Closed(a, b) => v >= a && v <= b,
             Dom::Open(a, b) => v > a && v < b,
+            Dom::HalfOpen(a, b) => v >= a && v < b,
+            Dom::Gt(a) => v.is_finite() && v > a,
+            Dom::PosInf => v > 0.0,
+            Dom::Finite => v.is_finite(),
         }
     }
 }
@@ -130,7 +151,7 @@ fn sample(rng: &mut Rng, a: &Arg) -> f64 {
             }
         }
         u if u < 0.06 => match a.dom {
-            Dom::Closed(lo, hi) | Dom::Open(lo, hi) => rng.pick(&[
+            Dom::Closed(lo, hi) | Dom::Open(lo, hi) | Dom::HalfOpen(lo, hi) => rng.pick(&[
                 lo,
                 hi,
                 next_up(lo),
@@ -138,13 +159,25 @@ fn sample(rng: &mut Rng, a: &Arg) -> f64 {
                 next_down(lo),
                 next_up(hi),
             ]),
+            Dom::Gt(x) => rng.pick(&[x, next_up(x), next_down(x), f64::MAX]),
+            Dom::PosInf => rng.pick(&[f64::MIN_POSITIVE, 5e-324, f64::MAX, f64::INFINITY]),
+            Dom::Finite => rng.pick(&[f64::MAX, -f64::MAX, 5e-324, -5e-324]),
             _ => rng.pick(&[f64::MIN_POSITIVE, 5e-324, f64::MAX]),
         },
         _ => match a.dom {
-            Dom::Closed(lo, hi) | Dom::Open(lo, hi) if lo <= 0.0 => {
+            Dom::Closed(lo, hi) | Dom::Open(lo, hi) | Dom::HalfOpen(lo, hi) if lo <= 0.0 => {
                 let w = hi - lo;
                 rng.uniform(lo - 0.2 * w, hi + 0.2 * w)
             }
+            Dom::Finite => {
+                let x = rng.log_uniform(a.lo / 10.0, a.hi * 10.0);
+                if rng.f() < 0.5 {
+                    -x
+                } else {
+                    x
+                }
+            }
+            Dom::PosInf if rng.f() < 0.05 => f64::INFINITY,
             _ => rng.log_uniform(a.lo / 10.0, a.hi * 10.0),
         },
     }
@@ -236,18 +269,11 @@ const NU: Arg = arg(&["nu"], Dom::Closed(0.0, 0.5), 0.0, 0.5);
 const B: Arg = arg(&["b"], Dom::Pos, 1e-3, 1e9);
 const D: Arg = arg(&["d"], Dom::Closed(1.0, 100.0), 1.0, 100.0);
 const HALF_ANGLE: Arg = arg(&["half_angle"], Dom::Open(0.0, PI / 2.0), 0.0, PI / 2.0);
-const SIGMA0: Arg = arg(&["sigma0", "cohesive_stress"], Dom::Pos, 1e6, 1e11);
-const Z0: Arg = arg(
-    &[
-        "parameter",
-        "equilibrium_separation",
-        "cohesive_stress",
-        "decay_length",
-    ],
-    Dom::Pos,
-    1e-11,
-    1e-8,
-);
+// The C names: errors of `asperity_law_maugis_dugdale` name `sigma0`, those
+// of `asperity_law_derjaguin` `parameter` (not the Rust API's
+// `cohesive_stress`, `equilibrium_separation`, `decay_length`).
+const SIGMA0: Arg = arg(&["sigma0"], Dom::Pos, 1e6, 1e11);
+const Z0: Arg = arg(&["parameter"], Dom::Pos, 1e-11, 1e-8);
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Kind {
@@ -811,4 +837,1287 @@ fn continuity_across_switches() {
     let ratio = f(d0 * (1.0 + e)) / f(d0 * (1.0 - e));
     let want = ((1.0 + e) / (1.0 - e)).powf(1.5);
     assert!((ratio - want).abs() <= 1e-12, "{ratio} vs {want}");
+}
+
+// ------------------------------------------------- scalar functions
+
+/// Whether `v` is a typical value of `a` for the scalar sweeps: inside its
+/// domain and within [lo, hi] for bounded domains, [lo/10, 10·hi] (in
+/// magnitude) otherwise.
+fn typical_in(a: &Arg, v: f64) -> bool {
+    a.dom.contains(v)
+        && match a.dom {
+            Dom::Closed(..) | Dom::Open(..) | Dom::HalfOpen(..) => v >= a.lo && v <= a.hi,
+            Dom::Finite => v.abs() >= a.lo / 10.0 && v.abs() <= a.hi * 10.0,
+            Dom::PosInf if v == f64::INFINITY => true,
+            _ => v >= a.lo / 10.0 && v <= a.hi * 10.0,
+        }
+}
+
+/// A C function of scalar arguments with one `double` output, and the
+/// Rust function it translates.
+struct Scalar {
+    name: &'static str,
+    args: Vec<Arg>,
+    /// Integer selector (its name and valid values), if any.
+    sel: Option<(&'static str, &'static [i32])>,
+    c: unsafe fn(&[f64], i32, *mut f64) -> i32,
+    rust: fn(&[f64], i32) -> asperity::Result<f64>,
+    /// The names an error must use when in-domain arguments violate a
+    /// documented combination bound (None: no bound violated).
+    combination: fn(&[f64]) -> Option<&'static [&'static str]>,
+    /// In-domain errors allowed for typical values (the result can leave
+    /// f64 there: the rescaling powers).
+    overflow_ok: bool,
+    /// The result is documented ≥ 0.
+    nonneg: bool,
+    /// `(i, +1/−1)`: the result is non-decreasing / non-increasing in
+    /// argument i (others fixed).
+    mono: Option<(usize, f64)>,
+}
+
+fn no_combination(_: &[f64]) -> Option<&'static [&'static str]> {
+    None
+}
+
+fn sweep_scalar(f: &Scalar, n: usize, seed: u64) -> Tally {
+    let mut rng = Rng::new(seed ^ f.name.len() as u64 ^ (f.name.as_bytes()[16] as u64) << 32);
+    let mut t = Tally::default();
+    for _ in 0..n {
+        t.points += 1;
+        let sel = match f.sel {
+            Some((_, ok)) if rng.f() < 0.01 => rng.pick(&[-1, ok.len() as i32 + 1, i32::MIN]),
+            Some((_, ok)) => rng.pick(ok),
+            None => 0,
+        };
+        let sel_ok = f.sel.map_or(true, |(_, ok)| ok.contains(&sel));
+        let v: Vec<f64> = f.args.iter().map(|a| sample(&mut rng, a)).collect();
+        let bad: Vec<&Arg> = f
+            .args
+            .iter()
+            .zip(&v)
+            .filter(|(a, x)| !a.dom.contains(**x))
+            .map(|(a, _)| a)
+            .collect();
+        let combo = if bad.is_empty() {
+            (f.combination)(&v)
+        } else {
+            None
+        };
+        let all_typical = f.args.iter().zip(&v).all(|(a, x)| typical_in(a, *x));
+        let sentinel = -12345.678;
+        let mut out = sentinel;
+        let st = unsafe { (f.c)(&v, sel, &mut out) };
+        let rust = (f.rust)(&v, sel);
+        let ctx = || format!("{} {v:?} sel {sel}", f.name);
+        if st == ASPERITY_OK {
+            assert!(
+                bad.is_empty() && sel_ok && combo.is_none(),
+                "{}: accepted out-of-domain arguments",
+                ctx()
+            );
+            assert!(out.is_finite(), "{}: status OK, result {out:e}", ctx());
+            assert!(!f.nonneg || out >= 0.0, "{}: result {out:e} < 0", ctx());
+            let r = rust.unwrap_or_else(|e| panic!("{}: C OK, Rust {e}", ctx()));
+            assert_eq!(out.to_bits(), r.to_bits(), "{}", ctx());
+            t.ok += 1;
+            if let (Some((i, dir)), true) = (f.mono, all_typical) {
+                let mut w = v.clone();
+                w[i] *= 1.0 + rng.log_uniform(1e-9, 1.0);
+                if typical_in(&f.args[i], w[i]) {
+                    let mut o2 = 0.0;
+                    if unsafe { (f.c)(&w, sel, &mut o2) } == ASPERITY_OK {
+                        assert!(
+                            (o2 - out) * dir >= -1e-12 * out.abs().max(o2.abs()),
+                            "{}: not monotone in `{}`: {out:e} then {o2:e} at {:e}",
+                            ctx(),
+                            f.args[i].names[0],
+                            w[i]
+                        );
+                    }
+                }
+            }
+            continue;
+        }
+        let m = last_message();
+        t.error(&m);
+        assert_eq!(
+            out.to_bits(),
+            sentinel.to_bits(),
+            "{}: output written on failure",
+            ctx()
+        );
+        let e = rust.expect_err("C error, Rust OK");
+        // Same error text, except where the C function renames: the
+        // rescaling calls name the known solution `known_load`,
+        // `known_depth`, `known_radius` (Rust: `KnownSolution::new`'s `load`,
+        // `depth`, `radius`; `Rescaling::*`'s `known.load`, …).
+        let known = ["_depth", "_radius", "_load"]
+            .iter()
+            .any(|s| f.name.starts_with("asperity_rescaling") && f.name.ends_with(s));
+        if !known {
+            assert_eq!(m, e.to_string(), "{}", ctx());
+        }
+        if !sel_ok {
+            if bad.is_empty() {
+                assert!(m.contains(f.sel.unwrap().0), "{}: {m}", ctx());
+            }
+            continue;
+        }
+        if !bad.is_empty() {
+            assert_eq!(st, ASPERITY_ERR_INVALID_ARGUMENT, "{}: {m}", ctx());
+            assert!(
+                names_one_of(&m, &bad),
+                "{}: `{m}` names no bad argument",
+                ctx()
+            );
+        } else if let Some(names) = combo {
+            assert!(
+                names.iter().any(|n| m.contains(&format!("`{n}`"))),
+                "{}: combination bound, message `{m}`",
+                ctx()
+            );
+        } else {
+            // In the domain: only an overflow of f64, naming an argument.
+            assert_eq!(st, ASPERITY_ERR_OUT_OF_DOMAIN, "{}: {m}", ctx());
+            assert!(
+                names_one_of(&m, &f.args.iter().collect::<Vec<_>>()),
+                "{}: `{m}` names no argument",
+                ctx()
+            );
+            assert!(
+                !all_typical || f.overflow_ok,
+                "{}: typical arguments refused: {m}",
+                ctx()
+            );
+        }
+    }
+    t
+}
+
+const MOD_E: Arg = arg(&["e1", "e2"], Dom::PosInf, 1e6, 1e12);
+const POISSON1: Arg = arg(&["nu1"], Dom::Closed(0.0, 0.5), 0.0, 0.5);
+const POISSON2: Arg = arg(&["nu2"], Dom::Closed(0.0, 0.5), 0.0, 0.5);
+const Z0_EQ: Arg = arg(&["equilibrium_separation"], Dom::Pos, 1e-11, 1e-8);
+const COHESIVE: Arg = arg(&["cohesive_stress"], Dom::Pos, 1e6, 1e11);
+const GAMMA: Arg = arg(&["gamma1", "gamma2"], Dom::NonNeg, 1e-2, 10.0);
+const HAMAKER: Arg = arg(&["hamaker"], Dom::Pos, 1e-21, 1e-18);
+const SEPARATION: Arg = arg(&["separation"], Dom::Pos, 1e-10, 1e-8);
+const KAPPA: Arg = arg(&["kappa"], Dom::Closed(0.0, 10.0), 0.0, 10.0);
+const LAMBDA: Arg = arg(&["lambda"], Dom::Pos, 1e-3, 1e3);
+const LOAD: Arg = arg(&["load"], Dom::NonNeg, 1e-6, 1e2);
+const DEPTH: Arg = arg(&["depth"], Dom::NonNeg, 1e-9, 1e-3);
+const KNOWN_LOAD: Arg = arg(&["known_load"], Dom::Pos, 1e-6, 1e2);
+const KNOWN_DEPTH: Arg = arg(&["known_depth"], Dom::Pos, 1e-9, 1e-3);
+const KNOWN_RADIUS: Arg = arg(&["known_radius"], Dom::Pos, 1e-9, 1e-3);
+const ANGLE: Arg = arg(
+    &["half_angle", "known_half_angle"],
+    Dom::Open(0.0, PI / 2.0),
+    1e-3,
+    1.57,
+);
+const SLOPE: Arg = arg(
+    &["loading_slope", "unloading_slope"],
+    Dom::Finite,
+    0.1,
+    10.0,
+);
+
+fn scalars() -> Vec<Scalar> {
+    use asperity::ffi::indentation::*;
+    use asperity::ffi::material::*;
+    use asperity::material as m;
+    use asperity::rescaling as rs;
+    vec![
+        Scalar {
+            name: "asperity_effective_modulus",
+            args: vec![MOD_E, POISSON1, MOD_E, POISSON2],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_effective_modulus(v[0], v[1], v[2], v[3], o) },
+            rust: |v, _| m::effective_modulus(v[0], v[1], v[2], v[3]),
+            combination: |v| (v[0].is_infinite() && v[2].is_infinite()).then_some(&["e2"][..]),
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((0, 1.0)),
+        },
+        Scalar {
+            name: "asperity_rod_effective_modulus",
+            args: vec![MOD_E, MOD_E],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_rod_effective_modulus(v[0], v[1], o) },
+            rust: |v, _| m::rod_effective_modulus(v[0], v[1]),
+            combination: |v| (v[0].is_infinite() && v[1].is_infinite()).then_some(&["e2"][..]),
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((1, 1.0)),
+        },
+        Scalar {
+            name: "asperity_no_slip_factor",
+            args: vec![NU],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_no_slip_factor(v[0], o) },
+            rust: |v, _| m::no_slip_factor(v[0]),
+            combination: no_combination,
+            overflow_ok: false,
+            nonneg: true,
+            mono: None, // ν scaled multiplicatively would leave [0, 0.5]; see switches test
+        },
+        Scalar {
+            name: "asperity_tabor_parameter",
+            args: vec![RADIUS, W0, E_STAR, Z0_EQ],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_tabor_parameter(v[0], v[1], v[2], v[3], o) },
+            rust: |v, _| m::tabor_parameter(v[0], v[1], v[2], v[3]),
+            combination: no_combination,
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((0, 1.0)),
+        },
+        Scalar {
+            name: "asperity_maugis_parameter",
+            args: vec![RADIUS, W, E_STAR, COHESIVE],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_maugis_parameter(v[0], v[1], v[2], v[3], o) },
+            rust: |v, _| m::maugis_parameter(v[0], v[1], v[2], v[3]),
+            combination: no_combination,
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((3, 1.0)),
+        },
+        Scalar {
+            name: "asperity_weir_surface_energy_with",
+            args: vec![
+                arg(&["atomic_mass"], Dom::Pos, 1e-27, 1e-24),
+                arg(&["density"], Dom::Pos, 1e2, 3e4),
+                arg(&["youngs_modulus"], Dom::Pos, 1e9, 1.2e12),
+                arg(&["poisson_ratio"], Dom::HalfOpen(0.0, 0.5), 0.0, 0.499),
+                arg(&["m"], Dom::Gt(2.0), 2.5, 12.0),
+                arg(&["n"], Dom::Gt(2.0), 6.0, 24.0),
+            ],
+            sel: Some((
+                "prefactor",
+                &[ASPERITY_WEIR_PLANE_SUM, ASPERITY_WEIR_THREE_OVER_MN],
+            )),
+            c: |v, s, o| unsafe {
+                asperity_weir_surface_energy_with(v[0], v[1], v[2], v[3], v[4], v[5], s, o)
+            },
+            rust: |v, s| {
+                let k = if s == ASPERITY_WEIR_PLANE_SUM {
+                    m::WeirPrefactor::PlaneSum
+                } else {
+                    m::WeirPrefactor::ThreeOverMn
+                };
+                if s != ASPERITY_WEIR_PLANE_SUM && s != ASPERITY_WEIR_THREE_OVER_MN {
+                    return Err(asperity::Error::UnknownSelector {
+                        name: "prefactor",
+                        value: s as i64,
+                    });
+                }
+                m::weir_surface_energy(v[0], v[1], v[2], v[3], v[4], v[5], k)
+            },
+            combination: |v| (v[5] <= v[4]).then_some(&["n"][..]),
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((2, 1.0)),
+        },
+        Scalar {
+            name: "asperity_pair_work_of_adhesion",
+            args: vec![GAMMA, GAMMA],
+            sel: Some((
+                "rule",
+                &[
+                    ASPERITY_PAIR_GEOMETRIC_MEAN,
+                    ASPERITY_PAIR_SEED001_DIFFERENCE,
+                ],
+            )),
+            c: |v, s, o| unsafe { asperity_pair_work_of_adhesion(v[0], v[1], s, o) },
+            rust: |v, s| {
+                let rule = match s {
+                    ASPERITY_PAIR_GEOMETRIC_MEAN => m::PairRule::GeometricMean,
+                    ASPERITY_PAIR_SEED001_DIFFERENCE => m::PairRule::Seed001Difference,
+                    v => {
+                        return Err(asperity::Error::UnknownSelector {
+                            name: "rule",
+                            value: v as i64,
+                        })
+                    }
+                };
+                m::pair_work_of_adhesion(v[0], v[1], rule)
+            },
+            combination: no_combination,
+            overflow_ok: false,
+            nonneg: true,
+            mono: None,
+        },
+        Scalar {
+            name: "asperity_hamaker_work_of_adhesion",
+            args: vec![HAMAKER, SEPARATION],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_hamaker_work_of_adhesion(v[0], v[1], o) },
+            rust: |v, _| m::hamaker_work_of_adhesion(v[0], v[1]),
+            combination: no_combination,
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((1, -1.0)),
+        },
+        Scalar {
+            name: "asperity_rescaling_depth",
+            args: vec![KAPPA, D, LAMBDA, LOAD, KNOWN_LOAD, KNOWN_DEPTH],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_rescaling_depth(v[0], v[1], v[2], v[3], v[4], v[5], o) },
+            rust: |v, _| {
+                let k = rs::KnownSolution::new(v[4], v[5], 1.0)?;
+                rs::Rescaling::new(v[0], v[1])?.depth(v[2], v[3], &k)
+            },
+            combination: no_combination,
+            overflow_ok: true,
+            nonneg: true,
+            mono: Some((3, 1.0)),
+        },
+        Scalar {
+            name: "asperity_rescaling_radius",
+            args: vec![KAPPA, D, LAMBDA, LOAD, KNOWN_LOAD, KNOWN_RADIUS],
+            sel: None,
+            c: |v, _, o| unsafe {
+                asperity_rescaling_radius(v[0], v[1], v[2], v[3], v[4], v[5], o)
+            },
+            rust: |v, _| {
+                let k = rs::KnownSolution::new(v[4], 1.0, v[5])?;
+                rs::Rescaling::new(v[0], v[1])?.radius(v[2], v[3], &k)
+            },
+            combination: no_combination,
+            overflow_ok: true,
+            nonneg: true,
+            mono: Some((3, 1.0)),
+        },
+        Scalar {
+            name: "asperity_rescaling_load",
+            args: vec![KAPPA, D, LAMBDA, DEPTH, KNOWN_LOAD, KNOWN_DEPTH],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_rescaling_load(v[0], v[1], v[2], v[3], v[4], v[5], o) },
+            rust: |v, _| {
+                let k = rs::KnownSolution::new(v[4], v[5], 1.0)?;
+                rs::Rescaling::new(v[0], v[1])?.load(v[2], v[3], &k)
+            },
+            combination: no_combination,
+            overflow_ok: true,
+            nonneg: true,
+            mono: Some((3, 1.0)),
+        },
+        Scalar {
+            name: "asperity_rescaling_lambda_spheres",
+            args: vec![KNOWN_RADIUS, arg(&["radius"], Dom::Pos, 1e-9, 1e-3)],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_rescaling_lambda_spheres(v[0], v[1], o) },
+            rust: |v, _| rs::lambda_spheres(v[0], v[1]),
+            combination: no_combination,
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((1, -1.0)),
+        },
+        Scalar {
+            name: "asperity_rescaling_lambda_cones",
+            args: vec![ANGLE, ANGLE],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_rescaling_lambda_cones(v[0], v[1], o) },
+            rust: |v, _| rs::lambda_cones(v[0], v[1]),
+            combination: no_combination,
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((0, 1.0)),
+        },
+        Scalar {
+            name: "asperity_rescaling_kappa_from_slope",
+            args: vec![SLOPE, arg(&["d"], Dom::Pos, 1.0, 100.0)],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_rescaling_kappa_from_slope(v[0], v[1], o) },
+            rust: |v, _| rs::kappa_from_loading_slope(v[0], v[1]),
+            combination: |v| ((v[1] - 1.0).abs() < 1e-6).then_some(&["d"][..]),
+            overflow_ok: false,
+            nonneg: false,
+            mono: None,
+        },
+        Scalar {
+            name: "asperity_rescaling_d_from_unloading_slope",
+            args: vec![SLOPE],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_rescaling_d_from_unloading_slope(v[0], o) },
+            rust: |v, _| rs::d_from_unloading_slope(v[0]),
+            combination: |v| (v[0] <= 1.0).then_some(&["unloading_slope"][..]),
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((0, -1.0)),
+        },
+        Scalar {
+            name: "asperity_rescaling_d_from_loading_slope",
+            args: vec![SLOPE, arg(&["kappa"], Dom::Finite, 0.1, 10.0)],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_rescaling_d_from_loading_slope(v[0], v[1], o) },
+            rust: |v, _| rs::d_from_loading_slope(v[0], v[1]),
+            combination: |v| ((v[0] - v[1]).abs() < 1e-12).then_some(&["loading_slope"][..]),
+            // (2 − κ)/(m − κ) with m − κ ≥ 1e-12 can exceed f64 for κ ~ 1e300.
+            overflow_ok: false,
+            nonneg: false,
+            mono: None,
+        },
+        Scalar {
+            name: "asperity_galanov_unloading_radius",
+            args: vec![
+                arg(&["r1"], Dom::Pos, 1e-9, 1e-3),
+                arg(&["p1"], Dom::Pos, 1e-6, 1e2),
+                arg(&["delta1"], Dom::Pos, 1e-9, 1e-3),
+                arg(&["p2"], Dom::Pos, 1e-6, 1e2),
+                arg(&["delta2"], Dom::Pos, 1e-9, 1e-3),
+            ],
+            sel: None,
+            c: |v, _, o| unsafe {
+                asperity_galanov_unloading_radius(v[0], v[1], v[2], v[3], v[4], o)
+            },
+            rust: |v, _| rs::galanov_unloading_radius(v[0], v[1], v[2], v[3], v[4]),
+            combination: no_combination,
+            // (P₂/P₁)²(δ₁/δ₂)³ spans 10^±(2·10 + 3·8) over the typical ranges.
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((3, 1.0)),
+        },
+        Scalar {
+            name: "asperity_galanov_medium_radius",
+            args: vec![
+                arg(&["radius"], Dom::Pos, 1e-9, 1e-3),
+                arg(&["unloading_radius"], Dom::PosInf, 1e-9, 1e-3),
+            ],
+            sel: None,
+            c: |v, _, o| unsafe { asperity_galanov_medium_radius(v[0], v[1], o) },
+            rust: |v, _| rs::medium_radius(v[0], v[1]),
+            combination: |v| (v[1] <= v[0]).then_some(&["unloading_radius"][..]),
+            overflow_ok: false,
+            nonneg: true,
+            mono: Some((1, -1.0)),
+        },
+    ]
+}
+
+fn sweep_scalars(n: usize) {
+    let fs = scalars();
+    let tallies: Vec<(&str, Tally)> = std::thread::scope(|s| {
+        let hs: Vec<_> = fs
+            .chunks(fs.len().div_ceil(2))
+            .map(|chunk| {
+                s.spawn(move || {
+                    chunk
+                        .iter()
+                        .map(|f| (f.name, sweep_scalar(f, n, 0x5EED_0002)))
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        hs.into_iter().flat_map(|h| h.join().unwrap()).collect()
+    });
+    for (k, t) in &tallies {
+        t.print(k);
+    }
+}
+
+#[test]
+fn scalars_quick() {
+    sweep_scalars(QUICK);
+}
+
+#[test]
+#[ignore = "10⁶ points per function: run in release (.ci/run)"]
+fn scalars_full() {
+    sweep_scalars(FULL);
+}
+
+// ------------------------------------------- Greenwood–Williamson
+
+use asperity::ffi::statistics::*;
+
+const SUMMITS: Arg = arg(&["summit_count"], Dom::Pos, 1.0, 1e9);
+const SUMMIT_RADIUS: Arg = arg(&["radius"], Dom::Pos, 1e-7, 1e-3);
+const SIGMA: Arg = arg(&["sigma"], Dom::Pos, 1e-9, 1e-5);
+
+/// A separation around the height scale `s`: ±s·U(0, 8) mostly, 0, huge,
+/// tiny, NaN and ±∞ at small rates.
+fn sample_separation(rng: &mut Rng, s: f64) -> f64 {
+    match rng.f() {
+        u if u < 0.004 => f64::NAN,
+        u if u < 0.008 => f64::INFINITY,
+        u if u < 0.012 => f64::NEG_INFINITY,
+        u if u < 0.02 => 0.0,
+        u if u < 0.05 => rng.log_uniform(1e-300, 1e300) * rng.pick(&[-1.0, 1.0]),
+        u if u < 0.1 => s * rng.log_uniform(1e-6, 1e6) * rng.pick(&[-1.0, 1.0]),
+        _ => s * rng.uniform(-8.0, 8.0),
+    }
+}
+
+fn gw_bits(r: &AsperityGwResponse) -> [u64; 4] {
+    [
+        r.load.to_bits(),
+        r.area.to_bits(),
+        r.contacts.to_bits(),
+        r.stiffness.to_bits(),
+    ]
+}
+
+fn gw_finite(r: &AsperityGwResponse) -> bool {
+    [r.load, r.area, r.contacts, r.stiffness]
+        .iter()
+        .all(|x| x.is_finite() && *x >= 0.0)
+}
+
+/// One Greenwood–Williamson surface (C evaluation closure, Rust model,
+/// whether its parameters are typical) swept over separations: OK ⇒ every
+/// output finite and ≥ 0, equal to the Rust API's; load, area, contacts and
+/// stiffness non-increasing in the separation; the separation at a load
+/// reproduces the load; a batch with a bad element at j writes the elements
+/// before j, leaves those from j on untouched and names j.
+/// A batch call: separations in, loads and areas out, the status.
+type GwBatch<'a> = dyn Fn(&[f64], &mut [f64], &mut [f64]) -> i32 + 'a;
+
+#[allow(clippy::too_many_arguments)]
+fn gw_check(
+    eval: &dyn Fn(f64, &mut AsperityGwResponse) -> i32,
+    at_load: &dyn Fn(f64, &mut AsperitySeparation) -> i32,
+    batch: &GwBatch<'_>,
+    model: &asperity::statistics::GreenwoodWilliamson,
+    scale: f64,
+    typical: bool,
+    rng: &mut Rng,
+    t: &mut Tally,
+) {
+    let d1 = sample_separation(rng, scale);
+    let d2 = d1 + scale * rng.log_uniform(1e-6, 1.0);
+    let mut r = [AsperityGwResponse::default(); 2];
+    let mut ok = [false; 2];
+    for (k, d) in [d1, d2].into_iter().enumerate() {
+        let st = eval(d, &mut r[k]);
+        let rust = model.response(d).and_then(|x| Ok((x, model.stiffness(d)?)));
+        if st == ASPERITY_OK {
+            assert!(gw_finite(&r[k]), "{model:?} d={d:e}: {:?}", r[k]);
+            let (x, s) = rust.unwrap();
+            assert_eq!(
+                gw_bits(&r[k]),
+                gw_bits(&AsperityGwResponse {
+                    load: x.load,
+                    area: x.area,
+                    contacts: x.contacts,
+                    stiffness: s
+                })
+            );
+            ok[k] = true;
+        } else {
+            let m = last_message();
+            t.error(&m);
+            assert_eq!(m, rust.unwrap_err().to_string());
+            assert!(m.contains("`separation`"), "{model:?} d={d:e}: {m}");
+            assert!(
+                !d.is_finite() || !typical || d.abs() > 1e6 * scale,
+                "{model:?}: typical separation {d:e} refused: {m}"
+            );
+        }
+    }
+    if ok[0] && ok[1] && d2 > d1 {
+        let (a, b) = (&r[0], &r[1]);
+        for (x, y, what) in [
+            (a.load, b.load, "load"),
+            (a.area, b.area, "area"),
+            (a.contacts, b.contacts, "contacts"),
+            (a.stiffness, b.stiffness, "stiffness"),
+        ] {
+            assert!(
+                y <= x * (1.0 + 1e-12),
+                "{model:?}: {what} grows with the separation: {x:e} at {d1:e}, {y:e} at {d2:e}"
+            );
+        }
+    }
+    // Inverse: the separation that carries the load at d1.
+    if ok[0] && typical && r[0].load > 1e-300 * scale {
+        let mut s = AsperitySeparation::default();
+        let st = at_load(r[0].load, &mut s);
+        if st == ASPERITY_OK {
+            assert!(
+                s.separation.is_finite() && s.relative_residual <= 1e-9,
+                "{s:?}"
+            );
+            let p = model.load(s.separation).unwrap();
+            assert!(
+                (p / r[0].load - 1.0).abs() <= 1e-9,
+                "{model:?}: P({:e}) = {p:e}, wanted {:e}",
+                s.separation,
+                r[0].load
+            );
+        } else {
+            let m = last_message();
+            t.error(&m);
+            assert!(m.contains("`load`"), "{m}");
+            assert!(
+                d1.abs() > 100.0 * scale,
+                "separation at load {:e} (d = {d1:e}) refused: {m}",
+                r[0].load
+            );
+        }
+    }
+    // Batch with one bad element.
+    if typical && rng.f() < 0.02 {
+        let n = 8;
+        let j = (rng.u64() % n as u64) as usize;
+        let mut sep: Vec<f64> = (0..n).map(|_| scale * rng.uniform(-4.0, 4.0)).collect();
+        sep[j] = rng.pick(&[f64::NAN, f64::INFINITY, f64::NEG_INFINITY]);
+        let sentinel = -7.25;
+        let mut load = vec![sentinel; n];
+        let mut area = vec![sentinel; n];
+        let st = batch(&sep, &mut load, &mut area);
+        assert_eq!(st, ASPERITY_ERR_INVALID_ARGUMENT);
+        let m = last_message();
+        assert!(
+            m.starts_with(&format!("element {j}: ")) && m.contains("`separation`"),
+            "{m}"
+        );
+        for i in 0..n {
+            if i < j {
+                let x = model.response(sep[i]).unwrap();
+                assert_eq!((load[i], area[i]), (x.load, x.area), "element {i} < {j}");
+            } else {
+                assert_eq!(
+                    (load[i], area[i]),
+                    (sentinel, sentinel),
+                    "element {i} ≥ {j}"
+                );
+            }
+        }
+    }
+}
+
+fn sweep_gw(n: usize, seed: u64) -> Tally {
+    let mut rng = Rng::new(seed);
+    let mut t = Tally::default();
+    let args = [SUMMITS, SUMMIT_RADIUS, SIGMA, E_STAR];
+    for _ in 0..n {
+        t.points += 1;
+        let dist = if rng.f() < 0.01 {
+            rng.pick(&[0, 3, -1])
+        } else {
+            rng.pick(&[ASPERITY_HEIGHTS_GAUSSIAN, ASPERITY_HEIGHTS_EXPONENTIAL])
+        };
+        let v: Vec<f64> = args.iter().map(|a| sample(&mut rng, a)).collect();
+        let gw = AsperityGwParams {
+            distribution: dist,
+            reserved: 0,
+            summit_count: v[0],
+            radius: v[1],
+            sigma: v[2],
+            e_star: v[3],
+        };
+        let bad: Vec<&Arg> = args
+            .iter()
+            .zip(&v)
+            .filter(|(a, x)| !a.dom.contains(**x))
+            .map(|(a, _)| a)
+            .collect();
+        let typical = args.iter().zip(&v).all(|(a, x)| typical(a, *x));
+        let model = match gw.to_model() {
+            Ok(m) => m,
+            Err(e) => {
+                // Every C call refuses the parameters with the same message.
+                let mut r = AsperityGwResponse::default();
+                let st = unsafe { asperity_gw_eval(&gw, 0.0, &mut r) };
+                assert_eq!(st, ASPERITY_ERR_INVALID_ARGUMENT);
+                let m = last_message();
+                assert_eq!(m, e.to_string());
+                t.error(&m);
+                assert!(
+                    names_one_of(&m, &bad) || m.contains("`gw.distribution`"),
+                    "{gw:?}: {m}"
+                );
+                continue;
+            }
+        };
+        assert!(bad.is_empty(), "{gw:?} accepted");
+        t.ok += 1;
+        gw_check(
+            &|d, r| unsafe { asperity_gw_eval(&gw, d, r) },
+            &|p, s| unsafe { asperity_gw_separation_at_load(&gw, p, s) },
+            &|s, l, a| unsafe {
+                asperity_gw_eval_batch(
+                    &gw,
+                    s.len(),
+                    s.as_ptr(),
+                    l.as_mut_ptr(),
+                    a.as_mut_ptr(),
+                    null_mut(),
+                    null_mut(),
+                )
+            },
+            &model,
+            v[2],
+            typical,
+            &mut rng,
+            &mut t,
+        );
+    }
+    t
+}
+
+/// An empirical surface (300 summits, heights Gaussian-ish, radii
+/// log-uniform) built once, swept over separations.
+fn sweep_gw_empirical(n: usize, seed: u64) -> Tally {
+    let mut rng = Rng::new(seed);
+    let mut t = Tally::default();
+    let heights: Vec<f64> = (0..300)
+        .map(|_| 1e-7 * (rng.f() + rng.f() + rng.f() - 1.5))
+        .collect();
+    let radii: Vec<f64> = (0..300).map(|_| rng.log_uniform(1e-6, 1e-4)).collect();
+    let mut h = null_mut();
+    assert_eq!(
+        unsafe {
+            asperity_gw_empirical_new(
+                1e6,
+                1e-5,
+                1e11,
+                300,
+                heights.as_ptr(),
+                radii.as_ptr(),
+                &mut h,
+            )
+        },
+        ASPERITY_OK
+    );
+    let model = asperity::statistics::GreenwoodWilliamson::new(
+        1e6,
+        1e-5,
+        1e11,
+        asperity::statistics::HeightDistribution::Empirical(
+            asperity::statistics::EmpiricalHeights::with_radii(heights, radii).unwrap(),
+        ),
+    )
+    .unwrap();
+    let hc = h as usize;
+    for _ in 0..n {
+        t.points += 1;
+        t.ok += 1;
+        let h = hc as *const AsperityGwEmpirical;
+        gw_check(
+            &|d, r| unsafe { asperity_gw_empirical_eval(h, d, r) },
+            &|p, s| unsafe { asperity_gw_empirical_separation_at_load(h, p, s) },
+            &|s, l, a| unsafe {
+                asperity_gw_empirical_eval_batch(
+                    h,
+                    s.len(),
+                    s.as_ptr(),
+                    l.as_mut_ptr(),
+                    a.as_mut_ptr(),
+                    null_mut(),
+                    null_mut(),
+                )
+            },
+            &model,
+            5e-8,
+            true,
+            &mut rng,
+            &mut t,
+        );
+    }
+    unsafe { asperity_gw_empirical_free(h) };
+    t
+}
+
+fn sweep_statistics(n: usize) {
+    let (a, b) = std::thread::scope(|s| {
+        let a = s.spawn(|| sweep_gw(n, 0x5EED_0003));
+        let b = s.spawn(|| sweep_gw_empirical(n / 10, 0x5EED_0004));
+        (a.join().unwrap(), b.join().unwrap())
+    });
+    a.print("Greenwood–Williamson (Gaussian, exponential)");
+    b.print("Greenwood–Williamson (300 listed summits)");
+}
+
+#[test]
+fn statistics_quick() {
+    sweep_statistics(QUICK);
+}
+
+#[test]
+#[ignore = "10⁶ points: run in release (.ci/run)"]
+fn statistics_full() {
+    sweep_statistics(FULL);
+}
+
+// ------------------------------------------- homogenised friction
+
+#[allow(dead_code)]
+mod common;
+
+use asperity::ffi::homogenised::*;
+use asperity::friction::{FrictionIncrement, FrictionPointState, FrictionResponse};
+
+const NORMAL_FORCE: Arg = arg(&["normal_force"], Dom::NonNeg, 1e-3, 1e3);
+const AREA: Arg = arg(&["area"], Dom::Pos, 1e-8, 1e-4);
+const SLIP: Arg = arg(&["slip"], Dom::Finite, 1e-10, 1e-4);
+const DT: Arg = arg(&["dt"], Dom::NonNeg, 1e-6, 1.0);
+const STICK: Arg = arg(&["stick_stiffness"], Dom::NonNeg, 1e5, 1e12);
+
+/// The bytes of a plain `repr(C)` value without padding (the friction state
+/// and response), for bit-for-bit comparison.
+fn raw<T: Copy>(x: &T) -> &[u8] {
+    unsafe { std::slice::from_raw_parts((x as *const T).cast::<u8>(), size_of::<T>()) }
+}
+
+fn friction_response_finite(r: &FrictionResponse) -> bool {
+    let d = &r.dissipation;
+    [
+        r.force[0],
+        r.force[1],
+        r.force_magnitude,
+        r.normal_force,
+        r.cof,
+        r.slip_limit,
+        r.adhesion,
+        r.true_contact_area,
+        r.plastic_slip[0],
+        r.plastic_slip[1],
+        r.dissipated,
+        d.chemical,
+        d.van_der_waals,
+        d.elastic,
+        d.plastic,
+        r.dforce_dnormal[0],
+        r.dforce_dnormal[1],
+        r.dforce_dslip[0][0],
+        r.dforce_dslip[0][1],
+        r.dforce_dslip[1][0],
+        r.dforce_dslip[1][1],
+    ]
+    .iter()
+    .all(|x| x.is_finite())
+}
+
+fn state_finite(s: &FrictionPointState) -> bool {
+    let d = &s.dissipation;
+    [
+        s.force[0],
+        s.force[1],
+        s.slip_path,
+        d.chemical,
+        d.van_der_waals,
+        d.elastic,
+        d.plastic,
+    ]
+    .iter()
+    .all(|x| x.is_finite())
+}
+
+/// A state and response full of sentinels, to see what a failing call wrote.
+fn friction_sentinels() -> (FrictionPointState, FrictionResponse) {
+    let s = FrictionPointState {
+        force: [-3.5, -3.5],
+        slip_path: -3.5,
+        steps: 77,
+        ..FrictionPointState::default()
+    };
+    let r = FrictionResponse {
+        force: [-3.5, -3.5],
+        cof: -3.5,
+        dissipated: -3.5,
+        regime: 9,
+        ..FrictionResponse::default()
+    };
+    (s, r)
+}
+
+fn sweep_homogenised(n: usize, seed: u64) -> Tally {
+    let law = common::native::fe_strip_law();
+    let samples = law.samples().to_vec();
+    let mut h = null_mut();
+    assert_eq!(
+        unsafe { asperity_homogenised_friction_new(samples.as_ptr(), samples.len(), &mut h) },
+        ASPERITY_OK
+    );
+    let mut rng = Rng::new(seed);
+    let mut t = Tally::default();
+    let mut last = FrictionPointState::default();
+    let mut last_typical = true;
+    for _ in 0..n {
+        t.points += 1;
+        let slip_x = sample(&mut rng, &SLIP);
+        let slip_y = if rng.f() < 0.5 {
+            0.0
+        } else {
+            sample(&mut rng, &SLIP)
+        };
+        let inc = FrictionIncrement {
+            normal_force: sample(&mut rng, &NORMAL_FORCE),
+            area: sample(&mut rng, &AREA),
+            slip: [slip_x, slip_y],
+            dt: sample(&mut rng, &DT),
+            stick_stiffness: if rng.f() < 0.2 {
+                0.0
+            } else {
+                sample(&mut rng, &STICK)
+            },
+        };
+        let u_old = rng.f();
+        let old_typical = u_old < 0.4 || (u_old < 0.95 && last_typical);
+        let old = match u_old {
+            u if u < 0.4 => FrictionPointState::default(),
+            u if u < 0.95 => last,
+            _ => {
+                let fx = sample(&mut rng, &arg(&["old.force"], Dom::Finite, 1e-6, 1e3));
+                let path = sample(&mut rng, &arg(&["old.slip_path"], Dom::NonNeg, 1e-9, 1.0));
+                FrictionPointState {
+                    force: [fx, 0.0],
+                    slip_path: path,
+                    ..FrictionPointState::default()
+                }
+            }
+        };
+        let vals = [
+            (NORMAL_FORCE, inc.normal_force),
+            (AREA, inc.area),
+            (SLIP, slip_x),
+            (SLIP, slip_y),
+            (DT, inc.dt),
+            (STICK, inc.stick_stiffness),
+        ];
+        let bad: Vec<&Arg> = vals
+            .iter()
+            .filter(|(a, x)| !a.dom.contains(*x))
+            .map(|(a, _)| a)
+            .collect();
+        let typical_inc = old_typical
+            && vals
+                .iter()
+                .all(|(a, x)| typical(a, *x) || (*x == 0.0 && a.dom.contains(0.0)));
+        let (mut s, mut r) = friction_sentinels();
+        let st = unsafe { asperity_homogenised_friction_step(h, &inc, &old, &mut s, &mut r) };
+        let rust = law.step_value(&old, &inc);
+        if st == ASPERITY_OK {
+            assert!(bad.is_empty(), "{inc:?}: accepted");
+            t.ok += 1;
+            let (rs, rr) = rust.unwrap();
+            assert!(raw(&s) == raw(&rs) && raw(&r) == raw(&rr), "{s:?} {r:?}");
+            assert!(
+                friction_response_finite(&r) && state_finite(&s),
+                "{inc:?} {old:?}: {r:?}"
+            );
+            assert!(r.dissipated >= 0.0, "{inc:?}: ΔD = {:e}", r.dissipated);
+            let d = &r.dissipation;
+            assert!(
+                d.chemical >= 0.0 && d.van_der_waals >= 0.0 && d.elastic >= 0.0 && d.plastic >= 0.0
+            );
+            // |F| ≤ F_lim = μ(N + A) (Derjaguin form, thesis (4-3)).
+            let fm = r.force[0].hypot(r.force[1]);
+            // (+ a few units of the subnormal spacing: F_lim = 5e-318 N has
+            // five significant digits.)
+            assert!(
+                fm <= r.slip_limit * (1.0 + 4.0 * f64::EPSILON) + 8.0 * 5e-324,
+                "{inc:?}: |F| = {fm:e} > F_lim = {:e}",
+                r.slip_limit
+            );
+            let want = r.cof * (r.normal_force + r.adhesion);
+            assert!(
+                (r.slip_limit - want).abs() <= 4.0 * f64::EPSILON * want + 8.0 * 5e-324,
+                "{:e} vs μ(N + A) = {want:e}",
+                r.slip_limit
+            );
+            last = s;
+            last_typical = typical_inc;
+        } else {
+            let m = last_message();
+            t.error(&m);
+            assert_eq!(m, rust.unwrap_err().to_string());
+            let (s0, r0) = friction_sentinels();
+            assert!(
+                raw(&s) == raw(&s0) && raw(&r) == raw(&r0),
+                "written on failure"
+            );
+            if !bad.is_empty() {
+                assert_eq!(st, ASPERITY_ERR_INVALID_ARGUMENT, "{m}");
+                assert!(names_one_of(&m, &bad), "{inc:?}: {m}");
+            } else {
+                assert!(
+                    m.contains("`old.") || m.contains("`normal_force`") || m.contains("`slip`"),
+                    "{inc:?} {old:?}: {m}"
+                );
+                assert!(
+                    !typical_inc || m.contains("`old."),
+                    "{inc:?} {old:?}: typical increment refused: {m}"
+                );
+            }
+            last = FrictionPointState::default();
+            last_typical = true;
+        }
+
+        // The block: one bad element j; elements before j written (equal to
+        // single steps), from j on untouched, the message names j.
+        if rng.f() < 0.01 {
+            let nb = 8;
+            let j = (rng.u64() % nb as u64) as usize;
+            let k = rng.pick(&[0.0, 1e9]);
+            let mut nf: Vec<f64> = (0..nb).map(|_| rng.log_uniform(1e-2, 1e2)).collect();
+            let mut ar = vec![1e-6; nb];
+            let sl: Vec<f64> = (0..2 * nb).map(|_| rng.uniform(-1e-6, 1e-6)).collect();
+            if rng.f() < 0.5 {
+                nf[j] = rng.pick(&[f64::NAN, -1.0, f64::INFINITY]);
+            } else {
+                ar[j] = rng.pick(&[0.0, -1e-6, f64::NAN]);
+            }
+            let (s0, _) = friction_sentinels();
+            let mut ns = vec![s0; nb];
+            let mut tf = vec![-3.5; 2 * nb];
+            let mut dis = vec![-3.5; nb];
+            let st = unsafe {
+                asperity_homogenised_friction_step_block(
+                    h,
+                    nb,
+                    nf.as_ptr(),
+                    ar.as_ptr(),
+                    sl.as_ptr(),
+                    1e-3,
+                    k,
+                    core::ptr::null(),
+                    ns.as_mut_ptr(),
+                    tf.as_mut_ptr(),
+                    dis.as_mut_ptr(),
+                )
+            };
+            assert_eq!(st, ASPERITY_ERR_INVALID_ARGUMENT);
+            let m = last_message();
+            assert!(m.starts_with(&format!("element {j}: ")), "{m}");
+            for i in 0..nb {
+                if i < j {
+                    let inc = FrictionIncrement {
+                        normal_force: nf[i],
+                        area: ar[i],
+                        slip: [sl[2 * i], sl[2 * i + 1]],
+                        dt: 1e-3,
+                        stick_stiffness: k,
+                    };
+                    let (ws, wr) = law
+                        .step_value(&FrictionPointState::default(), &inc)
+                        .unwrap();
+                    assert_eq!(format!("{:?}", ns[i]), format!("{ws:?}"));
+                    assert_eq!(
+                        (tf[2 * i], tf[2 * i + 1], dis[i]),
+                        (wr.force[0], wr.force[1], wr.dissipated)
+                    );
+                } else {
+                    assert_eq!(
+                        format!("{:?}", ns[i]),
+                        format!("{s0:?}"),
+                        "element {i} ≥ {j}"
+                    );
+                    assert_eq!((tf[2 * i], tf[2 * i + 1], dis[i]), (-3.5, -3.5, -3.5));
+                }
+            }
+        }
+    }
+    unsafe { asperity_homogenised_friction_free(h) };
+    t
+}
+
+#[test]
+fn homogenised_quick() {
+    sweep_homogenised(QUICK, 0x5EED_0005).print("homogenised friction step");
+}
+
+#[test]
+#[ignore = "10⁶ increments: run in release (.ci/run)"]
+fn homogenised_full() {
+    sweep_homogenised(FULL, 0x5EED_0005).print("homogenised friction step");
+}
+
+// ------------------------------------------- tabulated Maugis–Dugdale
+
+use asperity::contact::{Control, TabulatedLaw};
+use asperity::ffi::tabulated::*;
+
+/// Tables of Maugis–Dugdale spheres (R = 1 µm, E* = 100 GPa, w = 0.5 J/m²)
+/// at Maugis parameters 0.05 (DMT-like) … 10 (JKR-like), built once through
+/// the C ABI and once through Rust, swept over overlaps (with the history
+/// carried from point to point, and fresh), loads and batches.
+fn sweep_tabulated(n: usize, seed: u64) -> Tally {
+    let mut rng = Rng::new(seed);
+    let mut t = Tally::default();
+    let tol = 1e-4;
+    let tables: Vec<(MaugisDugdale, TabulatedLaw, usize)> = [0.05, 0.5, 2.0, 10.0]
+        .iter()
+        .map(|&lam| {
+            let md = MaugisDugdale::from_maugis_parameter(1e-6, 1e11, 0.5, lam).unwrap();
+            let mut h = null_mut();
+            let st = unsafe {
+                asperity_table_new_maugis_dugdale(
+                    md.radius,
+                    md.e_star,
+                    md.work_of_adhesion,
+                    md.cohesive_stress,
+                    tol,
+                    &mut h,
+                )
+            };
+            assert_eq!(st, ASPERITY_OK, "{}", last_message());
+            let rust = TabulatedLaw::from_maugis_dugdale(&md, tol).unwrap();
+            (md, rust, h as usize)
+        })
+        .collect();
+    let mut states = vec![ContactState::default(); tables.len()];
+    for _ in 0..n {
+        t.points += 1;
+        let k = (rng.u64() % tables.len() as u64) as usize;
+        let (md, law, hc) = &tables[k];
+        let h = *hc as *const AsperityTable;
+        let l = law.length_scale();
+        let fresh = rng.f() < 0.3;
+        let old = if fresh {
+            ContactState::default()
+        } else {
+            states[k]
+        };
+        // Mostly within a few length scales (crossing the jumps with the
+        // history carried over); sometimes anywhere.
+        let delta = if !fresh && rng.f() < 0.7 {
+            l * rng.uniform(-3.0, 5.0)
+        } else {
+            sample_delta(&mut rng, l)
+        };
+        let mut r = NormalResponse::default();
+        let mut s = ContactState::default();
+        let st = unsafe { asperity_table_eval(h, delta, &old, &mut s, &mut r) };
+        let rust = law.eval(delta, &old);
+        if st == ASPERITY_OK {
+            t.ok += 1;
+            let (rr, rs) = rust.unwrap();
+            assert_eq!(bits(&r), bits(&rr));
+            assert_eq!(s, rs);
+            assert!(
+                finite_response(&r) && finite_state(&s),
+                "λ#{k} δ={delta:e}: {r:?}"
+            );
+            // Against the closed-form law from the same history: the
+            // documented error measure, within the tolerance (×2 for the
+            // rounding of the measure itself), where both are on the same
+            // branch and inside 10³ length scales.
+            if let Ok((ex, _)) = md.eval(delta, &old) {
+                if ex.in_contact == r.in_contact && delta.abs() <= 1e3 * l {
+                    let e = law.relative_error(&ex, &r);
+                    assert!(
+                        e <= 2.0 * tol,
+                        "λ#{k} δ={delta:e} (L = {l:e}) {old:?}: table error {e:e}: {r:?} vs {ex:?}"
+                    );
+                }
+            }
+            // Monotone on the branch: a larger overlap from the new state,
+            // same branch, compressive ⇒ larger force.
+            let d2 = delta + l * rng.log_uniform(1e-6, 1.0);
+            if let Ok((r2, s2)) = law.eval(d2, &s) {
+                if s2.branch == s.branch && r.force >= 0.0 && delta.abs() <= 1e3 * l {
+                    assert!(
+                        r2.force >= r.force * (1.0 - 1e-12),
+                        "λ#{k}: F({d2:e}) = {:e} < F({delta:e}) = {:e}",
+                        r2.force,
+                        r.force
+                    );
+                }
+            }
+            states[k] = s;
+        } else {
+            let m = last_message();
+            t.error(&m);
+            assert_eq!(m, rust.unwrap_err().to_string());
+            assert!(m.contains("`delta`"), "{m}");
+            assert!(
+                !delta.is_finite() || delta.abs() > 1e6 * l,
+                "λ#{k} δ={delta:e} (L = {l:e}) refused: {m}"
+            );
+            states[k] = ContactState::default();
+        }
+
+        // Load control.
+        let po = law.pull_off_force(Control::Load).unwrap();
+        let p = match rng.f() {
+            u if u < 0.01 => f64::NAN,
+            u if u < 0.03 => po * (1.0 + rng.uniform(-1e-6, 1e-6)),
+            u if u < 0.05 => rng.log_uniform(1e-300, 1e300) * rng.pick(&[-1.0, 1.0]),
+            _ => -po * rng.log_uniform(1e-6, 1e6) * rng.pick(&[-1.0, 1.0, 1.0]),
+        };
+        let mut ra = NormalResponse::default();
+        let st = unsafe { asperity_table_eval_at_load(h, p, &mut ra) };
+        if st == ASPERITY_OK {
+            assert!(
+                finite_response(&ra) && p >= po * (1.0 + 1e-9),
+                "P={p:e}: {ra:?}"
+            );
+            assert_eq!(bits(&ra), bits(&law.eval_at_load(p).unwrap()));
+        } else {
+            let m = last_message();
+            t.error(&m);
+            assert!(m.contains("`force`"), "P={p:e}: {m}");
+            assert!(
+                !p.is_finite() || p < po * (1.0 - 1e-7) || p.abs() > -po * 1e6,
+                "P={p:e} (pull-off {po:e}) refused: {m}"
+            );
+        }
+
+        // Batch with a bad element j.
+        if rng.f() < 0.01 {
+            let nb = 8;
+            let j = (rng.u64() % nb as u64) as usize;
+            let mut d: Vec<f64> = (0..nb).map(|_| l * rng.uniform(-3.0, 5.0)).collect();
+            d[j] = rng.pick(&[f64::NAN, f64::INFINITY, f64::NEG_INFINITY]);
+            let sentinel = -9.75;
+            let mut f = vec![sentinel; nb];
+            let mut a = vec![sentinel; nb];
+            let mut ns = vec![
+                ContactState {
+                    contact_radius: sentinel,
+                    ..ContactState::default()
+                };
+                nb
+            ];
+            let st = unsafe {
+                asperity_table_eval_batch(
+                    h,
+                    nb,
+                    d.as_ptr(),
+                    core::ptr::null(),
+                    ns.as_mut_ptr(),
+                    f.as_mut_ptr(),
+                    a.as_mut_ptr(),
+                    null_mut(),
+                )
+            };
+            assert_eq!(st, ASPERITY_ERR_INVALID_ARGUMENT);
+            let m = last_message();
+            assert!(
+                m.starts_with(&format!("element {j}: ")) && m.contains("`delta`"),
+                "{m}"
+            );
+            for i in 0..nb {
+                if i < j {
+                    let (w, ws) = law.eval(d[i], &ContactState::default()).unwrap();
+                    assert_eq!((f[i], a[i], ns[i]), (w.force, w.contact_radius, ws));
+                } else {
+                    assert_eq!(
+                        (f[i], a[i], ns[i].contact_radius),
+                        (sentinel, sentinel, sentinel)
+                    );
+                }
+            }
+        }
+    }
+    for (_, _, h) in tables {
+        unsafe { asperity_table_free(h as *mut AsperityTable) };
+    }
+    t
+}
+
+#[test]
+fn tabulated_quick() {
+    sweep_tabulated(QUICK, 0x5EED_0006).print("tabulated Maugis–Dugdale");
+}
+
+#[test]
+#[ignore = "10⁶ points: run in release (.ci/run)"]
+fn tabulated_full() {
+    sweep_tabulated(FULL, 0x5EED_0006).print("tabulated Maugis–Dugdale");
 }

@@ -417,12 +417,10 @@ pub unsafe extern "C" fn asperity_law_maugis_dugdale(
     out: *mut AsperityNormalLaw,
 ) -> i32 {
     build(out, || {
-        Ok(NormalLaw::MaugisDugdale(MaugisDugdale::new(
-            radius,
-            e_star,
-            work_of_adhesion,
-            sigma0,
-        )?))
+        // The Rust API calls σ₀ `cohesive_stress`; the C argument is `sigma0`.
+        MaugisDugdale::new(radius, e_star, work_of_adhesion, sigma0)
+            .map(NormalLaw::MaugisDugdale)
+            .map_err(|e| super::renamed(e, "cohesive_stress", "sigma0"))
     })
 }
 
@@ -460,7 +458,15 @@ pub unsafe extern "C" fn asperity_law_derjaguin(
                 })
             }
         };
-        Ok(NormalLaw::Derjaguin(Derjaguin::new(radius, law)?))
+        // The Rust API names the second parameter by its meaning; the C
+        // argument is `parameter`.
+        Derjaguin::new(radius, law)
+            .map(NormalLaw::Derjaguin)
+            .map_err(|e| {
+                let e = super::renamed(e, "equilibrium_separation", "parameter");
+                let e = super::renamed(e, "cohesive_stress", "parameter");
+                super::renamed(e, "decay_length", "parameter")
+            })
     })
 }
 
@@ -556,8 +562,8 @@ pub(crate) unsafe fn eval_one<L: NormalContact>(
 /// `new_state[i]`, writing `force[i]` (N), `contact_radius[i]` (m) and
 /// `stiffness[i]` (N/m). `delta` and `force` are required; the other arrays may
 /// be NULL (fresh states / not wanted). Input and output arrays may be the same
-/// memory. On an error at element i, elements before i are written, the status
-/// is returned and the message names i.
+/// memory. On an error at element i, elements before i are written, those from
+/// i on are untouched, the status is returned and the message names i.
 #[no_mangle]
 pub unsafe extern "C" fn asperity_normal_eval_batch(
     law: *const AsperityNormalLaw,

@@ -168,8 +168,8 @@ pub unsafe extern "C" fn asperity_homogenised_friction_step(
 /// `dissipation[i]` (J). `normal_forces`, `areas`, `slip_increments` and
 /// `tangential_forces` are required; `old_state` may be NULL (all fresh),
 /// `new_state` and `dissipation` may be NULL (not wanted); `old_state` may
-/// equal `new_state`. On an error at element i, elements before i are written
-/// and the message names i.
+/// equal `new_state`. On an error at element i, elements before i are written,
+/// those from i on are untouched, and the message names i.
 #[no_mangle]
 pub unsafe extern "C" fn asperity_homogenised_friction_step_block(
     friction: *const AsperityHomogenisedFriction,

@@ -426,6 +426,24 @@ pub extern "C" fn asperity_indentation_flag_name(bit: u32) -> *const c_char {
 // ---------------------------------------------------------------------------
 // Rescaling
 
+/// The C names of the Rust API's `known.*` in a rescaling error.
+fn known_names(e: Error) -> Error {
+    let e = super::renamed(e, "known.load", "known_load");
+    let e = super::renamed(e, "known.depth", "known_depth");
+    super::renamed(e, "known.radius", "known_radius")
+}
+
+/// `KnownSolution::new`, its errors naming the C arguments `known_load`,
+/// `known_depth`, `known_radius` (the Rust fields are `load`, `depth`,
+/// `radius`, which are other arguments of the C calls).
+fn known(load: f64, depth: f64, radius: f64) -> Result<KnownSolution> {
+    KnownSolution::new(load, depth, radius).map_err(|e| {
+        let e = super::renamed(e, "load", "known_load");
+        let e = super::renamed(e, "depth", "known_depth");
+        super::renamed(e, "radius", "known_radius")
+    })
+}
+
 /// Depth (m) at load `load` (N) by Borodich rescaling (3-13):
 /// `δ = λ^{(2−κ)/s} (P/P₁)^{d/s} δ₁`, `s = 2 + κ(d − 1)`, from the known point
 /// (P₁, δ₁); λ = B/B₁ (spheres R₁/R, cones tan γ₁/tan γ).
@@ -441,8 +459,10 @@ pub unsafe extern "C" fn asperity_rescaling_depth(
 ) -> i32 {
     guard(|| {
         let out = output(depth, "depth")?;
-        let k = KnownSolution::new(known_load, known_depth, 1.0)?;
-        *out = Rescaling::new(kappa, d)?.depth(lambda, load, &k)?;
+        let k = known(known_load, known_depth, 1.0)?;
+        *out = Rescaling::new(kappa, d)?
+            .depth(lambda, load, &k)
+            .map_err(known_names)?;
         Ok(())
     })
 }
@@ -461,8 +481,10 @@ pub unsafe extern "C" fn asperity_rescaling_radius(
 ) -> i32 {
     guard(|| {
         let out = output(radius, "radius")?;
-        let k = KnownSolution::new(known_load, 1.0, known_radius)?;
-        *out = Rescaling::new(kappa, d)?.radius(lambda, load, &k)?;
+        let k = known(known_load, 1.0, known_radius)?;
+        *out = Rescaling::new(kappa, d)?
+            .radius(lambda, load, &k)
+            .map_err(known_names)?;
         Ok(())
     })
 }
@@ -481,8 +503,10 @@ pub unsafe extern "C" fn asperity_rescaling_load(
 ) -> i32 {
     guard(|| {
         let out = output(load, "load")?;
-        let k = KnownSolution::new(known_load, known_depth, 1.0)?;
-        *out = Rescaling::new(kappa, d)?.load(lambda, depth, &k)?;
+        let k = known(known_load, known_depth, 1.0)?;
+        *out = Rescaling::new(kappa, d)?
+            .load(lambda, depth, &k)
+            .map_err(known_names)?;
         Ok(())
     })
 }

@@ -88,6 +88,25 @@ fn fail(f: &Failure) -> i32 {
     status_of(&f.error)
 }
 
+/// The error `e` with the argument name `from` (the Rust API's) replaced by
+/// `to` (the C argument's), so a C message names the argument as the C
+/// prototype spells it. Other errors pass through unchanged.
+#[cold]
+pub(crate) fn renamed(mut e: Error, from: &'static str, to: &'static str) -> Error {
+    match &mut e {
+        Error::InvalidArgument { name, .. }
+        | Error::OutOfDomain { name, .. }
+        | Error::NullPointer { name }
+        | Error::UnknownSelector { name, .. }
+            if *name == from =>
+        {
+            *name = to;
+        }
+        _ => {}
+    }
+    e
+}
+
 /// Borrow a required input pointer.
 #[inline]
 pub(crate) unsafe fn input<'a, T>(p: *const T, name: &'static str) -> Result<&'a T> {

@@ -274,7 +274,8 @@ pub unsafe extern "C" fn asperity_gw_eval(
 /// `load[i]` (N) and, where the array is not NULL, `area[i]` (m²),
 /// `contacts[i]` and `stiffness[i]` (N/m). `separation` and `load` are
 /// required (unless n = 0); inputs and outputs may be the same memory. On an
-/// error at element i, elements before i are written and the message names i.
+/// error at element i, elements before i are written, those from i on are
+/// untouched, and the message names i.
 #[no_mangle]
 pub unsafe extern "C" fn asperity_gw_eval_batch(
     gw: *const AsperityGwParams,

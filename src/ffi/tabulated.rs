@@ -45,7 +45,8 @@ pub unsafe extern "C" fn asperity_table_new_maugis_dugdale(
     out: *mut *mut AsperityTable,
 ) -> i32 {
     emit(out, || {
-        let md = MaugisDugdale::new(radius, e_star, work_of_adhesion, sigma0)?;
+        let md = MaugisDugdale::new(radius, e_star, work_of_adhesion, sigma0)
+            .map_err(|e| super::renamed(e, "cohesive_stress", "sigma0"))?;
         TabulatedLaw::from_maugis_dugdale(&md, tolerance)
     })
 }
@@ -109,7 +110,8 @@ pub unsafe extern "C" fn asperity_table_eval(
 /// `delta[i]` (m), `old_state[i]` → `new_state[i]`, `force[i]` (N),
 /// `contact_radius[i]` (m), `stiffness[i]` (N/m). `delta` and `force` are
 /// required, the others may be NULL; inputs and outputs may alias. On an
-/// error at element i, elements before i are written and the message names i.
+/// error at element i, elements before i are written, those from i on are
+/// untouched, and the message names i.
 #[no_mangle]
 pub unsafe extern "C" fn asperity_table_eval_batch(
     table: *const AsperityTable,

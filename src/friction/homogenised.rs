@@ -436,6 +436,21 @@ fn constant_point(s: &HomogenisedSample) -> Point {
 }
 
 #[cold]
+/// `√(x² + y²)`, by `hypot` when the squares are subnormal (|(x, y)| below
+/// 1e-150): there the plain sum loses bits and a unit direction x/|(x, y)|
+/// came out above 1 (|F| > F_lim by 1e-10 at a slip of 8e-158 m, found by
+/// tests/sweeps.rs). Above, the plain form (and its overflow to ∞, which the
+/// step reports) is kept.
+#[inline(always)]
+fn norm2(x: f64, y: f64) -> f64 {
+    let n = (x * x + y * y).sqrt();
+    if n < 1e-150 {
+        x.hypot(y)
+    } else {
+        n
+    }
+}
+
 fn overflow(name: &'static str, value: f64) -> Error {
     Error::OutOfDomain {
         name,
@@ -627,7 +642,9 @@ impl HomogenisedFriction {
     /// and ≥ 0; `area` not finite and > 0; `slip` not finite; `dt` not
     /// finite and ≥ 0; `stick_stiffness` not finite and ≥ 0; an invalid `old`
     /// state ([`FrictionPointState::validate`]); OutOfDomain (`normal_force`
-    /// or `slip`) when the force overflows f64.
+    /// or `slip`) when the force, the dissipation or the consistent tangent
+    /// (`F_lim/|Δs|` for k = 0, e.g. N = 1.8e308 N with Δs = 4e-9 m)
+    /// overflows f64.
     #[inline]
     pub fn step(
         &self,
@@ -700,7 +717,7 @@ impl HomogenisedFriction {
         if k > 0.0 {
             let tx = old.force[0] - k * dsx;
             let ty = old.force[1] - k * dsy;
-            let tn = (tx * tx + ty * ty).sqrt();
+            let tn = norm2(tx, ty);
             if !tn.is_finite() {
                 return Err(overflow("slip", dsx.abs().max(dsy.abs())));
             }
@@ -722,7 +739,7 @@ impl HomogenisedFriction {
                 r.dforce_dnormal = [nx * dlimit, ny * dlimit];
             }
         } else {
-            let sn = (dsx * dsx + dsy * dsy).sqrt();
+            let sn = norm2(dsx, dsy);
             if !sn.is_finite() {
                 return Err(overflow("slip", dsx.abs().max(dsy.abs())));
             }
@@ -742,7 +759,7 @@ impl HomogenisedFriction {
                 // Rigid stick: the old force, capped by the cone (without
                 // slip, so without dissipation).
                 let (tx, ty) = (old.force[0], old.force[1]);
-                let tn = (tx * tx + ty * ty).sqrt();
+                let tn = norm2(tx, ty);
                 r.regime = FrictionRegime::Stick as i32;
                 lambda = 0.0;
                 if tn <= limit {
@@ -758,6 +775,23 @@ impl HomogenisedFriction {
         let dissipated = limit * lambda;
         if !dissipated.is_finite() {
             return Err(overflow("slip", dsx.abs().max(dsy.abs())));
+        }
+        let t = &r.dforce_dslip;
+        if !(t[0][0].is_finite()
+            && t[0][1].is_finite()
+            && t[1][0].is_finite()
+            && t[1][1].is_finite()
+            && r.dforce_dnormal[0].is_finite()
+            && r.dforce_dnormal[1].is_finite())
+        {
+            // F_lim/|Δs| (or k F_lim/|F_tr|) beyond f64: a huge load with a
+            // tiny slip.
+            return Err(Error::OutOfDomain {
+                name: "slip",
+                value: dsx.abs().max(dsy.abs()),
+                reason:
+                    "the consistent tangent dF/dslip overflows f64 (slip too small for this load)",
+            });
         }
         r.force = [fx, fy];
         r.force_magnitude = if r.regime == FrictionRegime::Slip as i32 {

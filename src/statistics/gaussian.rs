@@ -136,8 +136,19 @@ pub(crate) fn half_integer(m: u32, h: f64) -> f64 {
     if h <= NEGATIVE_SERIES_H {
         return negative_series(m as f64 - 0.5, h);
     }
+    if h > POSITIVE_ZERO_H {
+        // Every node of the trapezoidal sum has e^{−w²/2} = 0 (w ≥ h), so
+        // this is the sum's own value; it also keeps h² finite: beyond
+        // h ≈ 1.3e154 the node count of the sum became u32::MAX (a
+        // multi-minute loop, found by tests/sweeps.rs).
+        return 0.0;
+    }
     trapezoid(m, h)
 }
+
+/// Above this h, `e^{−h²/2}` underflows to 0 (e^{−800}) and so does every
+/// half-integer tail moment.
+const POSITIVE_ZERO_H: f64 = 40.0;
 
 /// The trapezoidal sum of [`half_integer`] (any finite h; used for h > −30).
 fn trapezoid(m: u32, h: f64) -> f64 {

@@ -107,9 +107,14 @@ impl GreenwoodWilliamson {
     }
 
     /// Load P (N) at separation `separation` (m, finite), (1-29).
+    ///
+    /// Errors with [`crate::Error::OutOfDomain`] naming `separation` when the
+    /// result overflows `f64` (so do [`Self::area`], [`Self::contacts`],
+    /// [`Self::response`] and [`Self::stiffness`]): a separation or
+    /// parameters near the ends of `f64`, e.g. d = −4e211 m.
     pub fn load(&self, separation: f64) -> Result<f64> {
         let d = check::finite("separation", separation)?;
-        self.load_unchecked(d)
+        overflow(self.load_unchecked(d)?, d)
     }
 
     fn load_unchecked(&self, d: f64) -> Result<f64> {
@@ -129,7 +134,7 @@ impl GreenwoodWilliamson {
     /// Real contact area A (m²) at `separation` (m, finite), (1-30).
     pub fn area(&self, separation: f64) -> Result<f64> {
         let d = check::finite("separation", separation)?;
-        self.area_unchecked(d)
+        overflow(self.area_unchecked(d)?, d)
     }
 
     fn area_unchecked(&self, d: f64) -> Result<f64> {
@@ -146,16 +151,22 @@ impl GreenwoodWilliamson {
     /// `separation` (m, finite).
     pub fn contacts(&self, separation: f64) -> Result<f64> {
         let d = check::finite("separation", separation)?;
-        Ok(self.summit_count * self.heights.tail_moment_unchecked(0.0, d)?)
+        overflow(
+            self.summit_count * self.heights.tail_moment_unchecked(0.0, d)?,
+            d,
+        )
     }
 
     /// Load, real area and number of contacts at `separation` (m, finite).
     pub fn response(&self, separation: f64) -> Result<MultiAsperityResponse> {
         let d = check::finite("separation", separation)?;
         Ok(MultiAsperityResponse {
-            load: self.load_unchecked(d)?,
-            area: self.area_unchecked(d)?,
-            contacts: self.summit_count * self.heights.tail_moment_unchecked(0.0, d)?,
+            load: overflow(self.load_unchecked(d)?, d)?,
+            area: overflow(self.area_unchecked(d)?, d)?,
+            contacts: overflow(
+                self.summit_count * self.heights.tail_moment_unchecked(0.0, d)?,
+                d,
+            )?,
         })
     }
 
@@ -163,7 +174,7 @@ impl GreenwoodWilliamson {
     /// (N/m) at `separation` (m, finite): the derivative of (1-29).
     pub fn stiffness(&self, separation: f64) -> Result<f64> {
         let d = check::finite("separation", separation)?;
-        self.stiffness_unchecked(d)
+        overflow(self.stiffness_unchecked(d)?, d)
     }
 
     fn stiffness_unchecked(&self, d: f64) -> Result<f64> {
@@ -205,4 +216,15 @@ impl GreenwoodWilliamson {
     pub fn plasticity_index(&self, hardness: f64) -> Result<f64> {
         super::plasticity_index(self.e_star, hardness, self.heights.std_dev(), self.radius)
     }
+}
+
+/// `value` when finite, else `OutOfDomain` naming `separation`.
+#[inline]
+fn overflow(value: f64, separation: f64) -> Result<f64> {
+    check::finite_result(
+        value,
+        "separation",
+        separation,
+        "the response overflows f64 at this separation (separation or parameters near the ends of f64)",
+    )
 }

@@ -315,7 +315,12 @@ fn indent(
     let bar = indicatif::ProgressBar::new_spinner();
     bar.set_message(format!("reading {}", file.display()));
     bar.enable_steady_tick(std::time::Duration::from_millis(120));
-    let curve = Curve::read(file)?;
+    // Name the file: "reading the curve: No such file…" alone does not say
+    // which.
+    let curve = Curve::read(file).map_err(|e| {
+        bar.finish_and_clear();
+        format!("{}: {e}", file.display())
+    })?;
     bar.set_message(format!("fitting {} points", curve.len()));
     let options = IndentationOptions {
         indenter: ind,
