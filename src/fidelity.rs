@@ -206,13 +206,20 @@ pub fn assess(
             }
             Fidelity::LennardJones => {
                 // The reference itself; its cost is one Newton solve from a
-                // neighbouring solution.
+                // neighbouring solution, at ᾱ = 0 (in contact). Where the
+                // fixed mesh cannot reach it (μ = 10: the continuation in
+                // the nodal unknowns needs O(μ²) steps, see the `edge`
+                // module of the solver), at the far start gap instead.
                 let solver = lj.solver(grid)?;
-                let mid = solver.solve_at_approach(0.0, None)?;
+                let mid = match solver.solve_at_approach(0.0, None) {
+                    Ok(s) => s,
+                    Err(_) => solver.solve_at_central_gap(6.0 + 4.0 * lj.tabor().sqrt(), None)?,
+                };
                 let t = Instant::now();
                 let mut calls = 0u32;
                 while calls < 3 || t.elapsed().as_secs_f64() < 0.02 {
-                    let _ = solver.solve_at_approach(1e-3 * (calls as f64 + 1.0), Some(&mid))?;
+                    let al = mid.approach + 1e-3 * (calls as f64 + 1.0);
+                    let _ = solver.solve_at_approach(al, Some(&mid))?;
                     calls += 1;
                 }
                 Assessment {

@@ -5,7 +5,7 @@
 //! Cases: μ = 0.1 at N = 64, μ = 1 at N = 96, μ ∈ {0.1, 0.5, 1} at N = 128
 //! with dense comparisons, and μ = 3 at N = 64 through the edge continuation
 //! (`-- --nocapture` prints sizes, errors and build times); about 10 s with
-//! the optimised test profile.
+//! the optimised test profile. μ = 10 at N = 256 is `#[ignore]`d (minutes).
 
 use asperity::contact::curve::EquilibriumCurve;
 use asperity::contact::lj_sphere::{rigid_force_bar, LjSolution, LjSolver, LjSphere};
@@ -223,35 +223,59 @@ fn mu_0_1_0_5_1_at_n128() {
 /// single fixed-grid solve reproduces its path: the table is checked against
 /// every stable point of `LjSolver::curve` (the same discrete model), and
 /// its jump and pull-off points against the curve's.
-fn check_edge_table(mu: f64, n: usize) {
+///
+/// `folds`: the discrete model has small folds near the jump-out (kept as
+/// extra branches), so the table has more than two branches and its
+/// jump-out (the first turn met retracting from deep contact) need not be
+/// the one `LjSolver::curve` reports.
+fn check_edge_table(mu: f64, n: usize, folds: bool) {
     let lj = LjSphere::from_tabor(mu).unwrap();
     let t0 = Instant::now();
     let t = TabulatedLaw::from_lj_sphere(&lj, n, 1e-4).unwrap();
     let build = t0.elapsed();
     assert!(t.measured_error() <= t.tolerance());
-    assert_eq!(t.branch_count(), 2, "μ = {mu}: one hysteresis loop");
+    let nbr = t.branch_count();
+    if folds {
+        assert!(nbr >= 2, "μ = {mu}: {nbr} branches");
+    } else {
+        assert_eq!(nbr, 2, "μ = {mu}: one hysteresis loop");
+    }
     let c = lj.solver(n).unwrap().curve().unwrap();
     let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
     let po = t.pull_off_force(Control::Load).unwrap() / PI;
-    assert!(
-        rel(po, c.pull_off_load.force) < 1e-7,
-        "pull-off {po} vs {:?}",
-        c.pull_off_load
-    );
+    if folds {
+        // The force along the contact branch has several local minima
+        // (lattice trapping of the coarse grid): the table pulls off at the
+        // last one (first met retracting from deep contact), the curve
+        // reports the lowest.
+        assert!(
+            po >= c.pull_off_load.force * (1.0 + 1e-7),
+            "pull-off {po} below the curve's lowest force {:?}",
+            c.pull_off_load
+        );
+    } else {
+        assert!(
+            rel(po, c.pull_off_load.force) < 1e-7,
+            "pull-off {po} vs {:?}",
+            c.pull_off_load
+        );
+    }
     let ji = c.jump_in.unwrap();
     let jo = c.jump_out.unwrap();
     let (_, hi0) = t.branch_range(0).unwrap();
-    let (lo1, _) = t.branch_range(1).unwrap();
+    let (lo1, _) = t.branch_range(nbr - 1).unwrap();
     assert!(
         rel(hi0, ji.approach) < 1e-7,
         "jump-in {hi0} vs {}",
         ji.approach
     );
-    assert!(
-        rel(lo1, jo.approach) < 1e-7,
-        "jump-out {lo1} vs {}",
-        jo.approach
-    );
+    if !folds {
+        assert!(
+            rel(lo1, jo.approach) < 1e-7,
+            "jump-out {lo1} vs {}",
+            jo.approach
+        );
+    }
     // Every stable curve point: the far piece before the jump-in and the
     // contact piece after the jump-out (the curve's points are ordered
     // along the path).
@@ -260,10 +284,13 @@ fn check_edge_table(mu: f64, n: usize) {
         .iter()
         .position(|p| p.approach >= ji.approach)
         .unwrap();
+    // With folds: past the table's own jump-out (the folds before it are
+    // other branches).
+    let jump_out = if folds { lo1 } else { jo.approach };
     let i_out = c
         .points
         .iter()
-        .rposition(|p| p.approach <= jo.approach)
+        .rposition(|p| p.approach <= jump_out)
         .unwrap();
     let mut worst = (0.0f64, f64::NAN);
     let mut count = 0;
@@ -271,7 +298,7 @@ fn check_edge_table(mu: f64, n: usize) {
         let branch = if i < i_in {
             0
         } else if i > i_out && p.force <= 9.0 {
-            1
+            nbr as i32 - 1
         } else {
             continue;
         };
@@ -317,7 +344,17 @@ fn check_edge_table(mu: f64, n: usize) {
 
 #[test]
 fn above_mu_1_the_edge_continuation_is_tabulated() {
-    check_edge_table(3.0, 64);
+    check_edge_table(3.0, 64, false);
+}
+
+/// μ = 10 at N = 256: the jump-out of the edge continuation is a corner of
+/// the family (a mesh node crossing the marker), and the contact radius
+/// jumps in the neck; both used to defeat the sampler. About 2 min in
+/// release (`cargo test --release --test tabulated_lj -- --ignored`).
+#[test]
+#[ignore]
+fn mu_10_at_n256_is_tabulated() {
+    check_edge_table(10.0, 256, true);
 }
 
 #[test]

@@ -42,6 +42,13 @@
 //! ᾱ and the force minimum are refined as extrema in `m` (Brent's method);
 //! the marker grows monotonically along the branch, so an extremum in `m`
 //! is one along the path.
+//!
+//! The family is smooth in `m` only piecewise: the mesh nodes drift slowly
+//! relative to the band, and where one crosses the marker the linear
+//! interpolation of `marker_row` changes cells, which leaves a
+//! corner in `m` (the tabulated laws' sampler differences on one side of
+//! it; see `smooth_side` in the `sample` module). Extrema found by Brent's
+//! method from values are unaffected.
 
 use super::path::{BWork, Con, State};
 use super::*;

@@ -217,15 +217,18 @@ impl LjSolver {
     /// Above μ = 1 the path comes from the edge continuation
     /// (module `edge`): its neck phase (one fixed mesh) is sampled as
     /// above; its edge phase is a family of meshes banded at the marker
-    /// radius `m`, so there the parameter is `m`: derivatives by central
-    /// differences in `m` (step 1e-4·w, each a solve on its own banded
-    /// mesh), special points as roots in `m`, bisection in `m` (in
+    /// radius `m`, so there the parameter is `m`: derivatives by
+    /// second-order differences in `m` (step 1e-4·w, each a solve on its own
+    /// banded mesh; one-sided near the corners of the family, where a mesh
+    /// node crosses the marker, see `smooth_side`), special points as roots
+    /// in `m` (a turning point at a corner is the corner), bisection in `m` (in
     /// `τ = √(m − m_c)` after an onset there), and turning points sought
     /// again between the dense samples (small folds of the discrete model
     /// near the jump-out on coarse grids are kept as extra branches, not
     /// smoothed). The two phases share their junction state, so the path is
-    /// continuous. Each edge-phase point costs three banded solves: a table
-    /// at N = 256 takes about a minute at μ = 3.
+    /// continuous. Each edge-phase point costs three banded solves (five
+    /// where the contact radius jumps): a table at N = 256 takes about
+    /// 2.5 min at μ = 3 and at μ = 10 (release, two shared cores).
     ///
     /// Errors: [`Error::InvalidArgument`] for a tolerance outside
     /// [1e-10, 0.1] or `max_force ≤ 0`; the continuation's errors.
@@ -665,7 +668,7 @@ impl LjSolver {
     }
 }
 
-/// Marker step of the central differences in the edge phase, relative to
+/// Marker step of the differences in the edge phase, relative to
 /// the band half-width `w` (states are converged to ~1e-12: derivatives to
 /// ~1e-8, truncation ~1e-8 w²·(third derivative)).
 const EDGE_DIFF: f64 = 1e-4;
@@ -700,18 +703,92 @@ impl LjSolver {
         }
     }
 
+    /// Index of the cell that holds the marker `m` on the mesh banded at `m`
+    /// (the cell of the marker row's linear interpolation; the mesh alone,
+    /// no solve).
+    fn marker_cell(&self, m: f64, plan: (f64, f64)) -> usize {
+        let o = &self.opts;
+        let x = Mesh::new(
+            self.n(),
+            o.uniform_radius,
+            o.outer_radius,
+            m.max(0.0),
+            plan.0,
+            plan.1,
+        )
+        .x;
+        x.partition_point(|&v| v <= m).clamp(1, x.len() - 1) - 1
+    }
+
+    /// Which side of the marker `m` differences of reach `span` must take
+    /// to stay on one smooth piece of the edge-phase family: 0 (either,
+    /// central differences) when no node crosses the marker within `span`,
+    /// +1 (above `m`) when one crosses below it, −1 when one crosses above.
+    ///
+    /// The nodes of the meshes banded at `m` drift slowly relative to the
+    /// band, so every few cells of travel a node crosses the marker and its
+    /// linear interpolation (the marker row) switches cells: the family of
+    /// solutions is continuous in `m` but has a corner there (at μ = 10,
+    /// N = 256, dᾱ/dm jumps from −0.004 to +0.40 at the jump-out). A
+    /// central difference across a corner averages the two slopes, which
+    /// contradicts the values on both sides: at a corner that is a turning
+    /// point of ᾱ its sign change lies a difference step before the corner,
+    /// while ᾱ keeps moving the other way up to the corner.
+    fn smooth_side(&self, m: f64, span: f64, plan: (f64, f64)) -> f64 {
+        let c = self.marker_cell(m, plan);
+        let below = self.marker_cell(m - span, plan) != c;
+        let above = self.marker_cell(m + span, plan) != c;
+        match (below, above) {
+            (true, false) => 1.0,
+            (false, true) => -1.0,
+            _ => 0.0,
+        }
+    }
+
+    /// (ᾱ, P̄, a) of the edge-phase equilibrium at `m`, from the guess `e`.
+    fn evals(&self, e: &EdgeState, m: f64, plan: (f64, f64), bw: &mut BWork) -> Result<[f64; 3]> {
+        let x = self.edge_solve(m, plan, e.st.y.clone(), e.st.al, e.st.s, bw)?;
+        Ok([x.st.al, x.st.pt.force, x.st.pt.contact_radius])
+    }
+
     /// An edge-phase node: `e` with its derivatives in the marker radius by
-    /// central differences (step [`EDGE_DIFF`]·w).
+    /// second-order differences of step [`EDGE_DIFF`]·w on the smooth piece
+    /// of the family that holds `m` ([`LjSolver::smooth_side`]): central
+    /// away from corners, one-sided near them.
     fn enode(&self, e: EdgeState, kind: Kind, plan: (f64, f64), bw: &mut BWork) -> Result<ENode> {
         let h = EDGE_DIFF * plan.0;
-        let mut v = [[0.0; 3]; 2];
-        for (q, sg) in [1.0, -1.0].into_iter().enumerate() {
-            let x = self.edge_solve(e.m + sg * h, plan, e.st.y.clone(), e.st.al, e.st.s, bw)?;
-            v[q] = [x.st.al, x.st.pt.force, x.st.pt.contact_radius];
-        }
+        let v0 = [e.st.al, e.st.pt.force, e.st.pt.contact_radius];
+        let side = self.smooth_side(e.m, 2.0 * h, plan);
         let mut d = [0.0; 3];
-        for k in 0..3 {
-            d[k] = (v[0][k] - v[1][k]) / (2.0 * h);
+        if side == 0.0 {
+            let vp = self.evals(&e, e.m + h, plan, bw)?;
+            let vm = self.evals(&e, e.m - h, plan, bw)?;
+            for k in 0..3 {
+                d[k] = (vp[k] - vm[k]) / (2.0 * h);
+            }
+            // The contact radius (first root of h̄ = 1) jumps where a dip of
+            // the gap beyond it reaches h̄ = 1 (at μ = 10 from 0.12 to 0.25
+            // in the neck). Its one-sided differences then disagree far
+            // beyond the curvature term: take the side whose three points
+            // agree, as for a corner.
+            let (dl, dr) = (v0[2] - vm[2], vp[2] - v0[2]);
+            if (dr - dl).abs() > 0.5 * dl.abs().max(dr.abs()) + 1e-9 * h {
+                let vm2 = self.evals(&e, e.m - 2.0 * h, plan, bw)?;
+                let vp2 = self.evals(&e, e.m + 2.0 * h, plan, bw)?;
+                let cl = (v0[2] - 2.0 * vm[2] + vm2[2]).abs();
+                let cr = (v0[2] - 2.0 * vp[2] + vp2[2]).abs();
+                d[2] = if cr <= cl {
+                    (-3.0 * v0[2] + 4.0 * vp[2] - vp2[2]) / (2.0 * h)
+                } else {
+                    (3.0 * v0[2] - 4.0 * vm[2] + vm2[2]) / (2.0 * h)
+                };
+            }
+        } else {
+            let v1 = self.evals(&e, e.m + side * h, plan, bw)?;
+            let v2 = self.evals(&e, e.m + side * 2.0 * h, plan, bw)?;
+            for k in 0..3 {
+                d[k] = side * (-3.0 * v0[k] + 4.0 * v1[k] - v2[k]) / (2.0 * h);
+            }
         }
         if e.st.pt.contact_radius == 0.0 {
             d[2] = 0.0;
@@ -722,19 +799,30 @@ impl LjSolver {
         Ok(ENode { e, kind, d })
     }
 
-    /// d²ᾱ/dm² at an edge-phase node (second difference, step 10·
-    /// [`EDGE_DIFF`]·w).
+    /// d²ᾱ/dm² at an edge-phase turning point: the second difference of step
+    /// 10·[`EDGE_DIFF`]·w on its smooth piece (one-sided near a corner). At
+    /// a corner itself (a node crossing within one difference step, where
+    /// ᾱ turns with unequal one-sided slopes `s₋ < 0 < s₊` or the reverse)
+    /// the second difference of step [`EDGE_DIFF`]·w, ≈ (s₊ − s₋)/step: the
+    /// large curvature for which the table's turning-point expansion
+    /// `Δ − Δ* ∝ u²` has `dP̄/du ≈ 0`, as on both sides of a corner.
     fn esecond(&self, nd: &ENode, plan: (f64, f64), bw: &mut BWork) -> Result<f64> {
-        let h = 10.0 * EDGE_DIFF * plan.0;
         let e = &nd.e;
-        let mut a = [0.0; 2];
-        for (q, sg) in [1.0, -1.0].into_iter().enumerate() {
-            a[q] = self
-                .edge_solve(e.m + sg * h, plan, e.st.y.clone(), e.st.al, e.st.s, bw)?
-                .st
-                .al;
+        let h = EDGE_DIFF * plan.0;
+        let (step, side) = if self.smooth_side(e.m, h, plan) != 0.0 {
+            (h, 0.0)
+        } else {
+            (10.0 * h, self.smooth_side(e.m, 20.0 * h, plan))
+        };
+        if side == 0.0 {
+            let ap = self.evals(e, e.m + step, plan, bw)?[0];
+            let am = self.evals(e, e.m - step, plan, bw)?[0];
+            Ok((ap - 2.0 * e.st.al + am) / (step * step))
+        } else {
+            let a1 = self.evals(e, e.m + side * step, plan, bw)?[0];
+            let a2 = self.evals(e, e.m + side * 2.0 * step, plan, bw)?[0];
+            Ok((e.st.al - 2.0 * a1 + a2) / (step * step))
         }
-        Ok((a[0] - 2.0 * e.st.al + a[1]) / (h * h))
     }
 
     /// `lim a/τ` at an edge-phase contact onset (τ = √(m − m_c)), by
@@ -930,5 +1018,90 @@ fn path_point(st: &State, d: [f64; 3]) -> PathPoint {
         d_force: d[1],
         d_radius: d[2],
         d2_delta: 0.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// At μ = 10, N = 256 the edge-phase family turns (the jump-out) at a
+    /// corner: a node of the banded meshes crosses the marker there. A node
+    /// within one difference step of the corner must carry the slope of its
+    /// own side (the secant of nearby values on that side), and the
+    /// turning point's curvature must have the sign of the turn. Central
+    /// differences across the corner gave dᾱ/dm ≈ +0.1 where ᾱ falls at
+    /// −0.004, and the tabulated law was refused.
+    #[test]
+    fn edge_derivatives_stay_on_their_side_of_a_corner() {
+        let sv = LjSphere::from_tabor(10.0).unwrap().solver(256).unwrap();
+        let plan = sv.band_plan().unwrap();
+        let path = sv
+            .edge_march(plan, 1.0, 120, &|e: &[EdgeState]| {
+                e[e.len() - 1].st.pt.force < -0.9
+            })
+            .unwrap();
+        let mut bw = path.bw;
+        let edge = &path.edge;
+        // The coarse state of least approach: the jump-out is next to it.
+        let k = (1..edge.len() - 1)
+            .min_by(|&a, &b| edge[a].st.al.total_cmp(&edge[b].st.al))
+            .unwrap();
+        let (lo, hi) = (edge[k - 1].m, edge[k + 1].m);
+        // The node crossings in [lo, hi], from the meshes alone.
+        let steps = 400;
+        let mut crossings = Vec::new();
+        let mut prev = (lo, sv.marker_cell(lo, plan));
+        for q in 1..=steps {
+            let m = lo + (hi - lo) * q as f64 / steps as f64;
+            let c = sv.marker_cell(m, plan);
+            if c != prev.1 {
+                let (mut a, mut b) = (prev.0, m);
+                while b - a > 1e-13 {
+                    let mid = 0.5 * (a + b);
+                    if sv.marker_cell(mid, plan) == prev.1 {
+                        a = mid;
+                    } else {
+                        b = mid;
+                    }
+                }
+                crossings.push(b);
+            }
+            prev = (m, c);
+        }
+        assert!(!crossings.is_empty(), "no node crossing near the jump-out");
+        let h = EDGE_DIFF * plan.0;
+        let solve = |m: f64, bw: &mut BWork| {
+            let g = &edge[k - 1];
+            sv.edge_solve(m, plan, g.st.y.clone(), g.st.al, 0.0, bw)
+                .unwrap()
+        };
+        let mut corner_turn = false;
+        for &mc in &crossings {
+            let mut slopes = [0.0; 2];
+            for (q, side) in [-1.0f64, 1.0].into_iter().enumerate() {
+                // Half a difference step from the corner, on `side`.
+                let m = mc + side * 0.5 * h;
+                let e = solve(m, &mut bw);
+                let far = solve(m + side * 0.01 * h, &mut bw);
+                let secant = (far.st.al - e.st.al) / (far.m - e.m);
+                let nd = sv.enode(e, Kind::Regular, plan, &mut bw).unwrap();
+                let tol = 1e-3 + 0.02 * secant.abs();
+                assert!(
+                    (nd.d[0] - secant).abs() < tol,
+                    "corner at m = {mc}, side {side}: dᾱ/dm {} vs secant {secant}",
+                    nd.d[0]
+                );
+                slopes[q] = secant;
+            }
+            if slopes[0] < 0.0 && slopes[1] > 0.0 {
+                // A corner minimum of ᾱ (the jump-out): positive curvature.
+                corner_turn = true;
+                let e = solve(mc, &mut bw);
+                let nd = sv.enode(e, Kind::Regular, plan, &mut bw).unwrap();
+                assert!(sv.esecond(&nd, plan, &mut bw).unwrap() > 0.0);
+            }
+        }
+        assert!(corner_turn, "no corner turning point near the jump-out");
     }
 }
