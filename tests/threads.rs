@@ -729,3 +729,67 @@ fn last_error_message_is_thread_local() {
         }
     });
 }
+
+#[test]
+fn dynamic_friction_models_step_and_block() {
+    use asperity::friction::dynamic::{
+        DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip, PrandtlTomlinson,
+    };
+    let models = [
+        DynamicModel::LuGre(LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4).unwrap()),
+        DynamicModel::MaxwellSlip(
+            MaxwellSlip::new(&[2e5, 5e4, 1e4], &[0.2, 0.2, 0.1], 0.1).unwrap(),
+        ),
+        DynamicModel::PrandtlTomlinson(
+            PrandtlTomlinson::new(2e-21, 3e-10, 1.0, 1e-12, 1e-6, 1e-9).unwrap(),
+        ),
+    ];
+    for model in &models {
+        let track = matches!(model, DynamicModel::PrandtlTomlinson(_));
+        let scale = if track { 1e-11 } else { 1e-6 };
+        let inc = |i: usize, k: usize| {
+            let t = (i * 31 + k) as f64;
+            DynamicIncrement {
+                normal_force: 1.0 + 0.5 * (0.3 * t).sin(),
+                slip: [
+                    scale * (0.7 * t).cos(),
+                    if track { 0.0 } else { scale * (0.4 * t).sin() },
+                ],
+                dt: 1e-6,
+                tangents: (k % 4) as i32,
+                reserved: 0,
+            }
+        };
+        same_on_threads("dynamic step", 32, |i| {
+            let mut s = vec![0.0; model.state_len()];
+            let mut out = vec![];
+            for k in 0..40 {
+                let r = model.step_in_place(&mut s, &inc(i, k)).unwrap();
+                out.extend(
+                    [r.force[0], r.force[1], r.dissipated, r.dforce_dslip[0][0]]
+                        .iter()
+                        .chain(&s)
+                        .map(|x| x.to_bits()),
+                );
+            }
+            out
+        });
+        same_on_threads("dynamic block", 16, |i| {
+            let n = 8;
+            let m = model.state_len();
+            let mut s = vec![0.0; n * m];
+            let (mut f, mut d) = (vec![0.0; 2 * n], vec![0.0; n]);
+            let mut out = vec![];
+            for k in 0..10 {
+                let incs: Vec<DynamicIncrement> = (0..n).map(|j| inc(i * n + j, k)).collect();
+                let nf: Vec<f64> = incs.iter().map(|c| c.normal_force).collect();
+                let sl: Vec<f64> = incs.iter().flat_map(|c| c.slip).collect();
+                model
+                    .step_block(&nf, &sl, 1e-6, &mut s, &mut f, Some(&mut d))
+                    .unwrap();
+                out.extend(f.iter().chain(&d).chain(&s).map(|x| x.to_bits()));
+            }
+            out
+        });
+    }
+}

@@ -319,10 +319,10 @@ fn check_state(state: &[f64], what: &'static str, len: usize) -> Result<()> {
     check_len(n_len, state.len(), len)?;
     check::non_negative(n_d, state[STATE_DISSIPATION])?;
     check::non_negative(n_p, state[STATE_SLIP_PATH])?;
-    // One pass without early exits (v − v is NaN exactly for a non-finite
+    // One pass without early exits (v·0 is NaN exactly for a non-finite
     // v); the error path then finds the value.
     let model = &state[STATE_MODEL..];
-    if model.iter().fold(0.0f64, |acc, &v| acc + (v - v)).is_nan() {
+    if model.iter().fold(0.0f64, |acc, &v| acc + v * 0.0).is_nan() {
         for &v in model {
             check::finite(what, v)?;
         }
