@@ -41,6 +41,12 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::path::{Path, PathBuf};
 
+/// Most samples a scene's generated (`self_affine`) profile may ask for:
+/// 2²⁴ (16 777 216; 128 MiB of heights and twice that for the FFT). A scene
+/// is outside data (a file, or text passed through the C ABI); a larger count
+/// is an error naming `points`, not an allocation that aborts the process.
+pub const MAX_POINTS: usize = 1 << 24;
+
 /// An error reading or building a scene.
 #[derive(Debug, Clone, PartialEq)]
 pub enum SceneError {
@@ -412,6 +418,7 @@ impl Scene {
                 hurst,
                 rq,
                 roll_off_wavelength,
+                points,
                 dx,
                 ..
             } = s
@@ -422,6 +429,16 @@ impl Scene {
                 }
                 let _ = g;
                 check::positive("dx", *dx).map_err(at(field))?;
+                if *points > MAX_POINTS {
+                    return Err(SceneError::Invalid {
+                        field,
+                        error: Error::InvalidArgument {
+                            name: "points",
+                            value: *points as f64,
+                            bound: "<= 2^24 (scene::MAX_POINTS)",
+                        },
+                    });
+                }
             }
         }
         if let NanoSpec::Asperities(n) = &self.surfaces.nano {
@@ -493,10 +510,13 @@ impl Scene {
                     None => p.len(),
                     Some(l) => {
                         let l = check::positive("length", *l).map_err(at(field))?;
-                        i0 + (l / p.dx()).round() as usize + 1
+                        // Saturating: a start or length far past the
+                        // profile is the error below, not an overflow.
+                        i0.saturating_add((l / p.dx()).round() as usize)
+                            .saturating_add(1)
                     }
                 };
-                if i1 > p.len() || i0 + 8 > i1 {
+                if i1 > p.len() || i0.saturating_add(8) > i1 {
                     return Err(SceneError::Invalid {
                         field,
                         error: Error::InvalidArgument {

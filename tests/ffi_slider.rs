@@ -873,3 +873,77 @@ fn slider_from_structs_errors_name_the_argument() {
     );
     unsafe { asperity_slider_geometry_free(g) };
 }
+
+/// A scene is outside data: a generated profile of more than
+/// `scene::MAX_POINTS` samples is an error naming `points` (before, 10^12
+/// points reached an allocation that aborts the host process). The bound
+/// itself passes validation.
+#[test]
+fn scene_points_beyond_the_bound_are_errors() {
+    let text = scene_text();
+    assert!(
+        text.contains("\"points\": 241"),
+        "the scene changed: update this test"
+    );
+    for points in [asperity::scene::MAX_POINTS + 1, 1_000_000_000_000] {
+        let big = text.replace("\"points\": 241", &format!("\"points\": {points}"));
+        let (st, h) = from_json(&big, Some(scene_path().parent().unwrap()));
+        assert!(h.is_null());
+        expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "`points`");
+        let e = Scene::from_json(&big, ".").unwrap_err().to_string();
+        assert!(
+            e.contains("points") && e.contains("surfaces.counter"),
+            "{e}"
+        );
+    }
+    let at_bound = text.replace(
+        "\"points\": 241",
+        &format!("\"points\": {}", asperity::scene::MAX_POINTS),
+    );
+    assert!(Scene::from_json(&at_bound, ".").is_ok());
+}
+
+/// A file surface's `start` or `length` far past the profile is an error
+/// naming `length`, not an index overflow (found reviewing the scene parser
+/// for fuzzing; fuzz/regressions/scene_json/file_*_overflow.json).
+#[test]
+fn scene_file_ranges_beyond_the_profile_are_errors() {
+    let dir = std::env::temp_dir().join(format!("asperity-scene-range-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let profile: String = (0..64)
+        .map(|j| {
+            format!(
+                "{:e},{:e}\n",
+                j as f64 * 1e-6,
+                1e-7 * (0.3 * j as f64).sin()
+            )
+        })
+        .collect();
+    std::fs::write(dir.join("p.csv"), profile).unwrap();
+    let text = scene_text();
+    let counter = "\"counter\": {\n      \"self_affine\": { \"hurst\": 0.8, \"rq\": 5e-7, \"roll_off_wavelength\": 1e-4, \"points\": 241, \"dx\": 1.5e-6, \"seed\": 7 }\n    }";
+    assert!(
+        text.contains(counter),
+        "the scene changed: update this test"
+    );
+    for range in [
+        "\"start\": 0, \"length\": 1e300",
+        "\"start\": 1e300",
+        "\"start\": 1e300, \"length\": 1e300",
+    ] {
+        let t = text.replace(
+            counter,
+            &format!("\"counter\": {{ \"file\": {{ \"path\": \"p.csv\", {range} }} }}"),
+        );
+        let e = Scene::from_json(&t, &dir)
+            .unwrap()
+            .build()
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("`length`") && e.contains("surfaces.counter"),
+            "{range}: {e}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

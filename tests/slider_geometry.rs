@@ -693,3 +693,36 @@ fn measured_profiles_slider() {
         );
     }
 }
+
+/// Fuzzing regression (fuzz/regressions/c_abi/geometry_uniform_huge_rods):
+/// a rod count the process cannot allocate is an error naming the argument,
+/// not a capacity-overflow panic or an out-of-memory abort. Counts come from
+/// `rods` directly ([`SliderGeometry::uniform`]) or from a rod width far
+/// below the profile's spacing ([`rod_levels`], nested levels included).
+#[test]
+fn rod_counts_beyond_max_rods_are_errors() {
+    let nano = hand_calculation_nano();
+    for rods in [MAX_RODS + 1, 1 << 40, usize::MAX] {
+        invalid(SliderGeometry::uniform(13.5 * UM, rods, nano, 1), "rods");
+    }
+    // The bound itself is accepted by the count check (the geometry is
+    // built: 2^24 rods of 8 bytes).
+    assert_eq!(
+        SliderGeometry::uniform(13.5 * UM, MAX_RODS, nano, 1)
+            .unwrap()
+            .tips()
+            .len(),
+        MAX_RODS
+    );
+    // 9 µm of profile: 9e-6 / 1e-300 rods.
+    invalid(rod_levels(&micro(), UM, &[1e-300]), "rod_widths");
+    // Level 0 fits (9 rods), level 1 has 9 × 2^24 rods.
+    invalid(
+        rod_levels(&micro(), UM, &[UM, UM / (1u64 << 24) as f64]),
+        "rod_widths",
+    );
+    assert_eq!(
+        rod_levels(&micro(), UM, &[UM, UM / 4.0]).unwrap()[1].len(),
+        36
+    );
+}

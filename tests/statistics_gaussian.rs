@@ -631,3 +631,27 @@ fn invalid_arguments_are_named() {
         ));
     }
 }
+
+/// Fuzzing regression (fuzz/regressions/c_abi/gw_tiny_sigma_slow): far above
+/// the summits (h = d/σ huge: σ = 2.2e-308 m) the Gaussian tail moments are
+/// 0 in f64 and come back at once; before, h² overflowed and the trapezoidal
+/// sum ran 2³² terms (150 s per call). Continuous across the switch at
+/// h = 40: the moments have underflowed well before it.
+#[test]
+fn tail_moments_far_above_the_summits_are_zero_and_fast() {
+    use asperity::statistics::gaussian::{f1_2, f3_2, f5_2, tail_moment};
+    let start = std::time::Instant::now();
+    for h in [39.0, 40.0, 1e10, 1e154, 1e200, 1.5e291, f64::MAX] {
+        assert_eq!(f1_2(h).unwrap(), 0.0, "F_1/2({h:e})");
+        assert_eq!(f3_2(h).unwrap(), 0.0, "F_3/2({h:e})");
+        assert_eq!(f5_2(h).unwrap(), 0.0, "F_5/2({h:e})");
+        assert_eq!(tail_moment(2.3, h).unwrap(), 0.0, "F_2.3({h:e})");
+    }
+    // Below the switch the moments are still positive.
+    assert!(f3_2(30.0).unwrap() > 0.0 && tail_moment(2.3, 30.0).unwrap() > 0.0);
+    assert!(
+        start.elapsed().as_secs_f64() < 5.0,
+        "took {:?}",
+        start.elapsed()
+    );
+}

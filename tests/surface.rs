@@ -694,3 +694,24 @@ fn form_removal_then_parameters() {
         .unwrap();
     assert!(lin.rq > 2.0 * r.rq);
 }
+
+/// Fuzzing regression (fuzz/regressions/c_abi/hurst_fit_infinite_band): a
+/// fit band whose ratio q_max/q_min overflows f64 (a subnormal q_min) is an
+/// error naming `q_max`, not an overflowing bin count (a panic the C guard
+/// turned into ASPERITY_ERR_INTERNAL). The widest finite band still works.
+#[test]
+fn hurst_fit_band_beyond_f64_is_an_error() {
+    let z: Vec<f64> = (0..64).map(|j| (0.7 * j as f64).sin() * 1e-7).collect();
+    for (lo, hi) in [
+        (5e-324, 1e3),
+        (1e-300, 1e300),
+        (f64::MIN_POSITIVE, f64::MAX),
+    ] {
+        match hurst_fit(&z, 1e-6, Some((lo, hi))) {
+            Err(Error::InvalidArgument { name: "q_max", .. }) => {}
+            other => panic!("band ({lo:e}, {hi:e}): {other:?}"),
+        }
+    }
+    // 1e-150 .. 1e150: 300 decades, finite; any outcome but a panic.
+    let _ = hurst_fit(&z, 1e-6, Some((1e-150, 1e150)));
+}

@@ -189,6 +189,14 @@ program profile_characterise
 
   call zhuravlev_callbacks()
 
+  ! Main-program allocatables outlive END PROGRAM unless released: release
+  ! them, so leak checkers (scripts/memcheck.sh) see a clean exit.
+  if (allocated(z)) deallocate (z)
+  if (allocated(zl)) deallocate (zl)
+  if (allocated(q)) deallocate (q)
+  if (allocated(g)) deallocate (g)
+  if (allocated(msg)) deallocate (msg)
+
 contains
 
   !> 4. Zhuravlev's pair of surfaces with n_i(xi) = alpha_i xi given as

@@ -83,6 +83,25 @@ const NEST_TOLERANCE: f64 = 1e-6;
 /// length (so that 13.5 µm / 1.35 µm counts 10 despite rounding).
 const COUNT_SLACK: f64 = 1e-9;
 
+/// Most rods one level may have: 2²⁴ (16 777 216; 128 MiB of heights, and a
+/// slider patch state of 8 + 2 × rods doubles). A larger count (a rod width
+/// far below the profile's spacing, or a huge `rods` in
+/// [`SliderGeometry::uniform`]) is an error naming the argument instead of an
+/// allocation the process cannot survive.
+pub const MAX_RODS: usize = 1 << 24;
+
+/// `count` rods, or an error naming `name` when it exceeds [`MAX_RODS`].
+fn check_rod_count(name: &'static str, count: f64) -> Result<usize> {
+    if count > MAX_RODS as f64 {
+        return Err(Error::InvalidArgument {
+            name,
+            value: count,
+            bound: "a rod count per level <= MAX_RODS = 2^24",
+        });
+    }
+    Ok(count as usize)
+}
+
 /// The argument names of one profile in error messages.
 #[derive(Clone, Copy)]
 struct Names {
@@ -628,14 +647,20 @@ fn levels_named(
             bound: "<= the profile's sampled extent (n - 1) * dx",
         });
     }
-    let zbar = mean(heights);
-    let z: Vec<f64> = heights.iter().map(|h| h - zbar).collect();
-    let mut count = n0 as usize;
-    let mut levels = Vec::with_capacity(widths.len());
+    // Every level's count is bounded before anything is allocated.
+    let mut count = check_rod_count("rod_widths", n0)?;
+    let mut counts = Vec::with_capacity(widths.len());
     for (l, &w) in widths.iter().enumerate() {
         if l > 0 {
-            count *= nesting(widths[l - 1], w).expect("checked");
+            let m = nesting(widths[l - 1], w).expect("checked");
+            count = check_rod_count("rod_widths", count as f64 * m as f64)?;
         }
+        counts.push(count);
+    }
+    let zbar = mean(heights);
+    let z: Vec<f64> = heights.iter().map(|h| h - zbar).collect();
+    let mut levels = Vec::with_capacity(widths.len());
+    for (&w, &count) in widths.iter().zip(&counts) {
         let edge = |k: usize| interpolate(&z, k as f64 * w / dx);
         let mut left = edge(0);
         let mut hs = Vec::with_capacity(count);
@@ -856,13 +881,15 @@ impl SliderGeometry {
     /// from origin 0 (the single-level slider of thesis 5.6, or the one
     /// micro-asperity of the hand calculation 4.4: 13.5 µm, 100
     /// nano-asperities). Errors as [`Self::new`] and [`RodLevel::new`]
-    /// (`rods` = 0 is `heights.len()`).
+    /// (`rods` = 0 is `heights.len()`; more than [`MAX_RODS`] is an error
+    /// naming `rods`).
     pub fn uniform(
         rod_width: f64,
         rods: usize,
         nano: NanoAsperities,
         nano_per_rod: usize,
     ) -> Result<Self> {
+        check_rod_count("rods", rods as f64)?;
         let level = RodLevel::new(rod_width, 0.0, vec![0.0; rods]).map_err(|e| match e {
             Error::InvalidArgument {
                 name: "width",

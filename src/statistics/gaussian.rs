@@ -69,6 +69,13 @@ const NEGATIVE_SERIES_H: f64 = -30.0;
 /// Range cut: the integrand is dropped where it is below `e^{−RANGE_E}` of its
 /// peak.
 const RANGE_E: f64 = 45.0;
+
+/// Above this h every tail moment F_q(h), 0 ≤ q ≤ 16, is below the smallest
+/// subnormal (F_q(h) < Γ(q+1) φ(h) / h^{q+1} and φ(40) ≈ 1e-348): the
+/// moments return 0 at once. Without it, h² overflowed for h > 1.3e154 and
+/// the trapezoidal sum ran 2³² terms (fuzzing: a GW surface with σ =
+/// 2.2e-308 m, `fuzz/regressions/c_abi/gw_tiny_sigma_slow`).
+const UNDERFLOW_H: f64 = 40.0;
 /// Largest accepted order q of [`tail_moment`].
 pub const MAX_ORDER: f64 = 16.0;
 /// Relative tolerance of the general-order quadrature.
@@ -136,19 +143,11 @@ pub(crate) fn half_integer(m: u32, h: f64) -> f64 {
     if h <= NEGATIVE_SERIES_H {
         return negative_series(m as f64 - 0.5, h);
     }
-    if h > POSITIVE_ZERO_H {
-        // Every node of the trapezoidal sum has e^{−w²/2} = 0 (w ≥ h), so
-        // this is the sum's own value; it also keeps h² finite: beyond
-        // h ≈ 1.3e154 the node count of the sum became u32::MAX (a
-        // multi-minute loop, found by tests/sweeps.rs).
+    if h >= UNDERFLOW_H {
         return 0.0;
     }
     trapezoid(m, h)
 }
-
-/// Above this h, `e^{−h²/2}` underflows to 0 (e^{−800}) and so does every
-/// half-integer tail moment.
-const POSITIVE_ZERO_H: f64 = 40.0;
 
 /// The trapezoidal sum of [`half_integer`] (any finite h; used for h > −30).
 fn trapezoid(m: u32, h: f64) -> f64 {
@@ -227,6 +226,9 @@ pub fn tail_moment(q: f64, h: f64) -> Result<f64> {
 }
 
 pub(crate) fn tail_moment_unchecked(q: f64, h: f64) -> Result<f64> {
+    if h >= UNDERFLOW_H {
+        return Ok(0.0);
+    }
     if q == 0.0 {
         return Ok(f0_unchecked(h));
     }

@@ -206,7 +206,18 @@ impl LogBins {
                 bound: "> q_min",
             });
         }
-        let nb = ((q_max / q_min).log10() * Self::PER_DECADE).floor() as usize + 1;
+        // A band wider than f64 can express (q_max / q_min = inf, e.g. a
+        // subnormal q_min) has no finite bin count: an error, not an
+        // overflowing count (fuzzing, fuzz/regressions/c_abi/).
+        let decades = (q_max / q_min).log10();
+        if !decades.is_finite() {
+            return Err(Error::InvalidArgument {
+                name: "q_max",
+                value: q_max,
+                bound: "q_max / q_min finite (a band of at most about 308 decades)",
+            });
+        }
+        let nb = (decades * Self::PER_DECADE).floor() as usize + 1;
         Ok(Self {
             q_min,
             q_max,

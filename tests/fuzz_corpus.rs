@@ -1,0 +1,94 @@
+//! Replays the fuzzing corpora on stable, without cargo-fuzz: every file of
+//! `fuzz/corpus/<target>/` (the minimised seed corpora of the libFuzzer runs)
+//! and `fuzz/regressions/<target>/` (the inputs that found bugs, now fixed)
+//! goes through the same harness function the fuzz target runs
+//! (`fuzz/harness/<target>.rs`, included here). A harness panics on a
+//! finding — a library panic, a panic the C guard caught
+//! (`ASPERITY_ERR_INTERNAL`), an error status without a message — so a
+//! regression fails the test named after its target, with the file named.
+//! See RELIABILITY.md, "Fuzzing".
+
+#[path = "../fuzz/harness/c_abi.rs"]
+mod c_abi;
+#[path = "../fuzz/harness/readers.rs"]
+mod readers;
+#[path = "../fuzz/harness/scene_json.rs"]
+mod scene_json;
+#[path = "../fuzz/harness/table_json.rs"]
+mod table_json;
+
+use std::path::{Path, PathBuf};
+
+/// The files of `fuzz/<kind>/<target>/`, sorted (none when it is absent).
+fn inputs(kind: &str, target: &str) -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("fuzz")
+        .join(kind)
+        .join(target);
+    let mut files: Vec<PathBuf> = match std::fs::read_dir(&dir) {
+        Ok(d) => d
+            .filter_map(|e| e.ok())
+            .map(|e| e.path())
+            .filter(|p| p.is_file())
+            .collect(),
+        Err(_) => Vec::new(),
+    };
+    files.sort();
+    files
+}
+
+/// Run `harness` on every corpus and regression file of `target`; fail with
+/// the names of the files whose run panicked.
+fn replay(target: &str, harness: fn(&[u8])) {
+    let corpus = inputs("corpus", target);
+    assert!(
+        !corpus.is_empty(),
+        "fuzz/corpus/{target}/ is empty or missing: the seed corpus is committed"
+    );
+    let files: Vec<PathBuf> = corpus
+        .into_iter()
+        .chain(inputs("regressions", target))
+        .collect();
+    let failed: Vec<String> = files
+        .iter()
+        .filter_map(|f| {
+            let data = std::fs::read(f).expect("read corpus file");
+            std::panic::catch_unwind(|| harness(&data)).err().map(|e| {
+                let what = e
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+                    .unwrap_or_default();
+                format!("{}: {what}", f.display())
+            })
+        })
+        .collect();
+    assert!(
+        failed.is_empty(),
+        "{} of {} {target} inputs failed:\n{}",
+        failed.len(),
+        files.len(),
+        failed.join("\n")
+    );
+    println!("{target}: {} inputs replayed", files.len());
+}
+
+#[test]
+fn c_abi_corpus() {
+    replay("c_abi", c_abi::run);
+}
+
+#[test]
+fn scene_json_corpus() {
+    replay("scene_json", scene_json::run);
+}
+
+#[test]
+fn readers_corpus() {
+    replay("readers", readers::run);
+}
+
+#[test]
+fn table_json_corpus() {
+    replay("table_json", table_json::run);
+}
