@@ -3,7 +3,8 @@
 //! (scalar and batch), counted by a global allocator that tallies the
 //! current thread's allocations. Building a law or a table may allocate;
 //! evaluating one may not (host codes call these millions of times per
-//! increment, often from many threads). The friction steps have their own
+//! increment, often from many threads). The dynamic friction steps are
+//! counted here too; the homogenised and slider steps have their own
 //! counting tests (tests/friction_homogenised.rs, tests/slider_alloc.rs).
 
 use asperity::contact::ContactState;
@@ -142,4 +143,92 @@ fn laws_and_table_lookups_allocate_nothing() {
     assert!(count() > before && v.capacity() >= 16);
     // SAFETY: from asperity_table_new_maugis_dugdale.
     unsafe { asperity_table_free(table) };
+}
+
+/// The dynamic friction steps (LuGre, Maxwell-slip, Prandtl–Tomlinson)
+/// through the C ABI: scalar with tangents, in place and separate, and the
+/// block.
+#[test]
+fn dynamic_friction_steps_allocate_nothing() {
+    use asperity::ffi::dynamic::*;
+    use asperity::friction::dynamic::{DynamicIncrement, DynamicResponse};
+    let mut models = vec![];
+    let p = AsperityLugreParams {
+        mu_coulomb: 0.3,
+        mu_static: 0.5,
+        stribeck_velocity: 1e-3,
+        stribeck_exponent: 2.0,
+        sigma0: 1e5,
+        sigma1: 1000.0,
+        damping_velocity: 1e-3,
+        sigma2: 0.4,
+    };
+    let mut h = core::ptr::null_mut();
+    assert_eq!(
+        unsafe { asperity_dynamic_lugre_new(&p, &mut h) },
+        ASPERITY_OK
+    );
+    models.push((h, 1e-6));
+    let (k, mu) = ([2e5, 5e4, 1e4], [0.2, 0.2, 0.1]);
+    let mut h = core::ptr::null_mut();
+    assert_eq!(
+        unsafe { asperity_dynamic_maxwell_slip_new(k.as_ptr(), mu.as_ptr(), 3, 0.1, &mut h) },
+        ASPERITY_OK
+    );
+    models.push((h, 1e-6));
+    let mut h = core::ptr::null_mut();
+    assert_eq!(
+        unsafe {
+            asperity_dynamic_prandtl_tomlinson_new(2e-21, 3e-10, 1.0, 1e-12, 1e-6, 1e-9, &mut h)
+        },
+        ASPERITY_OK
+    );
+    models.push((h, 1e-11));
+    for (h, scale) in models {
+        let mut n = 0usize;
+        unsafe { asperity_dynamic_friction_state_size(h, &mut n) };
+        let mut a = vec![0.0; n];
+        let mut b = vec![0.0; n];
+        let mut blocks = vec![0.0; 4 * n];
+        let normal = [1.0, 2.0, 3.0, 4.0];
+        let slip = [scale, 0.0, -scale, 0.0, 2.0 * scale, 0.0, 0.5 * scale, 0.0];
+        let (mut f, mut d) = ([0.0; 8], [0.0; 4]);
+        let mut out = DynamicResponse::default();
+        let before = count();
+        for k in 0..50 {
+            let inc = DynamicIncrement {
+                normal_force: 1.5,
+                slip: [scale * (0.3 * k as f64).cos(), 0.0],
+                dt: 1e-6,
+                tangents: k % 4,
+                reserved: 0,
+            };
+            unsafe {
+                assert_eq!(
+                    asperity_dynamic_friction_step(h, &inc, a.as_ptr(), b.as_mut_ptr(), &mut out),
+                    ASPERITY_OK
+                );
+                assert_eq!(
+                    asperity_dynamic_friction_step(h, &inc, b.as_ptr(), b.as_mut_ptr(), &mut out),
+                    ASPERITY_OK
+                );
+                assert_eq!(
+                    asperity_dynamic_friction_step_block(
+                        h,
+                        4,
+                        normal.as_ptr(),
+                        slip.as_ptr(),
+                        1e-6,
+                        blocks.as_mut_ptr(),
+                        f.as_mut_ptr(),
+                        d.as_mut_ptr(),
+                    ),
+                    ASPERITY_OK
+                );
+            }
+            core::mem::swap(&mut a, &mut b);
+        }
+        assert_eq!(count() - before, 0, "a dynamic friction step allocated");
+        unsafe { asperity_dynamic_friction_free(h) };
+    }
 }
