@@ -17,7 +17,7 @@
 //! increment is the motion of the point relative to the counter-surface, the
 //! tangential force is the force on the point and opposes slip.
 
-use super::{guard, input, output, Failure};
+use super::{guard, input, output, partial_overlap, Failure};
 use crate::error::{Error, Result};
 use crate::friction::dynamic::{
     DynamicFriction, DynamicIncrement, DynamicModel, DynamicResponse, LuGre, MaxwellSlip,
@@ -209,9 +209,7 @@ pub unsafe extern "C" fn asperity_dynamic_friction_step(
             // SAFETY: the caller provides `len` writable values.
             m.step_in_place(core::slice::from_raw_parts_mut(new_state, len), inc)
         } else {
-            let bytes = len * core::mem::size_of::<f64>();
-            let (a, b) = (old_state as usize, new_state as usize);
-            if a < b.saturating_add(bytes) && b < a.saturating_add(bytes) {
+            if partial_overlap(old_state, new_state, len) {
                 return Err(Error::InvalidArgument {
                     name: "new_state",
                     value: len as f64,

@@ -107,6 +107,15 @@ pub(crate) fn renamed(mut e: Error, from: &'static str, to: &'static str) -> Err
     e
 }
 
+/// Whether the arrays of `n` doubles at `a` and `b` overlap without being
+/// the same array (callers accept in place or disjoint states, nothing in
+/// between).
+pub(crate) fn partial_overlap(a: *const f64, b: *const f64, n: usize) -> bool {
+    let (a, b) = (a as usize, b as usize);
+    let bytes = n * core::mem::size_of::<f64>();
+    a != b && a < b.saturating_add(bytes) && b < a.saturating_add(bytes)
+}
+
 /// Borrow a required input pointer.
 #[inline]
 pub(crate) unsafe fn input<'a, T>(p: *const T, name: &'static str) -> Result<&'a T> {

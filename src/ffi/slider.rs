@@ -20,7 +20,7 @@
 //! tangential force is the force on the patch and opposes slip.
 
 use super::friction::AsperitySliderGeometry;
-use super::{guard, input, output, read_text, set_last_error, Failure};
+use super::{guard, input, output, partial_overlap, read_text, set_last_error, Failure};
 use crate::error::{Error, Result};
 use crate::friction::{
     CofForm, FrictionMaterial, Loading, Mechanisms, PlasticUpdate, RodOptions, RodSolver, Slider,
@@ -400,32 +400,16 @@ pub unsafe extern "C" fn asperity_slider_new(
 /// A `Slider::new` error with the argument named as `asperity_slider_new`
 /// names it.
 fn c_names(e: Error) -> Error {
-    let c = |name: &'static str| match name {
-        "load" => "options.normal_force",
-        "position" => "options.gap",
-        "width" => "options.plastic_width",
-        "depth" => "options.depth",
-        "root_margin" => "options.root_margin",
-        "counter.len()" => "n_counter",
-        other => other,
-    };
-    match e {
-        Error::InvalidArgument { name, value, bound } => Error::InvalidArgument {
-            name: c(name),
-            value,
-            bound,
-        },
-        Error::OutOfDomain {
-            name,
-            value,
-            reason,
-        } => Error::OutOfDomain {
-            name: c(name),
-            value,
-            reason,
-        },
-        other => other,
-    }
+    [
+        ("load", "options.normal_force"),
+        ("position", "options.gap"),
+        ("width", "options.plastic_width"),
+        ("depth", "options.depth"),
+        ("root_margin", "options.root_margin"),
+        ("counter.len()", "n_counter"),
+    ]
+    .into_iter()
+    .fold(e, |e, (from, to)| super::renamed(e, from, to))
 }
 
 /// The library error a scene error maps to, and its full message.
@@ -572,13 +556,6 @@ pub unsafe extern "C" fn asperity_slider_work_free(work: *mut AsperitySliderWork
             drop(Box::from_raw(work));
         }));
     }
-}
-
-/// Whether [a, a + n) and [b, b + n) overlap without being the same range.
-fn partial_overlap(a: *const f64, b: *const f64, n: usize) -> bool {
-    let (a, b) = (a as usize, b as usize);
-    let bytes = n * core::mem::size_of::<f64>();
-    a != b && a < b.saturating_add(bytes) && b < a.saturating_add(bytes)
 }
 
 /// One friction step of one patch: the increment `*increment` from the
