@@ -24,11 +24,21 @@ fn env(name: &str, default: u64) -> u64 {
 }
 
 /// μ_c 0.3, μ_s 0.5, v_s 1 mm/s, σ₀ 1e5 /m, σ₁ at half its passivity bound
-/// (v_d 1 mm/s), σ₂ 0.4 N s/m.
-fn lugre() -> LuGre {
-    let vd = 1e-3;
+/// for the damping velocity `vd` (m/s), σ₂ 0.4 N s/m.
+fn lugre(vd: f64) -> LuGre {
     let s1 = 0.5 * 4.0 * 0.3 * (2.0 * std::f64::consts::E).sqrt() / vd;
     LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, s1, vd, 0.4).unwrap()
+}
+
+/// The increments turned by 30° in the tangent plane (a 2-D slip).
+fn turned(incs: &[DynamicIncrement]) -> Vec<DynamicIncrement> {
+    let (c, s) = (30f64.to_radians().cos(), 30f64.to_radians().sin());
+    incs.iter()
+        .map(|i| DynamicIncrement {
+            slip: [c * i.slip[0], s * i.slip[0]],
+            ..*i
+        })
+        .collect()
 }
 
 /// Increments of an explicit dynamics host: dt = 1 µs, speeds 0.1–10 mm/s
@@ -89,7 +99,8 @@ fn main() {
     let rounds = env("ASPERITY_BENCH_ROUNDS", 11);
     let run_ms = env("ASPERITY_BENCH_RUN_MS", 40);
     let incs = increments();
-    let m = lugre();
+    let incs_2d = turned(&incs);
+    let m = lugre(1e-3);
     let len = m.state_len();
 
     // Exact reference forces along the sequence.
@@ -115,15 +126,24 @@ fn main() {
     println!("# Dynamic friction steps, time per call (median of {rounds} rounds)\n");
     println!("| path | sub-steps | max relative force error | ns per call |");
     println!("|---|---:|---:|---:|");
-    let t = time(rounds, run_ms, || {
-        let mut s = [0.0; 4];
-        let mut n = [0.0; 4];
-        for i in &incs {
-            black_box(m.step(&s, &mut n, black_box(i)).unwrap());
-            s = n;
-        }
-    });
-    println!("| LuGre, exact increment (`LuGre::step`) | – | 0 (reference) | {t:.1} |");
+    let lugre_time = |m: &LuGre, incs: &[DynamicIncrement]| {
+        time(rounds, run_ms, || {
+            let mut s = [0.0; 4];
+            let mut n = [0.0; 4];
+            for i in incs {
+                black_box(m.step(&s, &mut n, black_box(i)).unwrap());
+                s = n;
+            }
+        })
+    };
+    let t = lugre_time(&m, &incs);
+    println!(
+        "| LuGre, exact increment (`LuGre::step`), track, v_d = v_s | – | 0 (reference) | {t:.1} |"
+    );
+    let t2 = lugre_time(&lugre(3e-3), &incs);
+    println!("| LuGre, exact increment, track, v_d = 3 v_s (two exponentials) | – | 0 | {t2:.1} |");
+    let t2 = lugre_time(&m, &incs_2d);
+    println!("| LuGre, exact increment, 2-D slip (30°), v_d = v_s | – | 0 | {t2:.1} |");
     for tol in [1e-3, 1e-6] {
         match reach(tol) {
             Some(sub) => {
@@ -154,14 +174,18 @@ fn main() {
         let mu: Vec<f64> = (0..elements).map(|_| 0.5 / elements as f64).collect();
         let ms = MaxwellSlip::new(&k, &mu, 0.0).unwrap();
         let len = ms.state_len();
-        let t = time(rounds, run_ms, || {
-            let mut s = vec![0.0; len];
-            let mut n = vec![0.0; len];
-            for i in &incs {
-                black_box(ms.step(&s, &mut n, black_box(i)).unwrap());
-                std::mem::swap(&mut s, &mut n);
-            }
-        });
+        let maxwell_time = |incs: &[DynamicIncrement]| {
+            time(rounds, run_ms, || {
+                let mut s = vec![0.0; len];
+                let mut n = vec![0.0; len];
+                for i in incs {
+                    black_box(ms.step(&s, &mut n, black_box(i)).unwrap());
+                    std::mem::swap(&mut s, &mut n);
+                }
+            })
+        };
+        let t = maxwell_time(&incs);
+        let t2 = maxwell_time(&incs_2d);
         let reach: Vec<f64> = k.iter().zip(&mu).map(|(k, m)| m / k).collect();
         let ti = time(rounds, run_ms, || {
             let mut d = vec![0.0; elements];
@@ -175,7 +199,8 @@ fn main() {
             }
         });
         println!(
-            "| Maxwell-slip, {elements} elements (`MaxwellSlip::step`, 2-D) | – | – | {t:.1} (inline 1-D loop without checks: {ti:.1}) |"
+            "| Maxwell-slip, {elements} elements (`MaxwellSlip::step`), track | – | – | {t:.1} (inline 1-D loop without checks: {ti:.1}) |"
         );
+        println!("| Maxwell-slip, {elements} elements, 2-D slip (30°) | – | – | {t2:.1} |");
     }
 }

@@ -116,41 +116,81 @@ struct Params {
 
 #[test]
 fn lugre_increment_is_exact_against_runge_kutta() {
-    let p = Params {
-        mu_c: 0.3,
-        mu_s: 0.5,
-        vs: 1e-3,
-        s0: 1e5,
-        s1: 0.5 * 4.0 * 0.3 * (2.0 * std::f64::consts::E).sqrt() / 1e-3,
-        vd: 1e-3,
-        s2: 0.4,
-    };
-    let m = LuGre::new(p.mu_c, p.mu_s, p.vs, 2.0, p.s0, p.s1, p.vd, p.s2).unwrap();
-    // Start deflected either way (a reversal and a continuation), slow and
-    // fast, short and long increments.
-    for (z0, ds, dt) in [
-        (3e-6, 2e-6, 1e-3),
-        (-4e-6, 5e-6, 2e-3),
-        (4.9e-6, -1e-7, 1e-4),
-        (0.0, 3e-5, 1e-2),
-        (2e-6, 1e-9, 1e-6),
-    ] {
-        let n = 7.0;
+    // v_d = v_s (one exponential serves the Stribeck and damping decays)
+    // and v_d = 3 v_s (two), each with σ₁ at half its passivity bound.
+    for vd in [1e-3, 3e-3] {
+        let p = Params {
+            mu_c: 0.3,
+            mu_s: 0.5,
+            vs: 1e-3,
+            s0: 1e5,
+            s1: 0.5 * 4.0 * 0.3 * (2.0 * std::f64::consts::E).sqrt() / vd,
+            vd,
+            s2: 0.4,
+        };
+        let m = LuGre::new(p.mu_c, p.mu_s, p.vs, 2.0, p.s0, p.s1, p.vd, p.s2).unwrap();
+        // Start deflected either way (a reversal and a continuation), slow
+        // and fast, short and long increments; the last three put the
+        // relaxation exponent σ₀|Δs|/μ just below, near and above 1/32,
+        // where 1 − e^{−x} switches from its series to `exp`.
+        for (z0, ds, dt) in [
+            (3e-6, 2e-6, 1e-3),
+            (-4e-6, 5e-6, 2e-3),
+            (4.9e-6, -1e-7, 1e-4),
+            (0.0, 3e-5, 1e-2),
+            (2e-6, 1e-9, 1e-6),
+            (-1e-6, 1.2e-7, 1e-4),
+            (1e-6, 1.45e-7, 1e-4),
+            (1e-6, -2e-7, 1e-4),
+        ] {
+            let n = 7.0;
+            let mut old = vec![0.0; m.state_len()];
+            old[asperity::friction::dynamic::lugre::STATE_Z] = z0;
+            let mut new = old.clone();
+            let r = m.step(&old, &mut new, &inc(n, [ds, 0.0], dt)).unwrap();
+            let (z, d) = rk4(&p, z0, n, ds, dt, 200_000);
+            let z1 = new[asperity::friction::dynamic::lugre::STATE_Z];
+            assert!((z1 - z).abs() <= 1e-9 * z.abs().max(1e-9), "{z1} vs {z}");
+            assert!(
+                (r.dissipated - d).abs() <= 1e-7 * d.abs().max(1e-18),
+                "dissipation {} vs RK4 {d} (z0 {z0}, ds {ds}, dt {dt}, vd {vd})",
+                r.dissipated
+            );
+            assert!(r.dissipated >= 0.0);
+            assert_eq!(new[STATE_DISSIPATION], r.dissipated);
+            assert_eq!(new[STATE_SLIP_PATH], ds.abs());
+        }
+    }
+}
+
+/// μ_c = 0 far above v_s: μ(v) underflows to 0, the relaxation rate σ₀|v|/μ
+/// is infinite and the bristles let go within the increment. The response
+/// is the limit (z = 0, no bristle force, the stored energy dissipated), not
+/// NaN (the step returned a NaN force with an Ok status before).
+#[test]
+fn lugre_without_coulomb_friction_lets_go_far_above_the_stribeck_speed() {
+    let m = LuGre::new(0.0, 0.5, 1e-3, 2.0, 1e5, 0.0, f64::INFINITY, 0.2).unwrap();
+    assert_eq!(m.stribeck(1.0), 0.0);
+    let (n, z0, ds, dt) = (4.0, 3e-6, 1e-3, 1e-3);
+    for slip in [[ds, 0.0], [0.6 * ds, 0.8 * ds]] {
         let mut old = vec![0.0; m.state_len()];
         old[asperity::friction::dynamic::lugre::STATE_Z] = z0;
         let mut new = old.clone();
-        let r = m.step(&old, &mut new, &inc(n, [ds, 0.0], dt)).unwrap();
-        let (z, d) = rk4(&p, z0, n, ds, dt, 200_000);
-        let z1 = new[asperity::friction::dynamic::lugre::STATE_Z];
-        assert!((z1 - z).abs() <= 1e-9 * z.abs().max(1e-9), "{z1} vs {z}");
+        let r = m.step(&old, &mut new, &inc(n, slip, dt)).unwrap();
+        let z = asperity::friction::dynamic::lugre::STATE_Z;
+        assert_eq!(&new[z..z + 2], &[0.0, 0.0]);
+        // Only the viscous force σ₂v remains.
+        let v = [slip[0] / dt, slip[1] / dt];
+        for (f, v) in r.force.iter().zip(v) {
+            assert!((f + 0.2 * v).abs() <= 1e-15 * 0.2, "{r:?}");
+        }
+        let want = 0.5 * n * 1e5 * z0 * z0 + 0.2 * (ds / dt) * ds;
         assert!(
-            (r.dissipated - d).abs() <= 1e-7 * d.abs().max(1e-18),
-            "dissipation {} vs RK4 {d} (z0 {z0}, ds {ds}, dt {dt})",
+            (r.dissipated - want).abs() <= 1e-13 * want,
+            "{} vs {want}",
             r.dissipated
         );
-        assert!(r.dissipated >= 0.0);
-        assert_eq!(new[STATE_DISSIPATION], r.dissipated);
-        assert_eq!(new[STATE_SLIP_PATH], ds.abs());
+        assert_eq!(r.stored_energy, 0.0);
     }
 }
 

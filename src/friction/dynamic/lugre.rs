@@ -58,8 +58,8 @@
 //!   45 (2000) 830–832.
 
 use super::{
-    book, norm, read, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
-    STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book_path, norm, read, respond, sealed::Advance, DynamicFriction, DynamicIncrement,
+    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 
@@ -74,15 +74,53 @@ pub struct LuGre {
     sigma1: f64,
     damping_velocity: f64,
     sigma2: f64,
+    /// 1/v_s (s/m).
+    inv_stribeck_velocity: f64,
+    /// 1/v_d (s/m; 0 when v_d = +∞).
+    inv_damping_velocity: f64,
+    /// 1/σ₀ (m).
+    inv_sigma0: f64,
+    /// Whether σ₁'s decay e^{−(v/v_d)²} is the Stribeck decay (δ = 2,
+    /// v_d = v_s), so one exponential serves both.
+    shared_decay: bool,
 }
 
-/// e^{−x^p} for x ≥ 0, 0 for x = +∞ (p = 2 without `powf`).
+/// e^{−x} and 1 − e^{−x} for x ≥ 0 (or +∞), each to a few ulp: below 1/32,
+/// where e^{−x} − 1 would lose the leading digits, 1 − e^{−x} by its Taylor
+/// polynomial of degree 8 (truncation < x⁸/9! ≤ 3e-18 relative), evaluated
+/// by Estrin's scheme; above, by `exp`. Cheaper than `exp_m1`.
 #[inline]
-fn decay(x: f64, p: f64) -> f64 {
-    if p == 2.0 {
-        (-x * x).exp()
+fn exp_neg(x: f64) -> (f64, f64) {
+    if x < 1.0 / 32.0 {
+        // 1 − e^{−x} = x (c₀ + c₁x + … + c₇x⁷), c_k = (−1)^k/(k+1)!.
+        const C: [f64; 8] = [
+            1.0,
+            -1.0 / 2.0,
+            1.0 / 6.0,
+            -1.0 / 24.0,
+            1.0 / 120.0,
+            -1.0 / 720.0,
+            1.0 / 5040.0,
+            -1.0 / 40320.0,
+        ];
+        let x2 = x * x;
+        let lo = (C[0] + C[1] * x) + (C[2] + C[3] * x) * x2;
+        let hi = (C[4] + C[5] * x) + (C[6] + C[7] * x) * x2;
+        let om = x * (lo + hi * (x2 * x2));
+        (1.0 - om, om)
     } else {
-        (-x.powf(p)).exp()
+        let e = (-x).exp();
+        (e, 1.0 - e)
+    }
+}
+
+/// e^{−x^p} from x² ≥ 0, 0 for x² = +∞ (p = 2 without `powf`).
+#[inline]
+fn decay(x2: f64, p: f64) -> f64 {
+    if p == 2.0 {
+        (-x2).exp()
+    } else {
+        (-x2.powf(0.5 * p)).exp()
     }
 }
 
@@ -154,6 +192,10 @@ impl LuGre {
             sigma1,
             damping_velocity,
             sigma2,
+            inv_stribeck_velocity: 1.0 / stribeck_velocity,
+            inv_damping_velocity: 1.0 / damping_velocity,
+            inv_sigma0: 1.0 / sigma0,
+            shared_decay: stribeck_exponent == 2.0 && damping_velocity == stribeck_velocity,
         })
     }
 
@@ -161,9 +203,7 @@ impl LuGre {
     /// speed `v` ≥ 0 (m/s).
     #[inline]
     pub fn stribeck(&self, v: f64) -> f64 {
-        self.mu_coulomb
-            + (self.mu_static - self.mu_coulomb)
-                * decay(v / self.stribeck_velocity, self.stribeck_exponent)
+        self.coefficients(v * v).0
     }
 
     /// The steady sliding friction force N μ(v) + σ₂ v (N) at speed `v` ≥ 0
@@ -172,21 +212,32 @@ impl LuGre {
         normal_force * self.stribeck(v) + self.sigma2 * v
     }
 
-    /// The damping σ₁(v) = σ₁ e^{−(v/v_d)²} (s/m) at speed `v` ≥ 0.
+    /// μ(v) and the damping σ₁(v) = σ₁ e^{−(v/v_d)²} (s/m) from the squared
+    /// speed `v2` = v² ≥ 0 (m²/s²; no square root before the exponentials),
+    /// one exponential serving both when the decays coincide.
     #[inline]
-    fn damping(&self, v: f64) -> f64 {
-        if self.sigma1 == 0.0 {
+    fn coefficients(&self, v2: f64) -> (f64, f64) {
+        let strib = decay(
+            v2 * self.inv_stribeck_velocity * self.inv_stribeck_velocity,
+            self.stribeck_exponent,
+        );
+        let mu = self.mu_coulomb + (self.mu_static - self.mu_coulomb) * strib;
+        let s1 = if self.sigma1 == 0.0 {
             0.0
+        } else if self.shared_decay {
+            self.sigma1 * strib
         } else {
-            let x = v / self.damping_velocity;
-            self.sigma1 * (-x * x).exp()
-        }
+            self.sigma1 * (-(v2 * self.inv_damping_velocity * self.inv_damping_velocity)).exp()
+        };
+        (mu, s1)
     }
 
     /// z at the end of an increment, the bristle force per unit normal
     /// force σ₀z + σ₁ż (along the motion, resisting it), the viscous force
-    /// σ₂v (N) and the dissipation (J); no checks.
-    #[inline]
+    /// σ₂v (N) and the dissipation (J); no checks. Three divisions and one
+    /// or two exponentials; no infinite intermediate even where μ(v)
+    /// underflows to 0 (μ_c = 0 far above v_s: the bristles relax at once).
+    #[inline(always)]
     fn increment(&self, z0: [f64; 2], n: f64, ds: [f64; 2], dt: f64) -> Increment {
         let s0 = self.sigma0;
         let len = norm(ds[0], ds[1]);
@@ -197,44 +248,57 @@ impl LuGre {
                 bristle: [s0 * z0[0], s0 * z0[1]],
                 viscous: [0.0; 2],
                 dissipated: 0.0,
+                path: 0.0,
             };
         }
-        let v = [ds[0] / dt, ds[1] / dt];
-        let speed = len / dt;
-        let mu = self.stribeck(speed);
-        let a = s0 * speed / mu;
-        let zs = [mu / s0 * ds[0] / len, mu / s0 * ds[1] / len];
-        let x = a * dt;
-        // e^{−x}, (1 − e^{−x})/a and (1 − e^{−2x})/(2a), accurate for
-        // small x.
-        let em1 = (-x).exp_m1();
-        let e = 1.0 + em1;
-        let i1 = -em1 / a;
-        let i2 = 0.5 * i1 * (1.0 + e);
+        let inv_dt = 1.0 / dt;
+        let inv_len = 1.0 / len;
+        let v = [ds[0] * inv_dt, ds[1] * inv_dt];
+        let speed = len * inv_dt;
+        let (mu, s1) = self.coefficients(v[0] * v[0] + v[1] * v[1]);
+        // The relaxation rate a = σ₀|v|/μ and x = a Δt = σ₀|Δs|/μ.
+        let inv_mu = 1.0 / mu;
+        let x = (s0 * len * inv_mu).min(f64::MAX);
+        let (e, om) = exp_neg(x);
+        // σ₁a, 0 when σ₁(v) = 0 (a may be +∞ then).
+        let s1a = if s1 > 0.0 {
+            s1 * speed * s0 * inv_mu
+        } else {
+            0.0
+        };
+        let zmag = mu * self.inv_sigma0;
+        let zs = [zmag * ds[0] * inv_len, zmag * ds[1] * inv_len];
         let q = [z0[0] - zs[0], z0[1] - zs[1]];
         let z = [zs[0] + q[0] * e, zs[1] + q[1] * e];
-        let s1 = self.damping(speed);
-        let bristle = [
-            s0 * z[0] + s1 * a * (zs[0] - z[0]),
-            s0 * z[1] + s1 * a * (zs[1] - z[1]),
-        ];
-        // ∫|z − c|² dt with z − c = p + q e^{−at}, c = σ₁v/(2σ₀).
-        let p = [
-            zs[0] - s1 * v[0] / (2.0 * s0),
-            zs[1] - s1 * v[1] / (2.0 * s0),
-        ];
-        let square = (p[0] * p[0] + p[1] * p[1]) * dt
-            + 2.0 * (p[0] * q[0] + p[1] * q[1]) * i1
-            + (q[0] * q[0] + q[1] * q[1]) * i2;
-        let rest = n * s1 * (1.0 - s1 * a / (4.0 * s0)) + self.sigma2;
+        // σ₁ż = σ₁a(z_ss − z) = −σ₁a q e^{−x} (0 once relaxed).
+        let relax = if e > 0.0 { s1a * e } else { 0.0 };
+        let bristle = [s0 * z[0] - relax * q[0], s0 * z[1] - relax * q[1]];
+        // a∫|z − c|² dt over the increment with z − c = p + q e^{−at},
+        // c = σ₁v/(2σ₀): a·Δt = x, a∫e^{−at} = 1 − e^{−x},
+        // a∫e^{−2at} = (1 − e^{−2x})/2.
+        let half = 0.5 * s1 * self.inv_sigma0;
+        let p = [zs[0] - half * v[0], zs[1] - half * v[1]];
+        let pp = p[0] * p[0] + p[1] * p[1];
+        let steady = if pp > 0.0 { pp * x } else { 0.0 };
+        let square = steady
+            + 2.0 * (p[0] * q[0] + p[1] * q[1]) * om
+            + 0.5 * (q[0] * q[0] + q[1] * q[1]) * om * (1.0 + e);
+        let rest = n * s1 * (1.0 - 0.25 * s1a * self.inv_sigma0) + self.sigma2;
         // Both terms are ≥ 0 in exact arithmetic; max(0) drops rounding.
-        let dissipated = n * s0 * a * square.max(0.0) + (speed * speed * dt * rest).max(0.0);
+        let dissipated = n * s0 * square.max(0.0) + (speed * len * rest).max(0.0);
         Increment {
             z,
             bristle,
             viscous: [self.sigma2 * v[0], self.sigma2 * v[1]],
             dissipated,
+            path: len,
         }
+    }
+
+    /// [`Self::increment`] as a call (the tangents' four extra increments).
+    #[inline(never)]
+    fn increment_call(&self, z0: [f64; 2], n: f64, ds: [f64; 2], dt: f64) -> Increment {
+        self.increment(z0, n, ds, dt)
     }
 }
 
@@ -244,6 +308,8 @@ struct Increment {
     bristle: [f64; 2],
     viscous: [f64; 2],
     dissipated: f64,
+    /// |Δs| (m).
+    path: f64,
 }
 
 impl Increment {
@@ -283,7 +349,7 @@ impl Advance for LuGre {
         let step = self.increment(z0, n, inc.slip, inc.dt);
         state[STATE_Z] = step.z[0];
         state[STATE_Z + 1] = step.z[1];
-        book(old, state, step.dissipated, inc.slip);
+        book_path(old, state, step.dissipated, step.path);
         let mut r = respond(step.force(n), n);
         r.dissipated = step.dissipated;
         r.stored_energy = 0.5 * n * self.sigma0 * (step.z[0] * step.z[0] + step.z[1] * step.z[1]);
@@ -299,8 +365,8 @@ impl Advance for LuGre {
                 let (mut plus, mut minus) = (inc.slip, inc.slip);
                 plus[j] += h;
                 minus[j] -= h;
-                let fp = self.increment(z0, n, plus, inc.dt).force(n);
-                let fm = self.increment(z0, n, minus, inc.dt).force(n);
+                let fp = self.increment_call(z0, n, plus, inc.dt).force(n);
+                let fm = self.increment_call(z0, n, minus, inc.dt).force(n);
                 for i in 0..2 {
                     r.dforce_dslip[i][j] = -(fp[i] - fm[i]) / (2.0 * h);
                 }
@@ -308,5 +374,34 @@ impl Advance for LuGre {
         }
         r.tangents = inc.tangents;
         Ok(r)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::exp_neg;
+
+    /// e^{−x} and 1 − e^{−x} against `exp` and `exp_m1` over 15 decades of
+    /// x, densely across the switch at 1/32: within 4e-15 relative (the
+    /// `exp` branch loses log₂(1/x) ≤ 5 bits of 1 − e^{−x} at the switch),
+    /// and continuous there.
+    #[test]
+    fn exp_neg_matches_exp_m1() {
+        let grid = (0..=1500)
+            .map(|i| 10f64.powf(-12.0 + i as f64 / 100.0))
+            .chain((0..=2000).map(|i| (1.0 / 32.0) * (0.999 + 0.002 * i as f64 / 2000.0)));
+        for x in grid {
+            let (e, om) = exp_neg(x);
+            let want = -(-x).exp_m1();
+            assert!((om - want).abs() <= 4e-15 * want, "x = {x}: {om} vs {want}");
+            let want = (-x).exp();
+            assert!(
+                (e - want).abs() <= 4e-16 * want.max(1e-300),
+                "x = {x}: {e} vs {want}"
+            );
+        }
+        assert_eq!(exp_neg(0.0), (1.0, 0.0));
+        assert_eq!(exp_neg(f64::INFINITY), (0.0, 1.0));
+        assert_eq!(exp_neg(f64::MAX), (0.0, 1.0));
     }
 }

@@ -43,7 +43,7 @@
 //!   Int. Congress of Applied Mechanics (1926) 332–335.
 
 use super::{
-    book, norm, read, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
+    book, norm, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
     STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
@@ -59,6 +59,8 @@ pub struct MaxwellSlip {
     /// Element slip deflection rᵢ = μᵢ/kᵢ (m).
     reach: Vec<f64>,
     sigma2: f64,
+    /// Elements with μᵢ > 0.
+    active: usize,
 }
 
 impl MaxwellSlip {
@@ -87,6 +89,7 @@ impl MaxwellSlip {
             capacity: capacity.to_vec(),
             reach: stiffness.iter().zip(capacity).map(|(k, m)| m / k).collect(),
             sigma2,
+            active: capacity.iter().filter(|&&m| m > 0.0).count(),
         })
     }
 
@@ -120,6 +123,67 @@ impl DynamicFriction for MaxwellSlip {
     }
 }
 
+/// The sums over the elements of one increment.
+#[derive(Default)]
+struct Sums {
+    /// Σ kᵢδᵢ (1/m · m).
+    spring: [f64; 2],
+    /// Σ kᵢ|δᵢ|².
+    energy: f64,
+    /// Σ μᵢ × slip of element i (m).
+    slipped: f64,
+    /// Elements that slipped.
+    slipping: usize,
+    /// Σ kᵢ ∂δᵢ/∂Δs (when asked for).
+    tangent: [[f64; 2]; 2],
+}
+
+/// Element (kᵢ = `k`, μᵢ = `m`, rᵢ = `r`) with old deflection `d` after the
+/// slip `ds`: the radial return of the trial deflection t = d + Δs onto
+/// |δ| ≤ rᵢ. Adds to `sums`; returns the new deflection.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn element(
+    d: [f64; 2],
+    ds: [f64; 2],
+    k: f64,
+    m: f64,
+    r: f64,
+    want_slip: bool,
+    sums: &mut Sums,
+) -> [f64; 2] {
+    let t = [d[0] + ds[0], d[1] + ds[1]];
+    // Stick when |t| ≤ r, decided on the squares (no square root for a
+    // sticking element); a slipping element takes |t| exactly.
+    let len2 = t[0] * t[0] + t[1] * t[1];
+    let e = if len2 > r * r || (len2.is_infinite() && norm(t[0], t[1]) > r) {
+        let len = norm(t[0], t[1]);
+        sums.slipping += 1;
+        sums.slipped += m * (len - r);
+        let s = r / len;
+        if want_slip {
+            let u = [t[0] / len, t[1] / len];
+            for a in 0..2 {
+                for b in 0..2 {
+                    let id = if a == b { 1.0 } else { 0.0 };
+                    sums.tangent[a][b] += k * s * (id - u[a] * u[b]);
+                }
+            }
+        }
+        [t[0] * s, t[1] * s]
+    } else {
+        if want_slip {
+            sums.tangent[0][0] += k;
+            sums.tangent[1][1] += k;
+        }
+        t
+    };
+    sums.spring[0] += k * e[0];
+    sums.spring[1] += k * e[1];
+    sums.energy += k * (e[0] * e[0] + e[1] * e[1]);
+    e
+}
+
 /// One increment (module docs). Regime: 0 every element sticks, 1 some slip
 /// (pre-sliding), 2 every element with μᵢ > 0 slips (gross sliding).
 /// Tangents are the consistent tangents of the radial return: dF/dN =
@@ -138,57 +202,39 @@ impl Advance for MaxwellSlip {
     ) -> Result<DynamicResponse> {
         let n = inc.normal_force;
         let ds = inc.slip;
-        let mut spring = [0.0; 2];
-        let mut energy = 0.0;
-        let mut slipped = 0.0;
-        let (mut slipping, mut active) = (0usize, 0usize);
-        let mut tangent = [[0.0; 2]; 2];
         let want_slip = inc.tangents & TANGENT_SLIP != 0;
-        for (i, ((&k, &m), &r)) in self
-            .stiffness
-            .iter()
-            .zip(&self.capacity)
-            .zip(&self.reach)
-            .enumerate()
-        {
-            let j = STATE_MODEL + 2 * i;
-            let t = [read(old, new, j) + ds[0], read(old, new, j + 1) + ds[1]];
-            // Stick when |t| ≤ r, decided on the squares (no square root for
-            // a sticking element); a slipping element takes |t| exactly.
-            let len2 = t[0] * t[0] + t[1] * t[1];
-            let d = if len2 > r * r || (len2.is_infinite() && norm(t[0], t[1]) > r) {
-                let len = norm(t[0], t[1]);
-                slipping += 1;
-                slipped += m * (len - r);
-                let s = r / len;
-                if want_slip {
-                    let u = [t[0] / len, t[1] / len];
-                    for a in 0..2 {
-                        for b in 0..2 {
-                            let id = if a == b { 1.0 } else { 0.0 };
-                            tangent[a][b] += k * s * (id - u[a] * u[b]);
-                        }
-                    }
+        let mut sums = Sums::default();
+        let params = self.stiffness.iter().zip(&self.capacity).zip(&self.reach);
+        // Two loops rather than a branch per element: from a separate old
+        // state, or in place.
+        let elements = new[STATE_MODEL..].chunks_exact_mut(2);
+        match old {
+            Some(old) => {
+                for ((d, o), ((&k, &m), &r)) in
+                    elements.zip(old[STATE_MODEL..].chunks_exact(2)).zip(params)
+                {
+                    let e = element([o[0], o[1]], ds, k, m, r, want_slip, &mut sums);
+                    d.copy_from_slice(&e);
                 }
-                [t[0] * s, t[1] * s]
-            } else {
-                if want_slip {
-                    tangent[0][0] += k;
-                    tangent[1][1] += k;
-                }
-                t
-            };
-            if m > 0.0 {
-                active += 1;
             }
-            new[j] = d[0];
-            new[j + 1] = d[1];
-            spring[0] += k * d[0];
-            spring[1] += k * d[1];
-            energy += k * (d[0] * d[0] + d[1] * d[1]);
+            None => {
+                for (d, ((&k, &m), &r)) in elements.zip(params) {
+                    let e = element([d[0], d[1]], ds, k, m, r, want_slip, &mut sums);
+                    d.copy_from_slice(&e);
+                }
+            }
         }
+        let Sums {
+            spring,
+            energy,
+            slipped,
+            slipping,
+            tangent,
+        } = sums;
+        let active = self.active;
         let viscous = if inc.dt > 0.0 {
-            [self.sigma2 * ds[0] / inc.dt, self.sigma2 * ds[1] / inc.dt]
+            let c = self.sigma2 / inc.dt;
+            [c * ds[0], c * ds[1]]
         } else {
             [0.0; 2]
         };
