@@ -17,11 +17,22 @@
 //!   "rods": { "widths": [1.5e-6], "depth": 1.35e-5 },
 //!   "mechanisms": { "chemical": true, "van_der_waals": true, "elastic": true, "plastic": true },
 //!   "loading": { "fixed_load_fraction": { "fraction": 0.35 } },
-//!   "sliding": { "distance": 1.5e-4, "step": 1.5e-6 },
+//!   "sliding": { "distance": 1.5e-4, "step": 1.5e-6, "velocity": 1e-3 },
 //!   "outputs": { "csv": true, "svg": true },
-//!   "load_sweep": { "fractions": [0.05, 0.11, 0.25, 0.45] }
+//!   "load_sweep": { "fractions": [0.05, 0.11, 0.25, 0.45] },
+//!   "friction_models": [
+//!     { "name": "LuGre", "lugre": { "mu_coulomb": 0.9, "mu_static": 1.2,
+//!                                   "stribeck_velocity": 1e-3, "sigma0": 3e5 } },
+//!     { "name": "Maxwell-slip 2", "maxwell_slip": { "stiffness": [4e5, 1e5],
+//!                                                   "capacity": [0.5, 0.5] } }
+//!   ]
 //! }
 //! ```
+//!
+//! `friction_models` (optional) chooses dynamic friction models of
+//! [`crate::friction::dynamic`] to run along the same track; with models,
+//! `sliding.velocity` (m/s) is required. See [`models`] for the keys and
+//! [`Scene::run_friction_models`] for the run.
 //!
 //! Every object rejects unknown fields. All numbers SI (m, N, Pa, J).
 //! File paths are relative to the scene file's directory
@@ -31,15 +42,24 @@
 //! `sliding.step`, `surfaces.counter.path`).
 
 use crate::error::{check, Error};
+use crate::friction::dynamic::DynamicModel;
 use crate::friction::geometry::{nano_analysis, rod_levels, NanoAsperities, SliderGeometry};
 use crate::friction::ledger::{CofForm, Mechanisms};
 use crate::friction::mechanisms::FrictionMaterial;
 use crate::friction::rods::{PlasticUpdate, RodOptions, RodSolver};
-use crate::friction::slider::{Loading, Slider, SliderOptions, TrackEnd};
+use crate::friction::slider::{Loading, SlideRun, Slider, SliderOptions, TrackEnd};
 use crate::surface::{read_profile, read_topography, Form, MapForm, Profile, SelfAffine, Spacing};
 use serde::{Deserialize, Serialize};
+use std::borrow::Cow;
 use std::fmt;
 use std::path::{Path, PathBuf};
+
+pub mod models;
+
+pub use models::{
+    run_along, DynamicModelSpec, FrictionModelSpec, LuGreSpec, MaxwellSlipSpec,
+    PrandtlTomlinsonSpec, TrackRun, TrackStep, TrackSummary,
+};
 
 /// Most samples a scene's generated (`self_affine`) profile may ask for:
 /// 2²⁴ (16 777 216; 128 MiB of heights and twice that for the FFT). A scene
@@ -63,8 +83,9 @@ pub enum SceneError {
     /// A value is outside its domain, or the model cannot be built; `field`
     /// is the scene field it came from.
     Invalid {
-        /// Scene field (e.g. `"loading"`, `"surfaces.counter"`).
-        field: &'static str,
+        /// Scene field path (e.g. `"loading"`, `"surfaces.counter"`,
+        /// `"friction_models[1].lugre"`).
+        field: Cow<'static, str>,
         /// The library's error (names the argument and bound).
         error: Error,
     },
@@ -99,7 +120,15 @@ impl fmt::Display for SceneError {
 impl std::error::Error for SceneError {}
 
 fn at(field: &'static str) -> impl Fn(Error) -> SceneError {
-    move |error| SceneError::Invalid { field, error }
+    move |error| invalid(field, error)
+}
+
+/// The error `error` at scene field `field`.
+fn invalid(field: impl Into<Cow<'static, str>>, error: Error) -> SceneError {
+    SceneError::Invalid {
+        field: field.into(),
+        error,
+    }
 }
 
 /// The material of both bodies.
@@ -222,7 +251,7 @@ pub struct RodsSpec {
     pub root_margin: Option<f64>,
     /// Plastic update (default nearest neighbours, the thesis's rule; the
     /// chapter-6 scenes use Gaussian weights, see
-    /// [`PlasticUpdate`](crate::friction::PlasticUpdate)).
+    /// [`PlasticUpdate`]).
     #[serde(default)]
     pub plastic: PlasticSpec,
     /// Solver (default sweep).
@@ -289,6 +318,12 @@ pub struct SlidingSpec {
     /// Counter-surface past its end (default error).
     #[serde(default)]
     pub track_end: TrackEnd,
+    /// Sliding velocity (m/s): the time increment step/velocity of the
+    /// scene's dynamic friction models (the energy-dissipation model is
+    /// quasi-static and does not use it). Required when the scene has
+    /// `friction_models`; finite and > 0 when given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub velocity: Option<f64>,
 }
 
 /// Loads of a load sweep (`asperity slide` plots the mean true contact area
@@ -348,6 +383,10 @@ pub struct Scene {
     /// (see [`Scene::sweep_loads`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub load_sweep: Option<LoadSweep>,
+    /// Dynamic friction models run along the same track (optional; see
+    /// [`models`] and [`Scene::run_friction_models`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub friction_models: Vec<FrictionModelSpec>,
     /// Directory that relative paths are resolved against (not serialised).
     #[serde(skip)]
     pub base: PathBuf,
@@ -388,15 +427,18 @@ impl Scene {
         }
         check::positive("distance", self.sliding.distance).map_err(at("sliding"))?;
         check::positive("step", self.sliding.step).map_err(at("sliding"))?;
+        if let Some(v) = self.sliding.velocity {
+            check::positive("velocity", v).map_err(at("sliding"))?;
+        }
         if self.rods.widths.is_empty() {
-            return Err(SceneError::Invalid {
-                field: "rods",
-                error: Error::InvalidArgument {
+            return Err(invalid(
+                "rods",
+                Error::InvalidArgument {
                     name: "widths.len()",
                     value: 0.0,
                     bound: ">= 1 width",
                 },
-            });
+            ));
         }
         match self.loading {
             LoadingSpec::FixedGap { position } => {
@@ -430,14 +472,14 @@ impl Scene {
                 let _ = g;
                 check::positive("dx", *dx).map_err(at(field))?;
                 if *points > MAX_POINTS {
-                    return Err(SceneError::Invalid {
+                    return Err(invalid(
                         field,
-                        error: Error::InvalidArgument {
+                        Error::InvalidArgument {
                             name: "points",
                             value: *points as f64,
                             bound: "<= 2^24 (scene::MAX_POINTS)",
                         },
-                    });
+                    ));
                 }
             }
         }
@@ -450,14 +492,14 @@ impl Scene {
                 LoadSweep::Fractions(v) => ("fractions", v, true),
             };
             if values.is_empty() {
-                return Err(SceneError::Invalid {
-                    field: "load_sweep",
-                    error: Error::InvalidArgument {
+                return Err(invalid(
+                    "load_sweep",
+                    Error::InvalidArgument {
                         name,
                         value: 0.0,
                         bound: "at least one load",
                     },
-                });
+                ));
             }
             for &v in values {
                 if fraction {
@@ -468,7 +510,84 @@ impl Scene {
                 .map_err(at("load_sweep"))?;
             }
         }
+        self.friction_models()?;
         Ok(())
+    }
+
+    /// The scene's dynamic friction models, in order, built and checked:
+    /// names (not empty, no control characters, unique; errors at
+    /// `friction_models[i].name`), parameters (the constructor's error at
+    /// `friction_models[i].<key>`), and `sliding.velocity` given when there
+    /// are models (error at `sliding`, naming `velocity`). Empty without
+    /// models.
+    pub fn friction_models(&self) -> Result<Vec<DynamicModel>, SceneError> {
+        let specs = &self.friction_models;
+        if !specs.is_empty() && self.sliding.velocity.is_none() {
+            return Err(invalid(
+                "sliding",
+                Error::InvalidArgument {
+                    name: "velocity",
+                    value: f64::NAN,
+                    bound: "given (m/s, finite, > 0) when the scene has friction_models",
+                },
+            ));
+        }
+        let mut out = Vec::with_capacity(specs.len());
+        let mut seen = std::collections::HashMap::with_capacity(specs.len());
+        for (i, spec) in specs.iter().enumerate() {
+            let name_at = || format!("friction_models[{i}].name");
+            models::check_name(&spec.name).map_err(|e| invalid(name_at(), e))?;
+            if let Some(&j) = seen.get(spec.name.as_str()) {
+                return Err(invalid(
+                    name_at(),
+                    Error::InvalidArgument {
+                        name: "name",
+                        value: j as f64,
+                        bound: "unique among friction_models (the entry at this index has it)",
+                    },
+                ));
+            }
+            seen.insert(spec.name.as_str(), i);
+            let model = spec
+                .model
+                .build()
+                .map_err(|e| invalid(format!("friction_models[{i}].{}", spec.model.key()), e))?;
+            out.push(model);
+        }
+        Ok(out)
+    }
+
+    /// Runs the scene's dynamic friction models along the track of `run`
+    /// (the energy-dissipation run of this scene's slider) at
+    /// `sliding.velocity`, one [`TrackRun`] per model in scene order
+    /// ([`run_along`]); empty without models. Errors: those of
+    /// [`Self::friction_models`], `sliding.velocity` not finite and > 0, and
+    /// a failed step at `friction_models[i].<key>`, its increment given in
+    /// the field (`… at increment k`).
+    pub fn run_friction_models(&self, run: &SlideRun) -> Result<Vec<TrackRun>, SceneError> {
+        let built = self.friction_models()?;
+        if built.is_empty() {
+            return Ok(Vec::new());
+        }
+        let velocity = self.sliding.velocity.unwrap_or(f64::NAN);
+        check::positive("velocity", velocity).map_err(at("sliding"))?;
+        built
+            .iter()
+            .zip(&self.friction_models)
+            .enumerate()
+            .map(|(i, (model, spec))| {
+                run_along(model, run, velocity).map_err(|e| {
+                    invalid(
+                        format!(
+                            "friction_models[{i}].{} at increment {}",
+                            spec.model.key(),
+                            e.index
+                        ),
+                        e.error,
+                    )
+                })
+            })
+            .collect()
     }
 
     /// The loads (N) of the scene's load sweep for `slider` (fractions are
@@ -517,14 +636,14 @@ impl Scene {
                     }
                 };
                 if i1 > p.len() || i0.saturating_add(8) > i1 {
-                    return Err(SceneError::Invalid {
+                    return Err(invalid(
                         field,
-                        error: Error::InvalidArgument {
+                        Error::InvalidArgument {
                             name: "length",
                             value: length.unwrap_or(f64::NAN),
                             bound: "start + length within the profile (at least 8 samples)",
                         },
-                    });
+                    ));
                 }
                 let cut = p.slice(i0, i1).map_err(at(field))?;
                 let cut = Profile::new(cut.dx(), cut.heights().to_vec()).map_err(at(field))?;
@@ -582,14 +701,14 @@ impl Scene {
             rod_levels(slider.heights(), slider.dx(), &self.rods.widths).map_err(at("rods"))?;
         let tip = *self.rods.widths.last().expect("validated");
         if nano.spacing > tip * (1.0 + 1e-9) {
-            return Err(SceneError::Invalid {
-                field: "rods",
-                error: Error::OutOfDomain {
+            return Err(invalid(
+                "rods",
+                Error::OutOfDomain {
                     name: "widths",
                     value: tip,
                     reason: "the tip rods are narrower than the nano-asperity spacing: no nano-asperity fits",
                 },
-            });
+            ));
         }
         let per_side = (tip / nano.spacing * (1.0 + 1e-9)).floor().max(1.0) as usize;
         let geometry =

@@ -1,8 +1,9 @@
 //! `asperity slide` (feature `cli`), run as a user would: the chapter-6
 //! scene with `--json` (keys and ranges), the contact-area-against-load plot
 //! (a load sweep, against separate library runs; per step otherwise; only
-//! with `--out`), and bad scenes (clear error, exit code != 0). The binary is
-//! found or built by `tests/common`.
+//! with `--out`), the dynamic friction models a scene chooses (the models'
+//! CSV, plot and summaries), and bad scenes (clear error, exit code != 0).
+//! The binary is found or built by `tests/common`.
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -71,6 +72,161 @@ fn chapter6_scene_json() {
     let csv = std::fs::read_to_string(out.join("chapter6_copper.csv")).unwrap();
     assert_eq!(csv.lines().count(), 101);
     assert!(csv.starts_with("position_m,"));
+    // No friction models: nothing of them.
+    assert!(v.get("friction_models").is_none(), "{v}");
+    assert!(!out.join("chapter6_copper_models.csv").exists());
+    assert!(!out.join("chapter6_copper_models_cof.svg").exists());
+}
+
+/// The example scene choosing LuGre, Maxwell-slip and Prandtl–Tomlinson:
+/// the per-model keys of the JSON (against the library's run of the same
+/// scene and the models' closed forms), the models' CSV (its
+/// energy-dissipation column is the slide's μ) and the plot (one line per
+/// model and one for the energy-dissipation model, the names in the
+/// legend).
+#[test]
+fn dynamic_models_scene_writes_and_reports_every_model() {
+    use asperity::scene::Scene;
+    let out = tmp("models");
+    let scene = manifest().join("examples/scenes/dynamic_models.json");
+    let o = Command::new(binary())
+        .arg("slide")
+        .arg(&scene)
+        .arg("--json")
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let models = v["friction_models"]
+        .as_array()
+        .unwrap_or_else(|| panic!("friction_models: {v}"));
+    let s = Scene::from_file(&scene).unwrap();
+    let run = s
+        .build()
+        .unwrap()
+        .slide(s.sliding.distance, s.sliding.step)
+        .unwrap();
+    let tracks = s.run_friction_models(&run).unwrap();
+    let names = ["LuGre", "Maxwell-slip 4", "Prandtl-Tomlinson"];
+    let keys = ["lugre", "maxwell_slip", "prandtl_tomlinson"];
+    assert_eq!(models.len(), 3);
+    for (k, m) in models.iter().enumerate() {
+        assert_eq!(m["name"], names[k], "{m}");
+        assert_eq!(m["model"], keys[k], "{m}");
+        let t = &tracks[k].summary;
+        for (key, want) in [
+            ("mean_cof", t.mean_cof),
+            ("static_cof", t.static_cof),
+            ("mean_friction_force", t.mean_friction_force),
+            ("dissipation", t.dissipation),
+        ] {
+            let got = m[key].as_f64().unwrap_or_else(|| panic!("{key}: {m}"));
+            assert!(
+                (got - want).abs() <= 1e-12 * want.abs(),
+                "{key}: {got} vs {want}"
+            );
+        }
+        assert_eq!(
+            m["stick_slip_events"].as_u64(),
+            Some(t.stick_slip_events as u64)
+        );
+    }
+    // Closed forms: LuGre slides steadily on its Stribeck curve at 1 mm/s,
+    // Maxwell-slip's static coefficient is the sum of its capacities, and
+    // the Prandtl-Tomlinson tip slips once in each of the 5 lattice periods.
+    let num = |k: usize, key: &str| models[k][key].as_f64().unwrap();
+    let stribeck = 0.9 + 0.3 * (-1.0f64).exp();
+    assert!((num(0, "static_cof") - stribeck).abs() < 1e-9);
+    assert!((num(1, "static_cof") - 1.05).abs() < 1e-12);
+    assert_eq!(models[0]["stick_slip_events"].as_u64(), Some(0));
+    assert_eq!(models[1]["stick_slip_events"].as_u64(), Some(0));
+    assert_eq!(models[2]["stick_slip_events"].as_u64(), Some(5));
+    let files: Vec<&str> = v["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f.as_str().unwrap())
+        .collect();
+    for f in ["dynamic_models_models.csv", "dynamic_models_models_cof.svg"] {
+        assert!(out.join(f).is_file(), "{f}");
+        assert!(files.iter().any(|p| p.ends_with(f)), "{f} in {files:?}");
+    }
+    // The CSV: distance, the slide's μ, one μ per model.
+    let csv = std::fs::read_to_string(out.join("dynamic_models_models.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = csv.lines().map(|l| l.split(',').collect()).collect();
+    assert_eq!(
+        rows[0],
+        [
+            "distance_m",
+            "energy_dissipation",
+            "LuGre",
+            "Maxwell-slip 4",
+            "Prandtl-Tomlinson"
+        ]
+    );
+    assert_eq!(rows.len(), 101);
+    let slide = std::fs::read_to_string(out.join("dynamic_models.csv")).unwrap();
+    for (k, line) in slide.lines().skip(1).enumerate() {
+        let cols: Vec<&str> = line.split(',').collect();
+        assert_eq!(rows[k + 1][0], cols[0], "position {k}");
+        assert_eq!(rows[k + 1][1], cols[4], "cof {k}");
+        for (j, t) in tracks.iter().enumerate() {
+            let mu: f64 = rows[k + 1][2 + j].parse().unwrap();
+            assert_eq!(mu, t.steps[k].cof, "{k}, model {j}");
+        }
+    }
+    // The plot: a line of every increment for each of the four, and the
+    // legend (line samples of two points) naming them.
+    let svg = std::fs::read_to_string(out.join("dynamic_models_models_cof.svg")).unwrap();
+    let lines: Vec<usize> = svg
+        .split("<polyline")
+        .skip(1)
+        .filter(|p| p.contains("stroke-width=\"2\""))
+        .map(|p| {
+            let pts = p.split("points=\"").nth(1).unwrap();
+            pts[..pts.find('"').unwrap()].split_whitespace().count()
+        })
+        .collect();
+    assert_eq!(lines.iter().filter(|&&n| n == 100).count(), 4, "{lines:?}");
+    assert_eq!(lines.iter().filter(|&&n| n == 2).count(), 4, "{lines:?}");
+    for name in names.iter().chain(&["energy dissipation"]) {
+        // plotters writes a text's content on a line of its own.
+        assert!(svg.lines().any(|l| l.trim() == *name), "legend: {name}");
+    }
+}
+
+/// Without `--json` the models' table follows the summary.
+#[test]
+fn dynamic_models_table_in_the_human_output() {
+    let dir = tmp("models-human");
+    let scene = manifest().join("examples/scenes/dynamic_models.json");
+    let o = Command::new(binary())
+        .current_dir(&dir)
+        .arg("slide")
+        .arg(&scene)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.contains("friction models at 1.0000e-3 m/s"), "{text}");
+    for name in [
+        "energy dissipation",
+        "LuGre",
+        "Maxwell-slip 4",
+        "Prandtl-Tomlinson",
+    ] {
+        assert!(
+            text.lines().any(|l| l.trim_start().starts_with(name)),
+            "{name}: {text}"
+        );
+    }
+    assert!(
+        text.contains("wrote ./dynamic_models_models_cof.svg"),
+        "{text}"
+    );
+    assert!(dir.join("dynamic_models_models.csv").is_file());
 }
 
 /// The scene's `load_sweep` (Table 6-1 fractions): one slide per load, the
@@ -219,6 +375,30 @@ fn bad_scenes_fail_clearly() {
             "\"load_sweep\": { \"loads\": [] }, \"outputs\"",
         ),
         "load_sweep",
+    );
+    // Friction models: the velocity they need, a parameter by its path, an
+    // unknown model.
+    let models =
+        std::fs::read_to_string(manifest().join("examples/scenes/dynamic_models.json")).unwrap();
+    fails(
+        "velocity",
+        &models.replace(", \"velocity\": 1e-3", ""),
+        "velocity",
+    );
+    fails(
+        "sigma1",
+        &models.replace("\"sigma1\": 100", "\"sigma1\": 1e6"),
+        "`friction_models[0].lugre`",
+    );
+    fails(
+        "sigma1_name",
+        &models.replace("\"sigma1\": 100", "\"sigma1\": 1e6"),
+        "sigma1",
+    );
+    fails(
+        "bristle",
+        &models.replace("\"maxwell_slip\"", "\"bristle\""),
+        "unknown variant `bristle`",
     );
     let o = Command::new(binary())
         .args(["slide", "/nonexistent/scene.json"])

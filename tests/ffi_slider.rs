@@ -505,6 +505,26 @@ fn scene_json_errors_and_base_dir() {
     // A value outside its domain: the field and the bound.
     let (st, _) = from_json(&good.replace("\"load\": 0.18", "\"load\": 99"), None);
     expect_error(st, ASPERITY_ERR_OUT_OF_DOMAIN, "`load`");
+    // A scene choosing dynamic friction models builds the same slider; a
+    // bad model parameter is named by its field path.
+    let models = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/dynamic_models.json"),
+    )
+    .unwrap();
+    let (st, h) = from_json(&models, None);
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    unsafe { asperity_slider_free(h) };
+    let (st, h) = from_json(&models.replace("\"sigma1\": 100", "\"sigma1\": 1e6"), None);
+    expect_error(
+        st,
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`friction_models[0].lugre`",
+    );
+    assert!(
+        h.is_null() && last_message().contains("sigma1"),
+        "{}",
+        last_message()
+    );
     // Not UTF-8.
     let bytes = b"{\xff}";
     let mut h = null_mut();

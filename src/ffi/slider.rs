@@ -427,9 +427,10 @@ fn scene_failure(e: &SceneError) -> Error {
 /// no NUL needed; the format of `examples/scenes/*.json`). Relative file
 /// paths in the scene are resolved against `base_dir` (a NUL-terminated
 /// UTF-8 directory path), or against the current directory when `base_dir`
-/// is NULL. The scene's `sliding` and `outputs` are validated but unused by
-/// the step. Writes a new handle to `*out` (NULL on failure). Errors: NULL
-/// `json` or `out`; invalid UTF-8 (`json`, `base_dir`);
+/// is NULL. The scene's `sliding`, `outputs`, `load_sweep` and
+/// `friction_models` are validated but unused by the step. Writes a new
+/// handle to `*out` (NULL on failure). Errors: NULL `json` or `out`;
+/// invalid UTF-8 (`json`, `base_dir`);
 /// `ASPERITY_ERR_PARSE` for a JSON or field error (the message gives line,
 /// column and the field); the scene's value errors naming the field; a
 /// file the scene names that cannot be read (`ASPERITY_ERR_IO`).

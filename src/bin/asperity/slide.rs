@@ -9,9 +9,39 @@
 //! increment against its normal load (meaningful at a fixed gap, where the
 //! load varies; at a fixed load all points share one load and R² is
 //! undefined).
+//!
+//! When the scene chooses dynamic friction models (`friction_models`, with
+//! `sliding.velocity`; see `asperity::scene::models`), each runs along the
+//! same track ([`Scene::run_friction_models`]: per increment the slide's
+//! normal load, its step as slip, step/velocity as time) and the command
+//! also writes
+//!
+//! * `{stem}_models.csv` (CSV outputs on): columns `distance_m`,
+//!   `energy_dissipation` (the slide's μ) and one per model, headed by its
+//!   name, holding its μ = F/N after each increment (F the friction force
+//!   resisting the motion: negative while it drives the slider, as a
+//!   Prandtl–Tomlinson tip overshooting after a slip);
+//! * `{stem}_models_cof.svg` (SVG outputs on): μ against the sliding
+//!   distance, one line per model and one for the energy-dissipation model,
+//!   with a legend of the names;
+//!
+//! prints a table of the models next to the energy-dissipation model, and
+//! adds to the `--json` object the key `friction_models`: an array, in scene
+//! order, of objects with
+//!
+//! * `name`, `model` (the scene key: `lugre`, `maxwell_slip`,
+//!   `prandtl_tomlinson`),
+//! * `mean_cof` (mean μ over the increments), `static_cof` (the largest μ:
+//!   the static coefficient),
+//! * `mean_friction_force` (N), `dissipation` (total, J),
+//! * `stick_slip_events` (bursts of dissipation: runs of increments each
+//!   dissipating more than ten times the median increment,
+//!   `asperity::scene::TrackSummary::stick_slip_events`).
+//!
+//! Without models nothing of this is computed, written or printed.
 
 use asperity::friction::{Loading, SlideRun, SlideStep, Slider};
-use asperity::scene::Scene;
+use asperity::scene::{Scene, TrackRun};
 use plotters::prelude::*;
 use std::error::Error;
 use std::io::IsTerminal;
@@ -50,6 +80,7 @@ pub fn run(args: &SlideArgs) -> Res<()> {
         bar.set_position(k as u64);
     })?;
     bar.finish_and_clear();
+    let tracks = scene.run_friction_models(&run)?;
     let out = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
     let stem = args
         .scene
@@ -65,6 +96,11 @@ pub fn run(args: &SlideArgs) -> Res<()> {
         let p = out.join(format!("{stem}.csv"));
         write_csv(&p, &run.steps)?;
         written.push(p);
+        if !tracks.is_empty() {
+            let p = out.join(format!("{stem}_models.csv"));
+            models_csv(&p, &scene, &run, &tracks)?;
+            written.push(p);
+        }
     }
     if scene.outputs.svg {
         let p = out.join(format!("{stem}_cof.svg"));
@@ -73,6 +109,11 @@ pub fn run(args: &SlideArgs) -> Res<()> {
         let p = out.join(format!("{stem}_dissipation.svg"));
         dissipation_plot(&p, &run.steps)?;
         written.push(p);
+        if !tracks.is_empty() {
+            let p = out.join(format!("{stem}_models_cof.svg"));
+            models_plot(&p, &scene, &run, &tracks)?;
+            written.push(p);
+        }
     }
     let area_load = if scene.outputs.svg && args.out.is_some() {
         let data = area_load_data(&scene, &slider, &run)?;
@@ -84,7 +125,10 @@ pub fn run(args: &SlideArgs) -> Res<()> {
         None
     };
     if args.json {
-        println!("{}", summary_json(&run, &written, area_load.as_ref()));
+        println!(
+            "{}",
+            summary_json(&scene, &run, &tracks, &written, area_load.as_ref())
+        );
     } else {
         let s = &run.summary;
         println!("steps                     {}", s.steps);
@@ -104,6 +148,9 @@ pub fn run(args: &SlideArgs) -> Res<()> {
             "dissipation (J)           chemical {:.4e}, van der Waals {:.4e}, elastic {:.4e}, plastic {:.4e}",
             d.chemical, d.van_der_waals, d.elastic, d.plastic
         );
+        if !tracks.is_empty() {
+            print_models(&scene, &run, &tracks);
+        }
         for p in &written {
             println!("wrote {}", p.display());
         }
@@ -111,7 +158,101 @@ pub fn run(args: &SlideArgs) -> Res<()> {
     Ok(())
 }
 
-fn summary_json(run: &SlideRun, written: &[PathBuf], area_load: Option<&AreaLoad>) -> String {
+/// The table of the dynamic models next to the energy-dissipation model.
+fn print_models(scene: &Scene, run: &SlideRun, tracks: &[TrackRun]) {
+    let v = scene.sliding.velocity.unwrap_or(f64::NAN);
+    println!("friction models at {v:.4e} m/s along the same track:");
+    let width = scene
+        .friction_models
+        .iter()
+        .map(|m| m.name.chars().count())
+        .chain([ENERGY_DISSIPATION.len()])
+        .max()
+        .unwrap_or(0);
+    println!(
+        "  {:width$}  {:>9}  {:>10}  {:>15}  {:>17}",
+        "model", "mean COF", "static COF", "dissipation (J)", "stick-slip events"
+    );
+    let s = &run.summary;
+    let static_cof = run.steps.iter().map(|r| r.cof).fold(0.0, f64::max);
+    println!(
+        "  {:width$}  {:>9.4}  {:>10.4}  {:>15.4e}  {:>17}",
+        ENERGY_DISSIPATION,
+        s.mean_cof,
+        static_cof,
+        s.dissipation.total(),
+        "-"
+    );
+    for (spec, t) in scene.friction_models.iter().zip(tracks) {
+        let m = &t.summary;
+        println!(
+            "  {:width$}  {:>9.4}  {:>10.4}  {:>15.4e}  {:>17}",
+            spec.name, m.mean_cof, m.static_cof, m.dissipation, m.stick_slip_events
+        );
+    }
+}
+
+/// The energy-dissipation model's label in the model outputs.
+const ENERGY_DISSIPATION: &str = "energy dissipation";
+
+/// A CSV field, quoted when it holds a comma or a quote (RFC 4180).
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+fn models_csv(path: &Path, scene: &Scene, run: &SlideRun, tracks: &[TrackRun]) -> Res<()> {
+    let mut s = String::from("distance_m,energy_dissipation");
+    for m in &scene.friction_models {
+        s.push(',');
+        s.push_str(&csv_field(&m.name));
+    }
+    s.push('\n');
+    for (k, r) in run.steps.iter().enumerate() {
+        s.push_str(&format!("{:e},{:e}", r.position, r.cof));
+        for t in tracks {
+            s.push_str(&format!(",{:e}", t.steps[k].cof));
+        }
+        s.push('\n');
+    }
+    std::fs::write(path, s).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(())
+}
+
+fn models_plot(path: &Path, scene: &Scene, run: &SlideRun, tracks: &[TrackRun]) -> Res<()> {
+    let x: Vec<f64> = run.steps.iter().map(|r| r.position * 1e6).collect();
+    let mut series: Vec<Series<'_>> = vec![(
+        ENERGY_DISSIPATION,
+        x.iter().zip(&run.steps).map(|(&x, r)| (x, r.cof)).collect(),
+        BLUE,
+    )];
+    const COLOURS: [RGBColor; 5] = [RED, GREEN, MAGENTA, CYAN, BLACK];
+    for (i, (spec, t)) in scene.friction_models.iter().zip(tracks).enumerate() {
+        let colour = COLOURS.get(i).copied().unwrap_or_else(|| {
+            let (r, g, b) = Palette99::pick(i).rgb();
+            RGBColor(r, g, b)
+        });
+        let pts = x.iter().zip(&t.steps).map(|(&x, r)| (x, r.cof)).collect();
+        series.push((spec.name.as_str(), pts, colour));
+    }
+    plot(
+        path,
+        "Coefficient of friction: energy dissipation and dynamic models",
+        "COF",
+        &series,
+    )
+}
+
+fn summary_json(
+    scene: &Scene,
+    run: &SlideRun,
+    tracks: &[TrackRun],
+    written: &[PathBuf],
+    area_load: Option<&AreaLoad>,
+) -> String {
     let s = &run.summary;
     let d = s.dissipation;
     let mut v = serde_json::json!({
@@ -142,6 +283,25 @@ fn summary_json(run: &SlideRun, written: &[PathBuf], area_load: Option<&AreaLoad
             "intercept": a.fit.intercept,
             "r_squared": a.fit.r_squared,
         });
+    }
+    if !tracks.is_empty() {
+        v["friction_models"] = scene
+            .friction_models
+            .iter()
+            .zip(tracks)
+            .map(|(spec, t)| {
+                let m = &t.summary;
+                serde_json::json!({
+                    "name": spec.name,
+                    "model": spec.model.key(),
+                    "mean_cof": m.mean_cof,
+                    "static_cof": m.static_cof,
+                    "mean_friction_force": m.mean_friction_force,
+                    "dissipation": m.dissipation,
+                    "stick_slip_events": m.stick_slip_events,
+                })
+            })
+            .collect();
     }
     v.to_string()
 }
