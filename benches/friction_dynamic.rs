@@ -3,14 +3,18 @@
 //! write itself: LuGre integrated by explicit Euler with sub-steps (the
 //! usual scheme), at the sub-step counts that reach 1e-3 and 1e-6 relative
 //! force error against the exact increment, and an inline 1-D Maxwell-slip
-//! loop without validation.
+//! loop without validation. Then the integrated models, per increment of a
+//! stick-slip run: Prandtl–Tomlinson with one and two springs, and the
+//! Burridge–Knopoff chain of 1, 10 and 100 blocks.
 //!
 //! `cargo bench --bench friction_dynamic`. A calibrated timing loop, median
 //! over rounds, paths interleaved round by round. Tunables:
 //! `ASPERITY_BENCH_ROUNDS` (default 11), `ASPERITY_BENCH_RUN_MS` (default
 //! 40).
 
-use asperity::friction::dynamic::{DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip};
+use asperity::friction::dynamic::{
+    BurridgeKnopoff, DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip, PrandtlTomlinson,
+};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
@@ -202,5 +206,75 @@ fn main() {
             "| Maxwell-slip, {elements} elements (`MaxwellSlip::step`), track | – | – | {t:.1} (inline 1-D loop without checks: {ti:.1}) |"
         );
         println!("| Maxwell-slip, {elements} elements, 2-D slip (30°) | – | – | {t2:.1} |");
+    }
+
+    // The integrated models over N increments of a stick-slip run (from the
+    // state after a first stretch of the run), mean time per increment.
+    let run = |m: &dyn DynamicFriction, inc: DynamicIncrement, start: &[f64]| {
+        let mut s = start.to_vec();
+        let t = time(rounds.min(5), run_ms, || {
+            s.copy_from_slice(start);
+            for _ in 0..N {
+                black_box(m.step_in_place(&mut s, black_box(&inc)).unwrap());
+            }
+        });
+        s.copy_from_slice(start);
+        let (mut events, mut d) = (0, 0.0);
+        for _ in 0..N {
+            let r = m.step_in_place(&mut s, &inc).unwrap();
+            events += usize::from(r.regime != 0);
+            d += r.dissipated;
+        }
+        (t, events, d)
+    };
+    let warm = |m: &dyn DynamicFriction, inc: &DynamicIncrement, s: &mut [f64]| {
+        for _ in 0..N {
+            m.step_in_place(s, inc).unwrap();
+        }
+    };
+    println!("\n| integrated model, stick-slip run | increment | ns per increment |");
+    println!("|---|---|---:|");
+    // Prandtl–Tomlinson at η = 3 on a 0.3 nm lattice, 1 µm/s, 1 µs
+    // increments (300 per lattice period; ω = 1e6 /s).
+    let (a, k, mass) = (3e-10, 1.0, 1e-12);
+    let u0 = 3.0 * k * a * a / (4.0 * std::f64::consts::PI.powi(2));
+    let g = (k * mass).sqrt();
+    let pt = PrandtlTomlinson::new(u0, a, k, mass, g, 1e-9).unwrap();
+    let pt2 =
+        PrandtlTomlinson::two_spring(u0, a, 2.0 * k, mass, g, 2.0 * k, mass, g, 1e-9).unwrap();
+    let inc = DynamicIncrement {
+        normal_force: 1.0,
+        slip: [1e-12, 0.0],
+        dt: 1e-6,
+        ..Default::default()
+    };
+    for (label, m) in [("one spring", &pt), ("two springs", &pt2)] {
+        let mut start = vec![0.0; m.state_len()];
+        warm(m, &inc, &mut start);
+        let (t, _, _) = run(m, inc, &start);
+        println!(
+            "| Prandtl-Tomlinson, {label}, η = 3 | 1 µs (1/300 of a lattice period) | {t:.0} |"
+        );
+    }
+    // Burridge–Knopoff: 10 mg blocks on 1000 N/m leaf springs, coupled by
+    // 1e4 N/m, μ_s 0.5, μ_k 0.3 weakening on 5 cm/s, 1 N per block, driven
+    // at 1 cm/s in 0.1 ms increments (a stick-slip period of ~40 ms), one
+    // block displaced by 1 µm at the start.
+    for blocks in [1usize, 10, 100] {
+        let m = BurridgeKnopoff::new(blocks, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-9).unwrap();
+        let inc = DynamicIncrement {
+            normal_force: blocks as f64,
+            slip: [1e-6, 0.0],
+            dt: 1e-4,
+            ..Default::default()
+        };
+        let mut start = vec![0.0; m.state_len()];
+        start[asperity::friction::dynamic::burridge_knopoff::state_block(blocks / 3)] = -1e-6;
+        warm(&m, &inc, &mut start);
+        let (t, slipping, d) = run(&m, inc, &start);
+        println!(
+            "| Burridge-Knopoff, {blocks} block{} | 0.1 ms ({slipping} of {N} increments with slip, {d:.2e} J) | {t:.0} |",
+            if blocks == 1 { "" } else { "s" }
+        );
     }
 }

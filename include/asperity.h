@@ -101,8 +101,14 @@
 
 // Index in a dynamic-friction state of the model's first variable: LuGre's
 // bristle deflection z (x, y; m); Maxwell-slip's element deflections
-// (x, y per element; m).
+// (x, y per element; m); Prandtl-Tomlinson's x - x_s (m), tip velocity
+// (m/s), support position x_s (m), then with two springs the cantilever
+// body's x_c - x_s (m) and velocity (m/s); Burridge-Knopoff's x_i - x_d (m)
+// and v_i (m/s) per block, then the driver position x_d (m).
 #define ASPERITY_DYNAMIC_STATE_MODEL 2
+
+// The largest Burridge-Knopoff chain (blocks).
+#define ASPERITY_DYNAMIC_MAX_BLOCKS 256
 
 // Fidelity: DMT.
 #define ASPERITY_FIDELITY_DMT 0
@@ -395,10 +401,11 @@
 // PSD data window: periodic Hann, normalised by its mean square.
 #define ASPERITY_WINDOW_HANN 1
 
-// A dynamic friction model (opaque): LuGre or Maxwell-slip. Create it with
-// `asperity_dynamic_lugre_new` or `asperity_dynamic_maxwell_slip_new`,
-// release it with `asperity_dynamic_friction_free`. Immutable; safe to
-// share between threads.
+// A dynamic friction model (opaque): LuGre, Maxwell-slip,
+// Prandtl-Tomlinson (one or two springs) or Burridge-Knopoff. Create it
+// with `asperity_dynamic_*_new`, release it with
+// `asperity_dynamic_friction_free`. Immutable; safe to share between
+// threads.
 typedef struct AsperityDynamicFriction AsperityDynamicFriction;
 
 // A Greenwood–Williamson surface over a measured or generated list of
@@ -706,6 +713,57 @@ typedef struct AsperityLugreParams {
     // Viscous coefficient sigma_2 (N s/m), finite and >= 0.
     double sigma2;
 } AsperityLugreParams;
+
+// The two-spring (tip-cantilever) Prandtl-Tomlinson model's parameters
+// (see `PrandtlTomlinson::two_spring`). SI units.
+typedef struct AsperityPrandtlTomlinsonTwoSpringParams {
+    // Lattice potential amplitude U0 (J), finite and > 0.
+    double amplitude;
+    // Lattice period a (m), finite and > 0.
+    double period;
+    // Tip (contact) spring k_t between the tip and the cantilever body
+    // (N/m), finite and > 0.
+    double tip_stiffness;
+    // Tip mass m_t (kg), finite and > 0.
+    double tip_mass;
+    // Tip damping gamma_t (kg/s), finite and >= 0.
+    double tip_damping;
+    // Cantilever lateral spring k_c between the body and the support
+    // (N/m), finite and > 0.
+    double cantilever_stiffness;
+    // Cantilever body mass m_c (kg), finite and > 0.
+    double cantilever_mass;
+    // Cantilever damping gamma_c (kg/s), finite and >= 0.
+    double cantilever_damping;
+    // Relative tolerance of the integration, in [1e-13, 1e-2].
+    double tolerance;
+} AsperityPrandtlTomlinsonTwoSpringParams;
+
+// The Burridge-Knopoff chain's parameters (see `BurridgeKnopoff::new`).
+// SI units.
+typedef struct AsperityBurridgeKnopoffParams {
+    // Number of blocks M, in [1, `ASPERITY_DYNAMIC_MAX_BLOCKS`]; each
+    // carries N/M of the normal force.
+    size_t blocks;
+    // Mass of each block m (kg), finite and > 0.
+    double mass;
+    // Coupling spring k_c between neighbours (N/m), finite and >= 0.
+    double coupling_stiffness;
+    // Leaf spring k_p from the driver to each block (N/m), finite, > 0.
+    double pulling_stiffness;
+    // Static coefficient mu_s, finite and >= 0.
+    double mu_static;
+    // Kinetic coefficient mu_k at the onset of slip, in [0, mu_s].
+    double mu_kinetic;
+    // Weakening velocity v_c (m/s) of mu_k / (1 + v/v_c), > 0;
+    // +infinity for constant kinetic friction.
+    double weakening_velocity;
+    // Viscous damping of each block against the substrate (kg/s),
+    // finite and >= 0.
+    double damping;
+    // Relative tolerance of the integration, in [1e-13, 1e-2].
+    double tolerance;
+} AsperityBurridgeKnopoffParams;
 
 // One increment of a contact point (SI units).
 typedef struct AsperityDynamicIncrement {
@@ -1633,11 +1691,33 @@ int32_t asperity_dynamic_prandtl_tomlinson_new(double amplitude,
                                                double tolerance,
                                                struct AsperityDynamicFriction **out);
 
+// Build a two-spring (tip-cantilever) Prandtl-Tomlinson model from
+// `*params`: the tip in the lattice potential joined by the tip spring to
+// the cantilever body, joined by the cantilever spring to the support
+// (Johnson and Woodhouse 1998). One-dimensional: increments need
+// `slip[1]` = 0. Stick-slip when 4 pi^2 U0/(k_eff a^2) > 1 with
+// 1/k_eff = 1/k_t + 1/k_c. Writes a new handle to `*out` (NULL on
+// failure); errors name the field (`params.tip_mass`, ...).
+int32_t asperity_dynamic_prandtl_tomlinson_two_spring_new(const struct AsperityPrandtlTomlinsonTwoSpringParams *params,
+                                                          struct AsperityDynamicFriction **out);
+
+// Build a Burridge-Knopoff chain from `*params`: M blocks coupled by
+// springs, pulled by leaf springs from a driver that moves by the
+// increment's slip, with static friction mu_s N/M and velocity-weakening
+// kinetic friction mu_k (N/M)/(1 + v/v_c) on each (Burridge and Knopoff
+// 1967; Carlson and Langer 1989); free ends. One-dimensional: increments
+// need `slip[1]` = 0. The force is the leaf springs' pull on the driver.
+// Writes a new handle to `*out` (NULL on failure); errors name the field
+// (`params.blocks`, ...).
+int32_t asperity_dynamic_burridge_knopoff_new(const struct AsperityBurridgeKnopoffParams *params,
+                                              struct AsperityDynamicFriction **out);
+
 // Release a model; NULL is accepted and ignored.
 void asperity_dynamic_friction_free(struct AsperityDynamicFriction *model);
 
 // Write the number of doubles of one point's state to `*n` (LuGre: 4;
-// Maxwell-slip: 2 + 2 x elements).
+// Maxwell-slip: 2 + 2 x elements; Prandtl-Tomlinson: 5, with two springs
+// 7; Burridge-Knopoff: 3 + 2 x blocks).
 int32_t asperity_dynamic_friction_state_size(const struct AsperityDynamicFriction *model,
                                              size_t *n);
 

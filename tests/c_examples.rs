@@ -768,11 +768,14 @@ fn slider_patch_shared() {
     check_slider_patch(Linkage::Shared);
 }
 
-/// `friction_models`: one track through LuGre, Maxwell-slip and the
-/// homogenised law; every row equals the Rust API's step, and the physics
-/// holds where it is known in closed form.
+/// `friction_models`: one track through LuGre, Maxwell-slip, the
+/// homogenised law, Prandtl–Tomlinson (one and two springs) and the
+/// Burridge–Knopoff chain; every row equals the Rust API's step, and the
+/// physics holds where it is known in closed form.
 fn check_friction_models(linkage: Linkage) {
-    use asperity::friction::dynamic::{DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip};
+    use asperity::friction::dynamic::{
+        BurridgeKnopoff, DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip, PrandtlTomlinson,
+    };
     use asperity::friction::{
         CofForm, Dissipation, FrictionIncrement, FrictionPointState, HomogenisedFriction,
         HomogenisedSample,
@@ -799,7 +802,46 @@ fn check_friction_models(linkage: Linkage) {
         CofForm::Derjaguin,
     )
     .unwrap();
+    let pi = std::f64::consts::PI;
+    let (a, m_pt) = (5e-6, 1e-3);
+    let u0 = 2.0 * a / (2.0 * pi);
+    let k_pt = 4.0 * pi * pi * u0 / (3.0 * a * a);
+    let pt = PrandtlTomlinson::new(u0, a, k_pt, m_pt, (k_pt * m_pt).sqrt(), 1e-9).unwrap();
+    let g = (2.0 * k_pt * 0.5 * m_pt).sqrt();
+    let two = PrandtlTomlinson::two_spring(
+        u0,
+        a,
+        2.0 * k_pt,
+        0.5 * m_pt,
+        g,
+        2.0 * k_pt,
+        0.5 * m_pt,
+        g,
+        1e-9,
+    )
+    .unwrap();
+    let bk = BurridgeKnopoff::new(8, 1e-4, 1e4, 2.6e4, 1.05, 0.8, 5e-2, 0.3, 1e-9).unwrap();
     let (mut sl, mut sm) = (vec![0.0; lugre.state_len()], vec![0.0; maxwell.state_len()]);
+    let (mut sp, mut s2, mut sb) = (
+        vec![0.0; pt.state_len()],
+        vec![0.0; two.state_len()],
+        vec![0.0; bk.state_len()],
+    );
+    sb[asperity::friction::dynamic::burridge_knopoff::state_block(3)] = -1e-6;
+    // Burridge–Knopoff increments with every block stuck (regime 0).
+    let (mut stuck, mut before) = (
+        vec![],
+        bk.step(
+            &sb.clone(),
+            &mut sb,
+            &DynamicIncrement {
+                normal_force: n,
+                ..Default::default()
+            },
+        )
+        .unwrap()
+        .force[0],
+    );
     let mut sh = FrictionPointState::default();
     let mut rows = r.stdout.lines().filter_map(|l| l.strip_prefix("row "));
     let (mut x, mut dh) = (0.0, 0.0);
@@ -820,6 +862,14 @@ fn check_friction_models(linkage: Linkage) {
         };
         let fl = lugre.step_in_place(&mut sl, &inc).unwrap().force[0];
         let fm = maxwell.step_in_place(&mut sm, &inc).unwrap().force[0];
+        let fp = pt.step_in_place(&mut sp, &inc).unwrap().force[0];
+        let f2 = two.step_in_place(&mut s2, &inc).unwrap().force[0];
+        let rb = bk.step_in_place(&mut sb, &inc).unwrap();
+        let fb = rb.force[0];
+        if rb.regime == 0 {
+            stuck.push((i, fb - before, dx));
+        }
+        before = fb;
         let (next, rh) = homog
             .step_value(
                 &sh,
@@ -835,7 +885,7 @@ fn check_friction_models(linkage: Linkage) {
         sh = next;
         dh += rh.dissipated;
         x += dx;
-        let want = [x * 1e6, fl, fm, rh.force[0]];
+        let want = [x * 1e6, fl, fm, rh.force[0], fp, f2, fb];
         let got: Vec<f64> = rows
             .next()
             .map(|l| {
@@ -844,7 +894,7 @@ fn check_friction_models(linkage: Linkage) {
                     .collect()
             })
             .unwrap_or_default();
-        let same = got.len() == 4
+        let same = got.len() == want.len()
             && got
                 .iter()
                 .zip(&want)
@@ -854,6 +904,9 @@ fn check_friction_models(linkage: Linkage) {
     }
     c.rel(DYN, "lugre_dissipation", sl[0], 1e-12);
     c.rel(DYN, "maxwell_dissipation", sm[0], 1e-12);
+    c.rel(DYN, "prandtl_tomlinson_dissipation", sp[0], 1e-12);
+    c.rel(DYN, "two_spring_dissipation", s2[0], 1e-12);
+    c.rel(DYN, "burridge_knopoff_dissipation", sb[0], 1e-12);
     c.rel(HOMOGENISED, "homogenised_dissipation", dh, 1e-12);
     c.close(DYN, "slip_path_um", 65.0, 1e-9);
     // Physics at the end of the first leg (20 µm at 1 mm/s): LuGre within
@@ -871,6 +924,27 @@ fn check_friction_models(linkage: Linkage) {
     });
     c.ok(HOMOGENISED, (-first[3] - 1.05 * n).abs() <= 1e-9, || {
         format!("homogenised at 20 µm: {} vs μN {}", -first[3], 1.05 * n)
+    });
+    // Prandtl–Tomlinson: the spring force never exceeds the lattice's
+    // largest force (2 N) by more than the viscous drag; the two springs in
+    // series stick and slip like the one (same η = 3), their forces close.
+    for (i, f) in forces.iter().enumerate() {
+        c.ok(DYN, f[4].abs() <= 2.1 && f[5].abs() <= 2.1, || {
+            format!("row {i}: Prandtl-Tomlinson forces {} {}", f[4], f[5])
+        });
+    }
+    // Burridge–Knopoff: it sticks and slips; while every block sticks the
+    // force on the driver changes by −M k_p Δs exactly.
+    c.ok(DYN, stuck.len() >= 10 && stuck.len() < 60, || {
+        format!("Burridge-Knopoff: {} stuck increments of 65", stuck.len())
+    });
+    for (i, df, dx) in stuck {
+        c.ok(DYN, (df + 8.0 * 2.6e4 * dx).abs() < 1e-9, || {
+            format!("row {i}: Burridge-Knopoff stuck force change {df} for slip {dx}")
+        });
+    }
+    c.ok(DYN, sp[0] > 0.0 && s2[0] > 0.0 && sb[0] > 0.0, || {
+        format!("dissipation {} {} {}", sp[0], s2[0], sb[0])
     });
     // Masing: 30 µm back from the reversal, F = F(20) − 2 F_v(15).
     let back = forces[49];

@@ -929,6 +929,32 @@ fn every_function_dynamic(c: &mut Report) {
     c.close(CPP, "maxwell_bad_threw", 1.0, 0.0);
     c.close(FFI, "maxwell_bad_status", -2.0, 0.0);
     c.close(FFI, "maxwell_bad_names_argument", 1.0, 0.0);
+    // Two-spring Prandtl-Tomlinson: the same increment through Rust.
+    let pt = asperity::friction::dynamic::PrandtlTomlinson::two_spring(
+        3e-21, 3e-10, 2.0, 1e-12, 1e-6, 2.0, 1e-12, 1e-6, 1e-9,
+    )
+    .unwrap();
+    c.close(DYN, "two_spring_state_size", 7.0, 0.0);
+    let mut s = [0.0; 7];
+    let inc = DynamicIncrement {
+        normal_force: 1.0,
+        slip: [1e-11, 0.0],
+        dt: 1e-6,
+        ..Default::default()
+    };
+    let f = pt.step_in_place(&mut s, &inc).unwrap().force[0];
+    c.close(DYN, "two_spring_force", f, 1e-12 * f.abs());
+    // Burridge-Knopoff: four stuck blocks, F = −4 k_p Δs.
+    c.close(DYN, "burridge_knopoff_state_size", 11.0, 0.0);
+    c.close(
+        DYN,
+        "burridge_knopoff_stuck_force",
+        -4.0 * 1e3 * 1e-5,
+        1e-15,
+    );
+    c.close(CPP, "burridge_knopoff_bad_threw", 1.0, 0.0);
+    c.close(FFI, "burridge_knopoff_bad_status", -2.0, 0.0);
+    c.close(FFI, "burridge_knopoff_bad_names_argument", 1.0, 0.0);
 }
 
 fn every_function_indentation(c: &mut Report) {

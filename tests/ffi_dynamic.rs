@@ -274,3 +274,141 @@ fn prandtl_tomlinson_through_c_equals_rust() {
     assert!(bad_h.is_null());
     unsafe { asperity_dynamic_friction_free(h) };
 }
+
+#[test]
+fn two_spring_and_burridge_knopoff_through_c_equal_rust() {
+    use asperity::friction::dynamic::{BurridgeKnopoff, PrandtlTomlinson};
+    let t = AsperityPrandtlTomlinsonTwoSpringParams {
+        amplitude: 2e-21,
+        period: 3e-10,
+        tip_stiffness: 2.0,
+        tip_mass: 1e-12,
+        tip_damping: 1e-6,
+        cantilever_stiffness: 3.0,
+        cantilever_mass: 2e-12,
+        cantilever_damping: 2e-6,
+        tolerance: 1e-9,
+    };
+    let b = AsperityBurridgeKnopoffParams {
+        blocks: 6,
+        mass: 1e-5,
+        coupling_stiffness: 1e4,
+        pulling_stiffness: 1e3,
+        mu_static: 0.5,
+        mu_kinetic: 0.3,
+        weakening_velocity: 0.05,
+        damping: 0.01,
+        tolerance: 1e-9,
+    };
+    let (mut ht, mut hb) = (null_mut(), null_mut());
+    assert_eq!(
+        unsafe { asperity_dynamic_prandtl_tomlinson_two_spring_new(&t, &mut ht) },
+        ASPERITY_OK
+    );
+    assert_eq!(
+        unsafe { asperity_dynamic_burridge_knopoff_new(&b, &mut hb) },
+        ASPERITY_OK
+    );
+    let rust_t =
+        PrandtlTomlinson::two_spring(2e-21, 3e-10, 2.0, 1e-12, 1e-6, 3.0, 2e-12, 2e-6, 1e-9)
+            .unwrap();
+    let rust_b = BurridgeKnopoff::new(6, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-9).unwrap();
+    let cases: [(_, &dyn DynamicFriction, usize, f64); 2] =
+        [(ht, &rust_t, 7, 1e-11), (hb, &rust_b, 15, 2e-5)];
+    for (h, rust, len, scale) in cases {
+        let mut n = 0usize;
+        assert_eq!(
+            unsafe { asperity_dynamic_friction_state_size(h, &mut n) },
+            ASPERITY_OK
+        );
+        assert_eq!((n, rust.state_len()), (len, len));
+        let (mut c, mut r) = (vec![0.0; n], vec![0.0; n]);
+        for k in 0..40 {
+            let inc = DynamicIncrement {
+                normal_force: 6.0,
+                slip: [scale * (1.0 + (0.3 * k as f64).sin()), 0.0],
+                dt: 1e-6,
+                tangents: k % 4,
+                reserved: 0,
+            };
+            let mut out = DynamicResponse::default();
+            let st = unsafe {
+                asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), &mut out)
+            };
+            assert_eq!(st, ASPERITY_OK, "{}", last_message());
+            let want = rust.step_in_place(&mut r, &inc).unwrap();
+            assert_eq!(format!("{out:?}"), format!("{want:?}"));
+            assert_eq!(c, r);
+        }
+        unsafe { asperity_dynamic_friction_free(h) };
+    }
+    // Errors name the field of the parameters, the handle is NULL.
+    let mut bad_h = 1usize as *mut AsperityDynamicFriction;
+    let mut bad = t;
+    bad.cantilever_mass = -1.0;
+    expect_error(
+        unsafe { asperity_dynamic_prandtl_tomlinson_two_spring_new(&bad, &mut bad_h) },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`params.cantilever_mass`",
+    );
+    assert!(bad_h.is_null());
+    for (edit, field) in [
+        (
+            (|p: &mut AsperityBurridgeKnopoffParams| p.blocks = 257) as fn(&mut _),
+            "`params.blocks`",
+        ),
+        (|p| p.mu_kinetic = 0.6, "`params.mu_kinetic`"),
+        (
+            |p| p.weakening_velocity = f64::NAN,
+            "`params.weakening_velocity`",
+        ),
+        (|p| p.tolerance = 0.0, "`params.tolerance`"),
+    ] {
+        let mut bad = b;
+        edit(&mut bad);
+        bad_h = 1usize as *mut AsperityDynamicFriction;
+        expect_error(
+            unsafe { asperity_dynamic_burridge_knopoff_new(&bad, &mut bad_h) },
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            field,
+        );
+        assert!(bad_h.is_null());
+    }
+    expect_error(
+        unsafe { asperity_dynamic_burridge_knopoff_new(null(), &mut bad_h) },
+        ASPERITY_ERR_NULL_POINTER,
+        "params",
+    );
+    expect_error(
+        unsafe { asperity_dynamic_prandtl_tomlinson_two_spring_new(&t, null_mut()) },
+        ASPERITY_ERR_NULL_POINTER,
+        "out",
+    );
+    // A stiff chain over a long increment: the sub-step budget, naming dt,
+    // the state untouched.
+    let mut stiff = b;
+    stiff.blocks = 256;
+    stiff.coupling_stiffness = 1e9;
+    let mut h = null_mut();
+    assert_eq!(
+        unsafe { asperity_dynamic_burridge_knopoff_new(&stiff, &mut h) },
+        ASPERITY_OK
+    );
+    let mut s = vec![0.0; 2 + 2 * 256 + 1];
+    s[2 + 2 * 100] = -1e-6;
+    let before = s.clone();
+    let inc = DynamicIncrement {
+        normal_force: 256.0,
+        slip: [0.1, 0.0],
+        dt: 10.0,
+        ..Default::default()
+    };
+    let mut out = DynamicResponse::default();
+    expect_error(
+        unsafe { asperity_dynamic_friction_step(h, &inc, s.as_ptr(), s.as_mut_ptr(), &mut out) },
+        ASPERITY_ERR_NOT_CONVERGED,
+        "dt",
+    );
+    assert_eq!(s, before);
+    unsafe { asperity_dynamic_friction_free(h) };
+}

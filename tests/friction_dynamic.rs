@@ -1,7 +1,11 @@
 //! The dynamic friction models of thesis chapter 5 (issue 9): LuGre against
 //! its Stribeck curve and a fine Runge–Kutta integration, Maxwell-slip
-//! against the Masing rules and non-local memory, dissipation ≥ 0, tangents
-//! against finite differences, cut-backs, bad input.
+//! against the Masing rules and non-local memory, Prandtl–Tomlinson (one and
+//! two springs) against the stick-slip criterion η > 1 of the effective
+//! stiffness and the quasi-static static and kinetic friction, the
+//! Burridge–Knopoff chain against the closed-form period of a uniform chain,
+//! its energy balance and events of many sizes; dissipation ≥ 0, tangents
+//! against finite differences, cut-backs, extremes, bad input.
 
 use asperity::friction::dynamic::{
     DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip, STATE_DISSIPATION, STATE_SLIP_PATH,
@@ -614,17 +618,23 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
         DynamicModel::LuGre(lugre()),
         DynamicModel::MaxwellSlip(maxwell()),
         DynamicModel::PrandtlTomlinson(tomlinson(3.0, 1e-3)),
+        DynamicModel::PrandtlTomlinson(two_spring(3.0)),
+        DynamicModel::BurridgeKnopoff(chain(5, 1e4, 0.05)),
     ] {
         let direct: &dyn DynamicFriction = match &model {
             DynamicModel::LuGre(m) => m,
             DynamicModel::MaxwellSlip(m) => m,
             DynamicModel::PrandtlTomlinson(m) => m,
+            DynamicModel::BurridgeKnopoff(m) => m,
         };
         let m = model.state_len();
         assert_eq!(m, direct.state_len());
         let points = 5;
         let normal: Vec<f64> = (0..points).map(|i| 1.0 + i as f64).collect();
-        let track = matches!(model, DynamicModel::PrandtlTomlinson(_));
+        let track = matches!(
+            model,
+            DynamicModel::PrandtlTomlinson(_) | DynamicModel::BurridgeKnopoff(_)
+        );
         let slip: Vec<f64> = (0..2 * points)
             .map(|i| {
                 if track && i % 2 == 1 {
@@ -791,4 +801,513 @@ fn prandtl_tomlinson_energy_balance_and_bad_input() {
             want
         );
     }
+}
+
+// ------------------------------------------ Prandtl–Tomlinson, two springs
+
+use asperity::friction::dynamic::{stick_slip, StickSlip};
+
+/// Drives `m` (one or two springs) over `periods` lattice periods of
+/// 0.3 nm at speed `v` in increments of `dt`; returns the history of the
+/// resisting force on the support (N), its slip increments and the total
+/// dissipation, every increment checked for dissipation ≥ 0.
+fn history(m: &PrandtlTomlinson, v: f64, periods: f64, dt: f64) -> (Vec<f64>, Vec<f64>, f64) {
+    let steps = (periods * 3e-10 / (v * dt)).round() as usize;
+    let mut s = vec![0.0; m.state_len()];
+    let (mut f, mut d) = (Vec::with_capacity(steps), 0.0);
+    for _ in 0..steps {
+        let r = m
+            .step_in_place(&mut s, &inc(1.0, [v * dt, 0.0], dt))
+            .unwrap();
+        assert!(r.dissipated >= 0.0 && r.force[0].is_finite());
+        f.push(-r.force[0]);
+        d += r.dissipated;
+    }
+    (f, vec![v * dt; steps], d)
+}
+
+/// The stick-slip analysis of a run, counting drops above 2 % of the
+/// lattice force.
+fn analyse(m: &PrandtlTomlinson, f: &[f64], s: &[f64]) -> StickSlip {
+    stick_slip(f, s, 0.02 * m.lattice_force()).unwrap()
+}
+
+/// A tip and a cantilever body of equal springs k_t = k_c = 2 N/m in
+/// series (k_eff = 1 N/m), masses 1e-12 kg, damping ratios about 0.5, on
+/// the 0.3 nm lattice at Tomlinson parameter `eta` (of k_eff).
+fn two_spring(eta: f64) -> PrandtlTomlinson {
+    let (a, k, m) = (3e-10, 2.0, 1e-12);
+    let u0 = eta * 1.0 * a * a / (4.0 * std::f64::consts::PI.powi(2));
+    let gamma = f64::sqrt(k * m);
+    PrandtlTomlinson::two_spring(u0, a, k, m, gamma, k, m, gamma, 1e-9).unwrap()
+}
+
+/// The quasi-static kinetic friction of the Prandtl–Tomlinson model at
+/// η = 4π²U₀/(k a²) > 1 (k the effective stiffness): the energy lost in the
+/// jump of each lattice period over the period, ΔE/a (N). The tip jumps
+/// from x₁, where k + U''(x₁) = 0, to the equilibrium x₂ of the next stable
+/// region (found by bisection) at the same support position.
+fn quasi_static_kinetic(u0: f64, a: f64, k: f64) -> f64 {
+    let w = 2.0 * std::f64::consts::PI / a;
+    let eta = w * w * u0 / k;
+    let x1 = (-1.0 / eta).acos() / w;
+    let xs = x1 + u0 * w * (w * x1).sin() / k;
+    let g = |x: f64| k * (x - xs) + u0 * w * (w * x).sin();
+    let (mut lo, mut hi) = ((2.0 * std::f64::consts::PI - (-1.0 / eta).acos()) / w, 0.0);
+    hi += lo + a / 2.0;
+    assert!(g(lo) < 0.0 && g(hi) > 0.0);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if g(mid) < 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let energy = |x: f64| 0.5 * k * (x - xs).powi(2) - u0 * (w * x).cos();
+    (energy(x1) - energy(lo)) / a
+}
+
+#[test]
+fn prandtl_tomlinson_stick_slip_follows_the_effective_stiffness() {
+    // Quasi-static: a/V = 0.03 s against natural periods of ~1e-6 s (the
+    // delay of the jumps, ~a (V/(aω))^{2/3}, is 0.1 % of a period).
+    let (v, dt) = (1e-8, 1e-4);
+    for eta in [0.5, 1.5, 3.0] {
+        let one = tomlinson(eta, 0.5);
+        let two = two_spring(eta);
+        assert!((two.eta() - eta).abs() < 1e-12 * eta && two.is_two_spring());
+        assert!((two.effective_stiffness() - 1.0).abs() < 1e-15);
+        // Each spring alone would give η/2: on the smooth side for 1.5.
+        assert_eq!(two.state_len(), one.state_len() + 2);
+        for m in [&one, &two] {
+            let (f, s, d) = history(m, v, 4.0, dt);
+            // The first period loads from rest; analyse the last three.
+            let q = f.len() / 4;
+            let r = analyse(m, &f[q..], &s[q..]);
+            println!(
+                "eta {eta}, two springs {}: {} events, static {:e}, kinetic {:e}, D {d:e}",
+                m.is_two_spring(),
+                r.events.len(),
+                r.static_force / m.lattice_force(),
+                r.kinetic_force / m.lattice_force(),
+            );
+            if eta < 1.0 {
+                assert!(!r.is_stick_slip(), "{:?}", r.events);
+            } else {
+                // One event per lattice period.
+                assert!((2..=3).contains(&r.events.len()), "{:?}", r.events);
+                let spacing = r.mean_spacing().unwrap();
+                assert!((spacing / 3e-10 - 1.0).abs() < 0.02, "{spacing:e}");
+                // Quasi-statically the force peaks at the lattice force (at
+                // x = a/4, still stable for any η) and falls to
+                // F_L √(1 − 1/η²) before the tip jumps.
+                let fl = m.lattice_force();
+                assert!((r.static_force / fl - 1.0).abs() < 0.005);
+                let jump = fl * ((1.0 - 1.0 / (eta * eta)).sqrt() + 0.5);
+                assert!(
+                    r.events.iter().all(|e| e.jump > 0.5 * jump),
+                    "{:?}",
+                    r.events
+                );
+                // The kinetic friction is the energy of the jumps per period
+                // (plus a little viscous drag).
+                let want = quasi_static_kinetic(
+                    m.lattice_force() * 3e-10 / (2.0 * std::f64::consts::PI),
+                    3e-10,
+                    m.effective_stiffness(),
+                );
+                assert!(
+                    (r.kinetic_force / want - 1.0).abs() < 0.03,
+                    "kinetic {:e} vs {want:e}",
+                    r.kinetic_force
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn two_spring_prandtl_tomlinson_tends_to_one_spring() {
+    // k_t → ∞ and m_c → 0: the tip rides the cantilever. At k_t = 1e3 k
+    // and m_c = 1e-4 m the forces on the support agree to the compliance
+    // ratio, pointwise in smooth sliding and in the events of stick-slip.
+    let (a, k, m) = (3e-10, 1.0, 1e-12);
+    for eta in [0.5, 3.0] {
+        let one = tomlinson(eta, 0.5);
+        let u0 = eta * k * a * a / (4.0 * std::f64::consts::PI.powi(2));
+        let gamma = 2.0 * 0.5 * (k * m).sqrt();
+        let two =
+            PrandtlTomlinson::two_spring(u0, a, 1e3 * k, m, gamma, k, 1e-4 * m, 0.0, 1e-9).unwrap();
+        assert!((two.eta() / one.eta() - 1.0 - 1e-3).abs() < 1e-6);
+        // Fast enough to keep the run short: 10 natural periods per
+        // lattice period.
+        let v = 3e-10 * 1e6 / 60.0;
+        let (f1, s, _) = history(&one, v, 3.0, 1e-8);
+        let (f2, _, _) = history(&two, v, 3.0, 1e-8);
+        let fl = one.lattice_force();
+        let worst = f1
+            .iter()
+            .zip(&f2)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        let (r1, r2) = (analyse(&one, &f1, &s), analyse(&two, &f2, &s));
+        println!(
+            "eta {eta}: worst {:.2e} F_L; events {} {}; static {:e} {:e}; kinetic {:e} {:e}",
+            worst / fl,
+            r1.events.len(),
+            r2.events.len(),
+            r1.static_force,
+            r2.static_force,
+            r1.kinetic_force,
+            r2.kinetic_force
+        );
+        assert_eq!(r1.events.len(), r2.events.len());
+        assert!((r1.static_force - r2.static_force).abs() < 3e-3 * fl);
+        assert!((r1.kinetic_force - r2.kinetic_force).abs() < 3e-3 * fl);
+        if eta < 1.0 {
+            assert!(worst < 0.01 * fl, "{worst:e}");
+        }
+    }
+}
+
+#[test]
+fn two_spring_prandtl_tomlinson_energy_balance_and_bad_input() {
+    // Random increments: dissipation ≥ 0, cut-backs bit-identical.
+    random_path(&two_spring(2.0), 9, true, true);
+    // Stick-slip at η = 3 over two periods in 10 ns increments: the
+    // support's work (trapezoidal) = stored energy + dissipation.
+    let m = two_spring(3.0);
+    let (v, dt) = (1e-5, 1e-8);
+    let mut s = vec![0.0; m.state_len()];
+    let (mut work, mut d, mut before) = (0.0, 0.0, 0.0);
+    let mut stored = 0.0;
+    for _ in 0..(6e-10 / (v * dt)) as usize {
+        let r = m
+            .step_in_place(&mut s, &inc(1.0, [v * dt, 0.0], dt))
+            .unwrap();
+        let f = -r.force[0];
+        work += 0.5 * (before + f) * v * dt;
+        before = f;
+        d += r.dissipated;
+        stored = r.stored_energy;
+    }
+    assert!(d > 0.0 && stored >= 0.0);
+    assert!(
+        (work - d - stored).abs() < 1e-3 * work,
+        "work {work:e}, dissipation {d:e}, stored {stored:e}"
+    );
+    assert_eq!(
+        s[asperity::friction::dynamic::prandtl_tomlinson::STATE_SUPPORT],
+        s[STATE_SLIP_PATH]
+    );
+    for (args, want) in [
+        ((0.0, 1.0, 1.0, 1.0, 1.0, 1.0), "tip_stiffness"),
+        ((1.0, 0.0, 1.0, 1.0, 1.0, 1.0), "tip_mass"),
+        ((1.0, 1.0, -1.0, 1.0, 1.0, 1.0), "tip_damping"),
+        (
+            (1.0, 1.0, 1.0, f64::INFINITY, 1.0, 1.0),
+            "cantilever_stiffness",
+        ),
+        ((1.0, 1.0, 1.0, 1.0, 0.0, 1.0), "cantilever_mass"),
+        ((1.0, 1.0, 1.0, 1.0, 1.0, f64::NAN), "cantilever_damping"),
+    ] {
+        let (a, b, c, e, f, g) = args;
+        let r = PrandtlTomlinson::two_spring(
+            1e-20,
+            3e-10,
+            a,
+            b * 1e-12,
+            c * 1e-6,
+            e,
+            f * 1e-12,
+            g * 1e-6,
+            1e-9,
+        );
+        assert_eq!(name(r.unwrap_err()), want);
+    }
+    assert_eq!(
+        name(
+            PrandtlTomlinson::two_spring(1e-20, 3e-10, 1.0, 1e-12, 0.0, 1.0, 1e-12, 0.0, 0.1)
+                .unwrap_err()
+        ),
+        "tolerance"
+    );
+}
+
+// ------------------------------------------------------ Burridge–Knopoff
+
+use asperity::friction::dynamic::burridge_knopoff::state_block;
+use asperity::friction::dynamic::BurridgeKnopoff;
+
+/// M blocks of 10 mg on leaf springs k_p = 1000 N/m (ω = 1e4 /s), coupled
+/// by `coupling` (N/m), μ_s = 0.5, μ_k = 0.3, weakening velocity `vc`
+/// (m/s), no damping.
+fn chain(blocks: usize, coupling: f64, vc: f64) -> BurridgeKnopoff {
+    BurridgeKnopoff::new(blocks, 1e-5, coupling, 1e3, 0.5, 0.3, vc, 0.0, 1e-10).unwrap()
+}
+
+/// A run of the driver at `v` over `steps` increments of `dt` with the
+/// normal force `n` from `state`: the resisting force history, the work
+/// of the driver (trapezoidal), the total dissipation; dissipation ≥ 0 and
+/// finite forces on every increment.
+fn pull(
+    m: &BurridgeKnopoff,
+    state: &mut [f64],
+    n: f64,
+    v: f64,
+    dt: f64,
+    steps: usize,
+) -> (Vec<f64>, f64, f64) {
+    let (mut f, mut work, mut d) = (Vec::with_capacity(steps), 0.0, 0.0);
+    let mut before = -m
+        .step_in_place(state, &inc(n, [0.0; 2], 0.0))
+        .unwrap()
+        .force[0];
+    for k in 0..steps {
+        let r = m.step_in_place(state, &inc(n, [v * dt, 0.0], dt)).unwrap();
+        assert!(r.dissipated >= 0.0, "{k}: {r:?}");
+        assert!(r.force[0].is_finite() && r.stored_energy.is_finite());
+        let now = -r.force[0];
+        work += 0.5 * (before + now) * v * dt;
+        before = now;
+        d += r.dissipated;
+        f.push(now);
+    }
+    (f, work, d)
+}
+
+#[test]
+fn burridge_knopoff_uniform_chain_sticks_and_slips_with_the_one_block_period() {
+    // Every block alike and at rest: the chain moves as one block, whose
+    // stick-slip cycle with Coulomb static and kinetic friction (v_c = ∞)
+    // has a closed-form period (BurridgeKnopoff::uniform_period):
+    // 2(F_s − F_k)/(k_p V) of stick, about π/ω of slip.
+    let (v, dt) = (0.01, 2e-5);
+    let one = chain(1, 0.0, f64::INFINITY);
+    let many = chain(16, 1e3, f64::INFINITY);
+    let period = one.uniform_period(1.0, v);
+    assert_eq!(period, many.uniform_period(16.0, v));
+    let stick = 2.0 * (0.5 - 0.3) / (1e3 * v);
+    let slip = std::f64::consts::PI / 1e4;
+    assert!((period / (stick + slip) - 1.0).abs() < 0.01, "{period}");
+    let steps = (9.0 * period / dt) as usize;
+    let mut s1 = vec![0.0; one.state_len()];
+    let mut s16 = vec![0.0; many.state_len()];
+    // 1 N per block.
+    let (f1, w1, d1) = pull(&one, &mut s1, 1.0, v, dt, steps);
+    let (f16, _, d16) = pull(&many, &mut s16, 16.0, v, dt, steps);
+    for (k, (a, b)) in f1.iter().zip(&f16).enumerate() {
+        assert!((b / 16.0 - a).abs() < 1e-7, "{k}: {a} vs {}", b / 16.0);
+    }
+    assert!((d16 / 16.0 - d1).abs() < 1e-7 * d1);
+    let slips = vec![v * dt; steps];
+    let r = stick_slip(&f1, &slips, 0.01).unwrap();
+    assert!(r.events.len() >= 8, "{:?}", r.events);
+    // The period, to the increment's resolution (2e-5 s over 8 periods).
+    let measured = r.mean_spacing().unwrap() / v;
+    assert!(
+        (measured / period - 1.0).abs() < 1e-3,
+        "period {measured} vs {period}"
+    );
+    // Each event breaks away at F_s and drops by 2(F_s − F_k): the block
+    // swings symmetrically about the kinetic force.
+    for e in &r.events {
+        assert!((e.peak_force - 0.5).abs() < 1e-3, "{e:?}");
+        assert!((e.drop - 0.4).abs() < 2e-3, "{e:?}");
+    }
+    // Over whole cycles the mean force is F_k: the friction work per cycle
+    // is F_k times the block's advance, V times the period.
+    let (a, b) = (r.events[0].peak_index, r.events.last().unwrap().peak_index);
+    let whole = stick_slip(&f1[a..b], &slips[a..b], 0.01).unwrap();
+    assert!(
+        (whole.kinetic_force - 0.3).abs() < 1e-3,
+        "{}",
+        whole.kinetic_force
+    );
+    // The driver's work is the dissipation plus the energy left stored.
+    let stored =
+        0.5 * 1e3 * s1[state_block(0)].powi(2) + 0.5 * 1e-5 * s1[state_block(0) + 1].powi(2);
+    assert!((w1 - d1 - stored).abs() < 1e-4 * w1, "{w1} {d1} {stored}");
+}
+
+#[test]
+fn burridge_knopoff_perturbed_chain_has_events_of_many_sizes_and_balances_energy() {
+    // Velocity weakening, damping, one block displaced by 1 µm: the
+    // uniform motion breaks up into events of many sizes (Carlson and
+    // Langer 1989).
+    let blocks = 16;
+    let m = BurridgeKnopoff::new(blocks, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-10).unwrap();
+    let mut s = vec![0.0; m.state_len()];
+    s[state_block(5)] = -1e-6;
+    let e0 = m
+        .step(&s.clone(), &mut s, &inc(16.0, [0.0; 2], 0.0))
+        .unwrap()
+        .stored_energy;
+    assert!((e0 - 0.5 * (1e3 + 2.0 * 1e4) * 1e-12).abs() < 1e-20);
+    let (v, dt) = (0.01, 2e-5);
+    let (f, work, d) = pull(&m, &mut s, blocks as f64, v, dt, 16000);
+    let end = m
+        .step(&s.clone(), &mut s, &inc(16.0, [0.0; 2], 0.0))
+        .unwrap();
+    // Energy: the driver's work (trapezoidal, second order in the
+    // increment) = the change of stored energy + the dissipation.
+    let balance = work - (end.stored_energy - e0) - d;
+    println!(
+        "work {work:e}, stored {:e}, D {d:e}, balance {balance:e}",
+        end.stored_energy
+    );
+    assert!(balance.abs() < 1e-4 * work, "{balance:e} of {work:e}");
+    let r = stick_slip(&f, &vec![v * dt; f.len()], 1e-3).unwrap();
+    let drops: Vec<f64> = r.events.iter().map(|e| e.drop).collect();
+    let (lo, hi) = drops
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
+    println!("{} events, drops {lo:e} .. {hi:e}", drops.len());
+    assert!(drops.len() >= 20 && hi > 20.0 * lo, "{drops:?}");
+    // Small events are far below the whole chain's breaking away (16 F_s
+    // less 16 F_k: 3.2 N), large ones reach it.
+    assert!(lo < 0.1 && hi > 3.0, "{drops:?}");
+}
+
+#[test]
+fn burridge_knopoff_random_increments_tangents_and_bad_input() {
+    // Random host increments: dissipation ≥ 0, cut-backs bit-identical.
+    random_path(&chain(5, 1e4, 0.05), 11, true, true);
+    random_path(&chain(1, 0.0, f64::INFINITY), 12, true, true);
+    // Equal static and kinetic friction (no drop at the onset of slip).
+    let flat = BurridgeKnopoff::new(3, 1e-5, 1e3, 1e3, 0.4, 0.4, f64::INFINITY, 0.0, 1e-9).unwrap();
+    random_path(&flat, 13, true, true);
+    // Stuck chain: F = k_p Σ(x_i − x_d), dF/dΔs = −M k_p, dF/dN = 0.
+    let m = chain(4, 1e3, 0.05);
+    let mut s = vec![0.0; m.state_len()];
+    let r = m
+        .step_in_place(
+            &mut s,
+            &DynamicIncrement {
+                normal_force: 4.0,
+                slip: [1e-5, 0.0],
+                dt: 1e-3,
+                tangents: 3,
+                reserved: 0,
+            },
+        )
+        .unwrap();
+    assert_eq!(r.regime, 0);
+    assert!((r.force[0] + 4.0 * 1e3 * 1e-5).abs() < 1e-15, "{r:?}");
+    assert!((r.dforce_dslip[0][0] + 4e3).abs() < 1e-6 * 4e3, "{r:?}");
+    assert!(r.dforce_dnormal[0].abs() < 1e-9, "{r:?}");
+    // Past the static reach (F_s/k_p = 0.5 mm) every block slides; the
+    // tangents equal differences of separate increments.
+    let tangent = DynamicIncrement {
+        normal_force: 4.0,
+        slip: [1e-3, 0.0],
+        dt: 1e-2,
+        tangents: 3,
+        reserved: 0,
+    };
+    let r = m.step(&s, &mut vec![0.0; s.len()], &tangent).unwrap();
+    assert_eq!(r.regime, 2, "{r:?}");
+    let force = |n: f64, ds: f64| {
+        m.step(&s, &mut vec![0.0; s.len()], &inc(n, [ds, 0.0], 1e-2))
+            .unwrap()
+            .force[0]
+    };
+    let h = 1e-7;
+    let dn = (force(4.0 + h, 1e-3) - force(4.0 - h, 1e-3)) / (2.0 * h);
+    let ds = (force(4.0, 1e-3 + h * 1e-3) - force(4.0, 1e-3 - h * 1e-3)) / (2e-3 * h);
+    println!("{r:?} {dn} {ds}");
+    assert!((r.dforce_dnormal[0] / dn - 1.0).abs() < 1e-4, "{dn}");
+    assert!((r.dforce_dslip[0][0] / ds - 1.0).abs() < 1e-4, "{ds}");
+    // Bad input names the argument, the state untouched.
+    let old = vec![0.0; m.state_len()];
+    let mut t = vec![7.0; m.state_len()];
+    assert_eq!(
+        name(
+            m.step(&old, &mut t, &inc(1.0, [1e-6, 1e-9], 1e-3))
+                .unwrap_err()
+        ),
+        "slip"
+    );
+    assert_eq!(
+        name(
+            m.step(&old, &mut t, &inc(1.0, [1e-6, 0.0], 0.0))
+                .unwrap_err()
+        ),
+        "dt"
+    );
+    assert!(t.iter().all(|&x| x == 7.0));
+    let inf = f64::INFINITY;
+    for (args, want) in [
+        ((0, 1e-5, 1e3, 1e3, 0.5, 0.3, 0.05, 0.0, 1e-9), "blocks"),
+        ((257, 1e-5, 1e3, 1e3, 0.5, 0.3, 0.05, 0.0, 1e-9), "blocks"),
+        ((2, 0.0, 1e3, 1e3, 0.5, 0.3, 0.05, 0.0, 1e-9), "mass"),
+        (
+            (2, 1e-5, -1.0, 1e3, 0.5, 0.3, 0.05, 0.0, 1e-9),
+            "coupling_stiffness",
+        ),
+        (
+            (2, 1e-5, 1e3, inf, 0.5, 0.3, 0.05, 0.0, 1e-9),
+            "pulling_stiffness",
+        ),
+        (
+            (2, 1e-5, 1e3, 1e3, f64::NAN, 0.3, 0.05, 0.0, 1e-9),
+            "mu_static",
+        ),
+        ((2, 1e-5, 1e3, 1e3, 0.5, 0.6, 0.05, 0.0, 1e-9), "mu_kinetic"),
+        (
+            (2, 1e-5, 1e3, 1e3, 0.5, 0.3, 0.0, 0.0, 1e-9),
+            "weakening_velocity",
+        ),
+        ((2, 1e-5, 1e3, 1e3, 0.5, 0.3, 0.05, -1.0, 1e-9), "damping"),
+        ((2, 1e-5, 1e3, 1e3, 0.5, 0.3, 0.05, 0.0, 1.0), "tolerance"),
+    ] {
+        let (a, b, c, d, e, f, g, h, i) = args;
+        assert_eq!(
+            name(BurridgeKnopoff::new(a, b, c, d, e, f, g, h, i).unwrap_err()),
+            want
+        );
+    }
+}
+
+#[test]
+fn burridge_knopoff_extremes_are_finite_or_name_dt() {
+    // Chains of 1 to 256 blocks, stiffness ratios k_c/k_p of 0 to 1e6,
+    // increments from 1e-12 s to 10 s at 1 cm/s: finite, or the sub-step
+    // budget error naming dt; never a hang (the budget bounds the work).
+    let started = std::time::Instant::now();
+    let mut failures = 0;
+    for (blocks, ratio) in [
+        (1, 0.0),
+        (2, 1e6),
+        (7, 1.0),
+        (64, 100.0),
+        (256, 1.0),
+        (256, 1e6),
+    ] {
+        let m = BurridgeKnopoff::new(blocks, 1e-5, ratio * 1e3, 1e3, 0.5, 0.3, 0.05, 0.0, 1e-9)
+            .unwrap();
+        for dt in [1e-12, 1e-6, 1e-3, 10.0] {
+            let mut s = vec![0.0; m.state_len()];
+            s[state_block(blocks / 2)] = -1e-6;
+            let t = std::time::Instant::now();
+            match m.step_in_place(&mut s, &inc(blocks as f64, [0.01 * dt, 0.0], dt)) {
+                Ok(r) => {
+                    assert!(r.force[0].is_finite() && r.dissipated >= 0.0, "{r:?}");
+                    assert!(s.iter().all(|x| x.is_finite()));
+                }
+                Err(Error::NotConverged { what, .. }) => {
+                    assert!(what.contains("dt"), "{what}");
+                    failures += 1;
+                }
+                Err(e) => panic!("M {blocks}, ratio {ratio}, dt {dt}: {e:?}"),
+            }
+            println!("M {blocks} ratio {ratio:e} dt {dt:e}: {:?}", t.elapsed());
+        }
+    }
+    println!("{failures} budget errors in {:?}", started.elapsed());
+    assert!(
+        failures > 0,
+        "the 10 s increments of stiff chains exceed the budget"
+    );
 }

@@ -145,9 +145,9 @@ fn laws_and_table_lookups_allocate_nothing() {
     unsafe { asperity_table_free(table) };
 }
 
-/// The dynamic friction steps (LuGre, Maxwell-slip, Prandtl–Tomlinson)
-/// through the C ABI: scalar with tangents, in place and separate, and the
-/// block.
+/// The dynamic friction steps (LuGre, Maxwell-slip, Prandtl–Tomlinson with
+/// one and two springs, Burridge–Knopoff from 1 to 256 blocks) through the
+/// C ABI: scalar with tangents, in place and separate, and the block.
 #[test]
 fn dynamic_friction_steps_allocate_nothing() {
     use asperity::ffi::dynamic::*;
@@ -184,6 +184,43 @@ fn dynamic_friction_steps_allocate_nothing() {
         ASPERITY_OK
     );
     models.push((h, 1e-11));
+    let t = AsperityPrandtlTomlinsonTwoSpringParams {
+        amplitude: 2e-21,
+        period: 3e-10,
+        tip_stiffness: 2.0,
+        tip_mass: 1e-12,
+        tip_damping: 1e-6,
+        cantilever_stiffness: 2.0,
+        cantilever_mass: 1e-12,
+        cantilever_damping: 1e-6,
+        tolerance: 1e-9,
+    };
+    let mut h = core::ptr::null_mut();
+    assert_eq!(
+        unsafe { asperity_dynamic_prandtl_tomlinson_two_spring_new(&t, &mut h) },
+        ASPERITY_OK
+    );
+    models.push((h, 1e-11));
+    // Every size class of the chain's integration arrays.
+    for blocks in [1, 3, 16, 64, 256] {
+        let b = AsperityBurridgeKnopoffParams {
+            blocks,
+            mass: 1e-5,
+            coupling_stiffness: 1e4,
+            pulling_stiffness: 1e3,
+            mu_static: 0.5,
+            mu_kinetic: 0.3,
+            weakening_velocity: 0.05,
+            damping: 0.01,
+            tolerance: 1e-9,
+        };
+        let mut h = core::ptr::null_mut();
+        assert_eq!(
+            unsafe { asperity_dynamic_burridge_knopoff_new(&b, &mut h) },
+            ASPERITY_OK
+        );
+        models.push((h, 1e-5));
+    }
     for (h, scale) in models {
         let mut n = 0usize;
         unsafe { asperity_dynamic_friction_state_size(h, &mut n) };

@@ -733,7 +733,8 @@ fn last_error_message_is_thread_local() {
 #[test]
 fn dynamic_friction_models_step_and_block() {
     use asperity::friction::dynamic::{
-        DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip, PrandtlTomlinson,
+        BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip,
+        PrandtlTomlinson,
     };
     let models = [
         DynamicModel::LuGre(LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4).unwrap()),
@@ -743,10 +744,24 @@ fn dynamic_friction_models_step_and_block() {
         DynamicModel::PrandtlTomlinson(
             PrandtlTomlinson::new(2e-21, 3e-10, 1.0, 1e-12, 1e-6, 1e-9).unwrap(),
         ),
+        DynamicModel::PrandtlTomlinson(
+            PrandtlTomlinson::two_spring(2e-21, 3e-10, 2.0, 1e-12, 1e-6, 2.0, 1e-12, 1e-6, 1e-9)
+                .unwrap(),
+        ),
+        DynamicModel::BurridgeKnopoff(
+            BurridgeKnopoff::new(4, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-9).unwrap(),
+        ),
     ];
     for model in &models {
-        let track = matches!(model, DynamicModel::PrandtlTomlinson(_));
-        let scale = if track { 1e-11 } else { 1e-6 };
+        let track = matches!(
+            model,
+            DynamicModel::PrandtlTomlinson(_) | DynamicModel::BurridgeKnopoff(_)
+        );
+        let scale = match model {
+            DynamicModel::PrandtlTomlinson(_) => 1e-11,
+            DynamicModel::BurridgeKnopoff(_) => 1e-5,
+            _ => 1e-6,
+        };
         let inc = |i: usize, k: usize| {
             let t = (i * 31 + k) as f64;
             DynamicIncrement {

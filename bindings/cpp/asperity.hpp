@@ -908,8 +908,9 @@ public:
 // ---------------------------------------------------------------------------
 // Dynamic friction models (thesis chapter 5) as per-increment friction steps
 
-/// A dynamic friction model (`AsperityDynamicFriction`): LuGre or
-/// Maxwell-slip, stepped once per increment with caller-owned states of
+/// A dynamic friction model (`AsperityDynamicFriction`): LuGre,
+/// Maxwell-slip, Prandtl-Tomlinson (one or two springs) or Burridge-Knopoff,
+/// stepped once per increment with caller-owned states of
 /// `state_size()` doubles (all-zero = fresh). Immutable; safe to share
 /// between threads. Sign convention: the slip increment is the motion of the
 /// point relative to the counter-surface, the force is the force on the
@@ -956,6 +957,28 @@ public:
         AsperityDynamicFriction* p = nullptr;
         check(asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, damping,
                                                      tolerance, &p));
+        return DynamicFriction(p);
+    }
+
+    /// `asperity_dynamic_prandtl_tomlinson_two_spring_new`: the
+    /// tip-cantilever Prandtl-Tomlinson model of `params` (the tip spring
+    /// and the cantilever spring in series; state size 7).
+    [[nodiscard]] static DynamicFriction
+    prandtl_tomlinson_two_spring(const AsperityPrandtlTomlinsonTwoSpringParams& params)
+    {
+        AsperityDynamicFriction* p = nullptr;
+        check(asperity_dynamic_prandtl_tomlinson_two_spring_new(&params, &p));
+        return DynamicFriction(p);
+    }
+
+    /// `asperity_dynamic_burridge_knopoff_new`: the Burridge-Knopoff block
+    /// chain of `params` (state size 3 + 2 x blocks; the force is the leaf
+    /// springs' pull on the driver).
+    [[nodiscard]] static DynamicFriction
+    burridge_knopoff(const AsperityBurridgeKnopoffParams& params)
+    {
+        AsperityDynamicFriction* p = nullptr;
+        check(asperity_dynamic_burridge_knopoff_new(&params, &p));
         return DynamicFriction(p);
     }
 

@@ -253,6 +253,8 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_STATE_SLIP_PATH = 1
   !> Index (from 0) in a dynamic-friction state of the model's first variable.
   integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_STATE_MODEL = 2
+  !> The largest Burridge-Knopoff chain (blocks).
+  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_MAX_BLOCKS = 256
   ! The slider state indices are C's, from 0: in Fortran the position is
   ! `state(ASPERITY_SLIDER_STATE_POSITION + 1)`.
   !> Index (from 0) in a slider state of its flag: 0 fresh, 1 stepped.
@@ -812,6 +814,50 @@ module asperity
     real(c_double) :: sigma2 = 0.0_c_double
   end type asperity_lugre_params
 
+  !> `AsperityPrandtlTomlinsonTwoSpringParams`: the tip-cantilever Prandtl-Tomlinson model (SI).
+  type, bind(c), public :: asperity_prandtl_tomlinson_two_spring_params
+    !> Lattice potential amplitude U0 (J), > 0.
+    real(c_double) :: amplitude = 0.0_c_double
+    !> Lattice period a (m), > 0.
+    real(c_double) :: period = 0.0_c_double
+    !> Tip (contact) spring k_t to the cantilever body (N/m), > 0.
+    real(c_double) :: tip_stiffness = 0.0_c_double
+    !> Tip mass m_t (kg), > 0.
+    real(c_double) :: tip_mass = 0.0_c_double
+    !> Tip damping (kg/s), >= 0.
+    real(c_double) :: tip_damping = 0.0_c_double
+    !> Cantilever lateral spring k_c to the support (N/m), > 0.
+    real(c_double) :: cantilever_stiffness = 0.0_c_double
+    !> Cantilever body mass m_c (kg), > 0.
+    real(c_double) :: cantilever_mass = 0.0_c_double
+    !> Cantilever damping (kg/s), >= 0.
+    real(c_double) :: cantilever_damping = 0.0_c_double
+    !> Relative tolerance of the integration, in [1e-13, 1e-2].
+    real(c_double) :: tolerance = 0.0_c_double
+  end type asperity_prandtl_tomlinson_two_spring_params
+
+  !> `AsperityBurridgeKnopoffParams`: the Burridge-Knopoff block chain (SI).
+  type, bind(c), public :: asperity_burridge_knopoff_params
+    !> Number of blocks M, in [1, `ASPERITY_DYNAMIC_MAX_BLOCKS`]; each carries N/M.
+    integer(c_size_t) :: blocks = 0_c_size_t
+    !> Mass of each block (kg), > 0.
+    real(c_double) :: mass = 0.0_c_double
+    !> Coupling spring between neighbours (N/m), >= 0.
+    real(c_double) :: coupling_stiffness = 0.0_c_double
+    !> Leaf spring from the driver to each block (N/m), > 0.
+    real(c_double) :: pulling_stiffness = 0.0_c_double
+    !> Static coefficient mu_s, >= 0.
+    real(c_double) :: mu_static = 0.0_c_double
+    !> Kinetic coefficient mu_k at the onset of slip, in [0, mu_s].
+    real(c_double) :: mu_kinetic = 0.0_c_double
+    !> Weakening velocity v_c (m/s) of mu_k / (1 + v/v_c), > 0 (+infinity: none).
+    real(c_double) :: weakening_velocity = 0.0_c_double
+    !> Viscous damping of each block (kg/s), >= 0.
+    real(c_double) :: damping = 0.0_c_double
+    !> Relative tolerance of the integration, in [1e-13, 1e-2].
+    real(c_double) :: tolerance = 0.0_c_double
+  end type asperity_burridge_knopoff_params
+
   !> `AsperityDynamicIncrement`: one increment of a contact point (SI).
   type, bind(c), public :: asperity_dynamic_increment
     !> Normal force N (N), >= 0.
@@ -1246,7 +1292,8 @@ module asperity
     final :: asperity_slider_final
   end type asperity_slider
 
-  !> Handle of `AsperityDynamicFriction`: a LuGre or Maxwell-slip friction model (`asperity_dynamic_*_new`).
+  !> Handle of `AsperityDynamicFriction`: a LuGre, Maxwell-slip, Prandtl-Tomlinson or
+  !> Burridge-Knopoff friction model (`asperity_dynamic_*_new`).
   !> `ptr` is the C pointer (NULL when empty) for the raw layer.
   type, public :: asperity_dynamic_friction
     type(c_ptr) :: ptr = c_null_ptr
@@ -2216,6 +2263,26 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_dynamic_prandtl_tomlinson_new
 
+    !> Build a two-spring (tip-cantilever) Prandtl-Tomlinson model from `*params`.
+    function c_asperity_dynamic_prandtl_tomlinson_two_spring_new(params, out) result(r) &
+        bind(c, name="asperity_dynamic_prandtl_tomlinson_two_spring_new")
+      import
+      implicit none
+      type(asperity_prandtl_tomlinson_two_spring_params), intent(in) :: params
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_dynamic_prandtl_tomlinson_two_spring_new
+
+    !> Build a Burridge-Knopoff block chain from `*params`.
+    function c_asperity_dynamic_burridge_knopoff_new(params, out) result(r) &
+        bind(c, name="asperity_dynamic_burridge_knopoff_new")
+      import
+      implicit none
+      type(asperity_burridge_knopoff_params), intent(in) :: params
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_dynamic_burridge_knopoff_new
+
     !> Release a model; NULL is accepted and ignored.
     subroutine c_asperity_dynamic_friction_free(model) bind(c, name="asperity_dynamic_friction_free")
       import
@@ -3055,6 +3122,8 @@ module asperity
   public :: c_asperity_dynamic_lugre_new
   public :: c_asperity_dynamic_maxwell_slip_new
   public :: c_asperity_dynamic_prandtl_tomlinson_new
+  public :: c_asperity_dynamic_prandtl_tomlinson_two_spring_new
+  public :: c_asperity_dynamic_burridge_knopoff_new
   public :: c_asperity_dynamic_friction_free
   public :: c_asperity_dynamic_friction_state_size
   public :: c_asperity_dynamic_friction_step
@@ -3139,6 +3208,8 @@ module asperity
   public :: asperity_dynamic_lugre_new
   public :: asperity_dynamic_maxwell_slip_new
   public :: asperity_dynamic_prandtl_tomlinson_new
+  public :: asperity_dynamic_prandtl_tomlinson_two_spring_new
+  public :: asperity_dynamic_burridge_knopoff_new
   public :: asperity_dynamic_friction_state_size
   public :: asperity_dynamic_friction_step
   public :: asperity_dynamic_friction_step_block
@@ -4152,6 +4223,27 @@ contains
     call check(c_asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
         damping, tolerance, model%ptr), 'asperity_dynamic_prandtl_tomlinson_new', status)
   end subroutine asperity_dynamic_prandtl_tomlinson_new
+
+  !> A two-spring (tip-cantilever) Prandtl-Tomlinson model of `params` into `model` (state
+  !> size 7).
+  subroutine asperity_dynamic_prandtl_tomlinson_two_spring_new(params, model, status)
+    type(asperity_prandtl_tomlinson_two_spring_params), intent(in) :: params
+    type(asperity_dynamic_friction), intent(inout) :: model
+    integer(c_int32_t), intent(out), optional :: status
+    call model%free()
+    call check(c_asperity_dynamic_prandtl_tomlinson_two_spring_new(params, model%ptr), &
+        'asperity_dynamic_prandtl_tomlinson_two_spring_new', status)
+  end subroutine asperity_dynamic_prandtl_tomlinson_two_spring_new
+
+  !> A Burridge-Knopoff block chain of `params` into `model` (state size 3 + 2 blocks).
+  subroutine asperity_dynamic_burridge_knopoff_new(params, model, status)
+    type(asperity_burridge_knopoff_params), intent(in) :: params
+    type(asperity_dynamic_friction), intent(inout) :: model
+    integer(c_int32_t), intent(out), optional :: status
+    call model%free()
+    call check(c_asperity_dynamic_burridge_knopoff_new(params, model%ptr), &
+        'asperity_dynamic_burridge_knopoff_new', status)
+  end subroutine asperity_dynamic_burridge_knopoff_new
 
   !> The number of doubles `n` of one point's state.
   subroutine asperity_dynamic_friction_state_size(model, n, status)

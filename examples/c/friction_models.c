@@ -5,6 +5,15 @@
  *   - Maxwell-slip (four elements: pre-sliding hysteresis),
  *   - the homogenised energy-dissipation law (mu = 1.05, the chapter-6
  *     copper figure, with a stick stiffness),
+ *   - Prandtl-Tomlinson, one spring: a 1 g slider in a periodic potential
+ *     of period 5 um (an asperity spacing) whose largest force is 2 N,
+ *     pulled through a spring at Tomlinson parameter 3 (stick-slip),
+ *   - Prandtl-Tomlinson, two springs: the same with the spring split into
+ *     a tip and a cantilever spring in series (same effective stiffness),
+ *   - Burridge-Knopoff: eight 0.1 g blocks, 0.25 N each, mu_s = 1.05,
+ *     mu_k = 0.8 weakening on 5 cm/s, coupled and pulled by springs
+ *     (static reach 10 um), lightly damped, the fourth block set 1 um
+ *     behind the others at the start,
  * printing the friction force histories side by side ("row" lines: slip
  * position, then each model's force on the point along x, in N) and each
  * model's total dissipation ("CHECK" lines).
@@ -15,7 +24,8 @@
 #include <string.h>
 
 #define STEPS 65
-#define N_MAX 16
+#define N_MAX 32
+#define MODELS 5
 
 static int fail(const char *what, int32_t status) {
     char msg[512];
@@ -26,18 +36,27 @@ static int fail(const char *what, int32_t status) {
 
 int main(void) {
     const double normal = 2.0, area = 1e-6, dt = 1e-3, h = 1e-6;
+    const double pi = 3.14159265358979323846;
+    /* Prandtl-Tomlinson: period a, amplitude U0 from the largest lattice
+     * force 2 pi U0 / a = 2 N, spring from eta = 4 pi^2 U0/(k a^2) = 3,
+     * damping ratio 0.5 at 1 g. */
+    const double a = 5e-6, u0 = 2.0 * a / (2.0 * pi);
+    const double k_pt = 4.0 * pi * pi * u0 / (3.0 * a * a), m_pt = 1e-3;
+    const char *names[MODELS] = {"lugre", "maxwell", "prandtl_tomlinson", "two_spring",
+                                 "burridge_knopoff"};
     AsperityLugreParams p;
-    AsperityDynamicFriction *lugre = NULL, *maxwell = NULL;
+    AsperityPrandtlTomlinsonTwoSpringParams t;
+    AsperityBurridgeKnopoffParams b;
+    AsperityDynamicFriction *models[MODELS] = {NULL, NULL, NULL, NULL, NULL};
     AsperityHomogenisedFriction *homog = NULL;
     const double k[4] = {4e5, 1e5, 2.5e4, 6.25e3};
     const double mu[4] = {0.3, 0.3, 0.25, 0.2};
     AsperityHomogenisedSample sample;
-    double s_lugre[N_MAX] = {0}, s_maxwell[N_MAX] = {0};
+    double states[MODELS][N_MAX];
     AsperityFrictionPointState s_homog;
     double x = 0.0, d_homog = 0.0;
-    size_t n_lugre = 0, n_maxwell = 0;
     int32_t st;
-    int i;
+    int i, j;
 
     p.mu_coulomb = 0.8;
     p.mu_static = 1.05;
@@ -47,9 +66,34 @@ int main(void) {
     p.sigma1 = 0.0;
     p.damping_velocity = INFINITY;
     p.sigma2 = 0.0;
-    if ((st = asperity_dynamic_lugre_new(&p, &lugre)) != ASPERITY_OK) return fail("lugre", st);
-    if ((st = asperity_dynamic_maxwell_slip_new(k, mu, 4, 0.0, &maxwell)) != ASPERITY_OK)
+    t.amplitude = u0;
+    t.period = a;
+    t.tip_stiffness = 2.0 * k_pt;
+    t.tip_mass = 0.5 * m_pt;
+    t.tip_damping = sqrt(2.0 * k_pt * 0.5 * m_pt);
+    t.cantilever_stiffness = 2.0 * k_pt;
+    t.cantilever_mass = 0.5 * m_pt;
+    t.cantilever_damping = sqrt(2.0 * k_pt * 0.5 * m_pt);
+    t.tolerance = 1e-9;
+    b.blocks = 8;
+    b.mass = 1e-4;
+    b.coupling_stiffness = 1e4;
+    b.pulling_stiffness = 2.6e4;
+    b.mu_static = 1.05;
+    b.mu_kinetic = 0.8;
+    b.weakening_velocity = 5e-2;
+    b.damping = 0.3;
+    b.tolerance = 1e-9;
+    if ((st = asperity_dynamic_lugre_new(&p, &models[0])) != ASPERITY_OK) return fail("lugre", st);
+    if ((st = asperity_dynamic_maxwell_slip_new(k, mu, 4, 0.0, &models[1])) != ASPERITY_OK)
         return fail("maxwell", st);
+    if ((st = asperity_dynamic_prandtl_tomlinson_new(u0, a, k_pt, m_pt, sqrt(k_pt * m_pt), 1e-9,
+                                                     &models[2])) != ASPERITY_OK)
+        return fail("prandtl_tomlinson", st);
+    if ((st = asperity_dynamic_prandtl_tomlinson_two_spring_new(&t, &models[3])) != ASPERITY_OK)
+        return fail("two_spring", st);
+    if ((st = asperity_dynamic_burridge_knopoff_new(&b, &models[4])) != ASPERITY_OK)
+        return fail("burridge_knopoff", st);
     memset(&sample, 0, sizeof sample);
     sample.pressure = normal / area;
     sample.cof = 1.05;
@@ -57,29 +101,33 @@ int main(void) {
     sample.shares.chemical = 1.0;
     if ((st = asperity_homogenised_friction_new(&sample, 1, &homog)) != ASPERITY_OK)
         return fail("homogenised", st);
-    if ((st = asperity_dynamic_friction_state_size(lugre, &n_lugre)) != ASPERITY_OK ||
-        (st = asperity_dynamic_friction_state_size(maxwell, &n_maxwell)) != ASPERITY_OK)
-        return fail("state size", st);
-    if (n_lugre > N_MAX || n_maxwell > N_MAX) return fail("state size", ASPERITY_ERR_INTERNAL);
+    for (j = 0; j < MODELS; ++j) {
+        size_t n = 0;
+        if ((st = asperity_dynamic_friction_state_size(models[j], &n)) != ASPERITY_OK)
+            return fail("state size", st);
+        if (n > N_MAX) return fail("state size", ASPERITY_ERR_INTERNAL);
+        memset(states[j], 0, sizeof states[j]);
+    }
+    /* The state layout: block i's x_i - x_d at ASPERITY_DYNAMIC_STATE_MODEL + 2 i. */
+    states[4][ASPERITY_DYNAMIC_STATE_MODEL + 2 * 3] = -1e-6;
     memset(&s_homog, 0, sizeof s_homog);
 
-    printf("# x_um lugre_N maxwell_N homogenised_N\n");
+    printf("# x_um lugre_N maxwell_N homogenised_N prandtl_tomlinson_N two_spring_N "
+           "burridge_knopoff_N\n");
     for (i = 0; i < STEPS; ++i) {
         const double dx = i < 20 ? h : (i < 50 ? -h : h);
         AsperityDynamicIncrement inc;
-        AsperityDynamicResponse r_lugre, r_maxwell;
+        AsperityDynamicResponse r[MODELS];
         AsperityFrictionIncrement hinc;
         AsperityFrictionResponse r_homog;
         memset(&inc, 0, sizeof inc);
         inc.normal_force = normal;
         inc.slip[0] = dx;
         inc.dt = dt;
-        if ((st = asperity_dynamic_friction_step(lugre, &inc, s_lugre, s_lugre, &r_lugre)) !=
-            ASPERITY_OK)
-            return fail("lugre step", st);
-        if ((st = asperity_dynamic_friction_step(maxwell, &inc, s_maxwell, s_maxwell,
-                                                 &r_maxwell)) != ASPERITY_OK)
-            return fail("maxwell step", st);
+        for (j = 0; j < MODELS; ++j)
+            if ((st = asperity_dynamic_friction_step(models[j], &inc, states[j], states[j],
+                                                     &r[j])) != ASPERITY_OK)
+                return fail(names[j], st);
         memset(&hinc, 0, sizeof hinc);
         hinc.normal_force = normal;
         hinc.area = area;
@@ -91,15 +139,15 @@ int main(void) {
             return fail("homogenised step", st);
         d_homog += r_homog.dissipated;
         x += dx;
-        printf("row %.1f %.9e %.9e %.9e\n", x * 1e6, r_lugre.force[0], r_maxwell.force[0],
-               r_homog.force[0]);
+        printf("row %.1f %.9e %.9e %.9e %.9e %.9e %.9e\n", x * 1e6, r[0].force[0], r[1].force[0],
+               r_homog.force[0], r[2].force[0], r[3].force[0], r[4].force[0]);
     }
-    printf("CHECK lugre_dissipation %.17g\n", s_lugre[ASPERITY_DYNAMIC_STATE_DISSIPATION]);
-    printf("CHECK maxwell_dissipation %.17g\n", s_maxwell[ASPERITY_DYNAMIC_STATE_DISSIPATION]);
+    for (j = 0; j < MODELS; ++j)
+        printf("CHECK %s_dissipation %.17g\n", names[j],
+               states[j][ASPERITY_DYNAMIC_STATE_DISSIPATION]);
     printf("CHECK homogenised_dissipation %.17g\n", d_homog);
-    printf("CHECK slip_path_um %.17g\n", s_lugre[ASPERITY_DYNAMIC_STATE_SLIP_PATH] * 1e6);
-    asperity_dynamic_friction_free(lugre);
-    asperity_dynamic_friction_free(maxwell);
+    printf("CHECK slip_path_um %.17g\n", states[0][ASPERITY_DYNAMIC_STATE_SLIP_PATH] * 1e6);
+    for (j = 0; j < MODELS; ++j) asperity_dynamic_friction_free(models[j]);
     asperity_homogenised_friction_free(homog);
     return 0;
 }

@@ -339,6 +339,58 @@ void dynamic_friction()
         const std::array<double, 1> m0{0.1};
         (void)asperity::DynamicFriction::maxwell_slip(k0, m0);
     });
+    // Two-spring Prandtl-Tomlinson: tip and cantilever springs of 2 N/m in
+    // series on a 0.3 nm lattice; one increment of 10 pm in 1 us.
+    AsperityPrandtlTomlinsonTwoSpringParams t{};
+    t.amplitude = 3e-21;
+    t.period = 3e-10;
+    t.tip_stiffness = 2.0;
+    t.tip_mass = 1e-12;
+    t.tip_damping = 1e-6;
+    t.cantilever_stiffness = 2.0;
+    t.cantilever_mass = 1e-12;
+    t.cantilever_damping = 1e-6;
+    t.tolerance = 1e-9;
+    const asperity::DynamicFriction pt =
+        asperity::DynamicFriction::prandtl_tomlinson_two_spring(t);
+    std::vector<double> pt_state(pt.state_size(), 0.0);
+    AsperityDynamicIncrement pt_inc{};
+    pt_inc.normal_force = 1.0;
+    pt_inc.slip[0] = 1e-11;
+    pt_inc.dt = 1e-6;
+    check("two_spring_state_size", static_cast<double>(pt_state.size()));
+    check("two_spring_force", pt.step(pt_inc, pt_state).force[0]);
+    // Burridge-Knopoff: four blocks, all stuck after a 10 um pull (below
+    // the static reach mu_s (N/M)/k_p = 0.5 mm): F = -4 k_p slip.
+    AsperityBurridgeKnopoffParams b{};
+    b.blocks = 4;
+    b.mass = 1e-5;
+    b.coupling_stiffness = 1e3;
+    b.pulling_stiffness = 1e3;
+    b.mu_static = 0.5;
+    b.mu_kinetic = 0.3;
+    b.weakening_velocity = 0.05;
+    b.damping = 0.0;
+    b.tolerance = 1e-9;
+    const asperity::DynamicFriction bk = asperity::DynamicFriction::burridge_knopoff(b);
+    std::vector<double> bk_state(bk.state_size(), 0.0);
+    AsperityDynamicIncrement bk_inc{};
+    bk_inc.normal_force = 4.0;
+    bk_inc.slip[0] = 1e-5;
+    bk_inc.dt = 1e-3;
+    check("burridge_knopoff_state_size", static_cast<double>(bk_state.size()));
+    check("burridge_knopoff_stuck_force", bk.step(bk_inc, bk_state).force[0]);
+    expect_error("burridge_knopoff_bad", "`params.mu_kinetic`", [] {
+        AsperityBurridgeKnopoffParams bad{};
+        bad.blocks = 2;
+        bad.mass = 1.0;
+        bad.pulling_stiffness = 1.0;
+        bad.mu_static = 0.3;
+        bad.mu_kinetic = 0.5;
+        bad.weakening_velocity = 1.0;
+        bad.tolerance = 1e-9;
+        (void)asperity::DynamicFriction::burridge_knopoff(bad);
+    });
 }
 
 void indentation()

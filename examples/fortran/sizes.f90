@@ -43,6 +43,8 @@ program sizes
   type(asperity_slider_info) :: slider_info
   type(asperity_slider_options) :: slider_options
   type(asperity_lugre_params) :: lugre_params
+  type(asperity_prandtl_tomlinson_two_spring_params) :: two_spring_params
+  type(asperity_burridge_knopoff_params) :: burridge_knopoff_params
   type(asperity_dynamic_increment) :: dynamic_increment
   type(asperity_dynamic_response) :: dynamic_response
   type(asperity_friction_material) :: friction_material
@@ -84,6 +86,8 @@ program sizes
   call row('AsperitySliderInfo', c_sizeof(slider_info))
   call row('AsperitySliderOptions', c_sizeof(slider_options))
   call row('AsperityLugreParams', c_sizeof(lugre_params))
+  call row('AsperityPrandtlTomlinsonTwoSpringParams', c_sizeof(two_spring_params))
+  call row('AsperityBurridgeKnopoffParams', c_sizeof(burridge_knopoff_params))
   call row('AsperityDynamicIncrement', c_sizeof(dynamic_increment))
   call row('AsperityDynamicResponse', c_sizeof(dynamic_response))
   call row('AsperityFrictionMaterial', c_sizeof(friction_material))

@@ -1,10 +1,13 @@
 //! C ABI for `crate::friction::dynamic`: the dynamic friction models of
-//! thesis chapter 5 (LuGre, Maxwell-slip, Prandtl–Tomlinson) as per-increment friction steps
+//! thesis chapter 5 (LuGre, Maxwell-slip, Prandtl–Tomlinson with one or two
+//! springs, the Burridge–Knopoff chain) as per-increment friction steps
 //! (issue 9 §3).
 //!
 //! * `AsperityDynamicFriction` (opaque, a boxed [`DynamicModel`]) is built by
-//!   `asperity_dynamic_lugre_new`, `asperity_dynamic_maxwell_slip_new` or
-//!   `asperity_dynamic_prandtl_tomlinson_new`;
+//!   `asperity_dynamic_lugre_new`, `asperity_dynamic_maxwell_slip_new`,
+//!   `asperity_dynamic_prandtl_tomlinson_new`,
+//!   `asperity_dynamic_prandtl_tomlinson_two_spring_new` or
+//!   `asperity_dynamic_burridge_knopoff_new`;
 //!   immutable, one handle may be used by any number of threads at once.
 //! * Per-point states are caller-owned arrays of
 //!   `asperity_dynamic_friction_state_size` doubles (all-zero = fresh;
@@ -17,11 +20,12 @@
 //! increment is the motion of the point relative to the counter-surface, the
 //! tangential force is the force on the point and opposes slip.
 
-use super::{guard, input, output, partial_overlap, Failure};
+use super::{guard, input, output, partial_overlap, renamed, Failure};
 use crate::error::{Error, Result};
+use crate::friction::dynamic::burridge_knopoff::MAX_BLOCKS;
 use crate::friction::dynamic::{
-    DynamicFriction, DynamicIncrement, DynamicModel, DynamicResponse, LuGre, MaxwellSlip,
-    PrandtlTomlinson, STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL,
+    BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, DynamicResponse, LuGre,
+    MaxwellSlip, PrandtlTomlinson, STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL,
     TANGENT_SLIP,
 };
 
@@ -35,8 +39,13 @@ pub const ASPERITY_DYNAMIC_STATE_DISSIPATION: usize = 0;
 pub const ASPERITY_DYNAMIC_STATE_SLIP_PATH: usize = 1;
 /// Index in a dynamic-friction state of the model's first variable: LuGre's
 /// bristle deflection z (x, y; m); Maxwell-slip's element deflections
-/// (x, y per element; m).
+/// (x, y per element; m); Prandtl-Tomlinson's x - x_s (m), tip velocity
+/// (m/s), support position x_s (m), then with two springs the cantilever
+/// body's x_c - x_s (m) and velocity (m/s); Burridge-Knopoff's x_i - x_d (m)
+/// and v_i (m/s) per block, then the driver position x_d (m).
 pub const ASPERITY_DYNAMIC_STATE_MODEL: usize = 2;
+/// The largest Burridge-Knopoff chain (blocks).
+pub const ASPERITY_DYNAMIC_MAX_BLOCKS: usize = 256;
 
 const _: () = {
     assert!(ASPERITY_DYNAMIC_TANGENT_NORMAL == TANGENT_NORMAL);
@@ -44,12 +53,14 @@ const _: () = {
     assert!(ASPERITY_DYNAMIC_STATE_DISSIPATION == STATE_DISSIPATION);
     assert!(ASPERITY_DYNAMIC_STATE_SLIP_PATH == STATE_SLIP_PATH);
     assert!(ASPERITY_DYNAMIC_STATE_MODEL == STATE_MODEL);
+    assert!(ASPERITY_DYNAMIC_MAX_BLOCKS == MAX_BLOCKS);
 };
 
-/// A dynamic friction model (opaque): LuGre or Maxwell-slip. Create it with
-/// `asperity_dynamic_lugre_new` or `asperity_dynamic_maxwell_slip_new`,
-/// release it with `asperity_dynamic_friction_free`. Immutable; safe to
-/// share between threads.
+/// A dynamic friction model (opaque): LuGre, Maxwell-slip,
+/// Prandtl-Tomlinson (one or two springs) or Burridge-Knopoff. Create it
+/// with `asperity_dynamic_*_new`, release it with
+/// `asperity_dynamic_friction_free`. Immutable; safe to share between
+/// threads.
 pub struct AsperityDynamicFriction(DynamicModel);
 
 /// The LuGre model's parameters (see `LuGre::new`). SI units.
@@ -74,6 +85,61 @@ pub struct AsperityLugreParams {
     pub damping_velocity: f64,
     /// Viscous coefficient sigma_2 (N s/m), finite and >= 0.
     pub sigma2: f64,
+}
+
+/// The two-spring (tip-cantilever) Prandtl-Tomlinson model's parameters
+/// (see `PrandtlTomlinson::two_spring`). SI units.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AsperityPrandtlTomlinsonTwoSpringParams {
+    /// Lattice potential amplitude U0 (J), finite and > 0.
+    pub amplitude: f64,
+    /// Lattice period a (m), finite and > 0.
+    pub period: f64,
+    /// Tip (contact) spring k_t between the tip and the cantilever body
+    /// (N/m), finite and > 0.
+    pub tip_stiffness: f64,
+    /// Tip mass m_t (kg), finite and > 0.
+    pub tip_mass: f64,
+    /// Tip damping gamma_t (kg/s), finite and >= 0.
+    pub tip_damping: f64,
+    /// Cantilever lateral spring k_c between the body and the support
+    /// (N/m), finite and > 0.
+    pub cantilever_stiffness: f64,
+    /// Cantilever body mass m_c (kg), finite and > 0.
+    pub cantilever_mass: f64,
+    /// Cantilever damping gamma_c (kg/s), finite and >= 0.
+    pub cantilever_damping: f64,
+    /// Relative tolerance of the integration, in [1e-13, 1e-2].
+    pub tolerance: f64,
+}
+
+/// The Burridge-Knopoff chain's parameters (see `BurridgeKnopoff::new`).
+/// SI units.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AsperityBurridgeKnopoffParams {
+    /// Number of blocks M, in [1, `ASPERITY_DYNAMIC_MAX_BLOCKS`]; each
+    /// carries N/M of the normal force.
+    pub blocks: usize,
+    /// Mass of each block m (kg), finite and > 0.
+    pub mass: f64,
+    /// Coupling spring k_c between neighbours (N/m), finite and >= 0.
+    pub coupling_stiffness: f64,
+    /// Leaf spring k_p from the driver to each block (N/m), finite, > 0.
+    pub pulling_stiffness: f64,
+    /// Static coefficient mu_s, finite and >= 0.
+    pub mu_static: f64,
+    /// Kinetic coefficient mu_k at the onset of slip, in [0, mu_s].
+    pub mu_kinetic: f64,
+    /// Weakening velocity v_c (m/s) of mu_k / (1 + v/v_c), > 0;
+    /// +infinity for constant kinetic friction.
+    pub weakening_velocity: f64,
+    /// Viscous damping of each block against the substrate (kg/s),
+    /// finite and >= 0.
+    pub damping: f64,
+    /// Relative tolerance of the integration, in [1e-13, 1e-2].
+    pub tolerance: f64,
 }
 
 unsafe fn emit(
@@ -159,6 +225,95 @@ pub unsafe extern "C" fn asperity_dynamic_prandtl_tomlinson_new(
     })
 }
 
+/// Build a two-spring (tip-cantilever) Prandtl-Tomlinson model from
+/// `*params`: the tip in the lattice potential joined by the tip spring to
+/// the cantilever body, joined by the cantilever spring to the support
+/// (Johnson and Woodhouse 1998). One-dimensional: increments need
+/// `slip[1]` = 0. Stick-slip when 4 pi^2 U0/(k_eff a^2) > 1 with
+/// 1/k_eff = 1/k_t + 1/k_c. Writes a new handle to `*out` (NULL on
+/// failure); errors name the field (`params.tip_mass`, ...).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_prandtl_tomlinson_two_spring_new(
+    params: *const AsperityPrandtlTomlinsonTwoSpringParams,
+    out: *mut *mut AsperityDynamicFriction,
+) -> i32 {
+    emit(out, || {
+        let p = input(params, "params")?;
+        PrandtlTomlinson::two_spring(
+            p.amplitude,
+            p.period,
+            p.tip_stiffness,
+            p.tip_mass,
+            p.tip_damping,
+            p.cantilever_stiffness,
+            p.cantilever_mass,
+            p.cantilever_damping,
+            p.tolerance,
+        )
+        .map(DynamicModel::PrandtlTomlinson)
+        .map_err(|e| {
+            [
+                ("amplitude", "params.amplitude"),
+                ("period", "params.period"),
+                ("tip_stiffness", "params.tip_stiffness"),
+                ("tip_mass", "params.tip_mass"),
+                ("tip_damping", "params.tip_damping"),
+                ("cantilever_stiffness", "params.cantilever_stiffness"),
+                ("cantilever_mass", "params.cantilever_mass"),
+                ("cantilever_damping", "params.cantilever_damping"),
+                ("tolerance", "params.tolerance"),
+            ]
+            .into_iter()
+            .fold(e, |e, (from, to)| renamed(e, from, to))
+        })
+    })
+}
+
+/// Build a Burridge-Knopoff chain from `*params`: M blocks coupled by
+/// springs, pulled by leaf springs from a driver that moves by the
+/// increment's slip, with static friction mu_s N/M and velocity-weakening
+/// kinetic friction mu_k (N/M)/(1 + v/v_c) on each (Burridge and Knopoff
+/// 1967; Carlson and Langer 1989); free ends. One-dimensional: increments
+/// need `slip[1]` = 0. The force is the leaf springs' pull on the driver.
+/// Writes a new handle to `*out` (NULL on failure); errors name the field
+/// (`params.blocks`, ...).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_burridge_knopoff_new(
+    params: *const AsperityBurridgeKnopoffParams,
+    out: *mut *mut AsperityDynamicFriction,
+) -> i32 {
+    emit(out, || {
+        let p = input(params, "params")?;
+        BurridgeKnopoff::new(
+            p.blocks,
+            p.mass,
+            p.coupling_stiffness,
+            p.pulling_stiffness,
+            p.mu_static,
+            p.mu_kinetic,
+            p.weakening_velocity,
+            p.damping,
+            p.tolerance,
+        )
+        .map(DynamicModel::BurridgeKnopoff)
+        .map_err(|e| {
+            [
+                ("blocks", "params.blocks"),
+                ("mass", "params.mass"),
+                ("coupling_stiffness", "params.coupling_stiffness"),
+                ("pulling_stiffness", "params.pulling_stiffness"),
+                ("mu_static", "params.mu_static"),
+                ("mu_kinetic", "params.mu_kinetic"),
+                ("weakening_velocity", "params.weakening_velocity"),
+                ("damping", "params.damping"),
+                ("tolerance", "params.tolerance"),
+            ]
+            .into_iter()
+            .fold(e, |e, (from, to)| renamed(e, from, to))
+        })
+    })
+}
+
 /// Release a model; NULL is accepted and ignored.
 #[no_mangle]
 pub unsafe extern "C" fn asperity_dynamic_friction_free(model: *mut AsperityDynamicFriction) {
@@ -170,7 +325,8 @@ pub unsafe extern "C" fn asperity_dynamic_friction_free(model: *mut AsperityDyna
 }
 
 /// Write the number of doubles of one point's state to `*n` (LuGre: 4;
-/// Maxwell-slip: 2 + 2 x elements).
+/// Maxwell-slip: 2 + 2 x elements; Prandtl-Tomlinson: 5, with two springs
+/// 7; Burridge-Knopoff: 3 + 2 x blocks).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_dynamic_friction_state_size(
     model: *const AsperityDynamicFriction,

@@ -9,22 +9,35 @@
 //!   (5-8)) in its standard continuous form, LuGre (Canudas de Wit et al.
 //!   1995), with Stribeck velocity weakening, integrated exactly over each
 //!   increment.
-//! * [`DynamicModel`]: either, chosen by configuration; every model
+//! * [`DynamicModel`]: any of them, chosen by configuration; every model
 //!   implements [`DynamicFriction`] (step, in place, VFRIC-shaped block).
 //! * [`PrandtlTomlinson`]: a tip in a periodic lattice potential pulled
-//!   through a spring (thesis 5.3.1, (5-5), (5-6)), integrated with error
-//!   control; stick-slip when 4π²U₀/(k a²) > 1.
+//!   through a spring (thesis 5.3.1, (5-5), (5-6)), or through the tip and
+//!   cantilever springs in series ([`PrandtlTomlinson::two_spring`]),
+//!   integrated with error control; stick-slip when 4π²U₀/(k_eff a²) > 1.
 //! * [`MaxwellSlip`]: N Maxwell-slip elements in parallel (Al-Bender,
 //!   Lampaert and Swevers 2004; thesis 5.3.7, (5-9)..(5-12) reduced to the
 //!   tangential direction): pre-sliding hysteresis with non-local memory.
+//! * [`BurridgeKnopoff`]: a chain of blocks coupled by springs and pulled
+//!   from a driver plate over velocity-weakening friction (Burridge and
+//!   Knopoff 1967, Carlson and Langer 1989; thesis (5-14)), with the stick
+//!   and slip of every block located as events.
+//! * [`stick_slip()`]: stick-slip events and the static and kinetic friction
+//!   of a force history.
+//!
+//! The integrated models (Prandtl–Tomlinson, Burridge–Knopoff) share one
+//! Dormand–Prince 5(4) integrator with error control and dense output.
 //!
 //! # Conventions
 //!
-//! Both models are **Amontons-scaled**: every force is proportional to the
-//! normal force N of the increment (bristle and element stiffnesses and
-//! break-away forces are given per unit normal force), so μ = |F|/N does not
-//! depend on N and a change of N between increments rescales the stored
-//! forces without slip. A viscous term σ₂·v (N·s/m) is added on top.
+//! LuGre and Maxwell-slip are **Amontons-scaled**: every force is
+//! proportional to the normal force N of the increment (bristle and element
+//! stiffnesses and break-away forces are given per unit normal force), so
+//! μ = |F|/N does not depend on N and a change of N between increments
+//! rescales the stored forces without slip. A viscous term σ₂·v (N·s/m) is
+//! added on top. The Burridge–Knopoff blocks carry N/M each with friction
+//! coefficients (their springs are absolute); the Prandtl–Tomlinson model
+//! does not depend on N.
 //!
 //! The slip increment Δs is the motion of the point relative to the
 //! counter-surface (two components in the caller's tangent basis; a track
@@ -46,13 +59,18 @@
 //! ([`STATE_DISSIPATION`], [`STATE_SLIP_PATH`]), then the model's own
 //! variables (see each model).
 
+pub mod burridge_knopoff;
+mod dormand_prince;
 pub mod lugre;
 pub mod maxwell_slip;
 pub mod prandtl_tomlinson;
+pub mod stick_slip;
 
+pub use burridge_knopoff::BurridgeKnopoff;
 pub use lugre::LuGre;
 pub use maxwell_slip::MaxwellSlip;
 pub use prandtl_tomlinson::PrandtlTomlinson;
+pub use stick_slip::{stick_slip, SlipEvent, StickSlip};
 
 use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
@@ -119,7 +137,8 @@ pub struct DynamicResponse {
 }
 
 /// A friction model stepped once per increment. Implemented by [`LuGre`],
-/// [`MaxwellSlip`] and [`DynamicModel`] (the choice by configuration).
+/// [`MaxwellSlip`], [`PrandtlTomlinson`], [`BurridgeKnopoff`] and
+/// [`DynamicModel`] (the choice by configuration).
 pub trait DynamicFriction: sealed::Advance {
     /// Doubles of one point's state.
     fn state_len(&self) -> usize;
@@ -234,8 +253,10 @@ pub enum DynamicModel {
     LuGre(LuGre),
     /// [`MaxwellSlip`].
     MaxwellSlip(MaxwellSlip),
-    /// [`PrandtlTomlinson`].
+    /// [`PrandtlTomlinson`] (one or two springs).
     PrandtlTomlinson(PrandtlTomlinson),
+    /// [`BurridgeKnopoff`].
+    BurridgeKnopoff(BurridgeKnopoff),
 }
 
 macro_rules! each_model {
@@ -244,6 +265,7 @@ macro_rules! each_model {
             DynamicModel::LuGre($m) => $e,
             DynamicModel::MaxwellSlip($m) => $e,
             DynamicModel::PrandtlTomlinson($m) => $e,
+            DynamicModel::BurridgeKnopoff($m) => $e,
         }
     };
 }

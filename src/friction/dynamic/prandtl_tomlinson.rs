@@ -1,12 +1,13 @@
 //! The Prandtl–Tomlinson model (Prandtl 1928; thesis 5.3.1, (5-5), (5-6)):
 //! a point mass in a periodic potential pulled through a spring, the
-//! standard model of an AFM tip sliding on a crystal lattice.
+//! standard model of an AFM tip sliding on a crystal lattice; and its
+//! two-spring tip–cantilever version (thesis figure 5-5).
 //!
 //! # Formulas
 //!
-//! The tip (mass m, position x) sits in the potential
-//! U(x) = −U₀ cos(2πx/a) and is pulled by a spring of stiffness k whose far
-//! end (the support, the cantilever) is at x_s:
+//! **One spring** ([`PrandtlTomlinson::new`]). The tip (mass m, position
+//! x) sits in the potential U(x) = −U₀ cos(2πx/a) and is pulled by a spring
+//! of stiffness k whose far end (the support, the cantilever) is at x_s:
 //!
 //! $$m\ddot x = k(x_s - x) - \gamma\dot x - \frac{2\pi U_0}{a}\sin\frac{2\pi x}{a}.$$
 //!
@@ -16,23 +17,42 @@
 //! no hysteresis in the quasi-static limit); for η > 1 the tip sticks and
 //! slips (Prandtl 1928; Socoliuc et al. 2004).
 //!
+//! **Two springs** ([`PrandtlTomlinson::two_spring`]). The tip (mass m_t,
+//! position x_t, in the lattice potential) is joined by the tip (contact)
+//! spring k_t to the cantilever body (mass m_c, position x_c), which is
+//! joined by the cantilever's lateral spring k_c to the support x_s, with
+//! damping γ_t, γ_c on each (Johnson and Woodhouse 1998; Maier et al. 2005):
+//!
+//! $$m_t\ddot x_t = k_t(x_c - x_t) - \gamma_t\dot x_t - U'(x_t),\qquad
+//! m_c\ddot x_c = k_c(x_s - x_c) - k_t(x_c - x_t) - \gamma_c\dot x_c.$$
+//!
+//! The force on the support is F = k_c(x_c − x_s). In the quasi-static
+//! limit the cantilever body carries no net force, the two springs act in
+//! series with 1/k_eff = 1/k_t + 1/k_c, and the model reduces to the one-
+//! spring model with k = k_eff (Lu et al. 2011, as the thesis notes): stick-
+//! slip when η = 4π²U₀/(k_eff a²) > 1 ([`PrandtlTomlinson::eta`]). With
+//! k_t → ∞ and m_c → 0 it is the one-spring model with k = k_c, m = m_t.
+//!
 //! # Integration
 //!
 //! Over an increment the support moves at constant velocity V = Δs/Δt and
-//! the equation of motion is integrated by the embedded Runge–Kutta pair of
-//! Dormand and Prince (1980, order 5(4)) with error control (relative and
-//! absolute tolerances, step-size control with a safety factor), carrying
-//! the dissipated energy ∫γẋ² dt as a third component, so the work of the
-//! support equals the change of kinetic, spring and lattice energy plus the
-//! dissipation to the tolerance.
+//! the equations of motion are integrated by the embedded Runge–Kutta pair
+//! of Dormand and Prince (1980, order 5(4)) with error control (relative
+//! and absolute tolerances, step-size control with a safety factor; see
+//! `dormand_prince`), carrying the dissipated energy ∫γẋ² dt (both masses)
+//! as a component, so the work of the support equals the change of
+//! kinetic, spring and lattice energy plus the dissipation to the
+//! tolerance.
 //!
 //! # State
 //!
-//! `[dissipation, slip path, x − x_s, ẋ, x_s]` (J, m, m, m/s, m): the tip
-//! relative to the support, its velocity and the support position;
-//! all-zero = tip at rest under the support at a potential minimum.
-//! One-dimensional: `slip[1]` must be 0. The normal force is reported (μ =
-//! |F|/N) but does not enter the model.
+//! One spring: `[dissipation, slip path, x − x_s, ẋ, x_s]` (J, m, m, m/s,
+//! m): the tip relative to the support, its velocity and the support
+//! position. Two springs: the same five, then `x_c − x_s, ẋ_c` (m, m/s)
+//! ([`STATE_CANTILEVER`], [`STATE_CANTILEVER_VELOCITY`]). All-zero = at rest
+//! at a potential minimum with the springs relaxed. One-dimensional:
+//! `slip[1]` must be 0. The normal force is reported (μ = |F|/N) but does
+//! not enter the model.
 //!
 //! # References
 //!
@@ -41,9 +61,15 @@
 //! * A. Socoliuc, R. Bennewitz, E. Gnecco, E. Meyer, "Transition from
 //!   stick-slip to continuous sliding in atomic friction", Phys. Rev. Lett.
 //!   92 (2004) 134301.
+//! * K. L. Johnson, J. Woodhouse, "Stick-slip motion in the atomic force
+//!   microscope", Tribology Letters 5 (1998) 155–160.
+//! * S. Maier, Y. Sang, T. Filleter, M. Heyde, R. Bennewitz, E. Gnecco,
+//!   E. Meyer, "Fluctuations and jump dynamics in atomic friction
+//!   experiments", Phys. Rev. B 72 (2005) 245418.
 //! * J. R. Dormand, P. J. Prince, "A family of embedded Runge–Kutta
 //!   formulae", J. Comput. Appl. Math. 6 (1980) 19–26.
 
+use super::dormand_prince::{integrate, System};
 use super::{
     book, read, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
     STATE_MODEL, TANGENT_SLIP,
@@ -51,36 +77,60 @@ use super::{
 use crate::error::{check, Error, Result};
 use core::f64::consts::PI;
 
-/// Index of x − x_s (m) in a state.
+/// Index of x − x_s (m; the tip's) in a state.
 pub const STATE_TIP: usize = STATE_MODEL;
 /// Index of the tip velocity ẋ (m/s) in a state.
 pub const STATE_VELOCITY: usize = STATE_MODEL + 1;
 /// Index of the support position x_s (m) in a state.
 pub const STATE_SUPPORT: usize = STATE_MODEL + 2;
+/// Index of the cantilever body's x_c − x_s (m) in a two-spring state.
+pub const STATE_CANTILEVER: usize = STATE_MODEL + 3;
+/// Index of the cantilever body's velocity ẋ_c (m/s) in a two-spring state.
+pub const STATE_CANTILEVER_VELOCITY: usize = STATE_MODEL + 4;
 
 /// Sub-steps one increment may take before the integration gives up.
 pub const MAX_SUBSTEPS: u32 = 1_000_000;
 
-/// The Prandtl–Tomlinson model's parameters (immutable).
+/// The cantilever body of the two-spring model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Cantilever {
+    stiffness: f64,
+    mass: f64,
+    damping: f64,
+}
+
+/// The Prandtl–Tomlinson model's parameters (immutable), with one spring
+/// or two (tip and cantilever).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PrandtlTomlinson {
     amplitude: f64,
     period: f64,
+    /// k (one spring) or the tip spring k_t (two springs).
     stiffness: f64,
     mass: f64,
     damping: f64,
     tolerance: f64,
+    cantilever: Option<Cantilever>,
 }
 
-/// The integrated variables: x − x_s, ẋ and the dissipated energy D.
-type Y = [f64; 3];
+fn check_tolerance(tolerance: f64) -> Result<()> {
+    if (1e-13..=1e-2).contains(&tolerance) {
+        Ok(())
+    } else {
+        Err(Error::InvalidArgument {
+            name: "tolerance",
+            value: tolerance,
+            bound: "in [1e-13, 1e-2]",
+        })
+    }
+}
 
 impl PrandtlTomlinson {
-    /// Potential amplitude `amplitude` U₀ (J, finite, > 0), period `period`
-    /// a (m, > 0), spring stiffness `stiffness` k (N/m, > 0), tip mass
-    /// `mass` m (kg, > 0), damping `damping` γ (kg/s, ≥ 0), relative
-    /// tolerance of the integration `tolerance` (in [1e-13, 1e-2]). Errors
-    /// name the argument.
+    /// One spring: potential amplitude `amplitude` U₀ (J, finite, > 0),
+    /// period `period` a (m, > 0), spring stiffness `stiffness` k
+    /// (N/m, > 0), tip mass `mass` m (kg, > 0), damping `damping` γ
+    /// (kg/s, ≥ 0), relative tolerance of the integration `tolerance` (in
+    /// [1e-13, 1e-2]). Errors name the argument.
     pub fn new(
         amplitude: f64,
         period: f64,
@@ -94,13 +144,7 @@ impl PrandtlTomlinson {
         check::positive("stiffness", stiffness)?;
         check::positive("mass", mass)?;
         check::non_negative("damping", damping)?;
-        if !(1e-13..=1e-2).contains(&tolerance) {
-            return Err(Error::InvalidArgument {
-                name: "tolerance",
-                value: tolerance,
-                bound: "in [1e-13, 1e-2]",
-            });
-        }
+        check_tolerance(tolerance)?;
         Ok(Self {
             amplitude,
             period,
@@ -108,17 +152,89 @@ impl PrandtlTomlinson {
             mass,
             damping,
             tolerance,
+            cantilever: None,
         })
     }
 
-    /// The Tomlinson parameter η = 4π²U₀/(k a²): stick-slip when η > 1.
+    /// Two springs (module docs): potential amplitude `amplitude` U₀
+    /// (J, > 0) and period `period` a (m, > 0); the tip: contact spring
+    /// `tip_stiffness` k_t (N/m, > 0) to the cantilever body, mass
+    /// `tip_mass` m_t (kg, > 0), damping `tip_damping` γ_t (kg/s, ≥ 0); the
+    /// cantilever body: lateral spring `cantilever_stiffness` k_c
+    /// (N/m, > 0) to the support, mass `cantilever_mass` m_c (kg, > 0),
+    /// damping `cantilever_damping` γ_c (kg/s, ≥ 0); relative tolerance
+    /// `tolerance` (in [1e-13, 1e-2]). The state has two more values than
+    /// one spring's. Errors name the argument.
+    #[allow(clippy::too_many_arguments)]
+    pub fn two_spring(
+        amplitude: f64,
+        period: f64,
+        tip_stiffness: f64,
+        tip_mass: f64,
+        tip_damping: f64,
+        cantilever_stiffness: f64,
+        cantilever_mass: f64,
+        cantilever_damping: f64,
+        tolerance: f64,
+    ) -> Result<Self> {
+        check::positive("amplitude", amplitude)?;
+        check::positive("period", period)?;
+        check::positive("tip_stiffness", tip_stiffness)?;
+        check::positive("tip_mass", tip_mass)?;
+        check::non_negative("tip_damping", tip_damping)?;
+        check::positive("cantilever_stiffness", cantilever_stiffness)?;
+        check::positive("cantilever_mass", cantilever_mass)?;
+        check::non_negative("cantilever_damping", cantilever_damping)?;
+        check_tolerance(tolerance)?;
+        Ok(Self {
+            amplitude,
+            period,
+            stiffness: tip_stiffness,
+            mass: tip_mass,
+            damping: tip_damping,
+            tolerance,
+            cantilever: Some(Cantilever {
+                stiffness: cantilever_stiffness,
+                mass: cantilever_mass,
+                damping: cantilever_damping,
+            }),
+        })
+    }
+
+    /// Whether this is the two-spring (tip–cantilever) model.
+    pub fn is_two_spring(&self) -> bool {
+        self.cantilever.is_some()
+    }
+
+    /// The stiffness between the tip and the support (N/m): k, or the two
+    /// springs in series k_t k_c/(k_t + k_c).
+    pub fn effective_stiffness(&self) -> f64 {
+        match self.cantilever {
+            None => self.stiffness,
+            Some(c) => {
+                let (kt, kc) = (self.stiffness, c.stiffness);
+                // kt·kc/(kt + kc) without overflow for huge stiffnesses.
+                if kt >= kc {
+                    kc / (1.0 + kc / kt)
+                } else {
+                    kt / (1.0 + kt / kc)
+                }
+            }
+        }
+    }
+
+    /// The Tomlinson parameter η = 4π²U₀/(k_eff a²) with k_eff
+    /// [`Self::effective_stiffness`]: stick-slip when η > 1 (quasi-static
+    /// limit).
     pub fn eta(&self) -> f64 {
-        4.0 * PI * PI * self.amplitude / (self.stiffness * self.period * self.period)
+        4.0 * PI * PI * self.amplitude / (self.effective_stiffness() * self.period * self.period)
     }
 
     /// The largest lateral force the lattice can exert, max U'(x) = 2πU₀/a
-    /// (N): the static friction force of the limit η → ∞; for a finite
-    /// η > 1 the tip slips before the spring force reaches it.
+    /// (N): the quasi-static friction force's peak for any η > 1 (the
+    /// equilibrium at x = a/4, where U'' = 0, is stable); the tip then
+    /// follows the falling branch and jumps where k_eff + U''(x) = 0, at
+    /// the force F_L √(1 − 1/η²).
     pub fn lattice_force(&self) -> f64 {
         2.0 * PI * self.amplitude / self.period
     }
@@ -128,126 +244,133 @@ impl PrandtlTomlinson {
         -self.amplitude * (2.0 * PI * x / self.period).cos()
     }
 
-    /// d/dt of (x − x_s, ẋ, D) with the support at `xs` moving at `v_s`.
+    /// The lattice's force on the tip at x, −U'(x) (N).
     #[inline]
-    fn rate(&self, y: &Y, xs: f64, v_s: f64) -> Y {
-        let (rel, v) = (y[0], y[1]);
-        let x = xs + rel;
+    fn lattice_pull(&self, x: f64) -> f64 {
         let w = 2.0 * PI / self.period;
-        let f = -self.stiffness * rel - self.damping * v - self.amplitude * w * (w * x).sin();
-        [v - v_s, f / self.mass, self.damping * v * v]
+        -self.amplitude * w * (w * x).sin()
     }
 
     /// Integrates over `dt` with the support starting at `xs0` moving at
     /// `v_s`; returns the state or None when the sub-step budget runs out.
-    fn integrate(&self, y0: Y, xs0: f64, v_s: f64, dt: f64) -> Option<Y> {
-        // Dormand–Prince 5(4) coefficients.
-        const C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
-        const A: [[f64; 6]; 7] = [
-            [0.0; 6],
-            [0.2, 0.0, 0.0, 0.0, 0.0, 0.0],
-            [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
-            [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0],
-            [
-                19372.0 / 6561.0,
-                -25360.0 / 2187.0,
-                64448.0 / 6561.0,
-                -212.0 / 729.0,
-                0.0,
-                0.0,
-            ],
-            [
-                9017.0 / 3168.0,
-                -355.0 / 33.0,
-                46732.0 / 5247.0,
-                49.0 / 176.0,
-                -5103.0 / 18656.0,
-                0.0,
-            ],
-            [
-                35.0 / 384.0,
-                0.0,
-                500.0 / 1113.0,
-                125.0 / 192.0,
-                -2187.0 / 6784.0,
-                11.0 / 84.0,
-            ],
-        ];
-        const E: [f64; 7] = [
-            71.0 / 57600.0,
-            0.0,
-            -71.0 / 16695.0,
-            71.0 / 1920.0,
-            -17253.0 / 339200.0,
-            22.0 / 525.0,
-            -1.0 / 40.0,
-        ];
-        if dt == 0.0 {
-            return Some(y0);
-        }
+    fn solve<const N: usize>(&self, y0: [f64; N], xs0: f64, v_s: f64, dt: f64) -> Option<[f64; N]>
+    where
+        for<'a> Drive<'a>: System<N>,
+    {
         // Scales: the lattice period for positions, the lattice's natural
-        // velocity for velocities, U₀ for energy.
-        let omega = (self.stiffness / self.mass).sqrt();
-        let scale = [self.period, self.period * omega + v_s.abs(), self.amplitude];
-        let tol = self.tolerance;
-        let (mut t, mut y) = (0.0, y0);
-        let mut h = (0.05 / omega).min(dt);
-        for _ in 0..MAX_SUBSTEPS {
-            if t >= dt {
-                return Some(y);
+        // velocity for velocities, U₀ for energy; the first step from the
+        // fastest natural frequency.
+        let (slow, fast) = match self.cantilever {
+            None => {
+                let w = (self.stiffness / self.mass).sqrt();
+                (w, w)
             }
-            h = h.min(dt - t);
-            let mut k = [[0.0; 3]; 7];
-            for s in 0..7 {
-                let mut ys = y;
-                for (j, kj) in k.iter().enumerate().take(s) {
-                    for c in 0..3 {
-                        ys[c] += h * A[s][j] * kj[c];
-                    }
-                }
-                k[s] = self.rate(&ys, xs0 + v_s * (t + C[s] * h), v_s);
-            }
-            let mut y5 = y;
-            let mut err = 0.0f64;
-            for c in 0..3 {
-                let mut e = 0.0;
-                for s in 0..7 {
-                    if s < 6 {
-                        y5[c] += h * A[6][s] * k[s][c];
-                    }
-                    e += h * E[s] * k[s][c];
-                }
-                let sc = tol * (scale[c] + y[c].abs().max(y5[c].abs()));
-                err = err.max((e / sc).abs());
-            }
-            if err <= 1.0 {
-                t += h;
-                y = y5;
-            }
-            let factor = if err == 0.0 {
-                5.0
-            } else {
-                (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
-            };
-            h *= factor;
-        }
-        None
+            Some(c) => (
+                (self.effective_stiffness() / (self.mass + c.mass)).sqrt(),
+                (self.stiffness / self.mass + (self.stiffness + c.stiffness) / c.mass).sqrt(),
+            ),
+        };
+        let velocity = self.period * slow + v_s.abs();
+        let scale: [f64; N] = core::array::from_fn(|c| match c {
+            0 | 3 => self.period,
+            2 => self.amplitude,
+            _ => velocity,
+        });
+        let mut y = y0;
+        let drive = Drive {
+            model: self,
+            cantilever: self.cantilever.unwrap_or(Cantilever {
+                stiffness: 0.0,
+                mass: 1.0,
+                damping: 0.0,
+            }),
+            xs0,
+            v_s,
+        };
+        integrate(
+            &drive,
+            &mut y,
+            N,
+            dt,
+            0.05 / fast,
+            self.tolerance,
+            &scale,
+            MAX_SUBSTEPS,
+        )
+        .map(|()| y)
+    }
+}
+
+/// The model with its support starting at `xs0`, moving at `v_s` (and
+/// its cantilever body, unused with one spring).
+struct Drive<'a> {
+    model: &'a PrandtlTomlinson,
+    cantilever: Cantilever,
+    xs0: f64,
+    v_s: f64,
+}
+
+/// One spring: d/dt of (x − x_s, ẋ, D).
+impl System<3> for Drive<'_> {
+    #[inline]
+    fn rate(&self, t: f64, y: &[f64; 3], dy: &mut [f64; 3]) {
+        let m = self.model;
+        let (rel, v) = (y[0], y[1]);
+        let x = self.xs0 + self.v_s * t + rel;
+        let f = -m.stiffness * rel - m.damping * v + m.lattice_pull(x);
+        *dy = [v - self.v_s, f / m.mass, m.damping * v * v];
+    }
+}
+
+/// Two springs: d/dt of (x_t − x_s, ẋ_t, D, x_c − x_s, ẋ_c).
+impl System<5> for Drive<'_> {
+    #[inline]
+    fn rate(&self, t: f64, y: &[f64; 5], dy: &mut [f64; 5]) {
+        let m = self.model;
+        let c = &self.cantilever;
+        let (rel, v, rel_c, v_c) = (y[0], y[1], y[3], y[4]);
+        let x = self.xs0 + self.v_s * t + rel;
+        let tip_spring = m.stiffness * (rel_c - rel);
+        let f = tip_spring - m.damping * v + m.lattice_pull(x);
+        let f_c = -c.stiffness * rel_c - tip_spring - c.damping * v_c;
+        *dy = [
+            v - self.v_s,
+            f / m.mass,
+            m.damping * v * v + c.damping * v_c * v_c,
+            v_c - self.v_s,
+            f_c / c.mass,
+        ];
     }
 }
 
 impl DynamicFriction for PrandtlTomlinson {
     fn state_len(&self) -> usize {
-        STATE_MODEL + 3
+        if self.cantilever.is_some() {
+            STATE_MODEL + 5
+        } else {
+            STATE_MODEL + 3
+        }
+    }
+}
+
+/// The sub-step budget error.
+fn budget_error() -> Error {
+    Error::NotConverged {
+        what: "Prandtl-Tomlinson integration over dt (sub-step budget; split the increment)",
+        iterations: MAX_SUBSTEPS,
+        residual: f64::NAN,
     }
 }
 
 /// One increment (module docs). Regime: 0 when the support does not move,
 /// 2 otherwise. The stored energy is the kinetic, spring and lattice energy
-/// ½k(x − x_s)² + ½mẋ² + U(x) + U₀ (≥ 0). dF/dN = 0 (N does not enter
-/// the model); dF/dΔs by central differences of the integrated increment
-/// (two more integrations; 0 when Δt = 0). Errors: `slip` with a non-zero
-/// second component; the sub-step budget [`MAX_SUBSTEPS`] exhausted
-/// ([`Error::NotConverged`], the state untouched).
+/// (one spring: ½k(x − x_s)² + ½mẋ² + U(x) + U₀; two springs:
+/// ½k_t(x_t − x_c)² + ½k_c(x_c − x_s)² + ½m_tẋ_t² + ½m_cẋ_c² + U(x_t) + U₀;
+/// ≥ 0). dF/dN = 0 (N does not enter the model); dF/dΔs by central
+/// differences of the integrated increment (two more integrations; 0 when
+/// Δt = 0). Errors: `slip` with a non-zero second component; the sub-step
+/// budget [`MAX_SUBSTEPS`] exhausted ([`Error::NotConverged`] naming `dt`,
+/// the state untouched).
 impl Advance for PrandtlTomlinson {
     fn rate_dependent(&self) -> bool {
         true
@@ -270,32 +393,38 @@ impl Advance for PrandtlTomlinson {
         state: &mut [f64],
         inc: &DynamicIncrement,
     ) -> Result<DynamicResponse> {
-        let y0 = [
-            read(old, state, STATE_TIP),
-            read(old, state, STATE_VELOCITY),
-            0.0,
-        ];
-        let xs0 = read(old, state, STATE_SUPPORT);
         let ds = inc.slip[0];
         let v_s = if inc.dt > 0.0 { ds / inc.dt } else { 0.0 };
-        let y = self
-            .integrate(y0, xs0, v_s, inc.dt)
-            .ok_or(Error::NotConverged {
-                what: "Prandtl-Tomlinson integration (sub-step budget)",
-                iterations: MAX_SUBSTEPS,
-                residual: f64::NAN,
-            })?;
-        let mut derivative = 0.0;
-        if inc.tangents & TANGENT_SLIP != 0 && inc.dt > 0.0 {
-            let h = 1e-6 * (ds.abs() + self.period);
-            let f = |d: f64| {
-                self.integrate(y0, xs0, d / inc.dt, inc.dt)
-                    .map(|y| self.stiffness * y[0])
-            };
-            if let (Some(p), Some(m)) = (f(ds + h), f(ds - h)) {
-                derivative = (p - m) / (2.0 * h);
+        let xs0 = read(old, state, STATE_SUPPORT);
+        let (rel, v) = (
+            read(old, state, STATE_TIP),
+            read(old, state, STATE_VELOCITY),
+        );
+        // The end state (x_t − x_s, ẋ_t, D, x_c − x_s, ẋ_c; the last two 0
+        // with one spring), the force on the support k(x − x_s) or
+        // k_c(x_c − x_s), and dF/dΔs.
+        let (y, spring, derivative) = match self.cantilever {
+            None => {
+                let y0 = [rel, v, 0.0];
+                let y = self.solve(y0, xs0, v_s, inc.dt).ok_or_else(budget_error)?;
+                let force = |y: [f64; 3]| self.stiffness * y[0];
+                let d = self.tangent(inc, |d| self.solve(y0, xs0, d, inc.dt).map(force));
+                ([y[0], y[1], y[2], 0.0, 0.0], force(y), d)
             }
-        }
+            Some(c) => {
+                let y0 = [
+                    rel,
+                    v,
+                    0.0,
+                    read(old, state, STATE_CANTILEVER),
+                    read(old, state, STATE_CANTILEVER_VELOCITY),
+                ];
+                let y = self.solve(y0, xs0, v_s, inc.dt).ok_or_else(budget_error)?;
+                let force = |y: [f64; 5]| c.stiffness * y[3];
+                let d = self.tangent(inc, |d| self.solve(y0, xs0, d, inc.dt).map(force));
+                (y, force(y), d)
+            }
+        };
         let dissipated = y[2].max(0.0);
         if let Some(o) = old {
             state.copy_from_slice(o);
@@ -303,20 +432,45 @@ impl Advance for PrandtlTomlinson {
         state[STATE_TIP] = y[0];
         state[STATE_VELOCITY] = y[1];
         state[STATE_SUPPORT] = xs0 + ds;
+        let x = state[STATE_SUPPORT] + y[0];
+        let mut stored = 0.5 * self.mass * y[1] * y[1] + self.lattice(x) + self.amplitude;
+        match self.cantilever {
+            None => stored += 0.5 * self.stiffness * y[0] * y[0],
+            Some(c) => {
+                state[STATE_CANTILEVER] = y[3];
+                state[STATE_CANTILEVER_VELOCITY] = y[4];
+                let tip = y[0] - y[3];
+                stored += 0.5 * self.stiffness * tip * tip
+                    + 0.5 * c.stiffness * y[3] * y[3]
+                    + 0.5 * c.mass * y[4] * y[4];
+            }
+        }
         book(old, state, dissipated, inc.slip);
-        // The force on the support is k(x − x_s); along the motion,
-        // resisting it, −k(x − x_s).
-        let spring = self.stiffness * y[0];
+        // The force on the support is the spring's pull k(x − x_s); along
+        // the motion, resisting it, its negative.
         let mut r = respond([-spring, 0.0], inc.normal_force);
         r.dissipated = dissipated;
-        let x = state[STATE_SUPPORT] + y[0];
-        r.stored_energy = 0.5 * self.stiffness * y[0] * y[0]
-            + 0.5 * self.mass * y[1] * y[1]
-            + self.lattice(x)
-            + self.amplitude;
+        r.stored_energy = stored;
         r.regime = if ds == 0.0 { 0 } else { 2 };
         r.dforce_dslip[0][0] = derivative;
         r.tangents = inc.tangents;
         Ok(r)
+    }
+}
+
+impl PrandtlTomlinson {
+    /// dF/dΔs by central differences of `force_at(support velocity)` when
+    /// asked for and Δt > 0; 0 otherwise (or when a perturbed integration
+    /// runs out of sub-steps).
+    fn tangent(&self, inc: &DynamicIncrement, force_at: impl Fn(f64) -> Option<f64>) -> f64 {
+        if inc.tangents & TANGENT_SLIP == 0 || inc.dt <= 0.0 {
+            return 0.0;
+        }
+        let ds = inc.slip[0];
+        let h = 1e-6 * (ds.abs() + self.period);
+        match (force_at((ds + h) / inc.dt), force_at((ds - h) / inc.dt)) {
+            (Some(p), Some(m)) => (p - m) / (2.0 * h),
+            _ => 0.0,
+        }
     }
 }
