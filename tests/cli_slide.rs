@@ -109,9 +109,21 @@ fn dynamic_models_scene_writes_and_reports_every_model() {
         .slide(s.sliding.distance, s.sliding.step)
         .unwrap();
     let tracks = s.run_friction_models(&run).unwrap();
-    let names = ["LuGre", "Maxwell-slip 4", "Prandtl-Tomlinson"];
-    let keys = ["lugre", "maxwell_slip", "prandtl_tomlinson"];
-    assert_eq!(models.len(), 3);
+    let names = [
+        "LuGre",
+        "Maxwell-slip 4",
+        "Prandtl-Tomlinson",
+        "Prandtl-Tomlinson two-spring",
+        "Burridge-Knopoff 8 blocks",
+    ];
+    let keys = [
+        "lugre",
+        "maxwell_slip",
+        "prandtl_tomlinson",
+        "prandtl_tomlinson_two_spring",
+        "burridge_knopoff",
+    ];
+    assert_eq!(models.len(), 5);
     for (k, m) in models.iter().enumerate() {
         assert_eq!(m["name"], names[k], "{m}");
         assert_eq!(m["model"], keys[k], "{m}");
@@ -163,7 +175,9 @@ fn dynamic_models_scene_writes_and_reports_every_model() {
             "energy_dissipation",
             "LuGre",
             "Maxwell-slip 4",
-            "Prandtl-Tomlinson"
+            "Prandtl-Tomlinson",
+            "Prandtl-Tomlinson two-spring",
+            "Burridge-Knopoff 8 blocks"
         ]
     );
     assert_eq!(rows.len(), 101);
@@ -189,8 +203,19 @@ fn dynamic_models_scene_writes_and_reports_every_model() {
             pts[..pts.find('"').unwrap()].split_whitespace().count()
         })
         .collect();
-    assert_eq!(lines.iter().filter(|&&n| n == 100).count(), 4, "{lines:?}");
-    assert_eq!(lines.iter().filter(|&&n| n == 2).count(), 4, "{lines:?}");
+    // One line per model and the energy-dissipation model, each with its
+    // legend mark.
+    let lines_wanted = names.len() + 1;
+    assert_eq!(
+        lines.iter().filter(|&&n| n == 100).count(),
+        lines_wanted,
+        "{lines:?}"
+    );
+    assert_eq!(
+        lines.iter().filter(|&&n| n == 2).count(),
+        lines_wanted,
+        "{lines:?}"
+    );
     for name in names.iter().chain(&["energy dissipation"]) {
         // plotters writes a text's content on a line of its own.
         assert!(svg.lines().any(|l| l.trim() == *name), "legend: {name}");
@@ -216,6 +241,8 @@ fn dynamic_models_table_in_the_human_output() {
         "LuGre",
         "Maxwell-slip 4",
         "Prandtl-Tomlinson",
+        "Prandtl-Tomlinson two-spring",
+        "Burridge-Knopoff 8 blocks",
     ] {
         assert!(
             text.lines().any(|l| l.trim_start().starts_with(name)),

@@ -10,8 +10,8 @@ mod common;
 
 use asperity::contact::BatchError;
 use asperity::friction::dynamic::{
-    DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip, PrandtlTomlinson,
-    STATE_DISSIPATION,
+    BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip,
+    PrandtlTomlinson, STATE_DISSIPATION,
 };
 use asperity::friction::{SlideRun, SlideStep, SlideSummary};
 use asperity::scene::{
@@ -112,13 +112,31 @@ fn track(n: usize, distance: f64, load: impl Fn(usize) -> f64) -> SlideRun {
 // ------------------------------------------------------------ parsing
 
 #[test]
-fn the_example_scene_parses_into_its_three_models() {
+fn the_example_scene_parses_into_its_five_models() {
     let s = example();
     assert_eq!(s.sliding.velocity, Some(1e-3));
     let names: Vec<&str> = s.friction_models.iter().map(|m| m.name.as_str()).collect();
-    assert_eq!(names, ["LuGre", "Maxwell-slip 4", "Prandtl-Tomlinson"]);
+    assert_eq!(
+        names,
+        [
+            "LuGre",
+            "Maxwell-slip 4",
+            "Prandtl-Tomlinson",
+            "Prandtl-Tomlinson two-spring",
+            "Burridge-Knopoff 8 blocks"
+        ]
+    );
     let keys: Vec<&str> = s.friction_models.iter().map(|m| m.model.key()).collect();
-    assert_eq!(keys, ["lugre", "maxwell_slip", "prandtl_tomlinson"]);
+    assert_eq!(
+        keys,
+        [
+            "lugre",
+            "maxwell_slip",
+            "prandtl_tomlinson",
+            "prandtl_tomlinson_two_spring",
+            "burridge_knopoff"
+        ]
+    );
     // The built models are the constructors' with the scene's numbers.
     let built = s.friction_models().unwrap();
     assert_eq!(
@@ -130,6 +148,14 @@ fn the_example_scene_parses_into_its_three_models() {
             ),
             DynamicModel::PrandtlTomlinson(
                 PrandtlTomlinson::new(1.8e-6, 3e-5, 2.5e4, 1e-3, 5.0, 1e-8).unwrap()
+            ),
+            DynamicModel::PrandtlTomlinson(
+                PrandtlTomlinson::two_spring(1.8e-6, 3e-5, 5e4, 1e-4, 2.0, 5e4, 1e-3, 5.0, 1e-8)
+                    .unwrap()
+            ),
+            DynamicModel::BurridgeKnopoff(
+                BurridgeKnopoff::new(8, 1e-4, 1e3, 1e3, 1.2, 1.05, f64::INFINITY, 0.0, 1e-8)
+                    .unwrap()
             ),
         ]
     );
@@ -363,7 +389,7 @@ fn the_scene_models_along_the_slide_equal_direct_steps() {
     let (s, run) = slide();
     let runs = s.run_friction_models(run).unwrap();
     let models = s.friction_models().unwrap();
-    assert_eq!(runs.len(), 3);
+    assert_eq!(runs.len(), 5);
     for (m, r) in models.iter().zip(&runs) {
         assert_direct(m, run, 1e-3, r);
         assert_eq!(run_along(m, run, 1e-3).unwrap(), *r);
@@ -456,6 +482,40 @@ fn prandtl_tomlinson_sticks_and_slips_once_a_lattice_period() {
             let s = run_along(&pt(0.5, a, gamma), &run, 1e-3).unwrap().summary;
             assert_eq!(s.stick_slip_events, 0, "a = {a}, gamma = {gamma}: {s:?}");
         }
+    }
+}
+
+/// A uniform Burridge–Knopoff chain along the track slides as one block:
+/// it first slips when every leaf spring reaches μ_s N/M, at
+/// t₁ = μ_s N/(M k_p V), then once every closed-form period T
+/// ([`BurridgeKnopoff::uniform_period`]); between slips the force returns
+/// to its kinetic level, so after the first slip μ averages μ_k over whole
+/// cycles.
+#[test]
+fn burridge_knopoff_along_the_track_slips_once_a_period() {
+    let (n, v, steps, distance) = (0.18, 1e-3, 400, 6e-4);
+    let run = track(steps, distance, |_| n);
+    let dt = distance / steps as f64 / v;
+    for (blocks, kp) in [(1, 800.0), (8, 100.0), (32, 25.0)] {
+        let bk = BurridgeKnopoff::new(blocks, 1e-4, 1e3, kp, 1.2, 1.05, f64::INFINITY, 0.0, 1e-9)
+            .unwrap();
+        let t1 = 1.2 * n / (blocks as f64 * kp * v);
+        let period = bk.uniform_period(n, v);
+        let time = steps as f64 * dt;
+        let want = 1 + ((time - t1) / period).floor() as usize;
+        let got = run_along(&bk, &run, v).unwrap();
+        assert_eq!(
+            got.summary.stick_slip_events, want,
+            "{blocks} blocks: {:?}",
+            got.summary
+        );
+        // The mean μ over the whole cycles after the first slip is μ_k.
+        let first = (t1 / dt).ceil() as usize;
+        let cycles = ((time - t1) / period).floor();
+        let end = first + (cycles * period / dt).round() as usize;
+        let cof: Vec<f64> = got.steps[first..end].iter().map(|r| r.cof).collect();
+        let mean = cof.iter().sum::<f64>() / cof.len() as f64;
+        assert!((mean - 1.05).abs() < 0.02, "{blocks} blocks: mean μ {mean}");
     }
 }
 

@@ -29,6 +29,8 @@
 //! | `lugre` | [`LuGre::new`] | `mu_coulomb`, `mu_static`, `stribeck_velocity` (m/s), `stribeck_exponent` (2), `sigma0` (1/m), `sigma1` (s/m; 0), `damping_velocity` (m/s; absent = +∞, only with `sigma1` = 0), `sigma2` (N·s/m; 0) |
 //! | `maxwell_slip` | [`MaxwellSlip::new`] | `stiffness` (1/m, a list), `capacity` (a list of the same length), `sigma2` (N·s/m; 0) |
 //! | `prandtl_tomlinson` | [`PrandtlTomlinson::new`] | `amplitude` (J), `period` (m), `stiffness` (N/m), `mass` (kg), `damping` (kg/s; 0), `tolerance` (1e-8) |
+//! | `prandtl_tomlinson_two_spring` | [`PrandtlTomlinson::two_spring`] | `amplitude` (J), `period` (m), `tip_stiffness` (N/m), `tip_mass` (kg), `tip_damping` (kg/s; 0), `cantilever_stiffness` (N/m), `cantilever_mass` (kg), `cantilever_damping` (kg/s; 0), `tolerance` (1e-8) |
+//! | `burridge_knopoff` | [`BurridgeKnopoff::new`] | `blocks` (1–256), `mass` (kg), `coupling_stiffness` (N/m), `pulling_stiffness` (N/m), `mu_static`, `mu_kinetic`, `weakening_velocity` (m/s; absent = +∞, Coulomb), `damping` (kg/s; 0), `tolerance` (1e-8) |
 //!
 //! A parameter the constructor rejects is reported with its path:
 //! [`SceneError::Invalid`](super::SceneError::Invalid) with `field`
@@ -53,8 +55,8 @@
 use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
 use crate::friction::dynamic::{
-    DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip, PrandtlTomlinson,
-    STATE_DISSIPATION,
+    BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip,
+    PrandtlTomlinson, STATE_DISSIPATION,
 };
 use crate::friction::slider::SlideRun;
 use serde::de::{self, DeserializeSeed, Deserializer, EnumAccess, MapAccess, VariantAccess};
@@ -169,11 +171,103 @@ impl PrandtlTomlinsonSpec {
     }
 }
 
-/// Declares [`DynamicModelSpec`]: one variant per model, named as the
-/// [`DynamicModel`] variant it builds, with its scene key; each spec type
-/// has `build(&self) -> Result<Model>`.
+/// Parameters of [`PrandtlTomlinson::two_spring`] (tip–cantilever), under
+/// the same names.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PrandtlTomlinsonTwoSpringSpec {
+    /// Potential amplitude U₀ (J).
+    pub amplitude: f64,
+    /// Potential period a (m).
+    pub period: f64,
+    /// Tip (contact) spring stiffness k_t (N/m).
+    pub tip_stiffness: f64,
+    /// Tip mass (kg).
+    pub tip_mass: f64,
+    /// Tip damping (kg/s; default 0).
+    #[serde(default)]
+    pub tip_damping: f64,
+    /// Cantilever lateral stiffness k_c (N/m).
+    pub cantilever_stiffness: f64,
+    /// Cantilever mass (kg).
+    pub cantilever_mass: f64,
+    /// Cantilever damping (kg/s; default 0).
+    #[serde(default)]
+    pub cantilever_damping: f64,
+    /// Relative tolerance of the integration (default 1e-8).
+    #[serde(default = "pt_tolerance")]
+    pub tolerance: f64,
+}
+
+impl PrandtlTomlinsonTwoSpringSpec {
+    /// The model ([`PrandtlTomlinson::two_spring`]; its errors name the
+    /// argument).
+    pub fn build(&self) -> Result<PrandtlTomlinson> {
+        PrandtlTomlinson::two_spring(
+            self.amplitude,
+            self.period,
+            self.tip_stiffness,
+            self.tip_mass,
+            self.tip_damping,
+            self.cantilever_stiffness,
+            self.cantilever_mass,
+            self.cantilever_damping,
+            self.tolerance,
+        )
+    }
+}
+
+/// Parameters of [`BurridgeKnopoff::new`], under the same names. The chain
+/// starts uniform (a fresh state), so it slides as one block: periodic
+/// stick-slip.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BurridgeKnopoffSpec {
+    /// Number of blocks M (1 to 256).
+    pub blocks: usize,
+    /// Mass of a block (kg).
+    pub mass: f64,
+    /// Stiffness of the springs between neighbours (N/m).
+    pub coupling_stiffness: f64,
+    /// Stiffness of each block's leaf spring to the driver (N/m).
+    pub pulling_stiffness: f64,
+    /// Static coefficient (per unit normal force; each block carries N/M).
+    pub mu_static: f64,
+    /// Kinetic coefficient at zero speed.
+    pub mu_kinetic: f64,
+    /// Carlson–Langer weakening velocity v_c (m/s); absent = +∞ (Coulomb).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub weakening_velocity: Option<f64>,
+    /// Damping of each block (kg/s; default 0).
+    #[serde(default)]
+    pub damping: f64,
+    /// Relative tolerance of the integration (default 1e-8).
+    #[serde(default = "pt_tolerance")]
+    pub tolerance: f64,
+}
+
+impl BurridgeKnopoffSpec {
+    /// The model ([`BurridgeKnopoff::new`]; its errors name the argument).
+    pub fn build(&self) -> Result<BurridgeKnopoff> {
+        BurridgeKnopoff::new(
+            self.blocks,
+            self.mass,
+            self.coupling_stiffness,
+            self.pulling_stiffness,
+            self.mu_static,
+            self.mu_kinetic,
+            self.weakening_velocity.unwrap_or(f64::INFINITY),
+            self.damping,
+            self.tolerance,
+        )
+    }
+}
+
+/// Declares [`DynamicModelSpec`]: one variant per model with the
+/// [`DynamicModel`] variant it builds and its scene key; each spec type has
+/// `build(&self) -> Result<Model>`.
 macro_rules! model_specs {
-    ($($(#[$doc:meta])* $variant:ident($spec:ty) = $key:literal,)*) => {
+    ($($(#[$doc:meta])* $variant:ident($spec:ty) => $model:ident = $key:literal,)*) => {
         /// A model's parameters, by its scene key (see the module docs).
         #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
         pub enum DynamicModelSpec {
@@ -194,7 +288,7 @@ macro_rules! model_specs {
             /// The model; the constructor's errors name the argument.
             pub fn build(&self) -> Result<DynamicModel> {
                 match self {
-                    $(DynamicModelSpec::$variant(s) => s.build().map(DynamicModel::$variant),)*
+                    $(DynamicModelSpec::$variant(s) => s.build().map(DynamicModel::$model),)*
                 }
             }
         }
@@ -203,11 +297,15 @@ macro_rules! model_specs {
 
 model_specs! {
     /// [`LuGre`].
-    LuGre(LuGreSpec) = "lugre",
+    LuGre(LuGreSpec) => LuGre = "lugre",
     /// [`MaxwellSlip`].
-    MaxwellSlip(MaxwellSlipSpec) = "maxwell_slip",
-    /// [`PrandtlTomlinson`].
-    PrandtlTomlinson(PrandtlTomlinsonSpec) = "prandtl_tomlinson",
+    MaxwellSlip(MaxwellSlipSpec) => MaxwellSlip = "maxwell_slip",
+    /// [`PrandtlTomlinson`] (one spring).
+    PrandtlTomlinson(PrandtlTomlinsonSpec) => PrandtlTomlinson = "prandtl_tomlinson",
+    /// [`PrandtlTomlinson::two_spring`] (tip and cantilever).
+    PrandtlTomlinsonTwoSpring(PrandtlTomlinsonTwoSpringSpec) => PrandtlTomlinson = "prandtl_tomlinson_two_spring",
+    /// [`BurridgeKnopoff`].
+    BurridgeKnopoff(BurridgeKnopoffSpec) => BurridgeKnopoff = "burridge_knopoff",
 }
 
 /// One entry of a scene's `friction_models`: a name and one model,
