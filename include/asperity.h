@@ -1662,8 +1662,8 @@ int32_t asperity_law_length_scale(const struct AsperityNormalLaw *law,
 
 // Build a LuGre model from `*params` (Canudas de Wit et al. 1995, scaled
 // by the normal force, integrated exactly per increment). Writes a new
-// handle to `*out` (NULL on failure). Errors name the parameter and its
-// bound (`sigma1` for the passivity bound).
+// handle to `*out` (NULL on failure). Errors name the field and its bound
+// (`params.sigma1` for the passivity bound).
 int32_t asperity_dynamic_lugre_new(const struct AsperityLugreParams *params,
                                    struct AsperityDynamicFriction **out);
 

@@ -140,7 +140,7 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
     expect_error(
         unsafe { asperity_dynamic_lugre_new(&p, &mut h) },
         ASPERITY_ERR_INVALID_ARGUMENT,
-        "sigma1",
+        "params.sigma1",
     );
     assert!(h.is_null());
     expect_error(

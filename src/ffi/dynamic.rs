@@ -21,6 +21,19 @@
 //! tangential force is the force on the point and opposes slip.
 
 use super::{guard, input, output, partial_overlap, renamed, Failure};
+
+/// `ctor(p.a, p.b, …)` for a constructor whose arguments are the C
+/// parameter struct's fields, in order and under the same names, with its
+/// errors renamed to the fields (`params.a`, …).
+macro_rules! from_params {
+    ($ctor:path, $p:expr, $($field:ident),+ $(,)?) => {{
+        let p = $p;
+        $ctor($(p.$field),+).map_err(|e| {
+            $(let e = renamed(e, stringify!($field), concat!("params.", stringify!($field)));)+
+            e
+        })
+    }};
+}
 use crate::error::{Error, Result};
 use crate::friction::dynamic::burridge_knopoff::MAX_BLOCKS;
 use crate::friction::dynamic::{
@@ -156,24 +169,25 @@ unsafe fn emit(
 
 /// Build a LuGre model from `*params` (Canudas de Wit et al. 1995, scaled
 /// by the normal force, integrated exactly per increment). Writes a new
-/// handle to `*out` (NULL on failure). Errors name the parameter and its
-/// bound (`sigma1` for the passivity bound).
+/// handle to `*out` (NULL on failure). Errors name the field and its bound
+/// (`params.sigma1` for the passivity bound).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_dynamic_lugre_new(
     params: *const AsperityLugreParams,
     out: *mut *mut AsperityDynamicFriction,
 ) -> i32 {
     emit(out, || {
-        let p = input(params, "params")?;
-        LuGre::new(
-            p.mu_coulomb,
-            p.mu_static,
-            p.stribeck_velocity,
-            p.stribeck_exponent,
-            p.sigma0,
-            p.sigma1,
-            p.damping_velocity,
-            p.sigma2,
+        from_params!(
+            LuGre::new,
+            input(params, "params")?,
+            mu_coulomb,
+            mu_static,
+            stribeck_velocity,
+            stribeck_exponent,
+            sigma0,
+            sigma1,
+            damping_velocity,
+            sigma2,
         )
         .map(DynamicModel::LuGre)
     })
@@ -238,34 +252,20 @@ pub unsafe extern "C" fn asperity_dynamic_prandtl_tomlinson_two_spring_new(
     out: *mut *mut AsperityDynamicFriction,
 ) -> i32 {
     emit(out, || {
-        let p = input(params, "params")?;
-        PrandtlTomlinson::two_spring(
-            p.amplitude,
-            p.period,
-            p.tip_stiffness,
-            p.tip_mass,
-            p.tip_damping,
-            p.cantilever_stiffness,
-            p.cantilever_mass,
-            p.cantilever_damping,
-            p.tolerance,
+        from_params!(
+            PrandtlTomlinson::two_spring,
+            input(params, "params")?,
+            amplitude,
+            period,
+            tip_stiffness,
+            tip_mass,
+            tip_damping,
+            cantilever_stiffness,
+            cantilever_mass,
+            cantilever_damping,
+            tolerance,
         )
         .map(DynamicModel::PrandtlTomlinson)
-        .map_err(|e| {
-            [
-                ("amplitude", "params.amplitude"),
-                ("period", "params.period"),
-                ("tip_stiffness", "params.tip_stiffness"),
-                ("tip_mass", "params.tip_mass"),
-                ("tip_damping", "params.tip_damping"),
-                ("cantilever_stiffness", "params.cantilever_stiffness"),
-                ("cantilever_mass", "params.cantilever_mass"),
-                ("cantilever_damping", "params.cantilever_damping"),
-                ("tolerance", "params.tolerance"),
-            ]
-            .into_iter()
-            .fold(e, |e, (from, to)| renamed(e, from, to))
-        })
     })
 }
 
@@ -283,34 +283,20 @@ pub unsafe extern "C" fn asperity_dynamic_burridge_knopoff_new(
     out: *mut *mut AsperityDynamicFriction,
 ) -> i32 {
     emit(out, || {
-        let p = input(params, "params")?;
-        BurridgeKnopoff::new(
-            p.blocks,
-            p.mass,
-            p.coupling_stiffness,
-            p.pulling_stiffness,
-            p.mu_static,
-            p.mu_kinetic,
-            p.weakening_velocity,
-            p.damping,
-            p.tolerance,
+        from_params!(
+            BurridgeKnopoff::new,
+            input(params, "params")?,
+            blocks,
+            mass,
+            coupling_stiffness,
+            pulling_stiffness,
+            mu_static,
+            mu_kinetic,
+            weakening_velocity,
+            damping,
+            tolerance,
         )
         .map(DynamicModel::BurridgeKnopoff)
-        .map_err(|e| {
-            [
-                ("blocks", "params.blocks"),
-                ("mass", "params.mass"),
-                ("coupling_stiffness", "params.coupling_stiffness"),
-                ("pulling_stiffness", "params.pulling_stiffness"),
-                ("mu_static", "params.mu_static"),
-                ("mu_kinetic", "params.mu_kinetic"),
-                ("weakening_velocity", "params.weakening_velocity"),
-                ("damping", "params.damping"),
-                ("tolerance", "params.tolerance"),
-            ]
-            .into_iter()
-            .fold(e, |e, (from, to)| renamed(e, from, to))
-        })
     })
 }
 
