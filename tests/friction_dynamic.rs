@@ -1311,3 +1311,50 @@ fn burridge_knopoff_extremes_are_finite_or_name_dt() {
         "the 10 s increments of stiff chains exceed the budget"
     );
 }
+
+/// Prandtl–Tomlinson pulled by a constant force (thesis (5-5)): the static
+/// friction is the lattice force F_L = 2πU₀/a. Below it the tip settles at
+/// x* = (a/2π) asin(F/F_L); above it, overdamped, it slides at the mean
+/// velocity √(F² − F_L²)/γ. The work F·x equals the lattice, kinetic and
+/// dissipated energy.
+#[test]
+fn prandtl_tomlinson_under_a_constant_force_depins_at_the_lattice_force() {
+    use std::f64::consts::PI;
+    // a = 1 nm, F_L = 1 nN, γ = 1e-3 N s/m; m/γ = 1e-6 s against the
+    // lattice's relaxation time γa/(2πF_L) = 1.6e-4 s: overdamped.
+    let (a, fl, gamma, mass) = (1e-9, 1e-9, 1e-3, 1e-9);
+    let m = PrandtlTomlinson::new(fl * a / (2.0 * PI), a, 1.0, mass, gamma, 1e-9).unwrap();
+    assert!((m.lattice_force() - fl).abs() <= 1e-15 * fl);
+    let balance = |f: f64, p: &asperity::friction::dynamic::ForcePull| {
+        let lattice = fl * a / (2.0 * PI) * (1.0 - (2.0 * PI * p.displacement / a).cos());
+        let work = f * p.displacement;
+        let rest = lattice + 0.5 * mass * p.velocity * p.velocity + p.dissipated;
+        assert!((work - rest).abs() <= 1e-6 * work, "work {work} vs {rest}");
+    };
+    for ratio in [1.5, 2.0, 4.0] {
+        let f = ratio * fl;
+        let want = (f * f - fl * fl).sqrt() / gamma;
+        let p = m.pull_by_force(f, 200.0 * a / want).unwrap();
+        assert!(
+            (p.mean_velocity / want - 1.0).abs() < 0.02,
+            "F = {ratio} F_L: {} vs {want}",
+            p.mean_velocity
+        );
+        balance(f, &p);
+    }
+    for ratio in [0.5, 0.9, 0.99] {
+        let f = ratio * fl;
+        let p = m.pull_by_force(f, 0.05).unwrap();
+        let settled = a / (2.0 * PI) * ratio.asin();
+        assert!(
+            (p.displacement - settled).abs() <= 1e-4 * a,
+            "F = {ratio} F_L: {} vs {settled}",
+            p.displacement
+        );
+        assert!(p.velocity.abs() <= 1e-6 * fl / gamma, "{p:?}");
+        balance(f, &p);
+    }
+    assert_eq!(m.pull_by_force(fl, 0.0).unwrap().displacement, 0.0);
+    assert_eq!(name(m.pull_by_force(f64::NAN, 1.0).unwrap_err()), "force");
+    assert_eq!(name(m.pull_by_force(fl, -1.0).unwrap_err()), "duration");
+}

@@ -69,7 +69,7 @@ pub mod stick_slip;
 pub use burridge_knopoff::BurridgeKnopoff;
 pub use lugre::LuGre;
 pub use maxwell_slip::MaxwellSlip;
-pub use prandtl_tomlinson::PrandtlTomlinson;
+pub use prandtl_tomlinson::{ForcePull, PrandtlTomlinson};
 pub use stick_slip::{stick_slip, SlipEvent, StickSlip};
 
 use crate::contact::BatchError;

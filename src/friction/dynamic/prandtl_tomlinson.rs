@@ -301,6 +301,80 @@ impl PrandtlTomlinson {
     }
 }
 
+/// The tip pulled by a constant force ([`PrandtlTomlinson::pull_by_force`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ForcePull {
+    /// Displacement of the tip from its start at a potential minimum (m).
+    pub displacement: f64,
+    /// Mean velocity, displacement over duration (m/s).
+    pub mean_velocity: f64,
+    /// Velocity at the end (m/s).
+    pub velocity: f64,
+    /// Energy dissipated by the damping, ∫γẋ² dt (J).
+    pub dissipated: f64,
+}
+
+impl PrandtlTomlinson {
+    /// The tip pulled by the constant force `force` F (N, finite) instead of
+    /// a spring (thesis (5-5); Prandtl 1928): m ẍ = F − γ ẋ − U'(x), from
+    /// rest at the potential minimum x = 0, over `duration` (s, finite,
+    /// ≥ 0), integrated with the model's error control. The springs (and a
+    /// cantilever) play no part: the tip's mass and damping do.
+    ///
+    /// The static friction of this form is the lattice force
+    /// F_L = 2πU₀/a ([`Self::lattice_force`]): below it the tip settles at
+    /// x* = (a/2π) asin(F/F_L) and stays; above it the tip slides, in the
+    /// overdamped limit (m → 0) at the mean velocity √(F² − F_L²)/γ (the
+    /// time to cross one period is ∫dx/(F − F_L sin(2πx/a)) · γ).
+    ///
+    /// Errors: `force`, `duration` (named); [`Error::NotConverged`] naming
+    /// `duration` when [`MAX_SUBSTEPS`] steps do not reach its end.
+    pub fn pull_by_force(&self, force: f64, duration: f64) -> Result<ForcePull> {
+        check::finite("force", force)?;
+        check::non_negative("duration", duration)?;
+        let w = (self.lattice_force() * 2.0 * PI / (self.period * self.mass)).sqrt();
+        let velocity = self.period * w + (force / self.damping.max(self.mass * w)).abs();
+        let scale = [self.period, velocity, self.amplitude];
+        let mut y = [0.0; 3];
+        integrate(
+            &Pulled { model: self, force },
+            &mut y,
+            3,
+            duration,
+            0.05 / w,
+            self.tolerance,
+            &scale,
+            MAX_SUBSTEPS,
+        )
+        .ok_or(Error::NotConverged {
+            what: "Prandtl-Tomlinson pull by a constant force over duration (sub-step budget)",
+            iterations: MAX_SUBSTEPS,
+            residual: f64::NAN,
+        })?;
+        Ok(ForcePull {
+            displacement: y[0],
+            mean_velocity: if duration > 0.0 { y[0] / duration } else { 0.0 },
+            velocity: y[1],
+            dissipated: y[2],
+        })
+    }
+}
+
+/// The tip under a constant force: d/dt of (x, ẋ, D).
+struct Pulled<'a> {
+    model: &'a PrandtlTomlinson,
+    force: f64,
+}
+
+impl System<3> for Pulled<'_> {
+    #[inline]
+    fn rate(&self, _t: f64, y: &[f64; 3], dy: &mut [f64; 3]) {
+        let m = self.model;
+        let f = self.force - m.damping * y[1] + m.lattice_pull(y[0]);
+        *dy = [y[1], f / m.mass, m.damping * y[1] * y[1]];
+    }
+}
+
 /// The model with its support starting at `xs0`, moving at `v_s` (and
 /// its cantilever body, unused with one spring).
 struct Drive<'a> {
