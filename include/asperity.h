@@ -1677,6 +1677,18 @@ int32_t asperity_dynamic_maxwell_slip_new(const double *stiffness,
                                           double sigma2,
                                           struct AsperityDynamicFriction **out);
 
+// Build `n` >= 1 bristles (Haessig and Friedland 1991): stiffnesses
+// `stiffness[i]` (1/m per unit normal force, > 0) and break deflections
+// `break_deflection[i]` (m, > 0), viscous coefficient `sigma2` (N s/m,
+// >= 0). A bristle that reaches its break deflection snaps and bonds again
+// undeflected. One-dimensional: increments need `slip[1]` = 0. Writes a
+// new handle to `*out` (NULL on failure).
+int32_t asperity_dynamic_bristles_new(const double *stiffness,
+                                      const double *break_deflection,
+                                      size_t n,
+                                      double sigma2,
+                                      struct AsperityDynamicFriction **out);
+
 // Build a Prandtl–Tomlinson tip: lattice potential amplitude `amplitude`
 // U0 (J, > 0) and period `period` a (m, > 0), spring stiffness `stiffness`
 // k (N/m, > 0), tip mass `mass` (kg, > 0), damping `damping` (kg/s, >= 0),

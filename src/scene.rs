@@ -57,7 +57,7 @@ use std::path::{Path, PathBuf};
 pub mod models;
 
 pub use models::{
-    run_along, BurridgeKnopoffSpec, DynamicModelSpec, FrictionModelSpec, LuGreSpec,
+    run_along, BristlesSpec, BurridgeKnopoffSpec, DynamicModelSpec, FrictionModelSpec, LuGreSpec,
     MaxwellSlipSpec, PrandtlTomlinsonSpec, PrandtlTomlinsonTwoSpringSpec, TrackRun, TrackStep,
     TrackSummary,
 };

@@ -821,6 +821,10 @@ fn check_friction_models(linkage: Linkage) {
     )
     .unwrap();
     let bk = BurridgeKnopoff::new(8, 1e-4, 1e4, 2.6e4, 1.05, 0.8, 5e-2, 0.3, 1e-9).unwrap();
+    let brush =
+        asperity::friction::dynamic::Bristles::new(&[1e5; 4], &[3e-6, 5.5e-6, 8e-6, 12e-6], 0.0)
+            .unwrap();
+    let mut sr = vec![0.0; brush.state_len()];
     let (mut sl, mut sm) = (vec![0.0; lugre.state_len()], vec![0.0; maxwell.state_len()]);
     let (mut sp, mut s2, mut sb) = (
         vec![0.0; pt.state_len()],
@@ -866,6 +870,7 @@ fn check_friction_models(linkage: Linkage) {
         let f2 = two.step_in_place(&mut s2, &inc).unwrap().force[0];
         let rb = bk.step_in_place(&mut sb, &inc).unwrap();
         let fb = rb.force[0];
+        let fr = brush.step_in_place(&mut sr, &inc).unwrap().force[0];
         if rb.regime == 0 {
             stuck.push((i, fb - before, dx));
         }
@@ -885,7 +890,7 @@ fn check_friction_models(linkage: Linkage) {
         sh = next;
         dh += rh.dissipated;
         x += dx;
-        let want = [x * 1e6, fl, fm, rh.force[0], fp, f2, fb];
+        let want = [x * 1e6, fl, fm, rh.force[0], fp, f2, fb, fr];
         let got: Vec<f64> = rows
             .next()
             .map(|l| {
@@ -907,6 +912,7 @@ fn check_friction_models(linkage: Linkage) {
     c.rel(DYN, "prandtl_tomlinson_dissipation", sp[0], 1e-12);
     c.rel(DYN, "two_spring_dissipation", s2[0], 1e-12);
     c.rel(DYN, "burridge_knopoff_dissipation", sb[0], 1e-12);
+    c.rel(DYN, "bristles_dissipation", sr[0], 1e-12);
     c.rel(HOMOGENISED, "homogenised_dissipation", dh, 1e-12);
     c.close(DYN, "slip_path_um", 65.0, 1e-9);
     // Physics at the end of the first leg (20 µm at 1 mm/s): LuGre within

@@ -412,3 +412,54 @@ fn two_spring_and_burridge_knopoff_through_c_equal_rust() {
     assert_eq!(s, before);
     unsafe { asperity_dynamic_friction_free(h) };
 }
+
+/// The bristle model from C equals the Rust model bit for bit; a length
+/// mismatch is impossible through C (one `n`), a bad value is named.
+#[test]
+fn bristles_from_c_equal_rust() {
+    use asperity::friction::dynamic::{Bristles, DynamicFriction, DynamicIncrement};
+    let (k, d) = ([1e5, 2e5, 5e4], [1e-6, 2.5e-6, 4e-6]);
+    let mut h = null_mut();
+    assert_eq!(
+        unsafe { asperity_dynamic_bristles_new(k.as_ptr(), d.as_ptr(), 3, 0.1, &mut h) },
+        ASPERITY_OK
+    );
+    let rust = Bristles::new(&k, &d, 0.1).unwrap();
+    let mut size = 0usize;
+    assert_eq!(
+        unsafe { asperity_dynamic_friction_state_size(h, &mut size) },
+        ASPERITY_OK
+    );
+    assert_eq!(size, rust.state_len());
+    let (mut sc, mut sr) = (vec![0.0; size], vec![0.0; size]);
+    for i in 0..200 {
+        let inc = DynamicIncrement {
+            normal_force: 1.0 + 0.01 * i as f64,
+            slip: [1e-7 * ((i as f64) * 0.3).sin(), 0.0],
+            dt: 1e-3,
+            tangents: 3,
+            ..Default::default()
+        };
+        let mut rc = DynamicResponse::default();
+        let st = unsafe {
+            asperity_dynamic_friction_step(h, &inc, sc.as_ptr(), sc.as_mut_ptr(), &mut rc)
+        };
+        assert_eq!(st, ASPERITY_OK);
+        let rr = rust.step_in_place(&mut sr, &inc).unwrap();
+        assert_eq!(rc, rr, "increment {i}");
+        assert_eq!(sc, sr);
+    }
+    unsafe { asperity_dynamic_friction_free(h) };
+    let bad = [1e-6, -1.0, 4e-6];
+    expect_error(
+        unsafe { asperity_dynamic_bristles_new(k.as_ptr(), bad.as_ptr(), 3, 0.0, &mut h) },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "break_deflection",
+    );
+    assert!(h.is_null());
+    expect_error(
+        unsafe { asperity_dynamic_bristles_new(k.as_ptr(), d.as_ptr(), 0, 0.0, &mut h) },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "n",
+    );
+}

@@ -8,8 +8,8 @@
 //! against finite differences, cut-backs, extremes, bad input.
 
 use asperity::friction::dynamic::{
-    DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip, STATE_DISSIPATION, STATE_SLIP_PATH,
-    TANGENT_NORMAL, TANGENT_SLIP,
+    Bristles, DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip, STATE_DISSIPATION,
+    STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use asperity::Error;
 
@@ -620,12 +620,14 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
         DynamicModel::PrandtlTomlinson(tomlinson(3.0, 1e-3)),
         DynamicModel::PrandtlTomlinson(two_spring(3.0)),
         DynamicModel::BurridgeKnopoff(chain(5, 1e4, 0.05)),
+        DynamicModel::Bristles(brush()),
     ] {
         let direct: &dyn DynamicFriction = match &model {
             DynamicModel::LuGre(m) => m,
             DynamicModel::MaxwellSlip(m) => m,
             DynamicModel::PrandtlTomlinson(m) => m,
             DynamicModel::BurridgeKnopoff(m) => m,
+            DynamicModel::Bristles(m) => m,
         };
         let m = model.state_len();
         assert_eq!(m, direct.state_len());
@@ -633,7 +635,9 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
         let normal: Vec<f64> = (0..points).map(|i| 1.0 + i as f64).collect();
         let track = matches!(
             model,
-            DynamicModel::PrandtlTomlinson(_) | DynamicModel::BurridgeKnopoff(_)
+            DynamicModel::PrandtlTomlinson(_)
+                | DynamicModel::BurridgeKnopoff(_)
+                | DynamicModel::Bristles(_)
         );
         let slip: Vec<f64> = (0..2 * points)
             .map(|i| {
@@ -1357,4 +1361,140 @@ fn prandtl_tomlinson_under_a_constant_force_depins_at_the_lattice_force() {
     assert_eq!(m.pull_by_force(fl, 0.0).unwrap().displacement, 0.0);
     assert_eq!(name(m.pull_by_force(f64::NAN, 1.0).unwrap_err()), "force");
     assert_eq!(name(m.pull_by_force(fl, -1.0).unwrap_err()), "duration");
+}
+
+// ---------------------------------------------------------- bristles
+
+/// 12 bristles of stiffness 1e5 /m per unit normal force and break
+/// deflections 1 µm × (1 + 0.37 i) (incommensurate: they snap at different
+/// places).
+fn brush() -> Bristles {
+    let k = vec![1e5; 12];
+    let d: Vec<f64> = (0..12).map(|i| 1e-6 * (1.0 + 0.37 * i as f64)).collect();
+    Bristles::new(&k, &d, 0.0).unwrap()
+}
+
+/// One bristle (5-8) along a track from rest: a sawtooth F = N k (x mod δ),
+/// ½ N k δ² dissipated per snap; one long increment counts its snaps
+/// exactly (the same state and dissipation as many short ones).
+#[test]
+fn a_bristle_snaps_at_its_break_deflection_and_bonds_again() {
+    let (k, delta, n) = (2e5, 1e-6, 3.0);
+    let b = Bristles::new(&[k], &[delta], 0.0).unwrap();
+    let mut s = vec![0.0; b.state_len()];
+    // Steps of 0.0613 δ: no step ends on a multiple of δ.
+    let h = 0.0613 * delta;
+    let mut snaps = 0;
+    for i in 1..=100 {
+        let r = b.step_in_place(&mut s, &inc(n, [h, 0.0], 1e-3)).unwrap();
+        let x = i as f64 * h;
+        let d = x % delta;
+        assert!(
+            (-r.force[0] - n * k * d).abs() <= 1e-9 * n * k * delta,
+            "step {i}: {r:?}"
+        );
+        if r.dissipated > 0.0 {
+            snaps += 1;
+            assert!((r.dissipated - 0.5 * n * k * delta * delta).abs() <= 1e-12 * r.dissipated);
+            assert_eq!(r.regime, 2);
+        }
+    }
+    assert_eq!(snaps, 6); // at 1, 2, …, 6 δ on the way to 6.13 δ
+                          // One increment of 6.13 δ from rest: the same deflection and energy.
+    let mut one = vec![0.0; b.state_len()];
+    let r = b
+        .step_in_place(&mut one, &inc(n, [100.0 * h, 0.0], 1e-3))
+        .unwrap();
+    assert!((one[STATE_MODEL] - s[STATE_MODEL]).abs() <= 1e-12 * delta);
+    assert!((r.dissipated - s[STATE_DISSIPATION]).abs() <= 1e-12 * s[STATE_DISSIPATION]);
+    // Reversal: the bristle unloads elastically, then snaps the other way.
+    let r = b
+        .step_in_place(&mut one, &inc(n, [-0.13 * delta, 0.0], 1e-3))
+        .unwrap();
+    assert_eq!(r.dissipated, 0.0);
+    assert!(one[STATE_MODEL].abs() <= 1e-12 * delta);
+    let r = b
+        .step_in_place(&mut one, &inc(n, [-1.5 * delta, 0.0], 1e-3))
+        .unwrap();
+    assert!((r.dissipated - 0.5 * n * k * delta * delta).abs() <= 1e-12 * r.dissipated);
+    assert!((one[STATE_MODEL] + 0.5 * delta).abs() <= 1e-12 * delta);
+}
+
+/// Many incommensurate bristles in steady sliding average their sawtooths:
+/// μ → Σkᵢδᵢ/2, never above the static coefficient Σkᵢδᵢ; along a random
+/// path the work of the force equals the stored energy's change plus the
+/// dissipation.
+#[test]
+fn bristles_slide_at_half_their_static_coefficient_and_balance_energy() {
+    let b = brush();
+    let n = 2.0;
+    let mut s = vec![0.0; b.state_len()];
+    let mut mean = 0.0;
+    let steps = 20_000;
+    for i in 0..steps {
+        let r = b.step_in_place(&mut s, &inc(n, [3e-8, 0.0], 1e-4)).unwrap();
+        assert!(r.cof <= b.static_coefficient() * (1.0 + 1e-12));
+        if i >= steps / 2 {
+            mean += r.cof / (steps / 2) as f64;
+        }
+    }
+    let want = 0.5 * b.static_coefficient();
+    assert!((mean / want - 1.0).abs() < 0.02, "mean μ {mean} vs {want}");
+    // Energy along a random path: the work of the force, integrated on a
+    // fine sub-division of every increment, against Δstored + dissipation.
+    let mut seed = 7u64;
+    let mut s = vec![0.0; b.state_len()];
+    let (mut work, mut stored0) = (0.0, 0.0);
+    for _ in 0..400 {
+        let ds = 4e-6 * (rng(&mut seed) - 0.45);
+        let pieces = 4000;
+        let h = ds / pieces as f64;
+        let mut probe = s.clone();
+        for _ in 0..pieces {
+            let before = b
+                .step_in_place(&mut probe.clone(), &inc(n, [0.0, 0.0], 1e-4))
+                .unwrap();
+            let after = b
+                .step_in_place(&mut probe, &inc(n, [h, 0.0], 1e-4))
+                .unwrap();
+            // The resisting force's work: the trapezoid rule, exact
+            // between snaps; across a snap the force before it (the snap
+            // falls within 1/1000 of the smallest break deflection).
+            work -= if after.dissipated == 0.0 {
+                0.5 * (before.force[0] + after.force[0]) * h
+            } else {
+                before.force[0] * h
+            };
+        }
+        let r = b.step_in_place(&mut s, &inc(n, [ds, 0.0], 1e-4)).unwrap();
+        stored0 = r.stored_energy;
+    }
+    let balance = stored0 + s[STATE_DISSIPATION];
+    assert!(
+        (work - balance).abs() <= 2e-3 * balance,
+        "work {work} vs {balance}"
+    );
+}
+
+#[test]
+fn bristles_bad_input_names_the_argument() {
+    let e = |r: asperity::Result<Bristles>| name(r.unwrap_err());
+    assert_eq!(e(Bristles::new(&[], &[], 0.0)), "break_deflection.len()");
+    assert_eq!(
+        e(Bristles::new(&[1.0], &[1.0, 2.0], 0.0)),
+        "break_deflection.len()"
+    );
+    assert_eq!(e(Bristles::new(&[0.0], &[1.0], 0.0)), "stiffness");
+    assert_eq!(e(Bristles::new(&[1.0], &[-1.0], 0.0)), "break_deflection");
+    assert_eq!(e(Bristles::new(&[1.0], &[1.0], f64::NAN)), "sigma2");
+    let b = brush();
+    let mut s = vec![0.0; b.state_len()];
+    assert_eq!(
+        name(
+            b.step_in_place(&mut s, &inc(1.0, [1e-7, 1e-9], 1e-3))
+                .unwrap_err()
+        ),
+        "slip"
+    );
+    assert!(s.iter().all(|&v| v == 0.0));
 }

@@ -602,3 +602,27 @@ fn runner_errors_name_the_argument_and_increment() {
     let _ = DynamicModelSpec::KEYS;
     let _: Option<LuGreSpec> = None;
 }
+
+/// A scene's `bristles` entry builds the constructor's model; a bad value is
+/// named with its path.
+#[test]
+fn bristles_in_a_scene_build_the_constructors_model() {
+    let s = parse(&with_models(
+        r#"{"name": "brush", "bristles": {"stiffness": [1e5, 2e5], "break_deflection": [1e-6, 3e-6]}}"#,
+    ))
+    .unwrap();
+    assert_eq!(
+        s.friction_models().unwrap(),
+        vec![DynamicModel::Bristles(
+            asperity::friction::dynamic::Bristles::new(&[1e5, 2e5], &[1e-6, 3e-6], 0.0).unwrap()
+        )]
+    );
+    let e = parse(&with_models(
+        r#"{"name": "brush", "bristles": {"stiffness": [1e5], "break_deflection": [0.0]}}"#,
+    ))
+    .unwrap_err();
+    assert_eq!(
+        invalid(e),
+        ("friction_models[0].bristles".into(), "break_deflection")
+    );
+}

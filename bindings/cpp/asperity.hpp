@@ -945,6 +945,23 @@ public:
         return DynamicFriction(p);
     }
 
+    /// `asperity_dynamic_bristles_new`: bristles of stiffnesses `stiffness`
+    /// (1/m per unit normal force) and break deflections `break_deflection`
+    /// (m, one per bristle), viscous `sigma2` (N s/m). One-dimensional.
+    [[nodiscard]] static DynamicFriction bristles(span<const double> stiffness,
+                                                  span<const double> break_deflection,
+                                                  double sigma2 = 0.0)
+    {
+        const std::size_t n = stiffness.size();
+        AsperityDynamicFriction* p = nullptr;
+        check(asperity_dynamic_bristles_new(
+            detail::required(stiffness),
+            detail::at_least(break_deflection, n, "asperity::DynamicFriction::bristles",
+                             "break_deflection"),
+            n, sigma2, &p));
+        return DynamicFriction(p);
+    }
+
     /// `asperity_dynamic_prandtl_tomlinson_new`: a tip in a lattice
     /// potential of amplitude `amplitude` (J) and period `period` (m) pulled
     /// through a spring `stiffness` (N/m), mass `mass` (kg), damping

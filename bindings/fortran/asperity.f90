@@ -2235,6 +2235,19 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_dynamic_lugre_new
 
+    !> Build `n` >= 1 bristles (Haessig-Friedland). Writes a new handle to `*out`.
+    function c_asperity_dynamic_bristles_new(stiffness, break_deflection, n, sigma2, out) &
+        result(r) bind(c, name="asperity_dynamic_bristles_new")
+      import
+      implicit none
+      real(c_double), intent(in) :: stiffness(*)
+      real(c_double), intent(in) :: break_deflection(*)
+      integer(c_size_t), value :: n
+      real(c_double), value :: sigma2
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_dynamic_bristles_new
+
     !> Build `n` >= 1 Maxwell-slip elements in parallel. Writes a new handle to `*out`.
     function c_asperity_dynamic_maxwell_slip_new(stiffness, capacity, n, sigma2, out) result(r) &
         bind(c, name="asperity_dynamic_maxwell_slip_new")
@@ -3121,6 +3134,7 @@ module asperity
   public :: c_asperity_hamaker_work_of_adhesion
   public :: c_asperity_dynamic_lugre_new
   public :: c_asperity_dynamic_maxwell_slip_new
+  public :: c_asperity_dynamic_bristles_new
   public :: c_asperity_dynamic_prandtl_tomlinson_new
   public :: c_asperity_dynamic_prandtl_tomlinson_two_spring_new
   public :: c_asperity_dynamic_burridge_knopoff_new
@@ -3207,6 +3221,7 @@ module asperity
   public :: asperity_slider_geometry_new_uniform
   public :: asperity_dynamic_lugre_new
   public :: asperity_dynamic_maxwell_slip_new
+  public :: asperity_dynamic_bristles_new
   public :: asperity_dynamic_prandtl_tomlinson_new
   public :: asperity_dynamic_prandtl_tomlinson_two_spring_new
   public :: asperity_dynamic_burridge_knopoff_new
@@ -4210,6 +4225,22 @@ contains
     call check(c_asperity_dynamic_maxwell_slip_new(stiffness, capacity, &
         size(stiffness, kind=c_size_t), sigma2, model%ptr), what, status)
   end subroutine asperity_dynamic_maxwell_slip_new
+
+  !> Bristles of stiffnesses `stiffness` (1/m per unit normal force) and break
+  !> deflections `break_deflection` (m, same size), viscous `sigma2` (N s/m), into `model`.
+  subroutine asperity_dynamic_bristles_new(stiffness, break_deflection, sigma2, model, status)
+    real(c_double), intent(in) :: stiffness(:)
+    real(c_double), intent(in) :: break_deflection(:)
+    real(c_double), intent(in) :: sigma2
+    type(asperity_dynamic_friction), intent(inout) :: model
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_dynamic_bristles_new'
+    call model%free()
+    if (too_small(what, 'break_deflection', size(break_deflection), size(stiffness), &
+        'size(stiffness)', status)) return
+    call check(c_asperity_dynamic_bristles_new(stiffness, break_deflection, &
+        size(stiffness, kind=c_size_t), sigma2, model%ptr), what, status)
+  end subroutine asperity_dynamic_bristles_new
 
   !> A Prandtl-Tomlinson tip into `model`: lattice amplitude `amplitude` (J) and period
   !> `period` (m), spring `stiffness` (N/m), `mass` (kg), `damping` (kg/s), integration

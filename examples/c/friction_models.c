@@ -25,7 +25,7 @@
 
 #define STEPS 65
 #define N_MAX 32
-#define MODELS 5
+#define MODELS 6
 
 static int fail(const char *what, int32_t status) {
     char msg[512];
@@ -42,15 +42,18 @@ int main(void) {
      * damping ratio 0.5 at 1 g. */
     const double a = 5e-6, u0 = 2.0 * a / (2.0 * pi);
     const double k_pt = 4.0 * pi * pi * u0 / (3.0 * a * a), m_pt = 1e-3;
-    const char *names[MODELS] = {"lugre", "maxwell", "prandtl_tomlinson", "two_spring",
-                                 "burridge_knopoff"};
+    const char *names[MODELS] = {"lugre",      "maxwell",          "prandtl_tomlinson",
+                                 "two_spring", "burridge_knopoff", "bristles"};
     AsperityLugreParams p;
     AsperityPrandtlTomlinsonTwoSpringParams t;
     AsperityBurridgeKnopoffParams b;
-    AsperityDynamicFriction *models[MODELS] = {NULL, NULL, NULL, NULL, NULL};
+    AsperityDynamicFriction *models[MODELS] = {NULL, NULL, NULL, NULL, NULL, NULL};
     AsperityHomogenisedFriction *homog = NULL;
     const double k[4] = {4e5, 1e5, 2.5e4, 6.25e3};
     const double mu[4] = {0.3, 0.3, 0.25, 0.2};
+    /* Bristles: 1e5 /m per unit normal force, break deflections 3..12 um. */
+    const double kb[4] = {1e5, 1e5, 1e5, 1e5};
+    const double db[4] = {3e-6, 5.5e-6, 8e-6, 12e-6};
     AsperityHomogenisedSample sample;
     double states[MODELS][N_MAX];
     AsperityFrictionPointState s_homog;
@@ -94,6 +97,8 @@ int main(void) {
         return fail("two_spring", st);
     if ((st = asperity_dynamic_burridge_knopoff_new(&b, &models[4])) != ASPERITY_OK)
         return fail("burridge_knopoff", st);
+    if ((st = asperity_dynamic_bristles_new(kb, db, 4, 0.0, &models[5])) != ASPERITY_OK)
+        return fail("bristles", st);
     memset(&sample, 0, sizeof sample);
     sample.pressure = normal / area;
     sample.cof = 1.05;
@@ -113,7 +118,7 @@ int main(void) {
     memset(&s_homog, 0, sizeof s_homog);
 
     printf("# x_um lugre_N maxwell_N homogenised_N prandtl_tomlinson_N two_spring_N "
-           "burridge_knopoff_N\n");
+           "burridge_knopoff_N bristles_N\n");
     for (i = 0; i < STEPS; ++i) {
         const double dx = i < 20 ? h : (i < 50 ? -h : h);
         AsperityDynamicIncrement inc;
@@ -139,8 +144,9 @@ int main(void) {
             return fail("homogenised step", st);
         d_homog += r_homog.dissipated;
         x += dx;
-        printf("row %.1f %.9e %.9e %.9e %.9e %.9e %.9e\n", x * 1e6, r[0].force[0], r[1].force[0],
-               r_homog.force[0], r[2].force[0], r[3].force[0], r[4].force[0]);
+        printf("row %.1f %.9e %.9e %.9e %.9e %.9e %.9e %.9e\n", x * 1e6, r[0].force[0],
+               r[1].force[0], r_homog.force[0], r[2].force[0], r[3].force[0], r[4].force[0],
+               r[5].force[0]);
     }
     for (j = 0; j < MODELS; ++j)
         printf("CHECK %s_dissipation %.17g\n", names[j],

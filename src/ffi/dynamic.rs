@@ -37,9 +37,9 @@ macro_rules! from_params {
 use crate::error::{Error, Result};
 use crate::friction::dynamic::burridge_knopoff::MAX_BLOCKS;
 use crate::friction::dynamic::{
-    BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, DynamicResponse, LuGre,
-    MaxwellSlip, PrandtlTomlinson, STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL,
-    TANGENT_SLIP,
+    Bristles, BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, DynamicResponse,
+    LuGre, MaxwellSlip, PrandtlTomlinson, STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH,
+    TANGENT_NORMAL, TANGENT_SLIP,
 };
 
 /// `AsperityDynamicIncrement.tangents` bit: compute dF/dN.
@@ -214,6 +214,34 @@ pub unsafe extern "C" fn asperity_dynamic_maxwell_slip_new(
             core::slice::from_raw_parts(m, n),
         );
         MaxwellSlip::new(k, m, sigma2).map(DynamicModel::MaxwellSlip)
+    })
+}
+
+/// Build `n` >= 1 bristles (Haessig and Friedland 1991): stiffnesses
+/// `stiffness[i]` (1/m per unit normal force, > 0) and break deflections
+/// `break_deflection[i]` (m, > 0), viscous coefficient `sigma2` (N s/m,
+/// >= 0). A bristle that reaches its break deflection snaps and bonds again
+/// undeflected. One-dimensional: increments need `slip[1]` = 0. Writes a
+/// new handle to `*out` (NULL on failure).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_dynamic_bristles_new(
+    stiffness: *const f64,
+    break_deflection: *const f64,
+    n: usize,
+    sigma2: f64,
+    out: *mut *mut AsperityDynamicFriction,
+) -> i32 {
+    emit(out, || {
+        let k = input(stiffness, "stiffness")?;
+        let d = input(break_deflection, "break_deflection")?;
+        // SAFETY: the caller provides `n` readable values at each pointer.
+        let (k, d) = (
+            core::slice::from_raw_parts(k, n),
+            core::slice::from_raw_parts(d, n),
+        );
+        Bristles::new(k, d, sigma2)
+            .map(DynamicModel::Bristles)
+            .map_err(|e| renamed(e, "break_deflection.len()", "n"))
     })
 }
 

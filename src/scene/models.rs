@@ -30,6 +30,7 @@
 //! | `maxwell_slip` | [`MaxwellSlip::new`] | `stiffness` (1/m, a list), `capacity` (a list of the same length), `sigma2` (N·s/m; 0) |
 //! | `prandtl_tomlinson` | [`PrandtlTomlinson::new`] | `amplitude` (J), `period` (m), `stiffness` (N/m), `mass` (kg), `damping` (kg/s; 0), `tolerance` (1e-8) |
 //! | `prandtl_tomlinson_two_spring` | [`PrandtlTomlinson::two_spring`] | `amplitude` (J), `period` (m), `tip_stiffness` (N/m), `tip_mass` (kg), `tip_damping` (kg/s; 0), `cantilever_stiffness` (N/m), `cantilever_mass` (kg), `cantilever_damping` (kg/s; 0), `tolerance` (1e-8) |
+//! | `bristles` | [`Bristles::new`] | `stiffness` (1/m, a list), `break_deflection` (m, a list of the same length), `sigma2` (N·s/m; 0) |
 //! | `burridge_knopoff` | [`BurridgeKnopoff::new`] | `blocks` (1–256), `mass` (kg), `coupling_stiffness` (N/m), `pulling_stiffness` (N/m), `mu_static`, `mu_kinetic`, `weakening_velocity` (m/s; absent = +∞, Coulomb), `damping` (kg/s; 0), `tolerance` (1e-8) |
 //!
 //! A parameter the constructor rejects is reported with its path:
@@ -55,7 +56,7 @@
 use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
 use crate::friction::dynamic::{
-    BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip,
+    Bristles, BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip,
     PrandtlTomlinson, STATE_DISSIPATION,
 };
 use crate::friction::slider::SlideRun;
@@ -263,6 +264,26 @@ impl BurridgeKnopoffSpec {
     }
 }
 
+/// Parameters of [`Bristles::new`], under the same names.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BristlesSpec {
+    /// Bristle stiffnesses kᵢ per unit normal force (1/m).
+    pub stiffness: Vec<f64>,
+    /// Break deflections δᵢ (m), as many as `stiffness`.
+    pub break_deflection: Vec<f64>,
+    /// Viscous coefficient σ₂ (N·s/m; default 0).
+    #[serde(default)]
+    pub sigma2: f64,
+}
+
+impl BristlesSpec {
+    /// The model ([`Bristles::new`]; its errors name the argument).
+    pub fn build(&self) -> Result<Bristles> {
+        Bristles::new(&self.stiffness, &self.break_deflection, self.sigma2)
+    }
+}
+
 /// Declares [`DynamicModelSpec`]: one variant per model with the
 /// [`DynamicModel`] variant it builds and its scene key; each spec type has
 /// `build(&self) -> Result<Model>`.
@@ -306,6 +327,8 @@ model_specs! {
     PrandtlTomlinsonTwoSpring(PrandtlTomlinsonTwoSpringSpec) => PrandtlTomlinson = "prandtl_tomlinson_two_spring",
     /// [`BurridgeKnopoff`].
     BurridgeKnopoff(BurridgeKnopoffSpec) => BurridgeKnopoff = "burridge_knopoff",
+    /// [`Bristles`].
+    Bristles(BristlesSpec) => Bristles = "bristles",
 }
 
 /// One entry of a scene's `friction_models`: a name and one model,

@@ -5,10 +5,14 @@
 //! can re-evaluate or cut back an increment), and an all-zero state is a
 //! fresh one.
 //!
-//! * [`LuGre`]: the bristle model of Haessig and Friedland (thesis 5.3.6,
-//!   (5-8)) in its standard continuous form, LuGre (Canudas de Wit et al.
+//! * [`Bristles`]: the bristle model of Haessig and Friedland (thesis
+//!   5.3.6, (5-8)): elastic bristles that snap at their break deflection
+//!   and bond again undeflected, the snaps counted exactly per increment.
+//! * [`LuGre`]: its standard continuous form, LuGre (Canudas de Wit et al.
 //!   1995), with Stribeck velocity weakening, integrated exactly over each
 //!   increment.
+//! * [`PrandtlTomlinson::pull_by_force`]: the tip pulled by a constant
+//!   force (thesis (5-5)), whose static friction is the lattice force.
 //! * [`DynamicModel`]: any of them, chosen by configuration; every model
 //!   implements [`DynamicFriction`] (step, in place, VFRIC-shaped block).
 //! * [`PrandtlTomlinson`]: a tip in a periodic lattice potential pulled
@@ -59,6 +63,7 @@
 //! ([`STATE_DISSIPATION`], [`STATE_SLIP_PATH`]), then the model's own
 //! variables (see each model).
 
+pub mod bristles;
 pub mod burridge_knopoff;
 mod dormand_prince;
 pub mod lugre;
@@ -66,6 +71,7 @@ pub mod maxwell_slip;
 pub mod prandtl_tomlinson;
 pub mod stick_slip;
 
+pub use bristles::Bristles;
 pub use burridge_knopoff::BurridgeKnopoff;
 pub use lugre::LuGre;
 pub use maxwell_slip::MaxwellSlip;
@@ -137,7 +143,7 @@ pub struct DynamicResponse {
 }
 
 /// A friction model stepped once per increment. Implemented by [`LuGre`],
-/// [`MaxwellSlip`], [`PrandtlTomlinson`], [`BurridgeKnopoff`] and
+/// [`MaxwellSlip`], [`PrandtlTomlinson`], [`BurridgeKnopoff`], [`Bristles`] and
 /// [`DynamicModel`] (the choice by configuration).
 pub trait DynamicFriction: sealed::Advance {
     /// Doubles of one point's state.
@@ -257,6 +263,8 @@ pub enum DynamicModel {
     PrandtlTomlinson(PrandtlTomlinson),
     /// [`BurridgeKnopoff`].
     BurridgeKnopoff(BurridgeKnopoff),
+    /// [`Bristles`].
+    Bristles(Bristles),
 }
 
 macro_rules! each_model {
@@ -266,6 +274,7 @@ macro_rules! each_model {
             DynamicModel::MaxwellSlip($m) => $e,
             DynamicModel::PrandtlTomlinson($m) => $e,
             DynamicModel::BurridgeKnopoff($m) => $e,
+            DynamicModel::Bristles($m) => $e,
         }
     };
 }
