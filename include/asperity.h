@@ -1679,10 +1679,10 @@ int32_t asperity_dynamic_maxwell_slip_new(const double *stiffness,
 
 // Build `n` >= 1 bristles (Haessig and Friedland 1991): stiffnesses
 // `stiffness[i]` (1/m per unit normal force, > 0) and break deflections
-// `break_deflection[i]` (m, > 0), viscous coefficient `sigma2` (N s/m,
-// >= 0). A bristle that reaches its break deflection snaps and bonds again
-// undeflected. One-dimensional: increments need `slip[1]` = 0. Writes a
-// new handle to `*out` (NULL on failure).
+// `break_deflection[i]` (m, > 0), viscous coefficient `sigma2`
+// (N s/m, >= 0). A bristle that reaches its break deflection snaps and
+// bonds again undeflected. One-dimensional: increments need `slip[1]` = 0.
+// Writes a new handle to `*out` (NULL on failure).
 int32_t asperity_dynamic_bristles_new(const double *stiffness,
                                       const double *break_deflection,
                                       size_t n,

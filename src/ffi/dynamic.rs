@@ -219,10 +219,10 @@ pub unsafe extern "C" fn asperity_dynamic_maxwell_slip_new(
 
 /// Build `n` >= 1 bristles (Haessig and Friedland 1991): stiffnesses
 /// `stiffness[i]` (1/m per unit normal force, > 0) and break deflections
-/// `break_deflection[i]` (m, > 0), viscous coefficient `sigma2` (N s/m,
-/// >= 0). A bristle that reaches its break deflection snaps and bonds again
-/// undeflected. One-dimensional: increments need `slip[1]` = 0. Writes a
-/// new handle to `*out` (NULL on failure).
+/// `break_deflection[i]` (m, > 0), viscous coefficient `sigma2`
+/// (N s/m, >= 0). A bristle that reaches its break deflection snaps and
+/// bonds again undeflected. One-dimensional: increments need `slip[1]` = 0.
+/// Writes a new handle to `*out` (NULL on failure).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_dynamic_bristles_new(
     stiffness: *const f64,

@@ -58,9 +58,9 @@ pub struct Bristles {
 
 impl Bristles {
     /// Bristles with stiffnesses `stiffness` kᵢ (1/m per unit normal force,
-    /// finite, > 0) and break deflections `break_deflection` δᵢ (m, finite,
-    /// > 0), of equal length ≥ 1, and the viscous coefficient `sigma2` σ₂
-    /// (N·s/m, finite, ≥ 0). Errors name the argument.
+    /// finite, > 0) and break deflections `break_deflection` δᵢ (m, finite
+    /// and > 0), of equal length ≥ 1, and the viscous coefficient `sigma2`
+    /// σ₂ (N·s/m, finite, ≥ 0). Errors name the argument.
     pub fn new(stiffness: &[f64], break_deflection: &[f64], sigma2: f64) -> Result<Self> {
         if stiffness.is_empty() || break_deflection.len() != stiffness.len() {
             return Err(Error::InvalidArgument {
