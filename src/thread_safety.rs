@@ -73,6 +73,7 @@ const _: () = {
     shared::<crate::friction::dynamic::MaxwellSlip>();
     shared::<crate::friction::dynamic::PrandtlTomlinson>();
     shared::<crate::friction::dynamic::BurridgeKnopoff>();
+    shared::<crate::friction::dynamic::Bristles>();
     shared::<crate::friction::dynamic::DynamicModel>();
     shared::<crate::ffi::dynamic::AsperityDynamicFriction>();
     shared::<AsperityHomogenisedFriction>();

@@ -221,6 +221,13 @@ fn dynamic_friction_steps_allocate_nothing() {
         );
         models.push((h, 1e-5));
     }
+    let (kb, db) = ([1e5, 2e5, 5e4], [1e-6, 2.5e-6, 4e-6]);
+    let mut h = core::ptr::null_mut();
+    assert_eq!(
+        unsafe { asperity_dynamic_bristles_new(kb.as_ptr(), db.as_ptr(), 3, 0.1, &mut h) },
+        ASPERITY_OK
+    );
+    models.push((h, 2e-6));
     for (h, scale) in models {
         let mut n = 0usize;
         unsafe { asperity_dynamic_friction_state_size(h, &mut n) };

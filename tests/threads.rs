@@ -733,8 +733,8 @@ fn last_error_message_is_thread_local() {
 #[test]
 fn dynamic_friction_models_step_and_block() {
     use asperity::friction::dynamic::{
-        BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip,
-        PrandtlTomlinson,
+        Bristles, BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre,
+        MaxwellSlip, PrandtlTomlinson,
     };
     let models = [
         DynamicModel::LuGre(LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4).unwrap()),
@@ -751,11 +751,16 @@ fn dynamic_friction_models_step_and_block() {
         DynamicModel::BurridgeKnopoff(
             BurridgeKnopoff::new(4, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-9).unwrap(),
         ),
+        DynamicModel::Bristles(
+            Bristles::new(&[1e5, 2e5, 5e4], &[1e-6, 2.5e-6, 4e-6], 0.1).unwrap(),
+        ),
     ];
     for model in &models {
         let track = matches!(
             model,
-            DynamicModel::PrandtlTomlinson(_) | DynamicModel::BurridgeKnopoff(_)
+            DynamicModel::PrandtlTomlinson(_)
+                | DynamicModel::BurridgeKnopoff(_)
+                | DynamicModel::Bristles(_)
         );
         let scale = match model {
             DynamicModel::PrandtlTomlinson(_) => 1e-11,
