@@ -13,7 +13,8 @@
 //! 40).
 
 use asperity::friction::dynamic::{
-    BurridgeKnopoff, DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip, PrandtlTomlinson,
+    Bristles, BurridgeKnopoff, DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip,
+    PrandtlTomlinson,
 };
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -207,6 +208,18 @@ fn main() {
         );
         println!("| Maxwell-slip, {elements} elements, 2-D slip (30°) | – | – | {t2:.1} |");
     }
+    // Ten bristles of break deflections 1–10 µm (snaps counted exactly).
+    let d: Vec<f64> = (1..=10).map(|i| 1e-6 * i as f64).collect();
+    let brush = Bristles::new(&[1e5; 10], &d, 0.0).unwrap();
+    let tb = time(rounds, run_ms, || {
+        let mut s = vec![0.0; brush.state_len()];
+        let mut n = s.clone();
+        for i in &incs {
+            black_box(brush.step(&s, &mut n, black_box(i)).unwrap());
+            std::mem::swap(&mut s, &mut n);
+        }
+    });
+    println!("| Bristles, 10 (`Bristles::step`), track | – | – | {tb:.1} |");
 
     // The integrated models over N increments of a stick-slip run (from the
     // state after a first stretch of the run), mean time per increment.

@@ -854,8 +854,8 @@ typedef struct AsperityNanoAsperities {
     double w_chem;
     // Distance between nano-asperities (m), >= w_vdW (6-3).
     double spacing;
-    // Nano-asperities on one square tip of the finest rods, >= 1, with
-    // per_rod * spacing^2 <= (rod width)^2.
+    // Nano-asperities on one square tip of the finest rods, >= 1 and
+    // <= 2^24, with per_rod * spacing^2 <= (rod width)^2.
     size_t per_rod;
 } AsperityNanoAsperities;
 
@@ -1785,7 +1785,8 @@ int32_t asperity_fidelity_advise(double radius,
 // `*out` (NULL on failure). Errors: NULL pointers, fewer than 8 heights,
 // non-finite values, widths that are not positive, wider than the micro
 // profile or do not nest, constant profiles, finest rods narrower than the
-// nano-asperity spacing.
+// nano-asperity spacing or wider than 4096 spacings (more than 2^24
+// nano-asperities per rod).
 int32_t asperity_slider_geometry_new(const double *micro_heights,
                                      size_t micro_n,
                                      double micro_dx,
@@ -2125,7 +2126,9 @@ int32_t asperity_friction_material_copper(struct AsperityFrictionMaterial *out);
 // counter height; a counter-surface too short to lie under the slider
 // (unless periodic); unknown selectors (`control`, `mechanisms`,
 // `cof_form`, `plastic`, `solver`, `periodic`); the loading, `depth`,
-// `root_margin` and `plastic_width` bounds of `AsperitySliderOptions`.
+// `root_margin` and `plastic_width` bounds of `AsperitySliderOptions`;
+// more than 2^24 nano-asperities per rod, floor(width/spacing) *
+// floor(depth/spacing) (`spacing`, or `options.depth`).
 int32_t asperity_slider_new(const struct AsperitySliderGeometry *geometry,
                             const struct AsperityFrictionMaterial *material,
                             const double *counter,

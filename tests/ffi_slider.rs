@@ -967,3 +967,80 @@ fn scene_file_ranges_beyond_the_profile_are_errors() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A nano-asperity spacing far below the rod width or depth gave the
+/// slider ⌊w/λ⌋ nano-asperity columns saturated to `usize::MAX`:
+/// `asperity_slider_info` overflowed m_x·m_y (the C guard's
+/// `ASPERITY_ERR_INTERNAL`) and a step looped over ~10¹⁹ columns per rod (a
+/// hang). Found reviewing `asperity_slider_new` for the fuzz harness. Now at
+/// most `MAX_NANO_PER_ROD` = 2²⁴ nano-asperities per rod, an error naming
+/// `spacing` (or `options.depth` when the depth makes the excess), the
+/// handle NULL.
+#[test]
+fn slider_nano_counts_beyond_the_bound_are_errors() {
+    let w = 1.5e-6;
+    let geometry = |spacing: f64| {
+        let nano = AsperityNanoAsperities {
+            h_vdw: 6e-9,
+            w_vdw: spacing,
+            h_chem: 0.0,
+            w_chem: 0.0,
+            spacing,
+            per_rod: 1,
+        };
+        let mut g = null_mut();
+        let st = unsafe { asperity_slider_geometry_new_uniform(w, 2, &nano, &mut g) };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        g
+    };
+    // 64 samples at 0.1 µm lie under the two 1.5 µm rods.
+    let counter: Vec<f64> = (0..64).map(|j| 1e-8 * (0.4 * j as f64).sin()).collect();
+    let material = c_copper();
+    let build = |g: *const AsperitySliderGeometry, o: &AsperitySliderOptions| {
+        let mut h = 1usize as *mut AsperitySlider;
+        let st = unsafe {
+            asperity_slider_new(
+                g,
+                &material,
+                counter.as_ptr(),
+                counter.len(),
+                1e-7,
+                o,
+                &mut h,
+            )
+        };
+        (st, h)
+    };
+    let square = c_defaults();
+    for spacing in [1e-30, 1e-300, w / 4097.0] {
+        let g = geometry(spacing);
+        let (st, h) = build(g, &square);
+        assert!(h.is_null(), "spacing {spacing:e}");
+        expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "`spacing`");
+        assert!(last_message().contains("2^24"), "{}", last_message());
+        unsafe { asperity_slider_geometry_free(g) };
+    }
+    // The bound itself: 4096 × 4096 on a square tip.
+    let g = geometry(w / 4096.0);
+    let (st, h) = build(g, &square);
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    let mut info = AsperitySliderInfo::default();
+    assert_eq!(unsafe { asperity_slider_info(h, &mut info) }, ASPERITY_OK);
+    assert_eq!((info.rods, info.nano_per_rod), (2, 16_777_216));
+    unsafe { asperity_slider_free(h) };
+    unsafe { asperity_slider_geometry_free(g) };
+    // 64 columns, and a depth of 2^19 spacings: 2^25 per rod.
+    let g = geometry(w / 64.0);
+    let mut deep = c_defaults();
+    deep.depth = (1u64 << 19) as f64 * w / 64.0;
+    let (st, h) = build(g, &deep);
+    assert!(h.is_null());
+    expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "`options.depth`");
+    deep.depth = (1u64 << 18) as f64 * w / 64.0;
+    let (st, h) = build(g, &deep);
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    assert_eq!(unsafe { asperity_slider_info(h, &mut info) }, ASPERITY_OK);
+    assert_eq!(info.nano_per_rod, 64 << 18);
+    unsafe { asperity_slider_free(h) };
+    unsafe { asperity_slider_geometry_free(g) };
+}

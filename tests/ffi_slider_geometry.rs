@@ -374,3 +374,32 @@ fn null_pointers_short_arrays_and_bad_values() {
         asperity_slider_geometry_free(g);
     }
 }
+
+/// An AFM profile sampled at 10⁻²⁰ m gives a nano-asperity spacing ~10¹⁴
+/// times below a 1 µm rod: the count per rod overflowed `usize` (the C
+/// guard's `ASPERITY_ERR_INTERNAL`). Now an error naming `rod_widths` (more
+/// than 2²⁴ nano-asperities per rod), the handle NULL.
+#[test]
+fn nano_spacing_far_below_the_rod_width_is_an_error() {
+    let (micro, nano) = profiles();
+    let widths = [UM];
+    for nano_dx in [1e-20, 1e-300] {
+        let mut g = 1usize as *mut AsperitySliderGeometry;
+        let st = unsafe {
+            asperity_slider_geometry_new(
+                micro.as_ptr(),
+                micro.len(),
+                UM,
+                nano.as_ptr(),
+                nano.len(),
+                nano_dx,
+                widths.as_ptr(),
+                widths.len(),
+                &mut g,
+            )
+        };
+        assert!(g.is_null());
+        expect_error(st, ASPERITY_ERR_OUT_OF_DOMAIN, "rod_widths");
+        assert!(last_message().contains("2^24"), "{}", last_message());
+    }
+}

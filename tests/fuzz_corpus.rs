@@ -92,3 +92,42 @@ fn readers_corpus() {
 fn table_json_corpus() {
     replay("table_json", table_json::run);
 }
+
+/// The `c_abi` harness calls every function the C header declares: a new
+/// entry point without a fuzz operation fails here, naming it.
+#[test]
+fn c_abi_harness_calls_every_c_function() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let header = std::fs::read_to_string(root.join("include/asperity.h")).expect("read header");
+    let harness =
+        std::fs::read_to_string(root.join("fuzz/harness/c_abi.rs")).expect("read harness");
+    // Declarations: `<type> asperity_name(` at the start of a line.
+    let declared: Vec<&str> = header
+        .lines()
+        .filter(|l| !l.starts_with("//") && !l.starts_with(' '))
+        .filter_map(|l| {
+            let start = l.find("asperity_")?;
+            let end = start + l[start..].find('(')?;
+            let name = &l[start..end];
+            name.bytes()
+                .all(|b| b.is_ascii_alphanumeric() || b == b'_')
+                .then_some(name)
+        })
+        .collect();
+    assert!(
+        declared.len() > 100,
+        "only {} functions found in include/asperity.h",
+        declared.len()
+    );
+    let missing: Vec<&str> = declared
+        .iter()
+        .copied()
+        .filter(|name| !harness.contains(&format!("{name}(")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "fuzz/harness/c_abi.rs never calls {} of the {} C functions: {missing:?}",
+        missing.len(),
+        declared.len()
+    );
+}

@@ -726,3 +726,54 @@ fn rod_counts_beyond_max_rods_are_errors() {
         36
     );
 }
+
+/// A nano-asperity spacing far below the rod width (a nano profile sampled
+/// at 10⁻²⁰ m, a subnormal spacing) gave n = ⌊w/λ⌋ saturated to
+/// `usize::MAX` and n² overflowed (a panic; with `asperity_slider_geometry_new`
+/// the C guard's `ASPERITY_ERR_INTERNAL`), and a `per_rod` near `usize::MAX`
+/// overflowed [`SliderGeometry::nano_total`]. Found reviewing the slider
+/// constructors for the fuzz harness's `asperity_slider_new` operation. Now
+/// at most [`MAX_NANO_PER_ROD`] = 2²⁴ = 4096² per rod, errors naming the
+/// argument.
+#[test]
+fn nano_counts_beyond_max_nano_per_rod_are_errors() {
+    assert_eq!(MAX_NANO_PER_ROD, 4096 * 4096);
+    let s = 1.35 * UM;
+    assert_eq!(nano_per_rod(4096.0 * s, s).unwrap(), 16_777_216);
+    out_of_domain(nano_per_rod(4097.0 * s, s), "tip_width");
+    for spacing in [1e-30, 5e-324] {
+        out_of_domain(nano_per_rod(1.5 * UM, spacing), "tip_width");
+    }
+    // From profiles: the nano profile's spacing scales with its sampling
+    // interval (the same heights at 10 nm and at 10 nm × 10⁻¹²).
+    let coarse = nano_analysis(&square(), 10.0 * NM).unwrap().asperities;
+    let fine = nano_analysis(&square(), 10.0 * NM * 1e-12)
+        .unwrap()
+        .asperities;
+    close(fine.spacing, coarse.spacing * 1e-12, 1e-12);
+    assert!(UM / fine.spacing > 4097.0);
+    out_of_domain(
+        SliderGeometry::from_slices(&micro(), UM, &[UM], &square(), 10.0 * NM * 1e-12),
+        "rod_widths",
+    );
+    out_of_domain(
+        SliderGeometry::from_slices(&micro(), UM, &[UM], &square(), 1e-300),
+        "rod_widths",
+    );
+    // From numbers: `nano_per_rod` beyond the bound, though the cells fit.
+    let tiny = NanoAsperities {
+        h_vdw: 4.1 * NM,
+        w_vdw: 1e-30,
+        h_chem: 0.0,
+        w_chem: 0.0,
+        spacing: 1e-30,
+    };
+    for per_rod in [MAX_NANO_PER_ROD + 1, usize::MAX] {
+        invalid(
+            SliderGeometry::uniform(13.5 * UM, 2, tiny, per_rod),
+            "nano_per_rod",
+        );
+    }
+    let g = SliderGeometry::uniform(13.5 * UM, 2, tiny, MAX_NANO_PER_ROD).unwrap();
+    assert_eq!(g.nano_total(), 2 * 16_777_216);
+}

@@ -742,3 +742,46 @@ fn c_abi_handles_null_and_errors() {
         asperity_table_free(null_mut());
     }
 }
+
+/// Fuzzing regression (fuzz/regressions/c_abi/md_table_tolerance_below_range,
+/// an out-of-memory of the `c_abi` target): the Maugis–Dugdale curve accepted
+/// tolerances down to 1e-12 while the table takes [1e-10, 0.1], so
+/// `asperity_table_new_maugis_dugdale` with 2.3e-12 sampled a curve of 10⁸
+/// points (6 GB, 14 s) before rejecting the tolerance; at 1e-12 the
+/// bisection did not end. Below 1e-10 the interpolation test meets f64
+/// rounding. Now both reject such a tolerance before sampling (the error
+/// names `tolerance`), and a curve is bounded by `MAX_CURVE_POINTS`.
+#[test]
+fn md_tolerances_below_the_table_range_are_rejected_before_sampling() {
+    use asperity::contact::curve::MAX_CURVE_POINTS;
+    use asperity::error::Error;
+    use asperity::ffi::tabulated::*;
+    use asperity::ffi::{asperity_last_error_message, ASPERITY_ERR_INVALID_ARGUMENT};
+    // The fuzzer's input: λ ≈ 1383.
+    let extreme = MaugisDugdale::new(2.6875e24, 26.98, 2e12, 1.0).unwrap();
+    let tolerance_error = |r: asperity::Result<usize>| match r {
+        Err(Error::InvalidArgument { name, .. }) => assert_eq!(name, "tolerance"),
+        other => panic!("expected an error naming tolerance, got {other:?}"),
+    };
+    for m in [&extreme, &md(0.1), &md(10.0)] {
+        for tol in [9.9e-11, 2.34375e-12, 1e-12] {
+            tolerance_error(EquilibriumCurve::from_maugis_dugdale(m, tol).map(|c| c.points.len()));
+            tolerance_error(TabulatedLaw::from_maugis_dugdale(m, tol).map(|_| 0));
+        }
+        // The finest tolerance accepted is reached well within the bound.
+        let n = EquilibriumCurve::from_maugis_dugdale(m, 1e-10)
+            .unwrap()
+            .points
+            .len();
+        assert!(n > 1000 && n < MAX_CURVE_POINTS / 16, "{n} points");
+    }
+    let mut t: *mut AsperityTable = 1usize as *mut AsperityTable;
+    let st = unsafe {
+        asperity_table_new_maugis_dugdale(2.6875e24, 26.98, 2e12, 1.0, 2.34375e-12, &mut t)
+    };
+    let mut buf = vec![0u8; 512];
+    let n = unsafe { asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len()) };
+    let msg = String::from_utf8_lossy(&buf[..n.min(511)]).into_owned();
+    assert_eq!(st, ASPERITY_ERR_INVALID_ARGUMENT, "{msg}");
+    assert!(t.is_null() && msg.contains("tolerance"), "{msg}");
+}

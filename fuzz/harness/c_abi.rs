@@ -4,30 +4,41 @@
 //! ±MAX, log-uniform magnitudes, raw bit patterns), integers (selectors out
 //! of range, sizes 0 and huge where no caller buffer depends on them) and
 //! NULL pointers, on handles the sequence created (laws, tables, homogenised
-//! friction, slider geometries, empirical GW surfaces, sliders and their
-//! work buffers), freed at the end.
+//! friction, slider geometries, empirical GW surfaces, sliders from scene
+//! JSON and from structs and their work buffers, dynamic friction models),
+//! freed at the end.
 //!
 //! Findings: any panic. The C guard catches a library panic and returns
 //! `ASPERITY_ERR_INTERNAL`; the harness treats that status as a finding
 //! (it panics with the message), as it does an error status without a
 //! message, an unknown status code, and a constructor that fails without
-//! writing NULL to its out-handle.
+//! writing NULL to its out-handle. For `asperity_dynamic_friction_step`
+//! also: a failure that wrote `new_state` or `*out` (documented untouched),
+//! and `ASPERITY_OK` with a negative `dissipated`.
 //!
 //! What the harness does not feed (caller undefined behaviour, outside the
 //! contract): a pointer with a length longer than its buffer (every
-//! pointer+length pair is a real buffer of that length, or NULL), a freed or
-//! foreign handle, a partially overlapping in/out pair where the contract
-//! forbids it. Inconsistent *counts* that the library can check (a PSD
-//! length other than n/2+1, a rod-heights buffer shorter than the level, a
-//! work buffer of another slider) are fed.
+//! pointer+length pair is a real buffer of that length, or NULL; a state
+//! array is the model's or slider's state size), a freed or foreign handle,
+//! a partially overlapping in/out pair where the library cannot detect it.
+//! Inconsistent *counts* that the library can check (a PSD length other
+//! than n/2+1, a rod-heights buffer shorter than the level, a work buffer of
+//! another slider, a dynamic new state partially overlapping the old one)
+//! are fed.
 //!
 //! Cost bounds (so an input runs in milliseconds): the Lennard-Jones entry
 //! points get grids of at most 64 cells, or invalid ones (0 = the converged
 //! default of up to 1024 cells, and the library's upper bound of 16384, are
-//! not fed: see RELIABILITY.md); `asperity_fidelity_advise` is fed only
+//! not fed: see RELIABILITY.md), and Lennard-Jones tables valid tolerances
+//! of at least 1e-5 only (1e-10 samples 10^5 solver points: seconds);
+//! `asperity_fidelity_advise` is fed only
 //! argument sets that its validation rejects (a valid set runs the
 //! Lennard-Jones reference for seconds to minutes); scenes generate at most
-//! 160-point profiles.
+//! 160-point profiles; `asperity_slider_new` gets geometries of at most 256
+//! rods; sliders with more than 2^22 nano-asperities in all are built but not
+//! stepped; a Prandtl–Tomlinson increment expected to take more than 2·10⁴
+//! integration sub-steps (the library stops at 10⁶) runs once per input,
+//! like the other expensive calls.
 //!
 //! Shared by `fuzz/fuzz_targets/c_abi.rs` (libFuzzer) and
 //! `tests/fuzz_corpus.rs` (corpus replay on stable).
@@ -38,6 +49,7 @@ use arbitrary::{Arbitrary, Result as AResult, Unstructured};
 use asperity::contact::{ContactState, NormalResponse};
 use asperity::ffi::abi::*;
 use asperity::ffi::contact::*;
+use asperity::ffi::dynamic::*;
 use asperity::ffi::fidelity::*;
 use asperity::ffi::friction::*;
 use asperity::ffi::homogenised::*;
@@ -52,9 +64,10 @@ use asperity::ffi::{
     asperity_last_error_message, asperity_status_string, asperity_version, ASPERITY_ERR_INTERNAL,
     ASPERITY_OK,
 };
+use asperity::friction::dynamic::{DynamicIncrement, DynamicResponse};
 use asperity::friction::{
-    Dissipation, FrictionIncrement, FrictionPointState, FrictionResponse, HomogenisedSample,
-    SliderResponse,
+    Dissipation, FrictionIncrement, FrictionMaterial, FrictionPointState, FrictionResponse,
+    HomogenisedSample, SliderResponse,
 };
 use std::ffi::{c_char, c_void, CStr};
 use std::ptr::{null, null_mut};
@@ -224,6 +237,13 @@ fn last_message() -> String {
         .into_owned()
 }
 
+/// Triage: `ASPERITY_FUZZ_DEBUG=1` prints each call before it is made and
+/// each error status with its message.
+fn debug() -> bool {
+    static DEBUG: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *DEBUG.get_or_init(|| std::env::var_os("ASPERITY_FUZZ_DEBUG").is_some())
+}
+
 /// Check a status: a caught panic, an unknown code or an error without a
 /// message is a finding. Returns true on `ASPERITY_OK`.
 fn ok(status: i32, what: &str) -> bool {
@@ -231,6 +251,9 @@ fn ok(status: i32, what: &str) -> bool {
         return true;
     }
     let msg = last_message();
+    if debug() {
+        eprintln!("  -> {what}: status {status}: {msg}");
+    }
     if status == ASPERITY_ERR_INTERNAL {
         panic!("{what}: panic caught by the C guard: {msg}");
     }
@@ -710,6 +733,270 @@ fn density(sel: u8) -> AsperitySummitDensity {
     }
 }
 
+/// The friction material of `asperity_slider_new`: the C copper preset,
+/// the preset with fields replaced, or raw values.
+#[derive(Debug, Clone, Arbitrary)]
+pub enum MaterialSpec {
+    Copper,
+    Poked(Vec<(u8, F)>),
+    Raw([F; 12]),
+}
+
+impl MaterialSpec {
+    /// The material (through `asperity_friction_material_copper`).
+    unsafe fn get(&self) -> FrictionMaterial {
+        let mut m: FrictionMaterial = zeroed();
+        assert!(ok(
+            asperity_friction_material_copper(&mut m),
+            "friction_material_copper"
+        ));
+        let field = |m: &mut FrictionMaterial, k: u8| -> *mut f64 {
+            match k % 12 {
+                0 => &mut m.yield_stress,
+                1 => &mut m.youngs_modulus,
+                2 => &mut m.poisson_ratio,
+                3 => &mut m.counter_youngs_modulus,
+                4 => &mut m.counter_poisson_ratio,
+                5 => &mut m.bond_diameter,
+                6 => &mut m.chemical_bond_energy,
+                7 => &mut m.vdw_bond_energy,
+                8 => &mut m.work_of_adhesion,
+                9 => &mut m.adhesive_layer,
+                10 => &mut m.threshold_strain,
+                _ => &mut m.areal_density,
+            }
+        };
+        match self {
+            MaterialSpec::Copper => {}
+            MaterialSpec::Poked(v) => {
+                for &(k, f) in v.iter().take(3) {
+                    *field(&mut m, k) = f.0;
+                }
+            }
+            MaterialSpec::Raw(v) => {
+                for (k, f) in v.iter().enumerate() {
+                    *field(&mut m, k as u8) = f.0;
+                }
+            }
+        }
+        m
+    }
+}
+
+/// `AsperitySliderOptions`: the C defaults with the fields selected by
+/// `which` replaced.
+#[derive(Debug, Clone, Arbitrary)]
+pub struct SliderOptionsSpec {
+    which: u16,
+    normal_force: F,
+    gap: F,
+    plastic_width: F,
+    depth: F,
+    root_margin: F,
+    control: Sel,
+    mechanisms: u8,
+    cof_form: Sel,
+    plastic: Sel,
+    solver: Sel,
+    periodic: Sel,
+}
+
+impl SliderOptionsSpec {
+    /// The options (through `asperity_slider_options_default`).
+    unsafe fn get(&self) -> AsperitySliderOptions {
+        let mut o: AsperitySliderOptions = zeroed();
+        assert!(ok(
+            asperity_slider_options_default(&mut o),
+            "slider_options_default"
+        ));
+        let w = |i: u32| self.which >> i & 1 == 1;
+        if w(0) {
+            o.normal_force = self.normal_force.0;
+        }
+        if w(1) {
+            o.gap = self.gap.0;
+        }
+        if w(2) {
+            o.plastic_width = self.plastic_width.0;
+        }
+        if w(3) {
+            o.depth = self.depth.0;
+        }
+        if w(4) {
+            o.root_margin = self.root_margin.0;
+        }
+        if w(5) {
+            o.control = self.control.0;
+        }
+        if w(6) {
+            // -1 ..= 16: every valid bit set, and two invalid ones.
+            o.mechanisms = self.mechanisms as i32 % 18 - 1;
+        }
+        if w(7) {
+            o.cof_form = self.cof_form.0;
+        }
+        if w(8) {
+            o.plastic = self.plastic.0;
+        }
+        if w(9) {
+            o.solver = self.solver.0;
+        }
+        if w(10) {
+            o.periodic = self.periodic.0;
+        }
+        o
+    }
+}
+
+/// LuGre parameters: the valid set of `tests/ffi_dynamic.rs`, that set with
+/// one field replaced, or raw values.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum LugreSpec {
+    Valid,
+    Poked { at: u8, value: F },
+    Raw([F; 8]),
+}
+
+impl LugreSpec {
+    fn get(&self) -> AsperityLugreParams {
+        let mut v = [0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4];
+        match self {
+            LugreSpec::Valid => {}
+            LugreSpec::Poked { at, value } => v[*at as usize % 8] = value.0,
+            LugreSpec::Raw(r) => v = fs(*r),
+        }
+        AsperityLugreParams {
+            mu_coulomb: v[0],
+            mu_static: v[1],
+            stribeck_velocity: v[2],
+            stribeck_exponent: v[3],
+            sigma0: v[4],
+            sigma1: v[5],
+            damping_velocity: v[6],
+            sigma2: v[7],
+        }
+    }
+}
+
+/// Maxwell-slip elements: `n` valid ones (stiffnesses 2e5/2^i, break-away
+/// coefficients 0.2/(i+1)), those with one value replaced, or raw pairs.
+/// The arrays are real buffers of `n` values (at most 256).
+#[derive(Debug, Clone, Arbitrary)]
+pub enum MaxwellSpec {
+    Valid {
+        n: u8,
+    },
+    Poked {
+        n: u8,
+        at: u8,
+        value: F,
+        capacity: bool,
+    },
+    Raw(Vec<(F, F)>),
+}
+
+impl MaxwellSpec {
+    fn make(&self) -> (Vec<f64>, Vec<f64>) {
+        let valid = |n: u8| -> (Vec<f64>, Vec<f64>) {
+            let n = n as usize % 12;
+            (
+                (0..n).map(|i| 2e5 / (1u64 << i) as f64).collect(),
+                (0..n).map(|i| 0.2 / (i + 1) as f64).collect(),
+            )
+        };
+        match self {
+            MaxwellSpec::Valid { n } => valid(*n),
+            MaxwellSpec::Poked {
+                n,
+                at,
+                value,
+                capacity,
+            } => {
+                let (mut k, mut m) = valid(*n);
+                if !k.is_empty() {
+                    let i = *at as usize % k.len();
+                    if *capacity {
+                        m[i] = value.0;
+                    } else {
+                        k[i] = value.0;
+                    }
+                }
+                (k, m)
+            }
+            MaxwellSpec::Raw(v) => v.iter().take(256).map(|(a, b)| (a.0, b.0)).unzip(),
+        }
+    }
+}
+
+/// Prandtl–Tomlinson parameters (U0, a, k, m, gamma, tolerance): the valid
+/// AFM-tip set of `tests/ffi_dynamic.rs`, that set with one value replaced,
+/// or raw values.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum PtSpec {
+    Valid,
+    Poked { at: u8, value: F },
+    Raw([F; 6]),
+}
+
+impl PtSpec {
+    fn get(&self) -> [f64; 6] {
+        let mut v = [2e-21, 3e-10, 1.0, 1e-12, 1e-6, 1e-9];
+        match self {
+            PtSpec::Valid => {}
+            PtSpec::Poked { at, value } => v[*at as usize % 6] = value.0,
+            PtSpec::Raw(r) => v = fs(*r),
+        }
+        v
+    }
+}
+
+/// The geometry of `asperity_slider_new`: one the input made, or a uniform
+/// one made here (`rods` % 16 + 1 rods of 1.5 µm with the chapter-6
+/// nano-asperities, one value replaced when `poke` is given).
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum GeometrySource {
+    Table(u8),
+    Uniform { rods: u8, poke: Option<(u8, F)> },
+}
+
+/// A dynamic-friction increment: valid (N = 1 N, a slip of a few µm in a
+/// direction set by `k`, Δt = 1 ms), that with one value replaced, or raw
+/// values (N, slip x, slip y, Δt).
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum DynIncSpec {
+    Valid { k: u8 },
+    Poked { k: u8, at: u8, value: F },
+    Raw([F; 4]),
+}
+
+impl DynIncSpec {
+    fn get(&self) -> [f64; 4] {
+        let valid = |k: u8| {
+            let th = 0.7 * k as f64;
+            [1.0, 2e-6 * th.cos(), 1e-6 * th.sin(), 1e-3]
+        };
+        match *self {
+            DynIncSpec::Valid { k } => valid(k),
+            DynIncSpec::Poked { k, at, value } => {
+                let mut v = valid(k);
+                v[at as usize % 4] = value.0;
+                v
+            }
+            DynIncSpec::Raw(r) => fs(r),
+        }
+    }
+}
+
+/// How the new state of a dynamic step is placed against the old one.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum Placement {
+    Apart,
+    InPlace,
+    /// `new_state` = `old_state` + 1 + k % (m − 1) doubles: a partial
+    /// overlap, which the library detects (an error naming `new_state`).
+    Overlap(u8),
+}
+
 // ------------------------------------------------------------------ calls
 
 /// One call (or a few related calls) of the C ABI.
@@ -1099,6 +1386,67 @@ pub enum Op {
     WorkFree {
         work: u8,
     },
+    // Slider from structs.
+    SliderOptionsDefault {
+        null: bool,
+    },
+    MaterialCopper {
+        null: bool,
+    },
+    SliderFromStructs {
+        geometry: GeometrySource,
+        material: MaterialSpec,
+        counter: Option<(Heights, F)>,
+        options: Option<SliderOptionsSpec>,
+        nulls: Nulls,
+    },
+    // Dynamic friction.
+    LugreNew {
+        params: LugreSpec,
+        nulls: Nulls,
+    },
+    MaxwellNew {
+        elements: MaxwellSpec,
+        sigma2: F,
+        nulls: Nulls,
+    },
+    PtNew {
+        params: PtSpec,
+        null: bool,
+    },
+    DynStateSize {
+        model: u8,
+        null: bool,
+    },
+    DynStep {
+        model: u8,
+        inc: DynIncSpec,
+        tangents: Sel,
+        reserved: Sel,
+        state: SliderState,
+        placement: Placement,
+        nulls: Nulls,
+    },
+    DynBlock {
+        model: u8,
+        n: u8,
+        inc: Vec<F>,
+        dt: Option<F>,
+        state: SliderState,
+        nulls: Nulls,
+    },
+    DynFree {
+        model: u8,
+    },
+}
+
+/// A dynamic friction model the input made, and for a Prandtl–Tomlinson tip
+/// what bounds the cost of its steps.
+struct Dynamic {
+    model: *mut AsperityDynamicFriction,
+    /// Prandtl–Tomlinson: its parameters (U0, a, k, m, gamma, tolerance),
+    /// for [`pt_substeps`]; `None` for the other models (cheap steps).
+    pt: Option<[f64; 6]>,
 }
 
 /// The handles and carried states of one input; all freed on drop.
@@ -1114,6 +1462,8 @@ struct Ctx {
     sliders: Vec<*mut AsperitySlider>,
     works: Vec<*mut AsperitySliderWork>,
     slider_state: Vec<f64>,
+    dynamics: Vec<Dynamic>,
+    dynamic_state: Vec<f64>,
     expensive: u32,
 }
 
@@ -1134,6 +1484,9 @@ impl Drop for Ctx {
                 .drain(..)
                 .for_each(|p| asperity_slider_work_free(p));
             self.sliders.drain(..).for_each(|p| asperity_slider_free(p));
+            self.dynamics
+                .drain(..)
+                .for_each(|d| asperity_dynamic_friction_free(d.model));
         }
     }
 }
@@ -1153,6 +1506,23 @@ fn take<T>(v: &mut Vec<*mut T>, sel: u8) -> Option<*mut T> {
     } else {
         let i = sel as usize % v.len();
         Some(v.swap_remove(i))
+    }
+}
+
+impl Ctx {
+    /// Whether a call of about `substeps` integration sub-steps may run: a
+    /// cheap one always, an expensive one once per input (the library's own
+    /// bound, `MAX_SUBSTEPS` = 10^6 per integration, makes each call take up
+    /// to a second).
+    fn affordable(&mut self, substeps: f64) -> bool {
+        if substeps <= 2e4 {
+            return true;
+        }
+        if self.expensive > 0 {
+            return false;
+        }
+        self.expensive += 1;
+        true
     }
 }
 
@@ -1484,6 +1854,11 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
             tolerance,
             null,
         } => {
+            // A valid tolerance below 1e-5 samples 10^4–10^5 solver points
+            // (2–8 s in a release build, ten times that instrumented).
+            if (1e-10..1e-5).contains(&tolerance.0) {
+                return;
+            }
             if ctx.expensive > 0 {
                 return;
             }
@@ -2453,7 +2828,7 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 mp(&mut out, nulls.at(1)),
             );
             if let Some(sl) = made(s, out, !nulls.at(1), "slider_from_scene_json") {
-                ctx.sliders.push(sl);
+                keep_slider(ctx, sl);
             }
         }
         Op::SliderQuery {
@@ -2580,7 +2955,391 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 asperity_slider_work_free(null_mut());
             }
         }
+        Op::SliderOptionsDefault { null } => {
+            let mut o: AsperitySliderOptions = zeroed();
+            ok(
+                asperity_slider_options_default(mp(&mut o, *null)),
+                "slider_options_default",
+            );
+        }
+        Op::MaterialCopper { null } => {
+            let mut m: FrictionMaterial = zeroed();
+            ok(
+                asperity_friction_material_copper(mp(&mut m, *null)),
+                "friction_material_copper",
+            );
+        }
+        Op::SliderFromStructs {
+            geometry,
+            material,
+            counter,
+            options,
+            nulls,
+        } => {
+            let g = match *geometry {
+                GeometrySource::Table(i) => pick(&ctx.geometries, i),
+                GeometrySource::Uniform { rods, poke } => {
+                    let mut v = [6e-9, 4.3e-7, 2.2e-9, 1.61e-7, 1.35e-6];
+                    if let Some((at, value)) = poke {
+                        v[at as usize % 5] = value.0;
+                    }
+                    let nano = AsperityNanoAsperities {
+                        h_vdw: v[0],
+                        w_vdw: v[1],
+                        h_chem: v[2],
+                        w_chem: v[3],
+                        spacing: v[4],
+                        per_rod: 1,
+                    };
+                    let mut g = null_mut();
+                    let s = asperity_slider_geometry_new_uniform(
+                        1.5e-6,
+                        rods as usize % 16 + 1,
+                        &nano,
+                        &mut g,
+                    );
+                    if let Some(g) = made(s, g, true, "slider_geometry_new_uniform") {
+                        ctx.geometries.push(g);
+                    }
+                    g
+                }
+            };
+            if !g.is_null() && geometry_rods(g) > MAX_SLIDER_RODS {
+                return;
+            }
+            let m = material.get();
+            let o = options.as_ref().map_or_else(
+                || {
+                    let mut o: AsperitySliderOptions = zeroed();
+                    assert!(ok(
+                        asperity_slider_options_default(&mut o),
+                        "slider_options_default"
+                    ));
+                    o
+                },
+                |o| o.get(),
+            );
+            // By default 256 samples at 0.1 µm: under up to 16 rods of 1.5 µm.
+            let (c, dx) = match counter {
+                Some((h, dx)) => (h.make(), dx.0),
+                None => (
+                    (0..256)
+                        .map(|j| 5e-8 * (0.3 * j as f64).sin() * (0.07 * j as f64).cos())
+                        .collect(),
+                    1e-7,
+                ),
+            };
+            let mut out = null_mut();
+            let s = asperity_slider_new(
+                g,
+                cp(&m, nulls.at(0)),
+                bufp(&c, nulls.at(1)),
+                c.len(),
+                dx,
+                cp(&o, nulls.at(2)),
+                mp(&mut out, nulls.at(3)),
+            );
+            if let Some(sl) = made(s, out, !nulls.at(3), "slider_new") {
+                keep_slider(ctx, sl);
+            }
+        }
+        Op::LugreNew { params, nulls } => {
+            let p = params.get();
+            let mut out = null_mut();
+            let s = asperity_dynamic_lugre_new(cp(&p, nulls.at(0)), mp(&mut out, nulls.at(1)));
+            if let Some(d) = made(s, out, !nulls.at(1), "dynamic_lugre_new") {
+                ctx.dynamics.push(Dynamic { model: d, pt: None });
+            }
+        }
+        Op::MaxwellNew {
+            elements,
+            sigma2,
+            nulls,
+        } => {
+            let (k, m) = elements.make();
+            let mut out = null_mut();
+            let s = asperity_dynamic_maxwell_slip_new(
+                bufp(&k, nulls.at(0)),
+                bufp(&m, nulls.at(1)),
+                k.len(),
+                sigma2.0,
+                mp(&mut out, nulls.at(2)),
+            );
+            if let Some(d) = made(s, out, !nulls.at(2), "dynamic_maxwell_slip_new") {
+                ctx.dynamics.push(Dynamic { model: d, pt: None });
+            }
+        }
+        Op::PtNew { params, null } => {
+            let p = params.get();
+            let mut out = null_mut();
+            let s = asperity_dynamic_prandtl_tomlinson_new(
+                p[0],
+                p[1],
+                p[2],
+                p[3],
+                p[4],
+                p[5],
+                mp(&mut out, *null),
+            );
+            if let Some(d) = made(s, out, !*null, "dynamic_prandtl_tomlinson_new") {
+                ctx.dynamics.push(Dynamic {
+                    model: d,
+                    pt: Some(p),
+                });
+            }
+        }
+        Op::DynStateSize { model, null } => {
+            let (d, _) = pick_dynamic(ctx, *model);
+            let mut n = 0usize;
+            if ok(
+                asperity_dynamic_friction_state_size(d, mp(&mut n, *null)),
+                "dynamic_friction_state_size",
+            ) && !*null
+            {
+                assert!(n >= 2, "dynamic_friction_state_size: {n} < 2");
+            }
+        }
+        Op::DynStep {
+            model,
+            inc,
+            tangents,
+            reserved,
+            state,
+            placement,
+            nulls,
+        } => {
+            let (d, pt) = pick_dynamic(ctx, *model);
+            let v = inc.get();
+            let i = DynamicIncrement {
+                normal_force: v[0],
+                slip: [v[1], v[2]],
+                dt: v[3],
+                tangents: tangents.0,
+                reserved: reserved.0,
+            };
+            let m = dynamic_state_len(d);
+            let old = make_state(&ctx.dynamic_state, state, m);
+            if let Some(p) = pt {
+                let integrations = if i.tangents & ASPERITY_DYNAMIC_TANGENT_SLIP != 0 {
+                    3.0
+                } else {
+                    1.0
+                };
+                let cost = integrations * pt_substeps(&p, &old, i.dt, &[i.slip[0]]);
+                if !ctx.affordable(cost) {
+                    return;
+                }
+            }
+            // One buffer: the old state at 0, the new one at `shift` (m:
+            // apart, 0: in place, in between: partially overlapping).
+            let shift = match placement {
+                Placement::InPlace => 0,
+                Placement::Overlap(k) if m > 1 => 1 + *k as usize % (m - 1),
+                _ => m,
+            };
+            let mut buf = old.clone();
+            buf.resize(shift + m, f64::from_bits(SENTINEL));
+            let before = buf.clone();
+            let mut out: DynamicResponse = zeroed();
+            std::ptr::write_bytes(&mut out as *mut DynamicResponse as *mut u8, 0xa5, 1);
+            let out_before = bytes_of(&out).to_vec();
+            let base = buf.as_mut_ptr();
+            let s = asperity_dynamic_friction_step(
+                d,
+                cp(&i, nulls.at(0)),
+                if nulls.at(1) { null() } else { base },
+                if nulls.at(2) {
+                    null_mut()
+                } else {
+                    base.add(shift)
+                },
+                mp(&mut out, nulls.at(3)),
+            );
+            if ok(s, "dynamic_friction_step") {
+                ctx.dynamic_state = buf[shift..shift + m].to_vec();
+                assert!(
+                    out.dissipated.is_nan() || out.dissipated >= 0.0,
+                    "dynamic_friction_step: OK with dissipated = {} < 0",
+                    out.dissipated
+                );
+            } else {
+                // Documented: on failure `new_state` and `*out` are untouched.
+                assert!(
+                    bits(&buf) == bits(&before),
+                    "dynamic_friction_step failed ({}) but wrote the state",
+                    last_message()
+                );
+                assert!(
+                    bytes_of(&out) == out_before.as_slice(),
+                    "dynamic_friction_step failed ({}) but wrote *out",
+                    last_message()
+                );
+            }
+        }
+        Op::DynBlock {
+            model,
+            n,
+            inc,
+            dt,
+            state,
+            nulls,
+        } => {
+            let (d, pt) = pick_dynamic(ctx, *model);
+            let dt = dt.map_or(1e-3, |f| f.0);
+            let n = *n as usize % 9;
+            let m = dynamic_state_len(d);
+            let val = |i: usize, d: f64| inc.get(i).map_or(d, |f| f.0);
+            let normal: Vec<f64> = (0..n).map(|i| val(3 * i, 1.0)).collect();
+            let slip: Vec<f64> = (0..2 * n)
+                .map(|i| val(3 * (i / 2) + 1 + i % 2, 1e-6))
+                .collect();
+            let one = make_state(&ctx.dynamic_state, state, m);
+            if let Some(p) = pt {
+                let ds: Vec<f64> = slip.iter().step_by(2).copied().collect();
+                if !ctx.affordable(pt_substeps(&p, &one, dt, &ds)) {
+                    return;
+                }
+            }
+            let mut states: Vec<f64> = (0..n).flat_map(|_| one.iter().copied()).collect();
+            let mut force = vec![0.0; 2 * n];
+            let mut diss = vec![0.0; n];
+            let s = asperity_dynamic_friction_step_block(
+                d,
+                n,
+                bufp(&normal, nulls.at(0)),
+                bufp(&slip, nulls.at(1)),
+                dt,
+                bufm(&mut states, nulls.at(2)),
+                bufm(&mut force, nulls.at(3)),
+                bufm(&mut diss, nulls.at(4)),
+            );
+            if ok(s, "dynamic_friction_step_block") && n > 0 {
+                ctx.dynamic_state = states[(n - 1) * m..].to_vec();
+            }
+        }
+        Op::DynFree { model } => {
+            if ctx.dynamics.is_empty() {
+                asperity_dynamic_friction_free(null_mut());
+            } else {
+                let i = *model as usize % ctx.dynamics.len();
+                asperity_dynamic_friction_free(ctx.dynamics.swap_remove(i).model);
+            }
+        }
     }
+}
+
+/// Most rods (over all levels) of a geometry that `asperity_slider_new` is
+/// given: the dense rod solver is cubic in the rod count.
+const MAX_SLIDER_RODS: usize = 256;
+
+/// Most rods × nano-asperities per rod of a slider the harness steps: a step
+/// visits every nano-asperity column of every rod (the library allows 2^24
+/// per rod, `MAX_NANO_PER_ROD`).
+const MAX_SLIDER_NANO: usize = 1 << 22;
+
+/// Keep `slider` for the steps, or free it at once when its steps would
+/// cost more than [`MAX_SLIDER_NANO`] (a harness cost bound).
+unsafe fn keep_slider(ctx: &mut Ctx, slider: *mut AsperitySlider) {
+    let mut info: AsperitySliderInfo = zeroed();
+    assert!(ok(asperity_slider_info(slider, &mut info), "slider_info"));
+    if info.rods.saturating_mul(info.nano_per_rod) > MAX_SLIDER_NANO {
+        asperity_slider_free(slider);
+    } else {
+        ctx.sliders.push(slider);
+    }
+}
+
+/// The rods of every level of `g`.
+unsafe fn geometry_rods(g: *const AsperitySliderGeometry) -> usize {
+    let mut levels = 0usize;
+    if asperity_slider_geometry_level_count(g, &mut levels) != ASPERITY_OK {
+        return usize::MAX;
+    }
+    (0..levels)
+        .map(|l| {
+            let mut c = 0usize;
+            if asperity_slider_geometry_rod_count(g, l, &mut c) == ASPERITY_OK {
+                c
+            } else {
+                usize::MAX
+            }
+        })
+        .fold(0usize, usize::saturating_add)
+}
+
+/// A NaN with a payload no computation produces: marks untouched doubles.
+const SENTINEL: u64 = 0x7ff8_dead_beef_0001;
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+fn bytes_of<T>(x: &T) -> &[u8] {
+    // SAFETY: the library's repr(C) response structs, all f64/i32 fields
+    // without padding, fully initialised.
+    unsafe { std::slice::from_raw_parts(x as *const T as *const u8, core::mem::size_of::<T>()) }
+}
+
+/// The dynamic model `sel` (NULL for 255 or none) and its
+/// Prandtl–Tomlinson parameters.
+fn pick_dynamic(ctx: &Ctx, sel: u8) -> (*mut AsperityDynamicFriction, Option<[f64; 6]>) {
+    if sel == 255 || ctx.dynamics.is_empty() {
+        (null_mut(), None)
+    } else {
+        let d = &ctx.dynamics[sel as usize % ctx.dynamics.len()];
+        (d.model, d.pt)
+    }
+}
+
+/// The state size of `model`, or 4 for NULL (the call then fails).
+unsafe fn dynamic_state_len(model: *const AsperityDynamicFriction) -> usize {
+    let mut m = 0usize;
+    if model.is_null() || asperity_dynamic_friction_state_size(model, &mut m) != ASPERITY_OK {
+        4
+    } else {
+        m
+    }
+}
+
+/// Sub-steps the Prandtl–Tomlinson integrations of the increments `dt`,
+/// `ds[i]` from `state` are expected to take: about 20 per time scale of
+/// the tip (its spring, lattice and damping rates, and the time to cross a
+/// lattice period at the speeds the state, the lattice and the support
+/// give it), more for tight tolerances. 0 when the library rejects the
+/// arguments before integrating; +inf when they overflow.
+fn pt_substeps(p: &[f64; 6], state: &[f64], dt: f64, ds: &[f64]) -> f64 {
+    let [u0, a, k, m, g, tol] = *p;
+    let finite = dt.is_finite()
+        && dt >= 0.0
+        && ds.iter().all(|x| x.is_finite())
+        && state.iter().all(|x| x.is_finite());
+    if !finite || dt == 0.0 {
+        return 0.0;
+    }
+    let tau = std::f64::consts::TAU;
+    let w = (k / m).sqrt();
+    let wl = tau * (u0 / m).sqrt() / a;
+    let (rel, v) = (
+        state
+            .get(ASPERITY_DYNAMIC_STATE_MODEL)
+            .map_or(0.0, |x| x.abs()),
+        state
+            .get(ASPERITY_DYNAMIC_STATE_MODEL + 1)
+            .map_or(0.0, |x| x.abs()),
+    );
+    let tol_factor = (1e-9 / tol).powf(0.2).max(1.0);
+    ds.iter()
+        .map(|s| {
+            let speed = v + w * rel + 2.0 * (u0 / m).sqrt() + s.abs() / dt;
+            let rate = w.max(wl).max(g / m) + tau * speed / a;
+            let n = 20.0 * dt * rate * tol_factor;
+            if n.is_nan() {
+                f64::INFINITY
+            } else {
+                n
+            }
+        })
+        .sum()
 }
 
 /// The state size of `slider`, or 8 for NULL (the call then fails).
@@ -2594,14 +3353,20 @@ unsafe fn slider_state_len(slider: *const AsperitySlider) -> usize {
 }
 
 fn make_slider_state(ctx: &Ctx, state: &SliderState, m: usize) -> Vec<f64> {
+    make_state(&ctx.slider_state, state, m)
+}
+
+/// A state of `m` doubles: zero, the carried one `carried` (when of that
+/// length), raw values, or the carried one with one value replaced.
+fn make_state(carried: &[f64], state: &SliderState, m: usize) -> Vec<f64> {
     match state {
         SliderState::Zero => vec![0.0; m],
-        SliderState::Carried if ctx.slider_state.len() == m => ctx.slider_state.clone(),
+        SliderState::Carried if carried.len() == m => carried.to_vec(),
         SliderState::Carried => vec![0.0; m],
         SliderState::Raw(v) => (0..m).map(|i| v.get(i).map_or(0.0, |f| f.0)).collect(),
         SliderState::Poked { at, value } => {
-            let mut s = if ctx.slider_state.len() == m {
-                ctx.slider_state.clone()
+            let mut s = if carried.len() == m {
+                carried.to_vec()
             } else {
                 vec![0.0; m]
             };
@@ -2619,8 +3384,7 @@ const MAX_OPS: usize = 48;
 pub fn run(data: &[u8]) {
     let mut u = Unstructured::new(data);
     let mut ctx = Ctx::default();
-    // Triage: ASPERITY_FUZZ_DEBUG=1 prints each call before it is made.
-    let debug = std::env::var_os("ASPERITY_FUZZ_DEBUG").is_some();
+    let debug = debug();
     for _ in 0..MAX_OPS {
         if u.is_empty() {
             break;

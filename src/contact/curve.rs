@@ -324,11 +324,16 @@ impl EquilibriumCurve {
     /// the Hertz tail `P̄ = Δ̄^{3/2}`, `Ā = Δ̄^{1/2}` with a fitted correction,
     /// checked on exact points up to `Δ̄ ≈ 10¹⁵`.
     ///
-    /// `tolerance` (relative, in (0, 0.1]) steers the density: neighbouring
-    /// points interpolate each other to `tolerance/8`.
+    /// `tolerance` (relative, in [1e-10, 0.1], as for the tables) steers the
+    /// density: neighbouring points interpolate each other to `tolerance/8`.
+    /// Errors: `tolerance` out of range, or not reached within
+    /// [`MAX_CURVE_POINTS`] points (naming `tolerance`).
     pub fn from_maugis_dugdale(md: &MaugisDugdale, tolerance: f64) -> Result<Self> {
+        // Below 1e-10 the interpolation test meets f64 rounding: the
+        // bisection then refines towards its depth limit (10^7 points in a
+        // second at 3e-12, no end at 1e-12) or yields a non-monotone curve.
         let tol =
-            crate::error::check::in_range("tolerance", tolerance, 1e-12, 0.1, "in [1e-12, 0.1]")?;
+            crate::error::check::in_range("tolerance", tolerance, 1e-10, 0.1, "in [1e-10, 0.1]")?;
         let lam = md.lambda();
         let off = 2.0 / (PI * lam);
         let b = 8.0 * lam / (3.0 * PI);
@@ -595,6 +600,12 @@ struct Crit {
     floors: [f64; 3],
 }
 
+/// Most points an adaptively sampled Maugis–Dugdale curve may have: 2²⁰
+/// (56 MiB). A tolerance the interpolation test cannot meet in f64 for
+/// extreme parameters (λ ~ 10³ at 1e-10 needs ~10⁴ points) is an error
+/// naming `tolerance` instead of a bisection to 2⁴⁰ points per interval.
+pub const MAX_CURVE_POINTS: usize = 1 << 20;
+
 fn hermite(y0: f64, m0: f64, y1: f64, m1: f64, h: f64, t: f64) -> f64 {
     let t2 = t * t;
     let t3 = t2 * t;
@@ -687,6 +698,13 @@ fn bisect(
     c: &Crit,
     depth: u32,
 ) -> Result<()> {
+    if out.len() >= MAX_CURVE_POINTS {
+        return Err(bad(
+            "tolerance",
+            8.0 * c.tol,
+            "reachable within MAX_CURVE_POINTS = 2^20 curve points (f64 rounding limits the tolerance for these parameters; use a larger one)",
+        ));
+    }
     let tm = 0.5 * (ta + tb);
     let pm = f(tm)?;
     if depth >= 40 || interpolates(pa, pb, &pm, tb - ta, c) {

@@ -32,8 +32,8 @@ pub struct AsperityNanoAsperities {
     pub w_chem: f64,
     /// Distance between nano-asperities (m), >= w_vdW (6-3).
     pub spacing: f64,
-    /// Nano-asperities on one square tip of the finest rods, >= 1, with
-    /// per_rod * spacing^2 <= (rod width)^2.
+    /// Nano-asperities on one square tip of the finest rods, >= 1 and
+    /// <= 2^24, with per_rod * spacing^2 <= (rod width)^2.
     pub per_rod: usize,
 }
 
@@ -87,7 +87,8 @@ fn level(g: &SliderGeometry, level: usize) -> Result<&RodLevel> {
 /// `*out` (NULL on failure). Errors: NULL pointers, fewer than 8 heights,
 /// non-finite values, widths that are not positive, wider than the micro
 /// profile or do not nest, constant profiles, finest rods narrower than the
-/// nano-asperity spacing.
+/// nano-asperity spacing or wider than 4096 spacings (more than 2^24
+/// nano-asperities per rod).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_slider_geometry_new(
     micro_heights: *const f64,

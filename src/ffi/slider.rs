@@ -370,7 +370,9 @@ pub unsafe extern "C" fn asperity_friction_material_copper(out: *mut FrictionMat
 /// counter height; a counter-surface too short to lie under the slider
 /// (unless periodic); unknown selectors (`control`, `mechanisms`,
 /// `cof_form`, `plastic`, `solver`, `periodic`); the loading, `depth`,
-/// `root_margin` and `plastic_width` bounds of `AsperitySliderOptions`.
+/// `root_margin` and `plastic_width` bounds of `AsperitySliderOptions`;
+/// more than 2^24 nano-asperities per rod, floor(width/spacing) *
+/// floor(depth/spacing) (`spacing`, or `options.depth`).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_slider_new(
     geometry: *const AsperitySliderGeometry,

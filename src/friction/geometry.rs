@@ -90,6 +90,13 @@ const COUNT_SLACK: f64 = 1e-9;
 /// allocation the process cannot survive.
 pub const MAX_RODS: usize = 1 << 24;
 
+/// Most nano-asperities one rod may carry: 2²⁴ (a 4096 × 4096 square tip).
+/// A nano-asperity spacing far below the rod width (a subnormal spacing, or
+/// an AFM profile sampled at 10⁻²⁰ m) would otherwise give a count that
+/// overflows `usize` and a friction step that loops over ~10¹⁹ columns per
+/// rod; it is an error naming the argument instead.
+pub const MAX_NANO_PER_ROD: usize = 1 << 24;
+
 /// `count` rods, or an error naming `name` when it exceeds [`MAX_RODS`].
 fn check_rod_count(name: &'static str, count: f64) -> Result<usize> {
     if count > MAX_RODS as f64 {
@@ -468,7 +475,9 @@ fn nano_named(heights: &[f64], dx: f64, names: Names) -> Result<NanoAnalysis> {
 /// hand calculation has 100 on a 13.5 µm tip, i.e. 10 × 10 at 1.35 µm).
 ///
 /// Errors: arguments not finite and > 0; a tip narrower than one spacing
-/// ([`Error::OutOfDomain`]: it would carry no whole nano-asperity).
+/// ([`Error::OutOfDomain`]: it would carry no whole nano-asperity); a tip
+/// so much wider than the spacing that n² > [`MAX_NANO_PER_ROD`]
+/// ([`Error::OutOfDomain`], `tip_width`).
 pub fn nano_per_rod(tip_width: f64, spacing: f64) -> Result<usize> {
     check::positive("tip_width", tip_width)?;
     check::positive("spacing", spacing)?;
@@ -478,6 +487,13 @@ pub fn nano_per_rod(tip_width: f64, spacing: f64) -> Result<usize> {
             name: "tip_width",
             value: tip_width,
             reason: "narrower than the nano-asperity spacing (6-3): a rod tip would carry no whole nano-asperity; choose wider rods",
+        });
+    }
+    if n * n > MAX_NANO_PER_ROD as f64 {
+        return Err(Error::OutOfDomain {
+            name: "tip_width",
+            value: tip_width,
+            reason: "more than 4096 nano-asperity spacings wide: (tip_width/spacing)^2 > MAX_NANO_PER_ROD = 2^24 nano-asperities per rod (is the nano profile's spacing far too small?)",
         });
     }
     let n = n as usize;
@@ -835,9 +851,9 @@ impl SliderGeometry {
     /// Errors: no levels (`levels.len()`); levels that do not nest (each
     /// width the previous divided by an integer m ≥ 2, m times as many rods,
     /// the same origin; named `levels`); invalid `nano`
-    /// ([`NanoAsperities::validate`]); `nano_per_rod` = 0, or more cells of
-    /// side `spacing` than fit on the finest rod's square tip,
-    /// nano_per_rod·λ² > w² (`nano_per_rod`).
+    /// ([`NanoAsperities::validate`]); `nano_per_rod` = 0, above
+    /// [`MAX_NANO_PER_ROD`], or more cells of side `spacing` than fit on the
+    /// finest rod's square tip, nano_per_rod·λ² > w² (`nano_per_rod`).
     pub fn new(levels: Vec<RodLevel>, nano: NanoAsperities, nano_per_rod: usize) -> Result<Self> {
         if levels.is_empty() {
             return Err(Error::InvalidArgument {
@@ -861,11 +877,14 @@ impl SliderGeometry {
         nano.validate()?;
         let tip = levels.last().expect("non-empty").width;
         let cells = nano_per_rod as f64 * nano.spacing * nano.spacing;
-        if nano_per_rod == 0 || cells > tip * tip * (1.0 + COUNT_SLACK) {
+        if nano_per_rod == 0
+            || nano_per_rod > MAX_NANO_PER_ROD
+            || cells > tip * tip * (1.0 + COUNT_SLACK)
+        {
             return Err(Error::InvalidArgument {
                 name: "nano_per_rod",
                 value: nano_per_rod as f64,
-                bound: ">= 1 and nano_per_rod * spacing^2 <= (finest rod width)^2",
+                bound: ">= 1, <= MAX_NANO_PER_ROD = 2^24 and nano_per_rod * spacing^2 <= (finest rod width)^2",
             });
         }
         Ok(Self {

@@ -50,7 +50,7 @@ pub mod slider;
 
 pub use geometry::{
     asperity_statistics, nano_analysis, nano_per_rod, rod_heights, rod_levels, AsperityStatistics,
-    NanoAnalysis, NanoAsperities, RodLevel, SliderGeometry, MAX_RODS,
+    NanoAnalysis, NanoAsperities, RodLevel, SliderGeometry, MAX_NANO_PER_ROD, MAX_RODS,
 };
 pub use homogenised::{
     FrictionIncrement, FrictionPointState, FrictionRegime, FrictionResponse, HomogenisedFriction,

@@ -122,7 +122,7 @@
 // Rod arrays (counter heights, overlaps, yield flags) are indexed in lockstep.
 #![allow(clippy::needless_range_loop)]
 
-use super::geometry::SliderGeometry;
+use super::geometry::{SliderGeometry, MAX_NANO_PER_ROD};
 use super::homogenised::{FrictionRegime, HomogenisedFriction, HomogenisedSample};
 use super::ledger::{coefficient_of_friction, ledger_step, CofForm, Dissipation, Mechanisms};
 use super::mechanisms::{FrictionMaterial, NanoAsperityBonds};
@@ -364,7 +364,10 @@ impl Slider {
     /// or (with [`TrackEnd::Error`]) too short to lie under the whole slider
     /// at position 0; a non-finite `counter`; the material ([`FrictionMaterial::validate`]);
     /// `depth` or `root_margin` not finite and > 0 (≥ 0 for the margin);
-    /// `depth` narrower than the nano-asperity spacing; a fixed-gap
+    /// `depth` narrower than the nano-asperity spacing; more than
+    /// [`MAX_NANO_PER_ROD`](super::geometry::MAX_NANO_PER_ROD)
+    /// nano-asperities per rod, ⌊w/λ⌋·⌊D/λ⌋ (`depth` when the depth makes
+    /// the excess, `spacing` otherwise); a fixed-gap
     /// `position` not finite; a fixed `load` not finite, negative or above
     /// the bed's capacity ([`Error::OutOfDomain`]); a Gaussian plastic
     /// `width` not finite and > 0.
@@ -399,16 +402,32 @@ impl Slider {
             Some(m) => check::non_negative("root_margin", m)?,
         };
         let spacing = geometry.nano().spacing;
-        let columns = (w / spacing * (1.0 + COUNT_SLACK)).floor() as usize;
-        let rows = (depth / spacing * (1.0 + COUNT_SLACK)).floor() as usize;
-        if rows == 0 {
+        // Counted in f64: a spacing far below the width or depth would
+        // saturate a usize cast and overflow m_x·m_y.
+        let columns = (w / spacing * (1.0 + COUNT_SLACK)).floor().max(1.0);
+        let rows = (depth / spacing * (1.0 + COUNT_SLACK)).floor();
+        if rows < 1.0 {
             return Err(invalid(
                 "depth",
                 depth,
                 ">= the nano-asperity spacing (a rod must carry a nano-asperity)",
             ));
         }
-        let columns = columns.max(1);
+        if columns * rows > MAX_NANO_PER_ROD as f64 {
+            // The depth when a square tip would be within the bound.
+            let square = columns * columns <= MAX_NANO_PER_ROD as f64;
+            let (name, value) = if options.depth.is_some() && square {
+                ("depth", depth)
+            } else {
+                ("spacing", spacing)
+            };
+            return Err(invalid(
+                name,
+                value,
+                "at most MAX_NANO_PER_ROD = 2^24 nano-asperities per rod, floor(width/spacing) * floor(depth/spacing) (a nano-asperity spacing far below the rod width or depth)",
+            ));
+        }
+        let (columns, rows) = (columns as usize, rows as usize);
         let heights = tips.heights().to_vec();
         let deepest = heights.iter().copied().fold(f64::INFINITY, f64::min);
         let root_depth = (-deepest).max(0.0) + margin;
