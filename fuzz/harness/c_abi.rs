@@ -950,6 +950,38 @@ impl PtSpec {
     }
 }
 
+/// Nine parameters of a struct-built model (two-spring Prandtl–Tomlinson,
+/// Burridge–Knopoff): the valid set given, that set with one value
+/// replaced, or raw values.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum NineSpec {
+    Valid,
+    Poked { at: u8, value: F },
+    Raw([F; 9]),
+}
+
+impl NineSpec {
+    fn get(&self, valid: [f64; 9]) -> [f64; 9] {
+        match self {
+            NineSpec::Valid => valid,
+            NineSpec::Poked { at, value } => {
+                let mut v = valid;
+                v[*at as usize % 9] = value.0;
+                v
+            }
+            NineSpec::Raw(r) => fs(*r),
+        }
+    }
+}
+
+/// Which integrated model [`Op::PtNew`] builds.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum Integrated {
+    OneSpring,
+    TwoSpring { params: NineSpec, null: bool },
+    Chain { params: NineSpec, null: bool },
+}
+
 /// The geometry of `asperity_slider_new`: one the input made, or a uniform
 /// one made here (`rods` % 16 + 1 rods of 1.5 µm with the chapter-6
 /// nano-asperities, one value replaced when `poke` is given).
@@ -1405,14 +1437,22 @@ pub enum Op {
         params: LugreSpec,
         nulls: Nulls,
     },
+    /// Maxwell-slip elements, or bristles (the second array as break
+    /// deflections, m) when `bristles`.
     MaxwellNew {
         elements: MaxwellSpec,
         sigma2: F,
         nulls: Nulls,
+        bristles: bool,
     },
+    /// An integrated model: one-spring Prandtl–Tomlinson (`params`), or
+    /// the struct-built two-spring model or Burridge–Knopoff chain. (New
+    /// models extend these payloads rather than `Op`: a new variant would
+    /// change how every committed input decodes.)
     PtNew {
         params: PtSpec,
         null: bool,
+        variant: Integrated,
     },
     DynStateSize {
         model: u8,
@@ -1447,6 +1487,10 @@ struct Dynamic {
     /// Prandtl–Tomlinson: its parameters (U0, a, k, m, gamma, tolerance),
     /// for [`pt_substeps`]; `None` for the other models (cheap steps).
     pt: Option<[f64; 6]>,
+    /// The two-spring Prandtl–Tomlinson model and the Burridge–Knopoff
+    /// chain: integrated, without a cost estimate here, so stepped once
+    /// per input (the library bounds each integration).
+    heavy: bool,
 }
 
 /// The handles and carried states of one input; all freed on drop.
@@ -3048,28 +3092,93 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
             let mut out = null_mut();
             let s = asperity_dynamic_lugre_new(cp(&p, nulls.at(0)), mp(&mut out, nulls.at(1)));
             if let Some(d) = made(s, out, !nulls.at(1), "dynamic_lugre_new") {
-                ctx.dynamics.push(Dynamic { model: d, pt: None });
+                ctx.dynamics.push(Dynamic {
+                    model: d,
+                    pt: None,
+                    heavy: false,
+                });
             }
         }
         Op::MaxwellNew {
             elements,
             sigma2,
             nulls,
+            bristles,
         } => {
             let (k, m) = elements.make();
             let mut out = null_mut();
-            let s = asperity_dynamic_maxwell_slip_new(
-                bufp(&k, nulls.at(0)),
-                bufp(&m, nulls.at(1)),
-                k.len(),
-                sigma2.0,
-                mp(&mut out, nulls.at(2)),
-            );
+            let (k, m, n) = (bufp(&k, nulls.at(0)), bufp(&m, nulls.at(1)), k.len());
+            let s = if *bristles {
+                asperity_dynamic_bristles_new(k, m, n, sigma2.0, mp(&mut out, nulls.at(2)))
+            } else {
+                asperity_dynamic_maxwell_slip_new(k, m, n, sigma2.0, mp(&mut out, nulls.at(2)))
+            };
             if let Some(d) = made(s, out, !nulls.at(2), "dynamic_maxwell_slip_new") {
-                ctx.dynamics.push(Dynamic { model: d, pt: None });
+                ctx.dynamics.push(Dynamic {
+                    model: d,
+                    pt: None,
+                    heavy: false,
+                });
             }
         }
-        Op::PtNew { params, null } => {
+        Op::PtNew {
+            variant: Integrated::TwoSpring { params, null: np },
+            null,
+            ..
+        } => {
+            let v = params.get([2e-21, 3e-10, 2.0, 1e-12, 1e-6, 2.0, 1e-12, 1e-6, 1e-9]);
+            let p = AsperityPrandtlTomlinsonTwoSpringParams {
+                amplitude: v[0],
+                period: v[1],
+                tip_stiffness: v[2],
+                tip_mass: v[3],
+                tip_damping: v[4],
+                cantilever_stiffness: v[5],
+                cantilever_mass: v[6],
+                cantilever_damping: v[7],
+                tolerance: v[8],
+            };
+            let mut out = null_mut();
+            let s =
+                asperity_dynamic_prandtl_tomlinson_two_spring_new(cp(&p, *np), mp(&mut out, *null));
+            if let Some(d) = made(s, out, !*null, "dynamic_prandtl_tomlinson_two_spring_new") {
+                ctx.dynamics.push(Dynamic {
+                    model: d,
+                    pt: None,
+                    heavy: true,
+                });
+            }
+        }
+        Op::PtNew {
+            variant: Integrated::Chain { params, null: np },
+            null,
+            ..
+        } => {
+            let v = params.get([4.0, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-9]);
+            // A raw block count: the saturating cast keeps huge and
+            // non-finite values huge or 0 (refused by the library).
+            let p = AsperityBurridgeKnopoffParams {
+                blocks: v[0] as usize,
+                mass: v[1],
+                coupling_stiffness: v[2],
+                pulling_stiffness: v[3],
+                mu_static: v[4],
+                mu_kinetic: v[5],
+                weakening_velocity: v[6],
+                damping: v[7],
+                tolerance: v[8],
+            };
+            let mut out = null_mut();
+            let s = asperity_dynamic_burridge_knopoff_new(cp(&p, *np), mp(&mut out, *null));
+            if let Some(d) = made(s, out, !*null, "dynamic_burridge_knopoff_new") {
+                ctx.dynamics.push(Dynamic {
+                    model: d,
+                    pt: None,
+                    heavy: true,
+                });
+            }
+        }
+        Op::PtNew { params, null, .. } => {
             let p = params.get();
             let mut out = null_mut();
             let s = asperity_dynamic_prandtl_tomlinson_new(
@@ -3085,11 +3194,12 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 ctx.dynamics.push(Dynamic {
                     model: d,
                     pt: Some(p),
+                    heavy: false,
                 });
             }
         }
         Op::DynStateSize { model, null } => {
-            let (d, _) = pick_dynamic(ctx, *model);
+            let (d, _, _) = pick_dynamic(ctx, *model);
             let mut n = 0usize;
             if ok(
                 asperity_dynamic_friction_state_size(d, mp(&mut n, *null)),
@@ -3108,7 +3218,10 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
             placement,
             nulls,
         } => {
-            let (d, pt) = pick_dynamic(ctx, *model);
+            let (d, pt, heavy) = pick_dynamic(ctx, *model);
+            if heavy && !ctx.affordable(f64::INFINITY) {
+                return;
+            }
             let v = inc.get();
             let i = DynamicIncrement {
                 normal_force: v[0],
@@ -3184,7 +3297,10 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
             state,
             nulls,
         } => {
-            let (d, pt) = pick_dynamic(ctx, *model);
+            let (d, pt, heavy) = pick_dynamic(ctx, *model);
+            if heavy && !ctx.affordable(f64::INFINITY) {
+                return;
+            }
             let dt = dt.map_or(1e-3, |f| f.0);
             let n = *n as usize % 9;
             let m = dynamic_state_len(d);
@@ -3282,12 +3398,12 @@ fn bytes_of<T>(x: &T) -> &[u8] {
 
 /// The dynamic model `sel` (NULL for 255 or none) and its
 /// Prandtl–Tomlinson parameters.
-fn pick_dynamic(ctx: &Ctx, sel: u8) -> (*mut AsperityDynamicFriction, Option<[f64; 6]>) {
+fn pick_dynamic(ctx: &Ctx, sel: u8) -> (*mut AsperityDynamicFriction, Option<[f64; 6]>, bool) {
     if sel == 255 || ctx.dynamics.is_empty() {
-        (null_mut(), None)
+        (null_mut(), None, false)
     } else {
         let d = &ctx.dynamics[sel as usize % ctx.dynamics.len()];
-        (d.model, d.pt)
+        (d.model, d.pt, d.heavy)
     }
 }
 
