@@ -712,8 +712,8 @@ impl Scene {
             ));
         }
         let per_side = (tip / nano.spacing * (1.0 + 1e-9)).floor().max(1.0) as usize;
-        let geometry =
-            SliderGeometry::new(levels, nano, per_side * per_side).map_err(at("rods"))?;
+        let geometry = SliderGeometry::new(levels, nano, per_side.saturating_mul(per_side))
+            .map_err(at("rods"))?;
         let mut options = SliderOptions::new(Loading::FixedLoad { load: 0.0 });
         options.depth = self.rods.depth;
         options.root_margin = self.rods.root_margin;

@@ -626,3 +626,19 @@ fn bristles_in_a_scene_build_the_constructors_model() {
         ("friction_models[0].bristles".into(), "break_deflection")
     );
 }
+
+/// A nano-asperity spacing 10¹⁰ times below the tip width: (w/λ)² overflows
+/// usize. The scene is refused with the count named, not a panic (debug)
+/// or a wrapped count (release).
+#[test]
+fn a_nano_spacing_far_below_the_tip_width_is_an_error() {
+    let text = example_text()
+        .replace("\"spacing\": 1.35e-6", "\"spacing\": 1e-16")
+        .replace("\"w_vdw\": 4.3e-7", "\"w_vdw\": 1e-17")
+        .replace("\"w_chem\": 1.61e-7", "\"w_chem\": 1e-17");
+    let err = parse(&text)
+        .and_then(|s| s.build().map(|_| ()))
+        .unwrap_err();
+    let msg = err.to_string();
+    assert!(msg.contains("nano_per_rod"), "{msg}");
+}
