@@ -3113,7 +3113,12 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
             } else {
                 asperity_dynamic_maxwell_slip_new(k, m, n, sigma2.0, mp(&mut out, nulls.at(2)))
             };
-            if let Some(d) = made(s, out, !nulls.at(2), "dynamic_maxwell_slip_new") {
+            let what = if *bristles {
+                "dynamic_bristles_new"
+            } else {
+                "dynamic_maxwell_slip_new"
+            };
+            if let Some(d) = made(s, out, !nulls.at(2), what) {
                 ctx.dynamics.push(Dynamic {
                     model: d,
                     pt: None,
