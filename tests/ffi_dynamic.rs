@@ -219,6 +219,34 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
     }
 }
 
+/// Steps `h` through C, in place, and `rust` along `incs` from fresh
+/// states: every response and state equal bit for bit (compared through
+/// `Debug`, so -0.0 and NaN count). Returns the state size.
+fn in_place_equals_rust(
+    h: *mut AsperityDynamicFriction,
+    rust: &dyn DynamicFriction,
+    incs: impl Iterator<Item = DynamicIncrement>,
+) -> usize {
+    let mut n = 0usize;
+    assert_eq!(
+        unsafe { asperity_dynamic_friction_state_size(h, &mut n) },
+        ASPERITY_OK
+    );
+    assert_eq!(n, rust.state_len());
+    let (mut c, mut r) = (vec![0.0; n], vec![0.0; n]);
+    for (k, inc) in incs.enumerate() {
+        let mut out = DynamicResponse::default();
+        let st = unsafe {
+            asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), &mut out)
+        };
+        assert_eq!(st, ASPERITY_OK, "increment {k}: {}", last_message());
+        let want = rust.step_in_place(&mut r, &inc).unwrap();
+        assert_eq!(format!("{out:?}"), format!("{want:?}"), "increment {k}");
+        assert_eq!(c, r, "increment {k}");
+    }
+    n
+}
+
 #[test]
 fn prandtl_tomlinson_through_c_equals_rust() {
     use asperity::friction::dynamic::PrandtlTomlinson;
@@ -229,30 +257,15 @@ fn prandtl_tomlinson_through_c_equals_rust() {
         ASPERITY_OK
     );
     let rust = PrandtlTomlinson::new(u0, a, k, m, g, 1e-9).unwrap();
-    let mut n = 0usize;
-    assert_eq!(
-        unsafe { asperity_dynamic_friction_state_size(h, &mut n) },
-        ASPERITY_OK
-    );
-    assert_eq!(n, 5);
-    let (mut c, mut r) = (vec![0.0; n], vec![0.0; n]);
-    for k in 0..50 {
-        let inc = DynamicIncrement {
-            normal_force: 1.0,
-            slip: [1e-11 * (1.0 + (0.3 * k as f64).sin()), 0.0],
-            dt: 1e-6,
-            tangents: k % 4,
-            reserved: 0,
-        };
-        let mut out = DynamicResponse::default();
-        let st = unsafe {
-            asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), &mut out)
-        };
-        assert_eq!(st, ASPERITY_OK, "{}", last_message());
-        let want = rust.step_in_place(&mut r, &inc).unwrap();
-        assert_eq!(format!("{out:?}"), format!("{want:?}"));
-        assert_eq!(c, r);
-    }
+    let incs = (0..50).map(|k| DynamicIncrement {
+        normal_force: 1.0,
+        slip: [1e-11 * (1.0 + (0.3 * k as f64).sin()), 0.0],
+        dt: 1e-6,
+        tangents: k % 4,
+        reserved: 0,
+    });
+    assert_eq!(in_place_equals_rust(h, &rust, incs), 5);
+    let mut c = vec![0.0; 5];
     let mut out = DynamicResponse::default();
     let bad = DynamicIncrement {
         normal_force: 1.0,
@@ -316,30 +329,14 @@ fn two_spring_and_burridge_knopoff_through_c_equal_rust() {
     let cases: [(_, &dyn DynamicFriction, usize, f64); 2] =
         [(ht, &rust_t, 7, 1e-11), (hb, &rust_b, 15, 2e-5)];
     for (h, rust, len, scale) in cases {
-        let mut n = 0usize;
-        assert_eq!(
-            unsafe { asperity_dynamic_friction_state_size(h, &mut n) },
-            ASPERITY_OK
-        );
-        assert_eq!((n, rust.state_len()), (len, len));
-        let (mut c, mut r) = (vec![0.0; n], vec![0.0; n]);
-        for k in 0..40 {
-            let inc = DynamicIncrement {
-                normal_force: 6.0,
-                slip: [scale * (1.0 + (0.3 * k as f64).sin()), 0.0],
-                dt: 1e-6,
-                tangents: k % 4,
-                reserved: 0,
-            };
-            let mut out = DynamicResponse::default();
-            let st = unsafe {
-                asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), &mut out)
-            };
-            assert_eq!(st, ASPERITY_OK, "{}", last_message());
-            let want = rust.step_in_place(&mut r, &inc).unwrap();
-            assert_eq!(format!("{out:?}"), format!("{want:?}"));
-            assert_eq!(c, r);
-        }
+        let incs = (0..40).map(|k| DynamicIncrement {
+            normal_force: 6.0,
+            slip: [scale * (1.0 + (0.3 * k as f64).sin()), 0.0],
+            dt: 1e-6,
+            tangents: k % 4,
+            reserved: 0,
+        });
+        assert_eq!(in_place_equals_rust(h, rust, incs), len);
         unsafe { asperity_dynamic_friction_free(h) };
     }
     // Errors name the field of the parameters, the handle is NULL.
@@ -417,7 +414,7 @@ fn two_spring_and_burridge_knopoff_through_c_equal_rust() {
 /// mismatch is impossible through C (one `n`), a bad value is named.
 #[test]
 fn bristles_from_c_equal_rust() {
-    use asperity::friction::dynamic::{Bristles, DynamicFriction, DynamicIncrement};
+    use asperity::friction::dynamic::Bristles;
     let (k, d) = ([1e5, 2e5, 5e4], [1e-6, 2.5e-6, 4e-6]);
     let mut h = null_mut();
     assert_eq!(
@@ -425,30 +422,14 @@ fn bristles_from_c_equal_rust() {
         ASPERITY_OK
     );
     let rust = Bristles::new(&k, &d, 0.1).unwrap();
-    let mut size = 0usize;
-    assert_eq!(
-        unsafe { asperity_dynamic_friction_state_size(h, &mut size) },
-        ASPERITY_OK
-    );
-    assert_eq!(size, rust.state_len());
-    let (mut sc, mut sr) = (vec![0.0; size], vec![0.0; size]);
-    for i in 0..200 {
-        let inc = DynamicIncrement {
-            normal_force: 1.0 + 0.01 * i as f64,
-            slip: [1e-7 * ((i as f64) * 0.3).sin(), 0.0],
-            dt: 1e-3,
-            tangents: 3,
-            ..Default::default()
-        };
-        let mut rc = DynamicResponse::default();
-        let st = unsafe {
-            asperity_dynamic_friction_step(h, &inc, sc.as_ptr(), sc.as_mut_ptr(), &mut rc)
-        };
-        assert_eq!(st, ASPERITY_OK);
-        let rr = rust.step_in_place(&mut sr, &inc).unwrap();
-        assert_eq!(rc, rr, "increment {i}");
-        assert_eq!(sc, sr);
-    }
+    let incs = (0..200).map(|i| DynamicIncrement {
+        normal_force: 1.0 + 0.01 * i as f64,
+        slip: [1e-7 * ((i as f64) * 0.3).sin(), 0.0],
+        dt: 1e-3,
+        tangents: 3,
+        ..Default::default()
+    });
+    assert_eq!(in_place_equals_rust(h, &rust, incs), 5);
     unsafe { asperity_dynamic_friction_free(h) };
     let bad = [1e-6, -1.0, 4e-6];
     expect_error(

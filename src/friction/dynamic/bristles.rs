@@ -41,10 +41,10 @@
 //!   friction", J. Dyn. Sys., Meas., Control 113 (1991) 354–362.
 
 use super::{
-    book, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
-    STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book, check_elements, respond, sealed::Advance, track_only, DynamicFriction, DynamicIncrement,
+    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
-use crate::error::{check, Error, Result};
+use crate::error::{check, Result};
 
 /// The parameters of N bristles (immutable; share between threads).
 #[derive(Debug, Clone, PartialEq)]
@@ -62,16 +62,7 @@ impl Bristles {
     /// and > 0), of equal length ≥ 1, and the viscous coefficient `sigma2`
     /// σ₂ (N·s/m, finite, ≥ 0). Errors name the argument.
     pub fn new(stiffness: &[f64], break_deflection: &[f64], sigma2: f64) -> Result<Self> {
-        if stiffness.is_empty() || break_deflection.len() != stiffness.len() {
-            return Err(Error::InvalidArgument {
-                name: "break_deflection.len()",
-                value: break_deflection.len() as f64,
-                bound: "equal to stiffness.len() >= 1",
-            });
-        }
-        for &k in stiffness {
-            check::positive("stiffness", k)?;
-        }
+        check_elements(stiffness, break_deflection, "break_deflection.len()")?;
         for &d in break_deflection {
             check::positive("break_deflection", d)?;
         }
@@ -128,14 +119,7 @@ impl Advance for Bristles {
     }
 
     fn check(&self, increment: &DynamicIncrement) -> Result<()> {
-        if increment.slip[1] != 0.0 {
-            return Err(Error::InvalidArgument {
-                name: "slip",
-                value: increment.slip[1],
-                bound: "slip[1] = 0 (the bristle model is one-dimensional)",
-            });
-        }
-        Ok(())
+        track_only(increment)
     }
 
     fn advance(

@@ -92,8 +92,8 @@
 use super::dormand_prince::{factor, Stages, System};
 use super::prandtl_tomlinson::MAX_SUBSTEPS;
 use super::{
-    book, read, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
-    STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book, read, respond, sealed::Advance, track_only, DynamicFriction, DynamicIncrement,
+    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 
@@ -647,14 +647,7 @@ impl Advance for BurridgeKnopoff {
     }
 
     fn check(&self, increment: &DynamicIncrement) -> Result<()> {
-        if increment.slip[1] != 0.0 {
-            return Err(Error::InvalidArgument {
-                name: "slip",
-                value: increment.slip[1],
-                bound: "slip[1] = 0 (the Burridge-Knopoff chain is one-dimensional)",
-            });
-        }
-        Ok(())
+        track_only(increment)
     }
 
     fn advance(

@@ -43,10 +43,10 @@
 //!   Int. Congress of Applied Mechanics (1926) 332–335.
 
 use super::{
-    book, norm, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
-    STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book, check_elements, norm, respond, sealed::Advance, DynamicFriction, DynamicIncrement,
+    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
-use crate::error::{check, Error, Result};
+use crate::error::{check, Result};
 
 /// The parameters of N Maxwell-slip elements (immutable; share between
 /// threads).
@@ -70,16 +70,7 @@ impl MaxwellSlip {
     /// viscous coefficient `sigma2` σ₂ (N·s/m, finite, ≥ 0). Errors name the
     /// argument.
     pub fn new(stiffness: &[f64], capacity: &[f64], sigma2: f64) -> Result<Self> {
-        if stiffness.is_empty() || capacity.len() != stiffness.len() {
-            return Err(Error::InvalidArgument {
-                name: "capacity.len()",
-                value: capacity.len() as f64,
-                bound: "equal to stiffness.len() >= 1",
-            });
-        }
-        for &k in stiffness {
-            check::positive("stiffness", k)?;
-        }
+        check_elements(stiffness, capacity, "capacity.len()")?;
         for &m in capacity {
             check::non_negative("capacity", m)?;
         }

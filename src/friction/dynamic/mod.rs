@@ -411,6 +411,41 @@ fn state_error(state: &[f64], what: &'static str, len: usize) -> Result<()> {
     Ok(())
 }
 
+/// The check of a one-dimensional model (Prandtl–Tomlinson,
+/// Burridge–Knopoff, bristles): the increment's `slip[1]` must be 0.
+pub(crate) fn track_only(increment: &DynamicIncrement) -> Result<()> {
+    if increment.slip[1] != 0.0 {
+        return Err(Error::InvalidArgument {
+            name: "slip",
+            value: increment.slip[1],
+            bound: "slip[1] = 0 (the model is one-dimensional)",
+        });
+    }
+    Ok(())
+}
+
+/// The shared checks of parallel elements (Maxwell-slip, bristles):
+/// `stiffness` not empty, every value finite and > 0, and `other` as long
+/// (its length error names `other_len`, e.g. `capacity.len()`). The caller
+/// checks `other`'s values.
+pub(crate) fn check_elements(
+    stiffness: &[f64],
+    other: &[f64],
+    other_len: &'static str,
+) -> Result<()> {
+    if stiffness.is_empty() || other.len() != stiffness.len() {
+        return Err(Error::InvalidArgument {
+            name: other_len,
+            value: other.len() as f64,
+            bound: "equal to stiffness.len() >= 1",
+        });
+    }
+    for &k in stiffness {
+        check::positive("stiffness", k)?;
+    }
+    Ok(())
+}
+
 /// |(x, y)|: √(x² + y²), exactly |x| on a track (y = 0) without the
 /// square root, with `hypot`'s care only where the squares overflow or
 /// underflow (`hypot` costs several times more per call).

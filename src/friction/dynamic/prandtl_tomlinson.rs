@@ -71,8 +71,8 @@
 
 use super::dormand_prince::{integrate, System};
 use super::{
-    book, read, respond, sealed::Advance, DynamicFriction, DynamicIncrement, DynamicResponse,
-    STATE_MODEL, TANGENT_SLIP,
+    book, read, respond, sealed::Advance, track_only, DynamicFriction, DynamicIncrement,
+    DynamicResponse, STATE_MODEL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 use core::f64::consts::PI;
@@ -451,14 +451,7 @@ impl Advance for PrandtlTomlinson {
     }
 
     fn check(&self, increment: &DynamicIncrement) -> Result<()> {
-        if increment.slip[1] != 0.0 {
-            return Err(Error::InvalidArgument {
-                name: "slip",
-                value: increment.slip[1],
-                bound: "slip[1] = 0 (the Prandtl-Tomlinson model is one-dimensional)",
-            });
-        }
-        Ok(())
+        track_only(increment)
     }
 
     fn advance(
