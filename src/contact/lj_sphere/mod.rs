@@ -169,6 +169,7 @@ use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::{MatMut, MatRef};
 
 mod edge;
+mod lu32;
 mod path;
 mod sample;
 use path::{BWork, State};

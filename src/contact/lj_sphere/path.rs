@@ -21,6 +21,7 @@
 // Index loops mirror the matrix algebra.
 #![allow(clippy::needless_range_loop)]
 
+use super::lu32::Lu32;
 use super::*;
 
 /// The extra equation of the bordered system.
@@ -66,10 +67,9 @@ struct Single {
 /// Scratch of the bordered Newton iteration.
 pub(super) struct BWork {
     pub(super) w: Work,
-    /// Bordered Jacobian in single precision, column-major `(N+1)²`.
-    jac: Vec<f32>,
-    /// Its single-precision factorisation (a preconditioner).
-    lu: Option<PartialPivLu<f32>>,
+    /// The bordered Jacobian's single-precision factorisation (a
+    /// preconditioner), assembled and factored in place.
+    lu: Lu32,
     /// Scratch of the single-precision triangular solves, `N+1`.
     s32: Vec<f32>,
     single: Single,
@@ -97,14 +97,13 @@ pub(super) struct BWork {
 impl BWork {
     /// Forget the factorisation (after a failed solve).
     pub(super) fn invalidate(&mut self) {
-        self.lu = None;
+        self.lu.invalidate();
     }
 
     pub(super) fn new(n: usize) -> Self {
         Self {
             w: Work::new_small(n),
-            jac: Vec::new(),
-            lu: None,
+            lu: Lu32::default(),
             s32: vec![0.0; n + 1],
             single: Single {
                 q: vec![0.0; n],
@@ -193,14 +192,12 @@ impl LjSolver {
     fn bfactor(&self, bw: &mut BWork) -> bool {
         let n = self.n();
         let m = n + 1;
-        if bw.jac.len() != m * m {
-            bw.jac = vec![0.0; m * m];
-        }
         let k = self.k;
+        let jac = bw.lu.matrix_mut(m);
         for j in 0..n {
             let qj = k * bw.w.dp[j] * bw.w.h[j];
             let col = &self.a[j * n..(j + 1) * n];
-            let jc = &mut bw.jac[j * m..(j + 1) * m];
+            let jc = &mut jac[j * m..(j + 1) * m];
             for i in 0..n {
                 jc[i] = (col[i] * qj) as f32;
             }
@@ -208,21 +205,20 @@ impl LjSolver {
             jc[n] = bw.row[j] as f32;
         }
         {
-            let jc = &mut bw.jac[n * m..];
+            let jc = &mut jac[n * m..];
             jc[..n].iter_mut().for_each(|v| *v = 1.0);
             jc[n] = bw.row[n] as f32;
         }
-        if bw.jac.iter().any(|v| !v.is_finite()) {
+        if jac.iter().any(|v| !v.is_finite()) {
             return false;
         }
-        let lu = PartialPivLu::new(MatRef::from_column_major_slice(&bw.jac, m, m));
+        bw.lu.factor();
         bw.s32.iter_mut().for_each(|v| *v = 0.0);
         bw.s32[n] = 1.0;
-        lu.solve_in_place(MatMut::from_column_major_slice_mut(&mut bw.s32, m, 1));
+        bw.lu.solve_in_place(&mut bw.s32);
         for (z, s) in bw.z.iter_mut().zip(&bw.s32) {
             *z = f64::from(*s);
         }
-        bw.lu = Some(lu);
         bw.row_lu.copy_from_slice(&bw.row);
         bw.w.factorizations += 1;
         true
@@ -232,11 +228,13 @@ impl LjSolver {
     /// current border row `bw.row` (rank-one correction), in place in `bw.x`.
     fn bsolve(&self, bw: &mut BWork) -> bool {
         let m = self.n() + 1;
-        let Some(lu) = &bw.lu else { return false };
+        if !bw.lu.is_valid() {
+            return false;
+        }
         for (s, x) in bw.s32.iter_mut().zip(&bw.x) {
             *s = *x as f32;
         }
-        lu.solve_in_place(MatMut::from_column_major_slice_mut(&mut bw.s32, m, 1));
+        bw.lu.solve_in_place(&mut bw.s32);
         for (x, s) in bw.x.iter_mut().zip(&bw.s32) {
             *x = f64::from(*s);
         }
@@ -482,7 +480,7 @@ impl LjSolver {
         let mut r = self.bres(con, y, *al, bw);
         let mut it = 0u32;
         let mut fresh = false;
-        let mut need = full || bw.lu.is_none();
+        let mut need = full || !bw.lu.is_valid();
         bw.krylov = 0;
         let fail = |bw: &mut BWork, it: u32, r: f64| {
             bw.w.iterations += it as u64;
@@ -524,7 +522,7 @@ impl LjSolver {
                 None => false,
             };
             if !solved {
-                bw.lu = None;
+                bw.lu.invalidate();
                 if fresh {
                     return fail(bw, it, r);
                 }
@@ -594,7 +592,7 @@ impl LjSolver {
             bw.row[i] = my * prev[i];
         }
         bw.row[n] = prev[n];
-        if (exact || bw.lu.is_none()) && !self.bfactor(bw) {
+        if (exact || !bw.lu.is_valid()) && !self.bfactor(bw) {
             return Err(unresolved(0, f64::NAN));
         }
         let rtol = if exact { EXACT_RTOL } else { rtol };
