@@ -146,9 +146,14 @@ impl LjSolver {
     ) -> Result<EdgeState> {
         let sv = self.rebanded(m, plan)?;
         let row = sv.marker_row(m);
-        bw.invalidate();
-        // Full Newton: the mesh (and the Jacobian) is new at every marker.
-        sv.bnewton(&Con::Plane { row, c: MARK }, &mut y, &mut al, bw, true)?;
+        // Inexact Newton preconditioned by the last factorisation, although
+        // it belongs to the previous marker's mesh: the meshes place their
+        // nodes alike relative to the band and the solution moves with it,
+        // so node by node the Jacobians are close (the same reason the
+        // node-by-node secant predictor works). GMRES acts on this mesh's
+        // true Jacobian and the factorisation is refreshed when it needs
+        // more than a few iterations, as on a fixed mesh.
+        sv.bnewton(&Con::Plane { row, c: MARK }, &mut y, &mut al, bw, false)?;
         let n = sv.n();
         let st = sv.make_state(&y, al, vec![0.0; n + 1], s, bw, false)?;
         Ok(EdgeState { m, st })

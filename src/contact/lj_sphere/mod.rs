@@ -227,8 +227,8 @@ pub fn disk_displacement(r: f64, c: f64) -> f64 {
         if m >= 1.0 {
             return r;
         }
-        let e = ellip::ellipe(m).unwrap_or(f64::NAN);
-        let kk = ellip::ellipk(m).unwrap_or(f64::NAN);
+        // K and E from one evaluation (they share the interval lookup).
+        let (kk, e) = ellip::ellipke(m).unwrap_or((f64::NAN, f64::NAN));
         r * (e - (1.0 - m) * kk)
     }
 }
@@ -506,30 +506,27 @@ struct Mesh {
 
 impl Mesh {
     fn new(n: usize, rf: f64, l: f64, a_e: f64, w: f64, frac: f64) -> Mesh {
-        let base = |r: f64| rf * (r / rf).ln_1p();
-        let bump_raw = |r: f64| {
-            if frac > 0.0 {
-                w * (((r - a_e) / w).tanh() + (a_e / w).tanh())
-            } else {
-                0.0
-            }
-        };
+        // φ(r) = rf ln(1 + r/rf) + b w [tanh((r − a_e)/w) + tanh(a_e/w)],
+        // with b giving the band the fraction `frac` of φ(l); φ and φ'
+        // together (one log1p, one tanh).
+        let ta = if frac > 0.0 { (a_e / w).tanh() } else { 0.0 };
+        let base_l = rf * (l / rf).ln_1p();
         let b = if frac > 0.0 {
-            frac / (1.0 - frac) * base(l) / bump_raw(l)
+            frac / (1.0 - frac) * base_l / (w * (((l - a_e) / w).tanh() + ta))
         } else {
             0.0
         };
-        let phi = |r: f64| base(r) + b * bump_raw(r);
-        let dphi = |r: f64| {
-            let s = if frac > 0.0 {
+        let phi_dphi = |r: f64| {
+            let base = rf * (r / rf).ln_1p();
+            let d_base = 1.0 / (1.0 + r / rf);
+            if frac > 0.0 {
                 let t = ((r - a_e) / w).tanh();
-                b * (1.0 - t * t)
+                (base + b * w * (t + ta), d_base + b * (1.0 - t * t))
             } else {
-                0.0
-            };
-            1.0 / (1.0 + r / rf) + s
+                (base, d_base)
+            }
         };
-        let total = phi(l);
+        let total = phi_dphi(l).0;
         // phi(r) = target for increasing targets: each root brackets the
         // next from below and starts its Newton iteration (a few steps each).
         let inv = |target: f64, from: f64| -> f64 {
@@ -537,13 +534,15 @@ impl Mesh {
             // the bracket, and the bracket must halve every two steps (Newton
             // can cycle around the inflections of the tanh band).
             let (mut lo, mut hi) = (from, l);
-            let mut r = from + (target - phi(from)) / dphi(from);
+            let (p0, d0) = phi_dphi(from);
+            let mut r = from + (target - p0) / d0;
             if !(r > lo && r < hi) {
                 r = 0.5 * (lo + hi);
             }
             let mut width = hi - lo;
             for k in 0..400 {
-                let f = phi(r) - target;
+                let (p, dp) = phi_dphi(r);
+                let f = p - target;
                 if f > 0.0 {
                     hi = r;
                 } else {
@@ -552,7 +551,7 @@ impl Mesh {
                 if f == 0.0 || hi - lo <= 1e-15 * (1.0 + r) {
                     return r;
                 }
-                let mut rn = r - f / dphi(r);
+                let mut rn = r - f / dp;
                 if (rn - r).abs() <= 1e-16 * (1.0 + r) {
                     return rn;
                 }
