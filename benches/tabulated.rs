@@ -1,19 +1,24 @@
 //! Tabulated law against the closed-form Maugis–Dugdale law it tabulates:
 //! time per call of `eval` (scalar, with per-contact states) and of
 //! `eval_batch` (per element), over a mixed set of overlaps that visits the
-//! far field, the adhesive region and deep contact.
+//! far field, the adhesive region and deep contact. Then the same for
+//! Lennard-Jones tables (μ = 0.1 and 1 at N = 128, μ = 3 at N = 256: the
+//! edge continuation, about 20 s to build).
 //!
 //! `cargo bench --bench tabulated`
 
 use asperity::contact::tabulated::DEFAULT_TOLERANCE;
-use asperity::contact::{eval_batch, ContactState, MaugisDugdale, NormalContact, TabulatedLaw};
+use asperity::contact::{
+    eval_batch, ContactState, LjSphere, MaugisDugdale, NormalContact, TabulatedLaw,
+};
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use std::hint::black_box;
 
 const N: usize = 4096;
 
-fn inputs(md: &MaugisDugdale) -> (Vec<f64>, Vec<ContactState>) {
-    let ds = md.length_scale();
+/// Overlaps uniform in `[lo, hi]·scale`, every other one with the state of
+/// branch `last` (the contact branch), the others on branch 0.
+fn inputs(scale: f64, lo: f64, hi: f64, last: i32) -> (Vec<f64>, Vec<ContactState>) {
     let mut x = 0x2545F4914F6CDD1Du64;
     let mut d = Vec::with_capacity(N);
     let mut s = Vec::with_capacity(N);
@@ -22,8 +27,8 @@ fn inputs(md: &MaugisDugdale) -> (Vec<f64>, Vec<ContactState>) {
         x ^= x >> 7;
         x ^= x << 17;
         let r = (x >> 11) as f64 / (1u64 << 53) as f64;
-        d.push((-2.0 + 12.0 * r) * ds);
-        let branch = (i % 2) as i32;
+        d.push((lo + (hi - lo) * r) * scale);
+        let branch = if i % 2 == 1 { last } else { 0 };
         s.push(ContactState {
             branch,
             in_contact: branch,
@@ -44,7 +49,7 @@ fn bench(c: &mut Criterion) {
             t.memory_bytes(),
             t.measured_error()
         );
-        let (d, s) = inputs(&md);
+        let (d, s) = inputs(md.length_scale(), -2.0, 10.0, 1);
         let mut g = c.benchmark_group(format!("lambda_{lam}"));
         g.throughput(Throughput::Elements(N as u64));
         g.bench_function("table_eval", |b| {
@@ -80,6 +85,49 @@ fn bench(c: &mut Criterion) {
                 let mut acc = 0.0;
                 for i in 0..N {
                     let (r, _) = md.eval(black_box(d[i]), &s[i]).unwrap();
+                    acc += r.force;
+                }
+                acc
+            })
+        });
+        g.finish();
+    }
+    // Lennard-Jones tables: R = 1 µm, w = 0.05 J/m², z₀ = 0.3 nm, E* for μ;
+    // overlaps from 20 z₀ apart to the deep end of the table (P ≈ 10 πRw).
+    for (mu, n) in [(0.1f64, 128usize), (1.0, 128), (3.0, 256)] {
+        let (r, w, z0) = (1e-6f64, 0.05f64, 0.3e-9f64);
+        let e_star = (r * w * w / (mu * mu * mu * z0 * z0 * z0)).sqrt();
+        let lj = LjSphere::new(r, e_star, w, z0).unwrap();
+        let start = std::time::Instant::now();
+        let t = TabulatedLaw::from_lj_sphere(&lj, n, DEFAULT_TOLERANCE).unwrap();
+        let last = t.branch_count() - 1;
+        // Deep end: where the contact branch's force reaches 10 πRw.
+        let on_last = ContactState {
+            branch: last as i32,
+            ..Default::default()
+        };
+        let mut deep_end = 1.0;
+        while t.eval(deep_end * z0, &on_last).unwrap().0.force < 10.0 * std::f64::consts::PI * r * w
+        {
+            deep_end *= 1.5;
+        }
+        eprintln!(
+            "LJ μ = {mu}, N = {n}: built in {:.1} s, {} branches, {} knots, {} index entries, {} bytes, measured error {:.2e}, overlaps in [-20, {deep_end:.1}] z0",
+            start.elapsed().as_secs_f64(),
+            t.branch_count(),
+            t.knot_count(),
+            t.index_len(),
+            t.memory_bytes(),
+            t.measured_error()
+        );
+        let (d, s) = inputs(z0, -20.0, deep_end, last as i32);
+        let mut g = c.benchmark_group(format!("lj_mu_{mu}"));
+        g.throughput(Throughput::Elements(N as u64));
+        g.bench_function("table_eval", |b| {
+            b.iter(|| {
+                let mut acc = 0.0;
+                for i in 0..N {
+                    let (r, _) = t.eval(black_box(d[i]), &s[i]).unwrap();
                     acc += r.force;
                 }
                 acc

@@ -18,12 +18,17 @@
 //!   jumps fall at different approaches, and the difference there is part of
 //!   the error, as it is for a host code that uses the model.
 //!
-//! The reference is the Lennard-Jones curve on N = 128 radial cells for
-//! μ ≤ 1 and 256 above (pull-off within ~1e-4 of the Richardson-extrapolated
-//! value for μ ≤ 1, ~1e-3 at μ = 3; above μ = 1 the edge continuation on
-//! meshes that move with the contact edge), evaluated through its table
-//! (within 1e-4 relative of the solver), so errors below about 1e-4·πRw are
-//! not resolved. The tabulated Lennard-Jones model is that table. **Cost** is measured on this machine when [`assess`] runs (time
+//! The pull-off reference is the solver's load-controlled pull-off on the
+//! library's converged grid ([`LjSphere::converged_default_grid`]: N = 256
+//! for μ ≤ 3, 512 up to μ = 10). The curve reference is the Lennard-Jones
+//! curve on N = 128 radial cells for μ ≤ 1 and 256 above (above μ = 1 the
+//! edge continuation on meshes that move with the contact edge), evaluated
+//! through its table (within 1e-4 relative of the solver on that grid), so
+//! curve errors below about 1e-4·πRw (μ ≤ 1) are not resolved; at μ = 10
+//! the N = 256 curve itself is uncertain by up to 1e-2 πRw near the
+//! pull-off (BENCHMARKS.md §3). The tabulated Lennard-Jones model is that
+//! table, so its pull-off error is its grid's. The full Lennard-Jones model
+//! is the solver on the converged grid. **Cost** is measured on this machine when [`assess`] runs (time
 //! per `eval`, median of repeated passes over the path); the choice itself
 //! uses the fixed cost order of [`Fidelity::ALL`], so it does not depend on
 //! timing noise.
@@ -123,9 +128,10 @@ pub struct Advice {
     pub assessments: Vec<Assessment>,
     /// Tabor parameter μ of the sphere.
     pub tabor: f64,
-    /// Load-controlled pull-off of the reference (N).
+    /// Load-controlled pull-off of the converged solver (N), the yardstick
+    /// of the pull-off errors.
     pub reference_pull_off: f64,
-    /// Grid of the reference solution.
+    /// Grid of that solver ([`LjSphere::converged_default_grid`]).
     pub reference_grid: usize,
 }
 
@@ -134,10 +140,10 @@ pub struct Advice {
 /// Lennard-Jones model's, so that table is the reference itself.
 const REFERENCE_TOLERANCE: f64 = crate::contact::tabulated::DEFAULT_TOLERANCE;
 
-/// Grid of the reference solution: N = 128 resolves the pull-off to ~1e-4
-/// relative for μ ≤ 1 (the convergence study in BENCHMARKS.md); above, the
-/// moving edge band needs N = 256.
-fn reference_grid(mu: f64) -> usize {
+/// Grid of the curve reference (the table): N = 128 resolves the curve to
+/// ~1e-4 relative for μ ≤ 1 (the convergence study in BENCHMARKS.md);
+/// above, the moving edge band needs N = 256.
+fn table_grid(mu: f64) -> usize {
     if mu <= 1.0 {
         128
     } else {
@@ -149,9 +155,9 @@ fn reference_grid(mu: f64) -> usize {
 /// work of adhesion w (J/m²) and Lennard-Jones equilibrium separation z₀ (m)
 /// (Tabor parameter in the Lennard-Jones solver's range, [0, 100]). Returns
 /// the assessments in the order of [`Fidelity::ALL`], the reference pull-off
-/// and the reference grid. Builds the Lennard-Jones reference table: about a
-/// second for μ ≤ 1, a minute or more above (N = 256 on moving meshes, see
-/// [`crate::contact::lj_sphere::LjSolver::path_samples`]).
+/// (N) and its grid (the converged one). Builds the Lennard-Jones reference
+/// table: about a second for μ ≤ 1, up to a minute above (N = 256 on moving
+/// meshes, see [`crate::contact::lj_sphere::LjSolver::path_samples`]).
 pub fn assess(
     radius: f64,
     e_star: f64,
@@ -159,11 +165,16 @@ pub fn assess(
     z0: f64,
 ) -> Result<(Vec<Assessment>, f64, usize)> {
     let lj = LjSphere::new(radius, e_star, work_of_adhesion, z0)?;
-    let grid = reference_grid(lj.tabor());
+    let grid = table_grid(lj.tabor());
     let t = Instant::now();
     let reference = TabulatedLaw::from_lj_sphere(&lj, grid, REFERENCE_TOLERANCE)?;
     let reference_build = t.elapsed().as_secs_f64();
-    let p_ref = reference.pull_off_force(Control::Load)?;
+    // The pull-off yardstick is the solver on the library's converged grid
+    // (finer than the table's: N = 256 against 128 for μ ≤ 1, 512 against
+    // 256 for 3 < μ ≤ 10, where the table's grid leaves wiggles of up to
+    // 1e-2 πRw in the force along the contact branch).
+    let converged = lj.converged_default_grid();
+    let p_ref = lj.pull_off_force(converged)?;
     let path = sweep_path(&reference, z0)?;
     let f_ref = forces_along(&reference, &path)?;
 
@@ -205,12 +216,12 @@ pub fn assess(
                 measure(law, &reference, reference_build, &path, &f_ref, p_ref)?
             }
             Fidelity::LennardJones => {
-                // The reference itself; its cost is one Newton solve from a
+                // The converged solver; its cost is one Newton solve from a
                 // neighbouring solution, at ᾱ = 0 (in contact). Where the
                 // fixed mesh cannot reach it (μ = 10: the continuation in
                 // the nodal unknowns needs O(μ²) steps, see the `edge`
                 // module of the solver), at the far start gap instead.
-                let solver = lj.solver(grid)?;
+                let solver = lj.solver(converged)?;
                 let mid = match solver.solve_at_approach(0.0, None) {
                     Ok(s) => s,
                     Err(_) => solver.solve_at_central_gap(6.0 + 4.0 * lj.tabor().sqrt(), None)?,
@@ -233,7 +244,7 @@ pub fn assess(
         };
         out.push(a);
     }
-    Ok((out, p_ref, grid))
+    Ok((out, p_ref, converged))
 }
 
 /// The cheapest model whose pull-off and curve errors are both within

@@ -26,6 +26,18 @@ fn tight_tolerance_needs_the_lennard_jones_table_loose_allows_dmt() {
         "{}",
         tight.reference_pull_off / scale
     );
+    // The pull-off yardstick is the solver on the converged grid, not the
+    // coarser table, whose own pull-off error is therefore measured.
+    let lj = asperity::contact::LjSphere::new(R, e_star(0.1), W, Z0).unwrap();
+    assert_eq!(tight.reference_grid, lj.converged_default_grid());
+    assert_eq!(tight.reference_pull_off, lj.pull_off_force(0).unwrap());
+    let table = tight.assessments[2];
+    assert_eq!(table.law, Fidelity::TabulatedLennardJones);
+    assert!(
+        table.pull_off_error > 0.0 && table.pull_off_error / scale < 1e-4,
+        "{}",
+        table.pull_off_error / scale
+    );
     assert_eq!(tight.choice, Fidelity::TabulatedLennardJones);
     assert_eq!(tight.assessments.len(), 6);
     for (a, f) in tight.assessments.iter().zip(Fidelity::ALL) {

@@ -980,7 +980,8 @@ impl TabulatedLaw {
     /// `tolerance`, then [`TabulatedLaw::from_curve`]. The table reproduces
     /// `lj.solver(n_grid)` (the same discrete model) within `tolerance` in
     /// the error measure of the module documentation, jumps at the solver's
-    /// turning points and pulls off at its force minimum.
+    /// turning points and pulls off at its force minimum (the last one along
+    /// the contact branch where the grid leaves several).
     pub fn from_lj_sphere(lj: &LjSphere, n_grid: usize, tolerance: f64) -> Result<Self> {
         let curve = EquilibriumCurve::from_lj_sphere(lj, n_grid, tolerance)?;
         Self::from_curve(&curve, tolerance)
@@ -1498,8 +1499,11 @@ impl NormalContact for TabulatedLaw {
         finite_response((r, ContactState::default())).map(|rs| rs.0)
     }
 
-    /// Load control: the minimum of the force on the last branch (exactly the
-    /// curve's point). Displacement control: the force where contact is lost
+    /// Load control: the minimum of the force on the last branch, the first
+    /// met lowering the load from deep contact (the curve's point, unless
+    /// the grid leaves the contact branch several minima: see
+    /// [`crate::contact::lj_sphere::LjCurve::pull_off_load`]). Displacement
+    /// control: the force where contact is lost
     /// on retraction, at the point where the radius reaches zero or at the
     /// jump-out turning point (exactly the curve's point).
     fn pull_off_force(&self, control: Control) -> Result<f64> {

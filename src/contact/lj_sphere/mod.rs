@@ -459,7 +459,14 @@ pub struct LjCurve {
     pub jump_in: Option<LjPoint>,
     /// Jump-out (the following local minimum of ᾱ), if the curve is S-shaped.
     pub jump_out: Option<LjPoint>,
-    /// Load-controlled pull-off: the point of minimum force.
+    /// Load-controlled pull-off: the point of minimum force along the
+    /// path. On a grid that resolves the edge zone the force along the
+    /// contact branch has one minimum. Where it does not (μ = 10 at N = 256,
+    /// BENCHMARKS.md §3) the discrete branch has shallow extra minima of up
+    /// to 1e-2; this reports the lowest of those the path's samples
+    /// bracket, while a table of the same grid pulls off at the last one
+    /// (the first met lowering the load from deep contact). The spread is
+    /// the discretisation error: raise `n_grid`.
     pub pull_off_load: LjPoint,
     /// Displacement-controlled pull-off force `P/(πRΔγ)` (at the jump-out);
     /// `None` when the curve is not S-shaped (separation is then continuous).
