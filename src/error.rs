@@ -74,6 +74,28 @@ pub enum Error {
 /// `Result` with the library's [`Error`].
 pub type Result<T> = core::result::Result<T, Error>;
 
+impl Error {
+    /// This error with the argument name `from` replaced by `to`, for a
+    /// caller that derived the argument from one of its own (the message
+    /// names what the caller's user passed). Other errors pass through
+    /// unchanged.
+    #[cold]
+    pub(crate) fn renamed(mut self, from: &'static str, to: &'static str) -> Error {
+        match &mut self {
+            Error::InvalidArgument { name, .. }
+            | Error::OutOfDomain { name, .. }
+            | Error::NullPointer { name }
+            | Error::UnknownSelector { name, .. }
+                if *name == from =>
+            {
+                *name = to;
+            }
+            _ => {}
+        }
+        self
+    }
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {

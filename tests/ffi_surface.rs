@@ -1314,3 +1314,59 @@ fn zhuravlev_errors_name_the_argument() {
         );
     }
 }
+
+/// At the ends of `f64` the Greenwood–Williamson evaluation either answers
+/// with finite numbers or returns an error: never `ASPERITY_OK` with a NaN
+/// or infinite output (RELIABILITY.md open point, session 8: a Gaussian
+/// surface with σ = 2.2e-308 m and E* near f64::MAX).
+#[test]
+fn gw_eval_never_returns_ok_with_a_non_finite_output() {
+    let vals = [
+        1e-308, 1e-300, 1e-200, 1e-100, 1e-10, 1e-6, 1.0, 1e6, 1e100, 1e200, 1e300, 1.79e308,
+    ];
+    let (mut ok, mut total) = (0usize, 0usize);
+    for distribution in [ASPERITY_HEIGHTS_GAUSSIAN, ASPERITY_HEIGHTS_EXPONENTIAL] {
+        for &summit_count in &vals {
+            for &radius in &vals {
+                for &sigma in &[2.2e-308, 1e-300, 1e-100, 1e-6, 1.0, 1e100, 1e300] {
+                    for &e_star in &[1e-300, 1.0, 1e9, 1e300, 1.79e308] {
+                        let p = AsperityGwParams {
+                            distribution,
+                            reserved: 0,
+                            summit_count,
+                            radius,
+                            sigma,
+                            e_star,
+                        };
+                        for d in [
+                            25.7,
+                            0.0,
+                            -1e-307,
+                            1e-308,
+                            -25.7,
+                            1e300,
+                            -1e300,
+                            3.0 * sigma,
+                            -3.0 * sigma,
+                        ] {
+                            let mut out = AsperityGwResponse::default();
+                            let s = unsafe { asperity_gw_eval(&p, d, &mut out) };
+                            total += 1;
+                            if s == ASPERITY_OK {
+                                ok += 1;
+                                assert!(
+                                    [out.load, out.area, out.contacts, out.stiffness]
+                                        .iter()
+                                        .all(|v| v.is_finite()),
+                                    "{p:?} at d = {d:e}: {out:?}"
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // Both outcomes occur on this grid.
+    assert!(ok > 1000 && ok < total, "{ok} of {total} answered");
+}

@@ -685,6 +685,16 @@ fn function_errors_name_the_argument() {
     invalid(nano_holding_force(&m, &bad), "w_vdw");
     invalid(NanoAsperityBonds::new(&m, &bad), "w_vdw");
     invalid(single_rod(&m, &bad), "w_vdw");
+    // A subnormal w_vdW passes its own check (> 0) but its half, the punch
+    // radius of the holding force, underflows to 0: the error still names
+    // w_vdw, the argument the caller passed (it named `radius`).
+    let bad = NanoAsperities {
+        w_vdw: 5e-324,
+        w_chem: 0.0,
+        ..nano
+    };
+    invalid(nano_holding_force(&m, &bad), "w_vdw");
+    invalid(NanoAsperityBonds::new(&m, &bad), "w_vdw");
     let bad = NanoAsperities {
         w_chem: 500.0 * NM,
         ..nano

@@ -420,7 +420,7 @@ pub unsafe extern "C" fn asperity_law_maugis_dugdale(
         // The Rust API calls σ₀ `cohesive_stress`; the C argument is `sigma0`.
         MaugisDugdale::new(radius, e_star, work_of_adhesion, sigma0)
             .map(NormalLaw::MaugisDugdale)
-            .map_err(|e| super::renamed(e, "cohesive_stress", "sigma0"))
+            .map_err(|e| e.renamed("cohesive_stress", "sigma0"))
     })
 }
 
@@ -463,9 +463,9 @@ pub unsafe extern "C" fn asperity_law_derjaguin(
         Derjaguin::new(radius, law)
             .map(NormalLaw::Derjaguin)
             .map_err(|e| {
-                let e = super::renamed(e, "equilibrium_separation", "parameter");
-                let e = super::renamed(e, "cohesive_stress", "parameter");
-                super::renamed(e, "decay_length", "parameter")
+                let e = e.renamed("equilibrium_separation", "parameter");
+                let e = e.renamed("cohesive_stress", "parameter");
+                e.renamed("decay_length", "parameter")
             })
     })
 }

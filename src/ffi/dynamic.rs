@@ -20,7 +20,7 @@
 //! increment is the motion of the point relative to the counter-surface, the
 //! tangential force is the force on the point and opposes slip.
 
-use super::{guard, input, output, partial_overlap, renamed, Failure};
+use super::{guard, input, output, partial_overlap, Failure};
 
 /// `ctor(p.a, p.b, …)` for a constructor whose arguments are the C
 /// parameter struct's fields, in order and under the same names, with its
@@ -29,7 +29,7 @@ macro_rules! from_params {
     ($ctor:path, $p:expr, $($field:ident),+ $(,)?) => {{
         let p = $p;
         $ctor($(p.$field),+).map_err(|e| {
-            $(let e = renamed(e, stringify!($field), concat!("params.", stringify!($field)));)+
+            $(let e = e.renamed(stringify!($field), concat!("params.", stringify!($field)));)+
             e
         })
     }};
@@ -241,7 +241,7 @@ pub unsafe extern "C" fn asperity_dynamic_bristles_new(
         );
         Bristles::new(k, d, sigma2)
             .map(DynamicModel::Bristles)
-            .map_err(|e| renamed(e, "break_deflection.len()", "n"))
+            .map_err(|e| e.renamed("break_deflection.len()", "n"))
     })
 }
 

@@ -428,9 +428,9 @@ pub extern "C" fn asperity_indentation_flag_name(bit: u32) -> *const c_char {
 
 /// The C names of the Rust API's `known.*` in a rescaling error.
 fn known_names(e: Error) -> Error {
-    let e = super::renamed(e, "known.load", "known_load");
-    let e = super::renamed(e, "known.depth", "known_depth");
-    super::renamed(e, "known.radius", "known_radius")
+    let e = e.renamed("known.load", "known_load");
+    let e = e.renamed("known.depth", "known_depth");
+    e.renamed("known.radius", "known_radius")
 }
 
 /// `KnownSolution::new`, its errors naming the C arguments `known_load`,
@@ -438,9 +438,9 @@ fn known_names(e: Error) -> Error {
 /// `radius`, which are other arguments of the C calls).
 fn known(load: f64, depth: f64, radius: f64) -> Result<KnownSolution> {
     KnownSolution::new(load, depth, radius).map_err(|e| {
-        let e = super::renamed(e, "load", "known_load");
-        let e = super::renamed(e, "depth", "known_depth");
-        super::renamed(e, "radius", "known_radius")
+        let e = e.renamed("load", "known_load");
+        let e = e.renamed("depth", "known_depth");
+        e.renamed("radius", "known_radius")
     })
 }
 

@@ -88,25 +88,6 @@ fn fail(f: &Failure) -> i32 {
     status_of(&f.error)
 }
 
-/// The error `e` with the argument name `from` (the Rust API's) replaced by
-/// `to` (the C argument's), so a C message names the argument as the C
-/// prototype spells it. Other errors pass through unchanged.
-#[cold]
-pub(crate) fn renamed(mut e: Error, from: &'static str, to: &'static str) -> Error {
-    match &mut e {
-        Error::InvalidArgument { name, .. }
-        | Error::OutOfDomain { name, .. }
-        | Error::NullPointer { name }
-        | Error::UnknownSelector { name, .. }
-            if *name == from =>
-        {
-            *name = to;
-        }
-        _ => {}
-    }
-    e
-}
-
 /// Whether the arrays of `n` doubles at `a` and `b` overlap without being
 /// the same array (callers accept in place or disjoint states, nothing in
 /// between).

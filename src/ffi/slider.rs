@@ -411,7 +411,7 @@ fn c_names(e: Error) -> Error {
         ("counter.len()", "n_counter"),
     ]
     .into_iter()
-    .fold(e, |e, (from, to)| super::renamed(e, from, to))
+    .fold(e, |e, (from, to)| e.renamed(from, to))
 }
 
 /// The library error a scene error maps to, and its full message.

@@ -46,7 +46,7 @@ pub unsafe extern "C" fn asperity_table_new_maugis_dugdale(
 ) -> i32 {
     emit(out, || {
         let md = MaugisDugdale::new(radius, e_star, work_of_adhesion, sigma0)
-            .map_err(|e| super::renamed(e, "cohesive_stress", "sigma0"))?;
+            .map_err(|e| e.renamed("cohesive_stress", "sigma0"))?;
         TabulatedLaw::from_maugis_dugdale(&md, tolerance)
     })
 }

@@ -381,12 +381,15 @@ pub fn bond_dissipation_per_slip(count: f64, bond_energy: f64, bond_diameter: f6
 pub fn nano_holding_force(material: &FrictionMaterial, nano: &NanoAsperities) -> Result<f64> {
     nano.validate()?;
     let e_star = material.e_star()?;
+    // The punch radius is w_vdW/2: a subnormal w_vdW underflows to 0 there,
+    // and the error must name the argument the caller passed.
     let punch = Kendall::no_slip(
         0.5 * nano.w_vdw,
         e_star,
         material.work_of_adhesion,
         material.counter_poisson_ratio,
-    )?;
+    )
+    .map_err(|e| e.renamed("radius", "w_vdw"))?;
     Ok(-punch.pull_off)
 }
 
