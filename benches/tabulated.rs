@@ -38,6 +38,16 @@ fn inputs(scale: f64, lo: f64, hi: f64, last: i32) -> (Vec<f64>, Vec<ContactStat
     (d, s)
 }
 
+/// Σ force over the `d[i]`, each call from its state `s[i]`.
+fn sum_of_forces<L: NormalContact>(law: &L, d: &[f64], s: &[ContactState]) -> f64 {
+    let mut acc = 0.0;
+    for (&delta, state) in d.iter().zip(s) {
+        let (r, _) = law.eval(black_box(delta), state).unwrap();
+        acc += r.force;
+    }
+    acc
+}
+
 fn bench(c: &mut Criterion) {
     for lam in [0.1, 2.0] {
         let md = MaugisDugdale::from_maugis_parameter(1e-6, 1e9, 0.05, lam).unwrap();
@@ -52,16 +62,7 @@ fn bench(c: &mut Criterion) {
         let (d, s) = inputs(md.length_scale(), -2.0, 10.0, 1);
         let mut g = c.benchmark_group(format!("lambda_{lam}"));
         g.throughput(Throughput::Elements(N as u64));
-        g.bench_function("table_eval", |b| {
-            b.iter(|| {
-                let mut acc = 0.0;
-                for i in 0..N {
-                    let (r, _) = t.eval(black_box(d[i]), &s[i]).unwrap();
-                    acc += r.force;
-                }
-                acc
-            })
-        });
+        g.bench_function("table_eval", |b| b.iter(|| sum_of_forces(&t, &d, &s)));
         let mut f = vec![0.0; N];
         let mut a = vec![0.0; N];
         let mut ns = vec![ContactState::default(); N];
@@ -81,14 +82,7 @@ fn bench(c: &mut Criterion) {
             })
         });
         g.bench_function("maugis_dugdale_eval", |b| {
-            b.iter(|| {
-                let mut acc = 0.0;
-                for i in 0..N {
-                    let (r, _) = md.eval(black_box(d[i]), &s[i]).unwrap();
-                    acc += r.force;
-                }
-                acc
-            })
+            b.iter(|| sum_of_forces(&md, &d, &s))
         });
         g.finish();
     }
@@ -123,16 +117,7 @@ fn bench(c: &mut Criterion) {
         let (d, s) = inputs(z0, -20.0, deep_end, last as i32);
         let mut g = c.benchmark_group(format!("lj_mu_{mu}"));
         g.throughput(Throughput::Elements(N as u64));
-        g.bench_function("table_eval", |b| {
-            b.iter(|| {
-                let mut acc = 0.0;
-                for i in 0..N {
-                    let (r, _) = t.eval(black_box(d[i]), &s[i]).unwrap();
-                    acc += r.force;
-                }
-                acc
-            })
-        });
+        g.bench_function("table_eval", |b| b.iter(|| sum_of_forces(&t, &d, &s)));
         g.finish();
     }
 }
