@@ -25,7 +25,9 @@
 //!    each `m` the mesh puts its band (half the cells, half-width
 //!    `w = clamp(N μ^{-3/2}/16, 0.01, 2)`) centred on `m`, the influence
 //!    matrix is rebuilt (`O(N²)` closed-form elliptic integrals) and the
-//!    bordered system `[J 1; c(m)ᵀ 0]` is solved by chord Newton, with the
+//!    bordered system `[J 1; c(m)ᵀ 0]` is solved by inexact Newton (GMRES
+//!    on this mesh's Jacobian, preconditioned by the last factorisation,
+//!    which may belong to the previous marker's mesh), with the
 //!    extra equation `ln h̄(m) = ln 3^{1/6}` (`c(m)`: linear interpolation
 //!    between the two nodes around `m`). Meshes of different `m` have their
 //!    nodes at the same positions relative to the band, so the predictor is
