@@ -5,16 +5,14 @@
 //! agree with what a C compiler makes of the header.
 
 use asperity::ffi::abi::{asperity_type_count, asperity_type_layout, asperity_type_name};
-use asperity::ffi::{
-    asperity_last_error_message, ASPERITY_ERR_INVALID_ARGUMENT, ASPERITY_ERR_NULL_POINTER,
-    ASPERITY_OK,
-};
+use asperity::ffi::{ASPERITY_ERR_INVALID_ARGUMENT, ASPERITY_ERR_NULL_POINTER, ASPERITY_OK};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ffi::{c_char, CString};
 use std::process::Command;
 
 #[allow(dead_code)]
 mod common;
+use common::c_errors::last_message;
 
 use common::native;
 
@@ -40,17 +38,6 @@ fn layout(name: &[u8]) -> (i32, usize, usize) {
     // SAFETY: a NUL-terminated name and two valid out-pointers.
     let st = unsafe { asperity_type_layout(c.as_ptr(), &mut size, &mut align) };
     (st, size, align)
-}
-
-fn last_message() -> String {
-    // SAFETY: a NULL buffer of length 0 sizes the message; then a buffer of
-    // that many bytes plus the NUL.
-    unsafe {
-        let n = asperity_last_error_message(std::ptr::null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).unwrap()
-    }
 }
 
 /// Every name `asperity_type_name` lists, sized with a first call on (NULL, 0).

@@ -26,16 +26,8 @@ use std::process::Command;
 use std::ptr::{null, null_mut};
 
 mod common;
+use common::c_errors::last_message;
 use common::{binary, manifest};
-
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).unwrap()
-    }
-}
 
 /// The status and message of a failing call; the message must name `name`.
 #[track_caller]

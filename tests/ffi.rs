@@ -4,6 +4,9 @@
 //! (Hertz, DMT, power punch, flat punch) are used where a working law is
 //! needed.
 
+mod common;
+use common::c_errors::{expect_error, last_message};
+
 use asperity::contact::{ContactState, NormalResponse};
 use asperity::ffi::contact::*;
 use asperity::ffi::material::*;
@@ -14,26 +17,6 @@ use std::ptr::{null, null_mut};
 const R: f64 = 1e-6;
 const E: f64 = 1e9;
 const W: f64 = 0.05;
-
-/// The thread's last error message, read with the (NULL, 0) sizing protocol.
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        let m = asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        assert_eq!(m, n, "the full length is returned whatever the buffer");
-        assert_eq!(buf[n], 0, "NUL-terminated");
-        String::from_utf8(buf[..n].to_vec()).expect("UTF-8 message")
-    }
-}
-
-/// Assert a status and that the message names `what` (e.g. "`radius`").
-#[track_caller]
-fn expect_error(status: i32, code: i32, what: &str) {
-    let msg = last_message();
-    assert_eq!(status, code, "status (message: {msg})");
-    assert!(msg.contains(what), "message `{msg}` should name {what}");
-}
 
 fn law(f: impl FnOnce(*mut AsperityNormalLaw) -> i32) -> AsperityNormalLaw {
     let mut out = std::mem::MaybeUninit::<AsperityNormalLaw>::zeroed();

@@ -2,28 +2,15 @@
 //! with the Rust API bit for bit (scalar, in place, block), errors naming
 //! the argument with outputs untouched, NULL pointers.
 
+mod common;
+use common::c_errors::{expect_error, last_message};
+
 use asperity::ffi::dynamic::*;
 use asperity::ffi::*;
 use asperity::friction::dynamic::{
     DynamicFriction, DynamicIncrement, DynamicResponse, LuGre, MaxwellSlip,
 };
 use std::ptr::{null, null_mut};
-
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).unwrap()
-    }
-}
-
-#[track_caller]
-fn expect_error(status: i32, code: i32, what: &str) {
-    let msg = last_message();
-    assert_eq!(status, code, "status (message: {msg})");
-    assert!(msg.contains(what), "message `{msg}` should name {what}");
-}
 
 fn params() -> AsperityLugreParams {
     AsperityLugreParams {

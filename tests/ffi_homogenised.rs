@@ -4,6 +4,9 @@
 //! scalar and block steps with the Rust API (bit for bit), including
 //! old/new aliasing and the JSON path.
 
+mod common;
+use common::c_errors::{expect_error, last_message};
+
 use asperity::ffi::homogenised::*;
 use asperity::ffi::*;
 use asperity::friction::*;
@@ -13,22 +16,6 @@ use std::ptr::{null, null_mut};
 const MPA: f64 = 1e6;
 const AREA: f64 = 1e-6;
 const K: f64 = 1e8;
-
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).unwrap()
-    }
-}
-
-#[track_caller]
-fn expect_error(status: i32, code: i32, what: &str) {
-    let msg = last_message();
-    assert_eq!(status, code, "status (message: {msg})");
-    assert!(msg.contains(what), "message `{msg}` should name {what}");
-}
 
 fn samples() -> Vec<HomogenisedSample> {
     [

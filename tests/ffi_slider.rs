@@ -4,6 +4,9 @@
 //! separate), NULL pointers, bad input (status and the message of
 //! `asperity_last_error_message`), and outputs untouched on failure.
 
+mod common;
+use common::c_errors::{expect_error, last_message};
+
 use asperity::ffi::slider::*;
 use asperity::ffi::*;
 use asperity::friction::{
@@ -13,22 +16,6 @@ use asperity::scene::Scene;
 use std::ffi::CString;
 use std::path::{Path, PathBuf};
 use std::ptr::{null, null_mut};
-
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).unwrap()
-    }
-}
-
-#[track_caller]
-fn expect_error(status: i32, code: i32, what: &str) {
-    let msg = last_message();
-    assert_eq!(status, code, "status (message: {msg})");
-    assert!(msg.contains(what), "message `{msg}` should name {what}");
-}
 
 fn scene_path() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/chapter6_copper.json")

@@ -2,6 +2,9 @@
 //! arrays, bad values (negative status and a message naming the argument),
 //! NULL accepted by `_free`, and results equal to the Rust API.
 
+mod common;
+use common::c_errors::{expect_error, last_message};
+
 use asperity::ffi::friction::*;
 use asperity::ffi::*;
 use asperity::friction::{NanoAsperities, SliderGeometry};
@@ -9,22 +12,6 @@ use std::ptr::{null, null_mut};
 
 const NM: f64 = 1e-9;
 const UM: f64 = 1e-6;
-
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).expect("UTF-8 message")
-    }
-}
-
-#[track_caller]
-fn expect_error(status: i32, code: i32, what: &str) {
-    let msg = last_message();
-    assert_eq!(status, code, "status (message: {msg})");
-    assert!(msg.contains(what), "message `{msg}` should name {what}");
-}
 
 /// Piecewise-linear micro profile (dx = 1 µm) and a square-wave nano
 /// profile (dx = 10 nm), as in tests/slider_geometry.rs.

@@ -4,6 +4,9 @@
 //! and Zhuravlev, and the error paths (NULL pointers, lengths, selectors,
 //! non-finite input, the failing index of a batch).
 
+mod common;
+use common::c_errors::{expect_error, last_message};
+
 use asperity::ffi::statistics::*;
 use asperity::ffi::surface::*;
 use asperity::ffi::*;
@@ -16,24 +19,6 @@ use asperity::surface::{
 use std::f64::consts::PI;
 use std::ffi::c_void;
 use std::ptr::{null, null_mut};
-
-/// The thread's last error message.
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).expect("UTF-8 message")
-    }
-}
-
-/// Assert a status and that the message names `what` (e.g. "`heights`").
-#[track_caller]
-fn expect_error(status: i32, code: i32, what: &str) {
-    let msg = last_message();
-    assert_eq!(status, code, "status (message: {msg})");
-    assert!(msg.contains(what), "message `{msg}` should name {what}");
-}
 
 #[track_caller]
 fn ok(status: i32) {

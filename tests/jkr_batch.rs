@@ -6,6 +6,9 @@
 //! for w = 0, tiny and ordinary w; tail lengths, aliasing, NULL arrays, errors
 //! at every position and determinism.
 
+mod common;
+use common::c_errors::last_message;
+
 use asperity::contact::batch::eval_elementwise;
 use asperity::contact::{eval_batch, BatchError, ContactState, Jkr, RawBatch};
 use asperity::ffi::contact::*;
@@ -193,15 +196,6 @@ fn c_law(l: &Jkr) -> AsperityNormalLaw {
     let s = unsafe { asperity_law_jkr(l.radius, l.e_star, l.work_of_adhesion, out.as_mut_ptr()) };
     assert_eq!(s, ASPERITY_OK);
     unsafe { out.assume_init() }
-}
-
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).unwrap()
-    }
 }
 
 #[test]

@@ -207,15 +207,6 @@ fn typical(a: &Arg, v: f64) -> bool {
         }
 }
 
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).unwrap()
-    }
-}
-
 fn names_one_of(msg: &str, args: &[&Arg]) -> bool {
     args.iter()
         .flat_map(|a| a.names.iter())
@@ -1647,6 +1638,7 @@ fn statistics_full() {
 
 #[allow(dead_code)]
 mod common;
+use common::c_errors::last_message;
 
 use asperity::ffi::homogenised::*;
 use asperity::friction::{FrictionIncrement, FrictionPointState, FrictionResponse};

@@ -10,6 +10,7 @@
 //! same numbers.
 
 mod common;
+use common::c_errors::last_message;
 
 use asperity::contact::{
     eval_batch, ContactState, Control, Derjaguin, Dmt, FlatPunch, Hertz, Jkr, JkrPowerPunch,
@@ -659,15 +660,6 @@ fn c_abi_slider_shared_with_one_work_per_thread() {
         out
     });
     unsafe { asperity_slider_free(s) };
-}
-
-fn last_message() -> String {
-    unsafe {
-        let n = asperity_last_error_message(null_mut(), 0);
-        let mut buf = vec![0u8; n + 1];
-        asperity_last_error_message(buf.as_mut_ptr().cast(), buf.len());
-        String::from_utf8(buf[..n].to_vec()).unwrap()
-    }
 }
 
 /// The last-error message is per thread: a failure on one thread does not

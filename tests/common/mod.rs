@@ -3,6 +3,7 @@
 //! (`native`) the helpers of the tests that compile C, C++ and Fortran
 //! programs against the library.
 
+pub mod c_errors;
 pub mod counting;
 pub mod native;
 
@@ -11,6 +12,7 @@ use std::process::Command;
 use std::sync::OnceLock;
 
 /// The crate's root directory.
+#[allow(dead_code)]
 pub fn manifest() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
