@@ -64,19 +64,16 @@ impl Lu32 {
         &mut self.a
     }
 
-    /// Factor the matrix filled through [`Lu32::matrix_mut`]. A singular
+    /// Factor the matrix filled through [`Lu32::matrix_mut`] (before any,
+    /// nothing is factored and [`Lu32::is_valid`] stays false). A singular
     /// matrix is factored too (faer does not stop); its solves are not
     /// finite, which the callers check.
     pub(super) fn factor(&mut self) {
         let n = self.n;
-        let mem = self.mem.get_or_insert_with(|| {
-            MemBuffer::new(lu_in_place_scratch::<usize, f32>(
-                n,
-                n,
-                Par::Seq,
-                Default::default(),
-            ))
-        });
+        // Set with the buffer by `matrix_mut`: without it nothing was filled.
+        let Some(mem) = self.mem.as_mut() else {
+            return;
+        };
         lu_in_place(
             MatMut::from_column_major_slice_mut(&mut self.a, n, n),
             &mut self.perm,
