@@ -157,7 +157,8 @@ fn table_grid(mu: f64) -> usize {
 /// the assessments in the order of [`Fidelity::ALL`], the reference pull-off
 /// (N) and its grid (the converged one). Builds the Lennard-Jones reference
 /// table: about a second for μ ≤ 1, up to a minute above (N = 256 on moving
-/// meshes, see [`crate::contact::lj_sphere::LjSolver::path_samples`]).
+/// meshes, see [`crate::contact::lj_sphere::LjSolver::path_samples`]); above
+/// μ = 10 the converged pull-off (N = 1024) adds a minute or more.
 pub fn assess(
     radius: f64,
     e_star: f64,
