@@ -365,7 +365,7 @@ impl Slider {
     /// at position 0; a non-finite `counter`; the material ([`FrictionMaterial::validate`]);
     /// `depth` or `root_margin` not finite and > 0 (≥ 0 for the margin);
     /// `depth` narrower than the nano-asperity spacing; more than
-    /// [`MAX_NANO_PER_ROD`](super::geometry::MAX_NANO_PER_ROD)
+    /// [`MAX_NANO_PER_ROD`]
     /// nano-asperities per rod, ⌊w/λ⌋·⌊D/λ⌋ (`depth` when the depth makes
     /// the excess, `spacing` otherwise); a fixed-gap
     /// `position` not finite; a fixed `load` not finite, negative or above
