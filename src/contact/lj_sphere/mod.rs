@@ -538,16 +538,19 @@ impl Mesh {
         // next from below and starts its Newton iteration (a few steps each).
         let inv = |target: f64, from: f64| -> f64 {
             // Newton safeguarded by bisection: a Newton step must land in
-            // the bracket, and the bracket must halve every two steps (Newton
-            // can cycle around the inflections of the tanh band).
+            // the bracket and must have halved |φ − target| since the last
+            // step (Newton can cycle around the inflections of the tanh
+            // band). The bracket's upper end is L, far away: a rule that
+            // asks the bracket itself to halve bisects towards L although
+            // Newton converges from below, and cost 5× the evaluations.
             let (mut lo, mut hi) = (from, l);
             let (p0, d0) = phi_dphi(from);
             let mut r = from + (target - p0) / d0;
             if !(r > lo && r < hi) {
                 r = 0.5 * (lo + hi);
             }
-            let mut width = hi - lo;
-            for k in 0..400 {
+            let mut f_last = f64::INFINITY;
+            for _ in 0..400 {
                 let (p, dp) = phi_dphi(r);
                 let f = p - target;
                 if f > 0.0 {
@@ -562,12 +565,10 @@ impl Mesh {
                 if (rn - r).abs() <= 1e-16 * (1.0 + r) {
                     return rn;
                 }
-                if !(rn > lo && rn < hi) || (k % 2 == 1 && hi - lo > 0.5 * width) {
+                if !(rn > lo && rn < hi) || f.abs() > 0.5 * f_last {
                     rn = 0.5 * (lo + hi);
                 }
-                if k % 2 == 1 {
-                    width = hi - lo;
-                }
+                f_last = f.abs();
                 r = rn;
             }
             0.5 * (lo + hi)
