@@ -386,14 +386,16 @@ impl Segment {
     #[inline]
     fn eval(&self, x: f64) -> (f64, f64, f64) {
         let u = self.u_of(x);
+        // dΔ/du = 2·sign·u (sqrt) or sign (linear). Its reciprocal is taken
+        // here, so that the division runs while the interval is looked up.
+        let du_dx = 1.0 / (2.0 * self.sign * u);
         let iv = self.interval(u);
         let t = (u - iv.lo) * iv.inv_h;
         let f = horner(&iv.f, t);
         let a = horner(&iv.a, t);
         let dfdu = horner_d(&iv.f, t) * iv.inv_h;
-        // dΔ/du = 2·sign·u (sqrt) or sign (linear).
         let k = if self.sqrt {
-            let k = dfdu / (2.0 * self.sign * u);
+            let k = dfdu * du_dx;
             if u == 0.0 && iv.f[1] == 0.0 {
                 // F − F₀ ∝ u²: the finite limit.
                 iv.f[2] * iv.inv_h * iv.inv_h * self.sign
@@ -1285,7 +1287,7 @@ impl TabulatedLaw {
 
     // ---------------------------------------------------------- evaluation
 
-    #[cold]
+    #[inline]
     fn jump_forward(&self, k: usize, x: f64) -> usize {
         let n = self.branches.len();
         (k + 1..n)
@@ -1293,7 +1295,7 @@ impl TabulatedLaw {
             .unwrap_or(n - 1)
     }
 
-    #[cold]
+    #[inline]
     fn jump_back(&self, k: usize, x: f64) -> usize {
         (0..k)
             .rev()
@@ -1342,9 +1344,14 @@ impl TabulatedLaw {
     fn deep(&self, x: f64) -> (f64, f64, f64) {
         let d = &self.data.deep;
         let z = x - d.delta_zero;
-        let f = d.h * z * z.sqrt() + d.bf * z.powf(d.qf);
-        let a = d.g * z.sqrt() + d.ba * z.powf(d.qa);
-        let k = 1.5 * d.h * z.sqrt() + d.qf * d.bf * z.powf(d.qf - 1.0);
+        // One logarithm and two exponentials instead of three `powf`: the
+        // tail is where deep-contact calls land, and `powf` cost 3× the
+        // whole table lookup there.
+        let (sz, lz) = (z.sqrt(), z.ln());
+        let (zf1, za) = (((d.qf - 1.0) * lz).exp(), (d.qa * lz).exp());
+        let f = d.h * z * sz + d.bf * z * zf1;
+        let a = d.g * sz + d.ba * za;
+        let k = 1.5 * d.h * sz + d.qf * d.bf * zf1;
         (f, a.max(0.0), k)
     }
 
