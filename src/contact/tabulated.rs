@@ -386,24 +386,23 @@ impl Segment {
     #[inline]
     fn eval(&self, x: f64) -> (f64, f64, f64) {
         let u = self.u_of(x);
-        // dΔ/du = 2·sign·u (sqrt) or sign (linear). Its reciprocal is taken
-        // here, so that the division runs while the interval is looked up.
-        let du_dx = 1.0 / (2.0 * self.sign * u);
+        // du/dΔ = 1/(2·sign·u) (sqrt) or sign (linear, sign = ±1), taken
+        // here so that the division runs while the interval is looked up.
+        let du_dx = if self.sqrt {
+            1.0 / (2.0 * self.sign * u)
+        } else {
+            self.sign
+        };
         let iv = self.interval(u);
         let t = (u - iv.lo) * iv.inv_h;
         let f = horner(&iv.f, t);
         let a = horner(&iv.a, t);
         let dfdu = horner_d(&iv.f, t) * iv.inv_h;
-        let k = if self.sqrt {
-            let k = dfdu * du_dx;
-            if u == 0.0 && iv.f[1] == 0.0 {
-                // F − F₀ ∝ u²: the finite limit.
-                iv.f[2] * iv.inv_h * iv.inv_h * self.sign
-            } else {
-                k
-            }
+        let k = if self.sqrt && u == 0.0 && iv.f[1] == 0.0 {
+            // F − F₀ ∝ u²: the finite limit.
+            iv.f[2] * iv.inv_h * iv.inv_h * self.sign
         } else {
-            dfdu * self.sign
+            dfdu * du_dx
         };
         let k = if k.is_nan() {
             STIFFNESS_BAR_MAX
