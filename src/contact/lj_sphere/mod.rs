@@ -38,8 +38,8 @@
 //!   `r [E(c/r) − (1 − c²/r²) K(c/r)]` for `r ≥ c` (both `= c` at `r = c`,
 //!   taken exactly), annuli are differences of disks:
 //!   `A_ij = D(x_i, c_{j+1}) − D(x_i, c_j)`. The logarithmic singularity of the
-//!   kernel is integrated analytically. `K`, `E` come from the `ellip` crate,
-//!   which takes the parameter `m = k²`.
+//!   kernel is integrated analytically. `D` is evaluated through the
+//!   arithmetic–geometric mean, vectorised over the nodes (module `disk`).
 //! * **Tail** beyond `L`: there the gap is `r̄²/2 + C` to high accuracy
 //!   (`C = h̄ − r̄²/2` at the last node), so the tail force is added in closed
 //!   form, `−2∫_L^∞ p̄ r̄ dr̄ = −(16/3)[H_L⁻²/2 − H_L⁻⁸/8]`, `H_L = L²/2 + C`;
@@ -168,10 +168,12 @@ use core::f64::consts::PI;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::{MatMut, MatRef};
 
+mod disk;
 mod edge;
 mod lu32;
 mod path;
 mod sample;
+pub use disk::disk_displacement;
 use path::{BWork, State};
 pub use sample::LjPathSamples;
 
@@ -201,36 +203,6 @@ pub fn lj_pressure(h: f64) -> (f64, f64) {
 pub fn rigid_force_bar(approach_bar: f64) -> f64 {
     let hm = 1.0 - approach_bar;
     -LJ_C * (hm.powi(-2) - 0.25 * hm.powi(-8))
-}
-
-/// `D(r, c) = ∫₀^c s/(r+s) K(2√(rs)/(r+s)) ds`: the (scaled) surface
-/// displacement at radius `r` of a uniform unit pressure on the disk of
-/// radius `c`, `c E(r/c)` inside, `r[E(c/r) − (1 − c²/r²)K(c/r)]` outside,
-/// `c` on the rim (REFERENCE §6; `ellip` takes `m = k²`). `r, c ≥ 0`.
-pub fn disk_displacement(r: f64, c: f64) -> f64 {
-    if c <= 0.0 {
-        return 0.0;
-    }
-    if r == c {
-        return c;
-    }
-    if r < c {
-        let k = r / c;
-        let m = k * k;
-        if m >= 1.0 {
-            return c;
-        }
-        c * ellip::ellipe(m).unwrap_or(f64::NAN)
-    } else {
-        let k = c / r;
-        let m = k * k;
-        if m >= 1.0 {
-            return r;
-        }
-        // K and E from one evaluation (they share the interval lookup).
-        let (kk, e) = ellip::ellipke(m).unwrap_or((f64::NAN, f64::NAN));
-        r * (e - (1.0 - m) * kk)
-    }
 }
 
 /// A Lennard-Jones adhesive elastic sphere (dimensional parameters, SI).
@@ -777,17 +749,7 @@ impl LjSolver {
             o.edge_fraction,
         );
         // Influence matrix, column-major: a[j*n + i] = D(x_i, c_{j+1}) − D(x_i, c_j).
-        let mut a = vec![0.0; n * n];
-        let mut dprev = vec![0.0; n];
-        for j in 0..n {
-            let cj1 = mesh.c[j + 1];
-            let col = &mut a[j * n..(j + 1) * n];
-            for i in 0..n {
-                let d = disk_displacement(mesh.x[i], cj1);
-                col[i] = d - dprev[i];
-                dprev[i] = d;
-            }
-        }
+        let a = disk::influence_matrix(&mesh.x, &mesh.c);
         if a.iter().any(|v| !v.is_finite()) {
             return Err(Error::NotConverged {
                 what: "LJ sphere influence matrix (elliptic integrals)",
