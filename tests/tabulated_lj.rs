@@ -5,7 +5,8 @@
 //! Cases: μ = 0.1 at N = 64, μ = 1 at N = 96, μ ∈ {0.1, 0.5, 1} at N = 128
 //! with dense comparisons, and μ = 3 at N = 64 through the edge continuation
 //! (`-- --nocapture` prints sizes, errors and build times); about 10 s with
-//! the optimised test profile. μ = 10 at N = 256 is `#[ignore]`d (minutes).
+//! the optimised test profile. μ = 10 at N = 256 is `#[ignore]`d (about 20 s
+//! in release).
 
 use asperity::contact::curve::EquilibriumCurve;
 use asperity::contact::lj_sphere::{rigid_force_bar, LjSolution, LjSolver, LjSphere};
