@@ -121,7 +121,8 @@ pub fn disk_displacement(r: f64, c: f64) -> f64 {
 fn disk_column(x: &[f64], c: f64, out: &mut [f64]) {
     let split = x.partition_point(|&v| v < c);
     let ic = 1.0 / c;
-    // Inside the disk: k = x/c, D = c K (1 − k²/2 − S).
+    // Inside the disk: k = x/c, D = c K (1 − k²/2 − S) (c itself should
+    // x·(1/c) round up to 1 for a node within an ulp of the edge).
     for (xs, os) in x[..split].chunks(LANES).zip(out[..split].chunks_mut(LANES)) {
         let mut k = [0.0f64; LANES];
         for (kl, &xl) in k.iter_mut().zip(xs) {
@@ -129,7 +130,11 @@ fn disk_column(x: &[f64], c: f64, out: &mut [f64]) {
         }
         let (kk, s) = agm(&k);
         for l in 0..os.len() {
-            os[l] = c * kk[l] * (1.0 - 0.5 * k[l] * k[l] - s[l]);
+            os[l] = if k[l] < 1.0 {
+                c * kk[l] * (1.0 - 0.5 * k[l] * k[l] - s[l])
+            } else {
+                c
+            };
         }
     }
     // Outside (and on the rim, k = 1 exactly: D = c): k = c/x,
@@ -238,8 +243,16 @@ mod tests {
                 );
             }
         }
-        let mut out = [0.0; 3];
-        disk_column(&[0.5, 1.0, 2.0], 1.0, &mut out);
-        assert_eq!(out[1], 1.0);
+        // On the rim and within an ulp of it on either side: D = c. For
+        // this c, the node an ulp below has x·(1/c) = 1 exactly.
+        let c = 29.049_183_297_589_51f64;
+        let below = f64::from_bits(c.to_bits() - 1);
+        assert_eq!(below * (1.0 / c), 1.0);
+        let above = f64::from_bits(c.to_bits() + 1);
+        let mut out = [0.0; 5];
+        disk_column(&[0.5, below, c, above, 2.0 * c], c, &mut out);
+        for (i, &v) in out[1..4].iter().enumerate() {
+            assert!((v / c - 1.0).abs() < 1e-14, "node {}: D = {v}", i + 1);
+        }
     }
 }
