@@ -65,7 +65,6 @@ const AGM_MAX: usize = 16;
 fn agm<const L: usize>(k: &[f64; L]) -> ([f64; L], [f64; L]) {
     let mut a = [1.0f64; L];
     let mut b = [0.0f64; L];
-    let mut c = *k;
     let mut s = [0.0f64; L];
     for l in 0..L {
         b[l] = ((1.0 - k[l]) * (1.0 + k[l])).sqrt();
@@ -78,7 +77,6 @@ fn agm<const L: usize>(k: &[f64; L]) -> ([f64; L], [f64; L]) {
             let cn = 0.5 * (a[l] - b[l]);
             b[l] = (a[l] * b[l]).sqrt();
             a[l] = an;
-            c[l] = cn;
             s[l] += w * cn * cn;
             done &= cn <= 1e-9 * an;
         }
@@ -92,6 +90,18 @@ fn agm<const L: usize>(k: &[f64; L]) -> ([f64; L], [f64; L]) {
         kk[l] = 0.5 * PI / a[l];
     }
     (kk, s)
+}
+
+/// `D` inside the disk from the modulus `k = r/c < 1` and its `(K, S)`.
+#[inline(always)]
+fn inside(c: f64, k: f64, kk: f64, s: f64) -> f64 {
+    c * kk * (1.0 - 0.5 * k * k - s)
+}
+
+/// `D` outside the disk from the modulus `k = c/r < 1` and its `(K, S)`.
+#[inline(always)]
+fn outside(r: f64, k: f64, kk: f64, s: f64) -> f64 {
+    r * kk * (0.5 * k * k - s)
 }
 
 /// `D(r, c) = ∫₀^c s/(r+s) K(2√(rs)/(r+s)) ds`: the (scaled) surface
@@ -108,11 +118,11 @@ pub fn disk_displacement(r: f64, c: f64) -> f64 {
     if r < c {
         let k = r / c;
         let (kk, s) = agm(&[k]);
-        c * kk[0] * (1.0 - 0.5 * k * k - s[0])
+        inside(c, k, kk[0], s[0])
     } else {
         let k = c / r;
         let (kk, s) = agm(&[k]);
-        r * kk[0] * (0.5 * k * k - s[0])
+        outside(r, k, kk[0], s[0])
     }
 }
 
@@ -131,7 +141,7 @@ fn disk_column(x: &[f64], c: f64, out: &mut [f64]) {
         let (kk, s) = agm(&k);
         for l in 0..os.len() {
             os[l] = if k[l] < 1.0 {
-                c * kk[l] * (1.0 - 0.5 * k[l] * k[l] - s[l])
+                inside(c, k[l], kk[l], s[l])
             } else {
                 c
             };
@@ -147,7 +157,7 @@ fn disk_column(x: &[f64], c: f64, out: &mut [f64]) {
         let (kk, s) = agm(&k);
         for l in 0..os.len() {
             os[l] = if k[l] < 1.0 {
-                xs[l] * kk[l] * (0.5 * k[l] * k[l] - s[l])
+                outside(xs[l], k[l], kk[l], s[l])
             } else {
                 c
             };
