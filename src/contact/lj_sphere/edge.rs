@@ -29,11 +29,11 @@
 //!    on this mesh's Jacobian, preconditioned by the last factorisation,
 //!    which may belong to the previous marker's mesh), with the
 //!    extra equation `ln h̄(m) = ln 3^{1/6}` (`c(m)`: linear interpolation
-//!    between the two nodes around `m`). Meshes of different `m` have their
-//!    nodes at the same positions relative to the band, so the predictor is
-//!    the secant extrapolation of the last two solutions **node by node**,
-//!    which moves the edge profile with the edge: steps in `m` are many
-//!    zone widths long. The marker grows monotonically along the branch
+//!    between the two nodes around `m`). The predictor is the secant
+//!    extrapolation of the last two solutions **in the frame of the
+//!    marker** (each profile interpolated at `r − m + m_k`,
+//!    [`shifted_guess`]), which moves the edge profile with the edge: steps
+//!    in `m` are many zone widths long. The marker grows monotonically along the branch
 //!    (neck → jump-out → pull-off → Hertz regime), as the contact radius of
 //!    JKR and Maugis–Dugdale does.
 //!
@@ -58,17 +58,98 @@ use super::*;
 /// `ln 3^{1/6}`: the log-gap of the peak of the Lennard-Jones attraction.
 pub(super) const MARK: f64 = 0.183_102_048_111_638_9;
 
+/// The switch marker of the edge continuation, in band half-widths `w`.
+///
+/// The neck spreads over the fixed mesh of the neck phase by steps of at
+/// most `DY_STEP` in a log-gap, so the neck phase's cost grows with the
+/// switch marker: at μ = 10, N = 256 it takes 157 of the curve's 322
+/// states. An earlier switch is cheaper but changes which equilibria of
+/// the grid's wavy contact branch the marches sample (session 11,
+/// BENCHMARKS §3). At 0.3 w the N = 512 curves at μ = 6–30 took 1.0–1.3 s
+/// instead of 2.5–3.4 s, with the same failures and values within the
+/// grid's scatter, but the μ = 10, N = 256 table no longer built
+/// (`from_curve` rejected its load-controlled pull-off). At 0.2 w and below
+/// the μ = 10 and 30 curves at N = 256 sampled a load-unstable wiggle after
+/// the pull-off (`tests/lj_sphere.rs`). So the switch stays here until the
+/// contact branch of the discrete model is smooth.
+const SWITCH: f64 = 0.75;
+
+/// Relative tolerance on the marker radius of an extremum located by
+/// [`LjSolver::edge_extremum`]. The extremised value is then exact to
+/// `½|φ''|δ² ≈ 1e-14`, the other coordinates of the point to about `1e-7`
+/// relative. A tighter one only spends solves on noise: the states are
+/// converged to a gap residual of `1e-10`, so values closer than that do
+/// not order, and the location of a minimum is not determined below about
+/// `√(1e-10/|φ''|) ≈ 1e-5`. (At 1e-9 Brent's method took 15–27 solves per
+/// extremum at μ = 3 and 10, N = 256; at 1e-7 9–19, and the pull-off,
+/// jump points and hysteresis agree to the six printed digits.)
+const BRENT_RTOL: f64 = 1e-7;
+
 /// One state of the edge phase: marker radius and the state on the mesh
 /// banded at it.
 #[derive(Debug, Clone)]
 pub(super) struct EdgeState {
     pub(super) m: f64,
+    /// The nodes of the mesh banded at `m` (where `st.y` lives).
+    pub(super) x: Vec<f64>,
     pub(super) st: State,
+}
+
+impl EdgeState {
+    /// The log-gap of this state at the distance `xi` from its marker
+    /// (`r = m + xi`), by cubic Lagrange interpolation over the four nearest
+    /// nodes; even in `r` across the axis (the gap is smooth and
+    /// axisymmetric) and constant beyond the last node.
+    fn y_at(&self, xi: f64) -> f64 {
+        let x = &self.x;
+        let y = &self.st.y;
+        let n = x.len();
+        let r = (self.m + xi).abs().min(x[n - 1]);
+        let j = x.partition_point(|&v| v <= r);
+        let lo = j.saturating_sub(2).min(n - 4);
+        let mut v = 0.0;
+        for a in lo..lo + 4 {
+            let mut l = 1.0;
+            for b in lo..lo + 4 {
+                if b != a {
+                    l *= (r - x[b]) / (x[a] - x[b]);
+                }
+            }
+            v += l * y[a];
+        }
+        v
+    }
+}
+
+/// The guess for the marker `m` on the nodes `x`: the weighted sum
+/// `Σ w_k y_k(x − m + m_k)` of the states' profiles, each shifted so that
+/// its marker lies at `m` (weights summing to 1: the secant extrapolation
+/// `(1 + θ, −θ)` of the march, the interpolation `(1 − θ, θ)` between
+/// bracketing samples, a single state). The edge profile travels with the
+/// marker, so in the frame of the marker the states differ only by the slow
+/// change of its shape. (A guess node by node, as the meshes banded at the
+/// markers have nodes at similar places relative to the band, was off by up
+/// to 1.7 in a log-gap at the marker: the band's nodes drift past it, by 16
+/// nodes over the first marker step at μ = 10; Newton then started from
+/// residuals up to 2e7 and needed 7–36 iterations per marker.)
+/// `ᾱ` is combined with the same weights.
+pub(super) fn shifted_guess(from: &[(&EdgeState, f64)], m: f64, x: &[f64]) -> (Vec<f64>, f64) {
+    if let [(e, _)] = from {
+        if e.m == m && e.x == x {
+            return (e.st.y.clone(), e.st.al);
+        }
+    }
+    let y = x
+        .iter()
+        .map(|&xi| from.iter().map(|(e, w)| w * e.y_at(xi - m)).sum())
+        .collect();
+    let al = from.iter().map(|(e, w)| w * e.st.al).sum();
+    (y, al)
 }
 
 /// The two phases of a large-μ continuation.
 pub(super) struct EdgePath {
-    /// Solver of the neck phase (band at the switch marker `0.75 w`: the
+    /// Solver of the neck phase (band at the switch marker [`SWITCH`]` w`: the
     /// first edge-phase mesh).
     pub(super) neck_solver: LjSolver,
     /// Neck-phase states (on `neck_solver`'s mesh).
@@ -135,30 +216,34 @@ impl LjSolver {
     }
 
     /// The equilibrium with the marker at `m`, on the mesh banded at `m`,
-    /// from the guess `(y, al)` (node values of that mesh). Its tangent and
-    /// path derivatives are left for [`derivs_in_m`].
+    /// from the guess [`shifted_guess`] of the weighted states `from`. Its
+    /// tangent and path derivatives are left for [`derivs_in_m`].
     pub(super) fn edge_solve(
         &self,
         m: f64,
         plan: (f64, f64),
-        mut y: Vec<f64>,
-        mut al: f64,
+        from: &[(&EdgeState, f64)],
         s: f64,
         bw: &mut BWork,
     ) -> Result<EdgeState> {
         let sv = self.rebanded(m, plan)?;
+        let (mut y, mut al) = shifted_guess(from, m, &sv.mesh.x);
         let row = sv.marker_row(m);
         // Inexact Newton preconditioned by the last factorisation, although
         // it belongs to the previous marker's mesh: the meshes place their
         // nodes alike relative to the band and the solution moves with it,
-        // so node by node the Jacobians are close (the same reason the
-        // node-by-node secant predictor works). GMRES acts on this mesh's
-        // true Jacobian and the factorisation is refreshed when it needs
-        // more than a few iterations, as on a fixed mesh.
+        // so node by node the Jacobians are close (they drift by a few
+        // nodes per marker step). GMRES acts on this mesh's true Jacobian
+        // and the factorisation is refreshed when it needs more than a few
+        // iterations, as on a fixed mesh.
         sv.bnewton(&Con::Plane { row, c: MARK }, &mut y, &mut al, bw, false)?;
         let n = sv.n();
         let st = sv.make_state(&y, al, vec![0.0; n + 1], s, bw, false)?;
-        Ok(EdgeState { m, st })
+        Ok(EdgeState {
+            m,
+            x: sv.mesh.x,
+            st,
+        })
     }
 
     /// The neck and edge phases from far away until `P̄ ≥ max_force` or
@@ -171,7 +256,7 @@ impl LjSolver {
         stop: &dyn Fn(&[EdgeState]) -> bool,
     ) -> Result<EdgePath> {
         let (w, _) = plan;
-        let m_switch = 0.75 * w;
+        let m_switch = SWITCH * w;
         // The neck phase runs on the mesh banded at the switch marker, the
         // first edge mesh: the phases meet at one equilibrium of one
         // discrete problem, so the path is continuous across the switch.
@@ -196,11 +281,15 @@ impl LjSolver {
         // marker equation.
         let phi = |st: &State| ns.edge_marker(&st.y) - m_switch;
         let junction = ns.path_root(&neck[k - 2], &neck[k - 1], &mut bw, &phi)?;
+        let junction_state = EdgeState {
+            m: m_switch,
+            x: ns.mesh.x.clone(),
+            st: junction.clone(),
+        };
         let e0 = self.edge_solve(
             m_switch,
             plan,
-            junction.y.clone(),
-            junction.al,
+            &[(&junction_state, 1.0)],
             junction.s,
             &mut bw,
         )?;
@@ -225,21 +314,13 @@ impl LjSolver {
                 });
             }
             let m = cur.m + dm;
-            // Secant predictor node by node (meshes banded at the markers).
-            let (y, al) = if k >= 2 && fails == 0 {
+            // Secant predictor in the frame of the marker.
+            let from: Vec<(&EdgeState, f64)> = if k >= 2 && fails == 0 {
                 let prev = &edge[k - 2];
                 let th = dm / (cur.m - prev.m);
-                (
-                    cur.st
-                        .y
-                        .iter()
-                        .zip(&prev.st.y)
-                        .map(|(a, b)| a + th * (a - b))
-                        .collect(),
-                    cur.st.al + th * (cur.st.al - prev.st.al),
-                )
+                vec![(cur, 1.0 + th), (prev, -th)]
             } else {
-                (cur.st.y.clone(), cur.st.al)
+                vec![(cur, 1.0)]
             };
             // Refresh the factorisation once it needed more than a few GMRES
             // iterations, as the fixed-mesh march does (an LU costs about
@@ -248,7 +329,7 @@ impl LjSolver {
             if bw.krylov > KRYLOV_REFRESH {
                 bw.invalidate();
             }
-            match self.edge_solve(m, plan, y, al, 0.0, &mut bw) {
+            match self.edge_solve(m, plan, &from, 0.0, &mut bw) {
                 Err(e) => {
                     dm *= 0.5;
                     fails += 1;
@@ -298,21 +379,11 @@ impl LjSolver {
         const CGOLD: f64 = 0.381_966_011_250_105_1;
         let samples = [lo.clone(), mid.clone(), hi.clone()];
         let guess = |m: f64| {
-            // Node-by-node interpolation between the bracketing samples.
+            // Interpolation between the bracketing samples.
             let k = if m <= samples[1].m { 0 } else { 1 };
             let (l, r) = (&samples[k], &samples[k + 1]);
             let th = (m - l.m) / (r.m - l.m);
-            let y: Vec<f64> =
-                l.st.y
-                    .iter()
-                    .zip(&r.st.y)
-                    .map(|(p, q)| p + th * (q - p))
-                    .collect();
-            (
-                y,
-                l.st.al + th * (r.st.al - l.st.al),
-                l.st.s + th * (r.st.s - l.st.s),
-            )
+            ([(l, 1.0 - th), (r, th)], l.st.s + th * (r.st.s - l.st.s))
         };
         let (mut a, mut b) = (lo.m, hi.m);
         let (mut x, mut w, mut v) = (mid.m, mid.m, mid.m);
@@ -322,7 +393,7 @@ impl LjSolver {
         let mut evals: Vec<EdgeState> = Vec::new();
         for _ in 0..60 {
             let xm = 0.5 * (a + b);
-            let tol1 = 1e-9 * x.abs() + 1e-12;
+            let tol1 = BRENT_RTOL * x.abs() + 1e-12;
             let tol2 = 2.0 * tol1;
             if (x - xm).abs() <= tol2 - 0.5 * (b - a) {
                 break;
@@ -357,8 +428,8 @@ impl LjSolver {
             } else {
                 x + tol1.copysign(d)
             };
-            let (y, al, s) = guess(u);
-            let es = match self.edge_solve(u, plan, y, al, s, bw) {
+            let (from, s) = guess(u);
+            let es = match self.edge_solve(u, plan, &from, s, bw) {
                 Ok(es) => es,
                 Err(_) => {
                     // From the nearest sample instead of the interpolation.
@@ -367,7 +438,7 @@ impl LjSolver {
                         .chain(evals.iter())
                         .min_by(|p, q| (p.m - u).abs().total_cmp(&(q.m - u).abs()))
                         .unwrap();
-                    self.edge_solve(u, plan, near.st.y.clone(), near.st.al, s, bw)?
+                    self.edge_solve(u, plan, &[(near, 1.0)], s, bw)?
                 }
             };
             let fu = value(&es.st);
@@ -564,6 +635,61 @@ impl LjSolver {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An edge state on the μ = 10, N = 256 mesh banded at `m` whose
+    /// log-gap is `f(r − m) + c m g(r − m)`: an edge profile travelling with
+    /// the marker while its shape changes linearly in `m`.
+    fn travelling(m: f64, c: f64) -> EdgeState {
+        let (n, w) = (256, 0.5);
+        let x = Mesh::new(n, 8.0, 24.0, m, w, 0.5).x;
+        let prof = |xi: f64| {
+            // Flat inside (as a contact is), so that the guess's mirror
+            // image across the axis does not matter.
+            let f = 0.5 * (1.0 + (xi / 0.03).tanh()) + 0.01 * xi.max(0.0).powi(2);
+            let g = (-(xi / 0.1).powi(2)).exp();
+            f + c * m * g
+        };
+        let y: Vec<f64> = x.iter().map(|&r| prof(r - m)).collect();
+        let st = State {
+            y,
+            al: 2.0 * m,
+            t: Vec::new(),
+            s: 0.0,
+            pt: LjPoint::default(),
+            df: f64::NAN,
+            h0: f64::NAN,
+        };
+        EdgeState { m, x, st }
+    }
+
+    /// The secant guess in the frame of the marker reproduces a travelling
+    /// edge profile to the interpolation error of its band cells, where the
+    /// guess node by node (the predictor up to session 10) is off by O(1)
+    /// at the edge, because the band's nodes drift past the marker; a
+    /// single state at its own marker and mesh is returned unchanged.
+    #[test]
+    fn shifted_secant_follows_a_travelling_edge() {
+        let c = 0.3;
+        let (p, q) = (travelling(4.0, c), travelling(4.2, c));
+        let truth = travelling(4.45, c);
+        let th = (truth.m - q.m) / (q.m - p.m);
+        let (y, al) = shifted_guess(&[(&q, 1.0 + th), (&p, -th)], truth.m, &truth.x);
+        let err = y
+            .iter()
+            .zip(&truth.st.y)
+            .fold(0.0f64, |e, (a, b)| e.max((a - b).abs()));
+        assert!(err < 1e-3, "shifted secant off by {err}");
+        assert!((al - truth.st.al).abs() < 1e-12);
+        let node: f64 = (0..truth.x.len())
+            .map(|i| ((1.0 + th) * q.st.y[i] - th * p.st.y[i] - truth.st.y[i]).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            node > 0.05 && node > 100.0 * err,
+            "node-by-node guess off by only {node}"
+        );
+        let (same, _) = shifted_guess(&[(&q, 1.0)], q.m, &q.x);
+        assert_eq!(same, q.st.y);
+    }
 
     /// The mesh map is inverted exactly for any band position: nodes
     /// strictly inside their cells, cells increasing. (Newton alone cycled

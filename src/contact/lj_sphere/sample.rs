@@ -675,8 +675,8 @@ const EDGE_DIFF: f64 = 1e-4;
 
 impl LjSolver {
     /// The edge-phase equilibrium at the marker `m` between the nodes `l`
-    /// and `r` (node-by-node interpolated guess; the nearer node's state if
-    /// that fails).
+    /// and `r` (guess interpolated between them in the frame of the
+    /// marker; the nearer node's state if that fails).
     fn esolve(
         &self,
         m: f64,
@@ -686,19 +686,12 @@ impl LjSolver {
         bw: &mut BWork,
     ) -> Result<EdgeState> {
         let th = (m - l.m) / (r.m - l.m);
-        let y: Vec<f64> =
-            l.st.y
-                .iter()
-                .zip(&r.st.y)
-                .map(|(p, q)| p + th * (q - p))
-                .collect();
-        let al = l.st.al + th * (r.st.al - l.st.al);
         let s = l.st.s + th * (r.st.s - l.st.s);
-        match self.edge_solve(m, plan, y, al, s, bw) {
+        match self.edge_solve(m, plan, &[(l, 1.0 - th), (r, th)], s, bw) {
             Ok(e) => Ok(e),
             Err(_) => {
                 let near = if th < 0.5 { l } else { r };
-                self.edge_solve(m, plan, near.st.y.clone(), near.st.al, s, bw)
+                self.edge_solve(m, plan, &[(near, 1.0)], s, bw)
             }
         }
     }
@@ -747,7 +740,7 @@ impl LjSolver {
 
     /// (ᾱ, P̄, a) of the edge-phase equilibrium at `m`, from the guess `e`.
     fn evals(&self, e: &EdgeState, m: f64, plan: (f64, f64), bw: &mut BWork) -> Result<[f64; 3]> {
-        let x = self.edge_solve(m, plan, e.st.y.clone(), e.st.al, e.st.s, bw)?;
+        let x = self.edge_solve(m, plan, &[(e, 1.0)], e.st.s, bw)?;
         Ok([x.st.al, x.st.pt.force, x.st.pt.contact_radius])
     }
 
@@ -833,7 +826,7 @@ impl LjSolver {
         let mut a = [0.0; 2];
         for (q, tau) in [h, 2.0 * h].into_iter().enumerate() {
             a[q] = self
-                .edge_solve(e.m + tau * tau, plan, e.st.y.clone(), e.st.al, e.st.s, bw)?
+                .edge_solve(e.m + tau * tau, plan, &[(e, 1.0)], e.st.s, bw)?
                 .st
                 .pt
                 .contact_radius;
@@ -1073,8 +1066,7 @@ mod tests {
         let h = EDGE_DIFF * plan.0;
         let solve = |m: f64, bw: &mut BWork| {
             let g = &edge[k - 1];
-            sv.edge_solve(m, plan, g.st.y.clone(), g.st.al, 0.0, bw)
-                .unwrap()
+            sv.edge_solve(m, plan, &[(g, 1.0)], 0.0, bw).unwrap()
         };
         let mut corner_turn = false;
         for &mc in &crossings {
