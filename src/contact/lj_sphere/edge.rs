@@ -33,9 +33,9 @@
 //!    extrapolation of the last two solutions **in the frame of the
 //!    marker** (each profile interpolated at `r − m + m_k`,
 //!    [`shifted_guess`]), which moves the edge profile with the edge: steps
-//!    in `m` are many zone widths long. The marker grows monotonically along the branch
-//!    (neck → jump-out → pull-off → Hertz regime), as the contact radius of
-//!    JKR and Maugis–Dugdale does.
+//!    in `m` are many zone widths long. The marker grows monotonically
+//!    along the branch (neck → jump-out → pull-off → Hertz regime), as the
+//!    contact radius of JKR and Maugis–Dugdale does.
 //!
 //! The edge-phase path derivatives are taken along the family of solutions
 //! on the moving meshes, by 3-point differences in `m`: smooth, unlike the
