@@ -75,15 +75,17 @@ pub(super) const MARK: f64 = 0.183_102_048_111_638_9;
 const SWITCH: f64 = 0.75;
 
 /// Relative tolerance on the marker radius of an extremum located by
-/// [`LjSolver::edge_extremum`]. The extremised value is then exact to
-/// `½|φ''|δ² ≈ 1e-14`, the other coordinates of the point to about `1e-7`
-/// relative. A tighter one only spends solves on noise: the states are
-/// converged to a gap residual of `1e-10`, so values closer than that do
-/// not order, and the location of a minimum is not determined below about
-/// `√(1e-10/|φ''|) ≈ 1e-5`. (At 1e-9 Brent's method took 15–27 solves per
-/// extremum at μ = 3 and 10, N = 256; at 1e-7 9–19, and the pull-off,
-/// jump points and hysteresis agree to the six printed digits.)
-const BRENT_RTOL: f64 = 1e-7;
+/// [`LjSolver::edge_extremum`]. A tighter one spends solves on noise: the
+/// force of states converged to a gap residual of `1e-10` scatters by about
+/// `1e-8` from marker to marker (near the μ = 3, N = 256 pull-off, 1.4e-8
+/// between markers 2.6e-7 apart, where `P̄'' ≈ 11`), so the location of a
+/// minimum is not determined below about `√(1e-8/11) ≈ 3e-5`, while at
+/// `δ = 1e-6·m` the extremised value is off by `½P̄''δ² ≈ 3e-11`. At 1e-9
+/// Brent's method took 15–27 solves per extremum at μ = 3 and 10,
+/// N = 256, at 1e-6 8–16, and the pull-off, jump points and hysteresis
+/// agree to the six printed digits (the approach at the pull-off moves by
+/// 3e-6; the grid's own error there is 5e-4).
+const BRENT_RTOL: f64 = 1e-6;
 
 /// One state of the edge phase: marker radius and the state on the mesh
 /// banded at it.
