@@ -350,7 +350,7 @@ fn above_mu_1_the_edge_continuation_is_tabulated() {
 
 /// μ = 10 at N = 256: the jump-out of the edge continuation is a corner of
 /// the family (a mesh node crossing the marker), and the contact radius
-/// jumps in the neck; both used to defeat the sampler. About 2 min in
+/// jumps in the neck; both used to defeat the sampler. About 20 s in
 /// release (`cargo test --release --test tabulated_lj -- --ignored`).
 #[test]
 #[ignore]
