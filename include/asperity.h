@@ -2508,14 +2508,13 @@ int32_t asperity_table_new_maugis_dugdale(double radius,
 // of the documentation (relative to max(|P|, 1e-3·|pull-off|)) against the
 // solver on the same grid. The overlap δ of the table is the rigid approach
 // α (0 where the undeformed apex sits at z₀). Build time in an optimised
-// build at tolerance 1e-4: 0.1–0.5 s at `n_grid` = 128 (μ ≤ 1), about 25 s
-// at μ = 3 and 45 s at μ = 10 (`n_grid` = 256). Tighter tolerances take
-// longer and may not be reached: at 1e-10, μ = 0.1 takes 8 s (N = 64) and
-// 23 s (N = 128), μ = 1 returns `ASPERITY_ERR_NOT_CONVERGED` ("the curve is too
-// coarse for the tolerance", residual 3e-8) after 40–60 s. For 3 < μ ≤ 10, `n_grid` = 0
-// selects 512 cells, whose μ = 10 curve does not tabulate (an error after
-// about 5 min, BENCHMARKS.md §3): pass 256 there. Writes a new handle to
-// `*out` (NULL on failure).
+// build at tolerance 1e-4: 0.1–0.5 s at `n_grid` = 128 (μ ≤ 1), about 2 s
+// at μ = 3 and 10 (`n_grid` = 256), 17 s at μ = 10 with `n_grid` = 0 (512
+// cells). Tighter tolerances take longer and may not be reached: at 1e-10,
+// μ = 0.1 takes 8 s (N = 64) and 23 s (N = 128), μ = 1 returns
+// `ASPERITY_ERR_NOT_CONVERGED` ("the curve is too coarse for the
+// tolerance", residual 3e-8) after 40–60 s. Writes a new handle to `*out`
+// (NULL on failure).
 int32_t asperity_table_new_lj(double radius,
                               double e_star,
                               double work_of_adhesion,

@@ -985,10 +985,9 @@ impl TabulatedLaw {
     /// the contact branch where the grid leaves several).
     ///
     /// Build time (optimised, tolerance 1e-4): 0.1–0.5 s at N = 128 for
-    /// μ ≤ 1, about 25 s (μ = 3) and 45 s (μ = 10) at N = 256. At μ = 10 the
-    /// default grid (512) does not tabulate (an error after about 5 min,
-    /// BENCHMARKS.md §3): pass 256. Tolerances near 1e-10 take tens of
-    /// seconds and fail at μ = 1 (`NotConverged`, residual 3e-8).
+    /// μ ≤ 1, about 2 s at μ = 3 and 10 (N = 256) and 17 s at μ = 10 on the
+    /// default grid (512; BENCHMARKS.md §3). Tolerances near 1e-10 take tens
+    /// of seconds and fail at μ = 1 (`NotConverged`, residual 3e-8).
     pub fn from_lj_sphere(lj: &LjSphere, n_grid: usize, tolerance: f64) -> Result<Self> {
         let curve = EquilibriumCurve::from_lj_sphere(lj, n_grid, tolerance)?;
         Self::from_curve(&curve, tolerance)

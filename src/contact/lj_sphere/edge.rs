@@ -14,43 +14,47 @@
 //!
 //! The curve is split at the moment the edge zone has formed:
 //!
-//! 1. **Neck phase** (fixed mesh, half the cells in a band of half-width `w`
-//!    centred at `m_s = 0.75 w`): pseudo-arclength continuation from far away
-//!    through the jump-in until the edge marker `m` (first crossing of the
-//!    peak-attraction gap `h̄ = 3^{1/6}` from the centre,
-//!    [`LjSolver::edge_marker`]) reaches `m_s`, located exactly as a root
-//!    along the path. That mesh is the edge phase's mesh at `m = m_s`, so the
-//!    two phases share the junction state.
-//! 2. **Edge phase**: the marker itself is the continuation parameter. For
-//!    each `m` the mesh puts its band (half the cells, half-width
-//!    `w = clamp(N μ^{-3/2}/16, 0.01, 2)`) centred on `m`, the influence
-//!    matrix is rebuilt (`O(N²)` closed-form elliptic integrals) and the
-//!    bordered system `[J 1; c(m)ᵀ 0]` is solved by inexact Newton (GMRES
-//!    on this mesh's Jacobian, preconditioned by the last factorisation,
-//!    which may belong to the previous marker's mesh), with the
-//!    extra equation `ln h̄(m) = ln 3^{1/6}` (`c(m)`: linear interpolation
-//!    between the two nodes around `m`). The predictor is the secant
-//!    extrapolation of the last two solutions **in the frame of the
-//!    marker** (each profile interpolated at `r − m + m_k`,
-//!    [`shifted_guess`]), which moves the edge profile with the edge: steps
-//!    in `m` are many zone widths long. The marker grows monotonically
-//!    along the branch (neck → jump-out → pull-off → Hertz regime), as the
-//!    contact radius of JKR and Maugis–Dugdale does.
+//! 1. **Neck phase**: pseudo-arclength continuation on one fixed mesh from
+//!    far away through the jump-in until the edge marker `m` (first crossing
+//!    of the peak-attraction gap `h̄ = 3^{1/6}` from the centre,
+//!    [`LjSolver::edge_marker`]) reaches the switch marker
+//!    `m_s = 0.75 w` (`w = clamp(N μ^{-3/2}/16, 0.01, 2)`), located exactly
+//!    as a root along the path. The mesh ([`Mesh::marker`]) has a node at
+//!    `m_s`, uniform cells of `4w/N` inside it (the neck's resolution), and
+//!    cells falling geometrically towards that node from both sides.
+//! 2. **Edge phase**: the marker itself is the continuation parameter, and
+//!    the mesh at marker `m` is the neck mesh **scaled by `m/m_s`**, so the
+//!    marker stays on its node. The displacement of a loaded disk is
+//!    homogeneous of degree 1 (`D(λr, λc) = λD(r, c)`), so the scaled mesh's
+//!    influence matrix is the neck mesh's times `m/m_s`: one matrix of
+//!    elliptic integrals serves every marker ([`LjSolver::scaled`], `O(N)`
+//!    per marker). The neck mesh's cells at `m_s` are finer than `4w/N` by
+//!    the factor of the marker's travel up to `P̄ = max_force` (from the
+//!    JKR radius), so that the largest marker still has cells of `4w/N` at
+//!    its edge zone. The bordered system `[J 1; e_jᵀ 0]` (the log-gap at the
+//!    marker's node `j` is `ln 3^{1/6}`) is solved by inexact Newton (GMRES
+//!    on this marker's Jacobian, preconditioned by the last
+//!    factorisation), from the secant extrapolation of the last two
+//!    solutions node by node (a node keeps its place relative to the
+//!    marker). The marker grows monotonically along the branch (neck →
+//!    jump-out → pull-off → Hertz regime), as the contact radius of JKR and
+//!    Maugis–Dugdale does.
 //!
-//! The edge-phase path derivatives are taken along the family of solutions
-//! on the moving meshes, by 3-point differences in `m`: smooth, unlike the
-//! tangent of one fixed mesh, which oscillates where the edge zone crosses
-//! its cells ("lattice trapping" of the discrete problem). Turning points of
-//! ᾱ and the force minimum are refined as extrema in `m` (Brent's method);
-//! the marker grows monotonically along the branch, so an extremum in `m`
-//! is one along the path.
+//! The discrete problem at marker `m` depends smoothly on `m` (the nodes,
+//! the matrix and the parabola scale), so its solutions form a smooth
+//! family: no node crosses the marker. (Until session 13 every marker had
+//! its own mesh with a band of fixed width centred on it; the nodes drifted
+//! past the marker, and the family had a corner at each crossing and
+//! wiggles between them: spurious folds of the contact branch, 13 branches
+//! in the μ = 10, N = 512 table, which then did not build; BENCHMARKS §3.)
 //!
-//! The family is smooth in `m` only piecewise: the mesh nodes drift slowly
-//! relative to the band, and where one crosses the marker the linear
-//! interpolation of `marker_row` changes cells, which leaves a
-//! corner in `m` (the tabulated laws' sampler differences on one side of
-//! it; see `smooth_side` in the `sample` module). Extrema found by Brent's
-//! method from values are unaffected.
+//! The edge-phase path derivatives are taken along the family, by 3-point
+//! differences in `m`: smooth, unlike the tangent of one fixed mesh, which
+//! oscillates where the edge zone crosses its cells ("lattice trapping" of
+//! the discrete problem). Turning points of ᾱ and the force minimum are
+//! refined as extrema in `m` (Brent's method); the marker grows
+//! monotonically along the branch, so an extremum in `m` is one along the
+//! path.
 
 use super::path::{BWork, Con, State};
 use super::*;
@@ -62,16 +66,14 @@ pub(super) const MARK: f64 = 0.183_102_048_111_638_9;
 ///
 /// The neck spreads over the fixed mesh of the neck phase by steps of at
 /// most `DY_STEP` in a log-gap, so the neck phase's cost grows with the
-/// switch marker: at μ = 10, N = 256 it takes 157 of the curve's 322
-/// states. An earlier switch is cheaper but changes which equilibria of
-/// the grid's wavy contact branch the marches sample (session 11,
-/// BENCHMARKS §3). At 0.3 w the N = 512 curves at μ = 6–30 took 1.0–1.3 s
-/// instead of 2.5–3.4 s, with the same failures and values within the
-/// grid's scatter, but the μ = 10, N = 256 table no longer built
-/// (`from_curve` rejected its load-controlled pull-off). At 0.2 w and below
-/// the μ = 10 and 30 curves at N = 256 sampled a load-unstable wiggle after
-/// the pull-off (`tests/lj_sphere.rs`). So the switch stays here until the
-/// contact branch of the discrete model is smooth.
+/// switch marker: at μ = 10, N = 256 it takes 159 of the curve's 324
+/// states. With the scaled edge family (session 13) an earlier switch is
+/// cheaper but less accurate, because the neck mesh then spreads its
+/// geometric grading over a larger travel of the marker: pull-offs at
+/// N = 256 of −1.509508, −1.509443, −1.509019, −1.508411 at μ = 10 and
+/// −1.501963, −1.501438, −1.497187 at μ = 30 for 0.75 w, 0.5 w, 0.3 w and
+/// 0.15 w (the last fails the resolution check at μ = 30), against
+/// about −1.510 and −1.503 converged (BENCHMARKS §3).
 const SWITCH: f64 = 0.75;
 
 /// Relative tolerance on the marker radius of an extremum located by
@@ -87,63 +89,21 @@ const SWITCH: f64 = 0.75;
 /// 3e-6; the grid's own error there is 5e-4).
 const BRENT_RTOL: f64 = 1e-6;
 
-/// One state of the edge phase: marker radius and the state on the mesh
-/// banded at it.
+/// One state of the edge phase: marker radius and the state on the family's
+/// mesh scaled to it.
 #[derive(Debug, Clone)]
 pub(super) struct EdgeState {
     pub(super) m: f64,
-    /// The nodes of the mesh banded at `m` (where `st.y` lives).
-    pub(super) x: Vec<f64>,
     pub(super) st: State,
 }
 
-impl EdgeState {
-    /// The log-gap of this state at the distance `xi` from its marker
-    /// (`r = m + xi`), by cubic Lagrange interpolation over the four nearest
-    /// nodes; even in `r` across the axis (the gap is smooth and
-    /// axisymmetric) and constant beyond the last node.
-    fn y_at(&self, xi: f64) -> f64 {
-        let x = &self.x;
-        let y = &self.st.y;
-        let n = x.len();
-        let r = (self.m + xi).abs().min(x[n - 1]);
-        let j = x.partition_point(|&v| v <= r);
-        let lo = j.saturating_sub(2).min(n - 4);
-        let mut v = 0.0;
-        for a in lo..lo + 4 {
-            let mut l = 1.0;
-            for b in lo..lo + 4 {
-                if b != a {
-                    l *= (r - x[b]) / (x[a] - x[b]);
-                }
-            }
-            v += l * y[a];
-        }
-        v
-    }
-}
-
-/// The guess for the marker `m` on the nodes `x`: the weighted sum
-/// `Σ w_k y_k(x − m + m_k)` of the states' profiles, each shifted so that
-/// its marker lies at `m` (weights summing to 1: the secant extrapolation
-/// `(1 + θ, −θ)` of the march, the interpolation `(1 − θ, θ)` between
-/// bracketing samples, a single state). The edge profile travels with the
-/// marker, so in the frame of the marker the states differ only by the slow
-/// change of its shape. (A guess node by node, as the meshes banded at the
-/// markers have nodes at similar places relative to the band, was off by up
-/// to 1.7 in a log-gap at the marker: the band's nodes drift past it, by 16
-/// nodes over the first marker step at μ = 10; Newton then started from
-/// residuals up to 2e7 and needed 7–36 iterations per marker.)
-/// `ᾱ` is combined with the same weights.
-pub(super) fn shifted_guess(from: &[(&EdgeState, f64)], m: f64, x: &[f64]) -> (Vec<f64>, f64) {
-    if let [(e, _)] = from {
-        if e.m == m && e.x == x {
-            return (e.st.y.clone(), e.st.al);
-        }
-    }
-    let y = x
-        .iter()
-        .map(|&xi| from.iter().map(|(e, w)| w * e.y_at(xi - m)).sum())
+/// The guess `Σ w_k y_k` node by node: the edge family's meshes are one
+/// mesh scaled by the marker, so a node keeps its place relative to the
+/// marker.
+fn scaled_guess(from: &[(&EdgeState, f64)]) -> (Vec<f64>, f64) {
+    let n = from[0].0.st.y.len();
+    let y = (0..n)
+        .map(|i| from.iter().map(|(e, w)| w * e.st.y[i]).sum())
         .collect();
     let al = from.iter().map(|(e, w)| w * e.st.al).sum();
     (y, al)
@@ -195,17 +155,48 @@ impl LjSolver {
         x[x.len() - 1]
     }
 
-    /// This solver with its band moved to `a_e` (same N, L, r_f).
-    pub(super) fn rebanded(&self, a_e: f64, plan: (f64, f64)) -> Result<LjSolver> {
+    /// The solver of the edge family at the marker `a_e > 0`: the family's
+    /// solver at the switch marker scaled by `a_e/m_s` (no new elliptic
+    /// integrals; `edge` module docs).
+    pub(super) fn at_marker(&self, a_e: f64, plan: (f64, f64)) -> Result<LjSolver> {
+        let base = self.family(plan)?;
+        let m_s = base.opts.edge_radius;
+        if !(a_e > 0.0 && a_e.is_finite()) {
+            return Err(Error::InvalidArgument {
+                name: "edge marker",
+                value: a_e,
+                bound: "> 0",
+            });
+        }
+        Ok(base.scaled(a_e / m_s))
+    }
+
+    /// The edge family's solver at the switch marker `m_s = SWITCH·w`, built
+    /// once per solver ([`Mesh::marker`]).
+    fn family(&self, plan: (f64, f64)) -> Result<&LjSolver> {
+        if let Some(f) = self.family.get() {
+            return Ok(f);
+        }
+        let (w, frac) = plan;
+        let n = self.n();
+        let m_s = SWITCH * w;
+        let h_in = 4.0 * w / n as f64;
+        let m_end =
+            (1.2 * jkr_radius_estimate(self.mu, self.opts.max_force.max(0.0))).max(2.0 * m_s);
+        let h_a = h_in * m_s / m_end;
+        let (mesh, _) = Mesh::marker(n, m_s, h_in, h_a, self.opts.outer_radius);
         let mut o = self.opts;
-        o.edge_radius = a_e.max(0.0);
-        o.edge_width = plan.0;
-        o.edge_fraction = plan.1;
-        LjSolver::new(&LjSphere::from_tabor(self.mu)?, o)
+        o.edge_radius = m_s;
+        o.edge_width = w;
+        o.edge_fraction = frac;
+        let built = LjSolver::with_mesh(self.mu, o, mesh)?;
+        Ok(self.family.get_or_init(|| Box::new(built)))
     }
 
     /// Border row `c(m)` of the marker equation on this mesh: linear
-    /// interpolation weights of the log-gap at `m` (`N+1`, 0 on ᾱ).
+    /// interpolation weights of the log-gap at `m` (`N+1`, 0 on ᾱ); on the
+    /// edge family's meshes `m` is a node, and the row is `e_j` up to
+    /// rounding.
     fn marker_row(&self, m: f64) -> Vec<f64> {
         let x = &self.mesh.x;
         let n = x.len();
@@ -217,9 +208,9 @@ impl LjSolver {
         row
     }
 
-    /// The equilibrium with the marker at `m`, on the mesh banded at `m`,
-    /// from the guess [`shifted_guess`] of the weighted states `from`. Its
-    /// tangent and path derivatives are left for [`derivs_in_m`].
+    /// The equilibrium with the marker at `m`, on the family's mesh scaled to
+    /// `m`, from the guess [`scaled_guess`] of the weighted states `from`.
+    /// Its tangent and path derivatives are left for [`derivs_in_m`].
     pub(super) fn edge_solve(
         &self,
         m: f64,
@@ -228,24 +219,18 @@ impl LjSolver {
         s: f64,
         bw: &mut BWork,
     ) -> Result<EdgeState> {
-        let sv = self.rebanded(m, plan)?;
-        let (mut y, mut al) = shifted_guess(from, m, &sv.mesh.x);
+        let sv = self.at_marker(m, plan)?;
+        let (mut y, mut al) = scaled_guess(from);
         let row = sv.marker_row(m);
         // Inexact Newton preconditioned by the last factorisation, although
-        // it belongs to the previous marker's mesh: the meshes place their
-        // nodes alike relative to the band and the solution moves with it,
-        // so node by node the Jacobians are close (they drift by a few
-        // nodes per marker step). GMRES acts on this mesh's true Jacobian
-        // and the factorisation is refreshed when it needs more than a few
-        // iterations, as on a fixed mesh.
+        // it belongs to the previous marker: the meshes are one mesh scaled,
+        // so node by node the Jacobians are close. GMRES acts on this
+        // marker's true Jacobian and the factorisation is refreshed when it
+        // needs more than a few iterations, as on a fixed mesh.
         sv.bnewton(&Con::Plane { row, c: MARK }, &mut y, &mut al, bw, false)?;
         let n = sv.n();
         let st = sv.make_state(&y, al, vec![0.0; n + 1], s, bw, false)?;
-        Ok(EdgeState {
-            m,
-            x: sv.mesh.x,
-            st,
-        })
+        Ok(EdgeState { m, st })
     }
 
     /// The neck and edge phases from far away until `P̄ ≥ max_force` or
@@ -262,7 +247,7 @@ impl LjSolver {
         // The neck phase runs on the mesh banded at the switch marker, the
         // first edge mesh: the phases meet at one equilibrium of one
         // discrete problem, so the path is continuous across the switch.
-        let neck_solver = self.rebanded(m_switch, plan)?;
+        let neck_solver = self.at_marker(m_switch, plan)?;
         let ns = &neck_solver;
         let (mut neck, mut bw) = ns.path_march(max_force, target, &|st: &[State]| {
             ns.edge_marker(&st[st.len() - 1].y) >= m_switch
@@ -285,7 +270,6 @@ impl LjSolver {
         let junction = ns.path_root(&neck[k - 2], &neck[k - 1], &mut bw, &phi)?;
         let junction_state = EdgeState {
             m: m_switch,
-            x: ns.mesh.x.clone(),
             st: junction.clone(),
         };
         let e0 = self.edge_solve(
@@ -638,59 +622,76 @@ impl LjSolver {
 mod tests {
     use super::*;
 
-    /// An edge state on the μ = 10, N = 256 mesh banded at `m` whose
-    /// log-gap is `f(r − m) + c m g(r − m)`: an edge profile travelling with
-    /// the marker while its shape changes linearly in `m`.
-    fn travelling(m: f64, c: f64) -> EdgeState {
-        let (n, w) = (256, 0.5);
-        let x = Mesh::new(n, 8.0, 24.0, m, w, 0.5).x;
-        let prof = |xi: f64| {
-            // Flat inside (as a contact is), so that the guess's mirror
-            // image across the axis does not matter.
-            let f = 0.5 * (1.0 + (xi / 0.03).tanh()) + 0.01 * xi.max(0.0).powi(2);
-            let g = (-(xi / 0.1).powi(2)).exp();
-            f + c * m * g
-        };
-        let y: Vec<f64> = x.iter().map(|&r| prof(r - m)).collect();
-        let st = State {
-            y,
-            al: 2.0 * m,
-            t: Vec::new(),
-            s: 0.0,
-            pt: LjPoint::default(),
-            df: f64::NAN,
-            h0: f64::NAN,
-        };
-        EdgeState { m, x, st }
+    /// The edge family's mesh: `N` ordered cells on `[0, L]`, a node exactly
+    /// at the switch marker, uniform cells of `4w/N` near the centre (the
+    /// neck's resolution) and cells at the marker as fine as the travel of
+    /// the marker requires (`4w/N` at the largest marker).
+    #[test]
+    fn family_mesh_has_its_node_on_the_marker() {
+        for mu in [1.5f64, 3.0, 10.0, 30.0, 100.0] {
+            for n in [64usize, 256, 1024] {
+                let sv = LjSphere::from_tabor(mu).unwrap().solver(n).unwrap();
+                let plan = sv.band_plan().unwrap();
+                let f = sv.family(plan).unwrap();
+                let (x, c) = (&f.mesh.x, &f.mesh.c);
+                assert_eq!(x.len(), n);
+                assert_eq!(c[n], sv.opts.outer_radius);
+                for j in 0..n {
+                    assert!(c[j] < x[j] && x[j] < c[j + 1], "mu {mu} n {n}: node {j}");
+                }
+                let m_s = SWITCH * plan.0;
+                let j = x
+                    .iter()
+                    .position(|&v| v == m_s)
+                    .expect("a node on the marker");
+                let h_in = 4.0 * plan.0 / n as f64;
+                let m_end = (1.2 * jkr_radius_estimate(mu, 10.0)).max(2.0 * m_s);
+                let h_a = h_in * m_s / m_end;
+                let hj = c[j + 1] - c[j];
+                assert!(
+                    hj > 0.5 * h_a && hj < 2.0 * h_a,
+                    "mu {mu} n {n}: {hj} vs {h_a}"
+                );
+                // The grading reaches the uniform core only when the marker
+                // is many core cells from the centre.
+                if j > 40 {
+                    let h0 = c[1] - c[0];
+                    assert!(
+                        (h0 / h_in - 1.0).abs() < 0.1,
+                        "mu {mu} n {n}: {h0} vs {h_in}"
+                    );
+                }
+            }
+        }
     }
 
-    /// The secant guess in the frame of the marker reproduces a travelling
-    /// edge profile to the interpolation error of its band cells, where the
-    /// guess node by node (the predictor up to session 10) is off by O(1)
-    /// at the edge, because the band's nodes drift past the marker; a
-    /// single state at its own marker and mesh is returned unchanged.
+    /// A solver scaled by `s` is the solver of the scaled mesh: the
+    /// influence product, the centre row and the tail agree with those
+    /// built from elliptic integrals on the scaled mesh.
     #[test]
-    fn shifted_secant_follows_a_travelling_edge() {
-        let c = 0.3;
-        let (p, q) = (travelling(4.0, c), travelling(4.2, c));
-        let truth = travelling(4.45, c);
-        let th = (truth.m - q.m) / (q.m - p.m);
-        let (y, al) = shifted_guess(&[(&q, 1.0 + th), (&p, -th)], truth.m, &truth.x);
-        let err = y
-            .iter()
-            .zip(&truth.st.y)
-            .fold(0.0f64, |e, (a, b)| e.max((a - b).abs()));
-        assert!(err < 1e-3, "shifted secant off by {err}");
-        assert!((al - truth.st.al).abs() < 1e-12);
-        let node: f64 = (0..truth.x.len())
-            .map(|i| ((1.0 + th) * q.st.y[i] - th * p.st.y[i] - truth.st.y[i]).abs())
-            .fold(0.0, f64::max);
-        assert!(
-            node > 0.05 && node > 100.0 * err,
-            "node-by-node guess off by only {node}"
-        );
-        let (same, _) = shifted_guess(&[(&q, 1.0)], q.m, &q.x);
-        assert_eq!(same, q.st.y);
+    fn scaled_solver_matches_the_directly_built_one() {
+        let sv = LjSphere::from_tabor(10.0).unwrap().solver(128).unwrap();
+        let f = sv.family(sv.band_plan().unwrap()).unwrap();
+        for s in [0.5, 3.7, 41.0] {
+            let sc = f.scaled(s);
+            let mesh = Mesh {
+                x: f.mesh.x.iter().map(|v| v * s).collect(),
+                c: f.mesh.c.iter().map(|v| v * s).collect(),
+            };
+            let mut o = f.opts;
+            o.outer_radius *= s;
+            let direct = LjSolver::with_mesh(f.mu, o, mesh).unwrap();
+            let q: Vec<f64> = (0..128)
+                .map(|i| ((i * 37 % 11) as f64 - 5.0) * 0.1)
+                .collect();
+            let (u, v) = (sc.apply_influence(&q), direct.apply_influence(&q));
+            let big = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            for i in 0..128 {
+                assert!((u[i] - v[i]).abs() <= 1e-13 * big, "s {s}, node {i}");
+                assert!((sc.tail[i] - direct.tail[i]).abs() <= 1e-15 * direct.tail[i].abs());
+                assert!((sc.a0[i] - direct.a0[i]).abs() <= 1e-14 * direct.a0[i].abs());
+            }
+        }
     }
 
     /// The mesh map is inverted exactly for any band position: nodes

@@ -167,6 +167,7 @@ use crate::error::{check, Error, Result};
 use core::f64::consts::PI;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::{MatMut, MatRef};
+use std::sync::Arc;
 
 mod disk;
 mod edge;
@@ -327,7 +328,11 @@ impl LjSphere {
 pub struct LjOptions {
     /// Number of radial cells N (≥ 16); 0 = [`LjSphere::converged_default_grid`].
     pub n_grid: usize,
-    /// Newton tolerance on the max-norm of the gap residual (units of z₀).
+    /// Newton tolerance on the max-norm of the gap residual (units of z₀),
+    /// relative to the gap where the gap exceeds z₀: far nodes, where
+    /// `h̄ ≈ r̄²/2` reaches 10⁶ on the edge continuation's scaled meshes,
+    /// cannot be solved to 1e-10 z₀ in double precision, and there the
+    /// pressure does not depend on the gap to that accuracy.
     pub tolerance: f64,
     /// Iteration cap of one solve.
     pub max_iterations: u32,
@@ -566,6 +571,80 @@ impl Mesh {
     }
 }
 
+impl Mesh {
+    /// The mesh of the edge continuation's scaled family (`edge` module
+    /// docs): `n` cells on `[0, l]` with node `j` exactly at the marker `a`
+    /// (returned with the mesh). Target cell size `h(r)`: `h_in` near the
+    /// centre, falling geometrically to `h_a` at `a`
+    /// (`h = h_a + g|a − r|`, capped at `h_in` inside) and growing
+    /// geometrically outside; `g` is chosen so that the cells number `n`.
+    /// The family scales this mesh by `m/a`, so `h_a·m/a` is the cell size at
+    /// the marker `m`, and `h_in` the resolution of the neck inside `a`.
+    fn marker(n: usize, a: f64, h_in: f64, h_a: f64, l: f64) -> (Mesh, usize) {
+        let h_a = h_a.min(h_in);
+        // φ(r) = ∫₀ʳ ds/h(s) and its inverse, for the grading g.
+        let phi = |g: f64, r: f64| -> f64 {
+            let r1 = (a - (h_in - h_a) / g).max(0.0);
+            let p1 = r1 / h_in;
+            let pa = p1 + ((h_a + g * (a - r1)) / h_a).ln() / g;
+            if r <= r1 {
+                r / h_in
+            } else if r <= a {
+                p1 + ((h_a + g * (a - r1)) / (h_a + g * (a - r))).ln() / g
+            } else {
+                pa + (g * (r - a) / h_a).ln_1p() / g
+            }
+        };
+        let inv = |g: f64, v: f64| -> f64 {
+            let r1 = (a - (h_in - h_a) / g).max(0.0);
+            let p1 = r1 / h_in;
+            let pa = p1 + ((h_a + g * (a - r1)) / h_a).ln() / g;
+            if v <= p1 {
+                v * h_in
+            } else if v <= pa {
+                a - ((h_a + g * (a - r1)) * (-(g * (v - p1))).exp() - h_a) / g
+            } else {
+                a + h_a * (g * (v - pa)).exp_m1() / g
+            }
+        };
+        // φ(l) = n: φ(l) falls as g grows (bisection in log g).
+        let (mut lo, mut hi) = (1e-6f64, 10.0f64);
+        for _ in 0..200 {
+            let g = (lo * hi).sqrt();
+            if phi(g, l) > n as f64 {
+                lo = g;
+            } else {
+                hi = g;
+            }
+            if hi / lo < 1.0 + 1e-12 {
+                break;
+            }
+        }
+        let g = hi;
+        let (pa, pl) = (phi(g, a), phi(g, l));
+        // Node j at a: φ mapped linearly onto the cell index on either side.
+        let j = (pa.floor() as usize).clamp(1, n - 2);
+        let tj = j as f64 + 0.5;
+        let nf = n as f64;
+        let at = |t: f64| -> f64 {
+            let v = if t <= tj {
+                t * pa / tj
+            } else {
+                pa + (t - tj) * (pl - pa) / (nf - tj)
+            };
+            inv(g, v)
+        };
+        let mut c = Vec::with_capacity(n + 1);
+        let mut x = Vec::with_capacity(n);
+        c.push(0.0);
+        for k in 0..n {
+            x.push(if k == j { a } else { at(k as f64 + 0.5) });
+            c.push(if k + 1 == n { l } else { at(k as f64 + 1.0) });
+        }
+        (Mesh { x, c }, j)
+    }
+}
+
 /// A special point of the path.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Special {
@@ -655,11 +734,16 @@ pub struct LjSolver {
     k: f64,
     opts: LjOptions,
     mesh: Mesh,
-    /// Influence matrix, column-major n×n.
-    a: Vec<f64>,
+    /// Influence matrix, column-major n×n, up to the factor `scale`
+    /// (shared by the solvers [`LjSolver::scaled`] from one another).
+    a: Arc<[f64]>,
     /// The influence matrix rounded to `f32`, for the continuation's
     /// single-precision Jacobian products (`path` module docs).
-    a32: Vec<f32>,
+    a32: Arc<[f32]>,
+    /// The factor of `a`: the displacement `D(r, c)` of a loaded disk is
+    /// homogeneous of degree 1, so the mesh scaled by `s` has the influence
+    /// matrix `s·a` ([`LjSolver::scaled`]). 1 for a solver from [`LjSolver::new`].
+    scale: f64,
     /// Influence row at r = 0.
     a0: Vec<f64>,
     /// Tail deformation factor at the nodes (times −k gives ū_tail).
@@ -669,6 +753,9 @@ pub struct LjSolver {
     /// Gauss weights for the force: per cell 3 points, radius, weight·r, and
     /// the quadratic interpolation (node index i0 and the 3 Lagrange weights).
     quad: Vec<(f64, f64, usize, [f64; 3])>,
+    /// The edge continuation's solver at the switch marker, built on first
+    /// use ([`LjSolver::family`]); every edge-phase solver is it scaled.
+    family: std::sync::OnceLock<Box<LjSolver>>,
 }
 
 /// Estimate of the JKR contact radius `a/√(Rz₀)` at load `P̄` (an upper bound
@@ -748,6 +835,12 @@ impl LjSolver {
             o.edge_width,
             o.edge_fraction,
         );
+        Self::with_mesh(mu, o, mesh)
+    }
+
+    /// The solver on `mesh` (options filled in and checked): its influence
+    /// matrix and the rest ([`LjSolver::on_mesh`]).
+    fn with_mesh(mu: f64, o: LjOptions, mesh: Mesh) -> Result<Self> {
         // Influence matrix, column-major: a[j*n + i] = D(x_i, c_{j+1}) − D(x_i, c_j).
         let a = disk::influence_matrix(&mesh.x, &mesh.c);
         if a.iter().any(|v| !v.is_finite()) {
@@ -757,6 +850,21 @@ impl LjSolver {
                 residual: f64::NAN,
             });
         }
+        let a32: Arc<[f32]> = a.iter().map(|&v| v as f32).collect();
+        Ok(Self::on_mesh(mu, o, mesh, a.into(), a32, 1.0))
+    }
+
+    /// The solver on `mesh` with the influence matrix `scale·a`: the
+    /// matrix-free parts (centre row, tail, force quadrature) from the mesh.
+    fn on_mesh(
+        mu: f64,
+        o: LjOptions,
+        mesh: Mesh,
+        a: Arc<[f64]>,
+        a32: Arc<[f32]>,
+        scale: f64,
+    ) -> Self {
+        let n = mesh.x.len();
         let a0: Vec<f64> = (0..n)
             .map(|j| 0.5 * PI * (mesh.c[j + 1] - mesh.c[j]))
             .collect();
@@ -788,18 +896,44 @@ impl LjSolver {
                 quad.push((r, 0.5 * (hi - lo) * wt * r, i0, [l0, l1, l2]));
             }
         }
-        Ok(Self {
+        Self {
             mu,
             k: 4.0 * mu.powf(1.5) / PI,
             opts: o,
             mesh,
-            a32: a.iter().map(|&v| v as f32).collect(),
             a,
+            a32,
+            scale,
             a0,
             tail,
             tail0,
             quad,
-        })
+            family: std::sync::OnceLock::new(),
+        }
+    }
+
+    /// This solver on its mesh scaled by `s > 0` (nodes, cell edges, the
+    /// uniform, outer and band radii and the band width), without new
+    /// elliptic integrals: the influence matrix is `s` times this one
+    /// (`scale`). `O(N)`.
+    pub(super) fn scaled(&self, s: f64) -> LjSolver {
+        let mut o = self.opts;
+        o.uniform_radius *= s;
+        o.outer_radius *= s;
+        o.edge_radius *= s;
+        o.edge_width *= s;
+        let mesh = Mesh {
+            x: self.mesh.x.iter().map(|v| v * s).collect(),
+            c: self.mesh.c.iter().map(|v| v * s).collect(),
+        };
+        Self::on_mesh(
+            self.mu,
+            o,
+            mesh,
+            self.a.clone(),
+            self.a32.clone(),
+            self.scale * s,
+        )
     }
 
     /// The options in effect (automatic values filled in).
@@ -835,7 +969,8 @@ impl LjSolver {
         self.mesh.x.len()
     }
 
-    /// `out = A q` by faer's matrix–vector product (runtime SIMD dispatch).
+    /// `out = scale·A q` by faer's matrix–vector product (runtime SIMD
+    /// dispatch).
     fn matvec(&self, q: &[f64], out: &mut [f64]) {
         let n = self.n();
         faer::linalg::matmul::matmul(
@@ -843,12 +978,13 @@ impl LjSolver {
             faer::Accum::Replace,
             MatRef::from_column_major_slice(&self.a, n, n),
             MatRef::from_column_major_slice(q, n, 1),
-            1.0,
+            self.scale,
             faer::Par::Seq,
         );
     }
 
-    /// Residual at log-gaps `y`: fills h, p, dp, ap, f; returns max-norm.
+    /// Residual at log-gaps `y`: fills h, p, dp, ap, f; returns the max-norm
+    /// of `f_i / max(h̄_i, 1)` (see [`LjOptions::tolerance`]).
     fn residual(&self, mode: Mode, y: &[f64], w: &mut Work) -> f64 {
         let n = self.n();
         for i in 0..n {
@@ -870,7 +1006,7 @@ impl LjSolver {
                     let x = self.mesh.x[i];
                     let f = w.h[i] - h0 - 0.5 * x * x + k * (w.ap[i] + self.tail[i] - a0p);
                     w.f[i] = f;
-                    m = m.max(f.abs());
+                    m = m.max(f.abs() / w.h[i].max(1.0));
                 }
             }
             Mode::Approach(al) => {
@@ -878,7 +1014,7 @@ impl LjSolver {
                     let x = self.mesh.x[i];
                     let f = w.h[i] + al - 0.5 * x * x - 1.0 + k * (w.ap[i] + self.tail[i]);
                     w.f[i] = f;
-                    m = m.max(f.abs());
+                    m = m.max(f.abs() / w.h[i].max(1.0));
                 }
             }
         }
@@ -902,7 +1038,7 @@ impl LjSolver {
             let jc = &mut w.jac[j * n..(j + 1) * n];
             let sub = if gap_mode { self.a0[j] } else { 0.0 };
             for i in 0..n {
-                jc[i] = (col[i] - sub) * qj;
+                jc[i] = (self.scale * col[i] - sub) * qj;
             }
             jc[j] += w.h[j];
         }

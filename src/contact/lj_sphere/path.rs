@@ -195,7 +195,7 @@ impl LjSolver {
         let k = self.k;
         let jac = bw.lu.matrix_mut(m);
         for j in 0..n {
-            let qj = k * bw.w.dp[j] * bw.w.h[j];
+            let qj = k * self.scale * bw.w.dp[j] * bw.w.h[j];
             let col = &self.a[j * n..(j + 1) * n];
             let jc = &mut jac[j * m..(j + 1) * m];
             for i in 0..n {
@@ -284,7 +284,7 @@ impl LjSolver {
                     faer::Accum::Replace,
                     MatRef::from_column_major_slice(&self.a32, n, n),
                     MatRef::from_column_major_slice(&sp.q, n, 1),
-                    1.0f32,
+                    self.scale as f32,
                     faer::Par::Seq,
                 );
                 for (o, s) in out[..n].iter_mut().zip(&sp.out) {
