@@ -159,8 +159,6 @@ impl LjSolver {
     /// solver at the switch marker scaled by `a_e/m_s` (no new elliptic
     /// integrals; `edge` module docs).
     pub(super) fn at_marker(&self, a_e: f64, plan: (f64, f64)) -> Result<LjSolver> {
-        let base = self.family(plan)?;
-        let m_s = base.opts.edge_radius;
         if !(a_e > 0.0 && a_e.is_finite()) {
             return Err(Error::InvalidArgument {
                 name: "edge marker",
@@ -168,7 +166,8 @@ impl LjSolver {
                 bound: "> 0",
             });
         }
-        Ok(base.scaled(a_e / m_s))
+        let base = self.family(plan)?;
+        Ok(base.scaled(a_e / base.opts.edge_radius))
     }
 
     /// The edge family's solver at the switch marker `m_s = SWITCH·w`, built

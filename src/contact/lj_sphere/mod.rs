@@ -583,10 +583,15 @@ impl Mesh {
     fn marker(n: usize, a: f64, h_in: f64, h_a: f64, l: f64) -> (Mesh, usize) {
         let h_a = h_a.min(h_in);
         // φ(r) = ∫₀ʳ ds/h(s) and its inverse, for the grading g.
-        let phi = |g: f64, r: f64| -> f64 {
+        // The core's end r1 (where h_a + g(a − r) reaches h_in), φ(r1)
+        // and φ(a), for the grading g.
+        let breaks = |g: f64| -> (f64, f64, f64) {
             let r1 = (a - (h_in - h_a) / g).max(0.0);
             let p1 = r1 / h_in;
-            let pa = p1 + ((h_a + g * (a - r1)) / h_a).ln() / g;
+            (r1, p1, p1 + ((h_a + g * (a - r1)) / h_a).ln() / g)
+        };
+        let phi = |g: f64, r: f64| -> f64 {
+            let (r1, p1, pa) = breaks(g);
             if r <= r1 {
                 r / h_in
             } else if r <= a {
@@ -596,9 +601,7 @@ impl Mesh {
             }
         };
         let inv = |g: f64, v: f64| -> f64 {
-            let r1 = (a - (h_in - h_a) / g).max(0.0);
-            let p1 = r1 / h_in;
-            let pa = p1 + ((h_a + g * (a - r1)) / h_a).ln() / g;
+            let (r1, p1, pa) = breaks(g);
             if v <= p1 {
                 v * h_in
             } else if v <= pa {
