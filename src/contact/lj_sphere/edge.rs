@@ -21,7 +21,12 @@
 //!    `m_s = 0.75 w` (`w = clamp(N μ^{-3/2}/16, 0.01, 2)`), located exactly
 //!    as a root along the path. The mesh ([`Mesh::marker`]) has a node at
 //!    `m_s`, uniform cells of `4w/N` inside it (the neck's resolution), and
-//!    cells falling geometrically towards that node from both sides.
+//!    cells falling geometrically towards that node from both sides. For
+//!    curves and pull-offs, once the neck has spread over
+//!    [`NECK_START`] cells the marker itself becomes the continuation
+//!    parameter on this mesh, up to exactly `m_s`
+//!    ([`LjSolver::neck_by_marker`]); the table sampler keeps the
+//!    arclength march, whose closer states it bisects between.
 //! 2. **Edge phase**: the marker itself is the continuation parameter, and
 //!    the mesh at marker `m` is the neck mesh **scaled by `m/m_s`**, so the
 //!    marker stays on its node. The displacement of a loaded disk is
@@ -64,10 +69,12 @@ pub(super) const MARK: f64 = 0.183_102_048_111_638_9;
 
 /// The switch marker of the edge continuation, in band half-widths `w`.
 ///
-/// The neck spreads over the fixed mesh of the neck phase by steps of at
-/// most `DY_STEP` in a log-gap, so the neck phase's cost grows with the
-/// switch marker: at μ = 10, N = 256 it takes 159 of the curve's 324
-/// states. With the scaled edge family (session 13) an earlier switch is
+/// In the arclength march the neck spreads over the fixed mesh of the neck
+/// phase by steps of at most `DY_STEP` in a log-gap, so the neck phase's
+/// cost grew with the switch marker: at μ = 10, N = 256 it took 159 of the
+/// curve's 324 states (55 of 220 since the marker continues it,
+/// [`LjSolver::neck_by_marker`]). With the scaled edge family (session 13)
+/// an earlier switch is
 /// cheaper but less accurate, because the neck mesh then spreads its
 /// geometric grading over a larger travel of the marker: pull-offs at
 /// N = 256 of −1.509508, −1.509443, −1.509019, −1.508411 at μ = 10 and
@@ -75,6 +82,25 @@ pub(super) const MARK: f64 = 0.183_102_048_111_638_9;
 /// 0.15 w (the last fails the resolution check at μ = 30), against
 /// about −1.510 and −1.503 converged (BENCHMARKS §3).
 const SWITCH: f64 = 0.75;
+
+/// The neck phase continues in its marker once the marker has passed this
+/// many cells of the neck mesh's core ([`LjSolver::neck_by_marker`]). The
+/// μ = 3 and 10 curves at N = 256 took the same number of states (±4) for
+/// 1, 2, 3 and 6.
+const NECK_START: f64 = 3.0;
+
+/// Target of the predictor's largest log-gap error per marker step of the
+/// neck phase (0.05–0.2 gave the same states ±3 at μ = 3 and 10: the
+/// step metric limits the steps).
+const NECK_PREDICTOR: f64 = 0.05;
+
+/// Number of edge-phase states through which the guess of the next one is
+/// extrapolated in the marker. Newton iterations of the μ = 10, N = 256
+/// curve (both phases) for 2 (the secant), 3, 4, 5 and 6 points: 771, 655,
+/// 618, 560, 516. Four keeps the extrapolation of a smooth family well
+/// inside the range where its polynomial is reliable with the step
+/// changes of the march (at most 2× from one step to the next).
+const EXTRAPOLATION_POINTS: usize = 4;
 
 /// Relative tolerance on the marker radius of an extremum located by
 /// [`LjSolver::edge_extremum`]. A tighter one spends solves on noise: the
@@ -234,11 +260,17 @@ impl LjSolver {
 
     /// The neck and edge phases from far away until `P̄ ≥ max_force` or
     /// `stop(edge-phase states)` (see the module documentation).
+    /// `dense_neck` keeps the neck phase in arclength up to the switch: the
+    /// table sampler bisects between neck states along their tangents,
+    /// which on the fixed mesh needs them as close as the arclength march
+    /// puts them. Otherwise the neck phase continues in its marker once the
+    /// neck has formed ([`LjSolver::neck_by_marker`]).
     pub(super) fn edge_march(
         &self,
         plan: (f64, f64),
         max_force: f64,
         target: usize,
+        dense_neck: bool,
         stop: &dyn Fn(&[EdgeState]) -> bool,
     ) -> Result<EdgePath> {
         let (w, _) = plan;
@@ -248,12 +280,42 @@ impl LjSolver {
         // discrete problem, so the path is continuous across the switch.
         let neck_solver = self.at_marker(m_switch, plan)?;
         let ns = &neck_solver;
-        let (mut neck, mut bw) = ns.path_march(max_force, target, &|st: &[State]| {
-            ns.edge_marker(&st[st.len() - 1].y) >= m_switch
-        })?;
+        // The march in arclength until the neck has spread over a few cells,
+        // then in the marker up to the switch (`LjSolver::neck_by_marker`).
+        let m_start = if dense_neck {
+            m_switch
+        } else {
+            (NECK_START * 4.0 * w / self.n() as f64).min(m_switch)
+        };
+        let marker_at = |st: &[State], m: f64| ns.edge_marker(&st[st.len() - 1].y) >= m;
+        let (mut neck, mut bw) =
+            ns.path_march(max_force, target, &|st: &[State]| marker_at(st, m_start))?;
         let mut edge: Vec<EdgeState> = Vec::new();
-        let k = neck.len();
-        if neck[k - 1].pt.force >= max_force || k < 2 {
+        let done = |neck: &[State]| neck[neck.len() - 1].pt.force >= max_force || neck.len() < 2;
+        // Whether the last neck state is exactly at the switch marker.
+        let mut at_switch = false;
+        if !done(&neck) && !marker_at(&neck, m_switch) {
+            let metric = ns.step_metric(max_force, target);
+            at_switch = ns
+                .neck_by_marker(&mut neck, m_switch, max_force, &metric, &mut bw)
+                .is_ok();
+            if !at_switch {
+                // Back to the arclength march from the last state reached,
+                // with the last step's length.
+                bw.invalidate();
+                let k = neck.len();
+                let sigma = neck[k - 1].s - neck[k - 2].s;
+                ns.march_on(
+                    &mut neck,
+                    &mut bw,
+                    max_force,
+                    target,
+                    sigma,
+                    &|st: &[State]| marker_at(st, m_switch),
+                )?;
+            }
+        }
+        if done(&neck) {
             return Ok(EdgePath {
                 neck_solver,
                 neck,
@@ -262,11 +324,16 @@ impl LjSolver {
                 plan,
             });
         }
+        let k = neck.len();
         // The junction: the neck state whose marker is exactly the switch
-        // marker (root along the path), then the same equilibrium under the
-        // marker equation.
-        let phi = |st: &State| ns.edge_marker(&st.y) - m_switch;
-        let junction = ns.path_root(&neck[k - 2], &neck[k - 1], &mut bw, &phi)?;
+        // marker (the last one of the marker continuation, or a root along
+        // the path), then the same equilibrium under the marker equation.
+        let junction = if at_switch {
+            neck[k - 1].clone()
+        } else {
+            let phi = |st: &State| ns.edge_marker(&st.y) - m_switch;
+            ns.path_root(&neck[k - 2], &neck[k - 1], &mut bw, &phi, 0.0)?
+        };
         let junction_state = EdgeState {
             m: m_switch,
             st: junction.clone(),
@@ -299,11 +366,25 @@ impl LjSolver {
                 });
             }
             let m = cur.m + dm;
-            // Secant predictor in the frame of the marker.
-            let from: Vec<(&EdgeState, f64)> = if k >= 2 && fails == 0 {
-                let prev = &edge[k - 2];
-                let th = dm / (cur.m - prev.m);
-                vec![(cur, 1.0 + th), (prev, -th)]
+            // Lagrange extrapolation in the marker through the last
+            // EXTRAPOLATION_POINTS states, node by node (the family is
+            // smooth in m); the last state alone after a failure.
+            let from: Vec<(&EdgeState, f64)> = if fails == 0 && k >= 2 {
+                let pts: Vec<&EdgeState> = edge[k.saturating_sub(EXTRAPOLATION_POINTS)..]
+                    .iter()
+                    .collect();
+                pts.iter()
+                    .enumerate()
+                    .map(|(i, e)| {
+                        let l = pts
+                            .iter()
+                            .enumerate()
+                            .filter(|&(j, _)| j != i)
+                            .map(|(_, o)| (m - o.m) / (e.m - o.m))
+                            .product::<f64>();
+                        (*e, l)
+                    })
+                    .collect()
             } else {
                 vec![(cur, 1.0)]
             };
@@ -347,6 +428,132 @@ impl LjSolver {
             bw,
             plan,
         })
+    }
+
+    /// The neck phase continued in its marker from the last of `neck` up
+    /// to exactly `m_end` (or until `P̄ ≥ max_force`), on this fixed mesh:
+    /// each state solves the gap equations with the marker equation
+    /// `y(m) = ln 3^{1/6}` as its border (linear interpolation between
+    /// nodes), from the secant extrapolation of the last two states in the
+    /// frame moving with the marker (the neck spreads as a front: the
+    /// profile near it translates). Steps start at one core cell and
+    /// follow the curve's step metric and the predictor's error
+    /// ([`NECK_PREDICTOR`]). The arclength march advances the front by
+    /// about 0.4 cell per step, its log-gap steps being limited by
+    /// `DY_STEP` while the path itself hardly moves (3 % of its target
+    /// step): 115 of the 159 neck states at μ = 10, N = 256, against 11
+    /// here. The states are those of the same discrete problem, with the
+    /// fixed-mesh tangents and path derivatives of
+    /// [`LjSolver::path_step`].
+    ///
+    /// Errors: a solve that fails at 1/256 of the step, or a solution whose
+    /// marker is not `m` (an earlier crossing: not the continued path); the
+    /// caller then marches on in arclength from the last state of `neck`.
+    fn neck_by_marker(
+        &self,
+        neck: &mut Vec<State>,
+        m_end: f64,
+        max_force: f64,
+        metric: &StepMetric,
+        bw: &mut BWork,
+    ) -> Result<()> {
+        let n = self.n();
+        let my = self.metric_y();
+        let cell = 4.0 * self.opts.edge_width / self.n() as f64;
+        let mut dm = cell;
+        let mut fails = 0u32;
+        // Marker of the state before the last, once the last is a marker
+        // state (the secant's second point).
+        let mut prev_m: Option<f64> = None;
+        let bad = |m: f64| Error::NotConverged {
+            what: "LJ sphere neck continuation in the marker",
+            iterations: 0,
+            residual: m,
+        };
+        loop {
+            let k = neck.len();
+            let cur = &neck[k - 1];
+            let mc = self.edge_marker(&cur.y);
+            if mc >= m_end || cur.pt.force >= max_force {
+                return Ok(());
+            }
+            let mut m = (mc + dm).min(m_end);
+            if m_end - m < 0.25 * dm {
+                m = m_end;
+            }
+            let d = m - mc;
+            let x = &self.mesh.x;
+            let (mut y, mut al): (Vec<f64>, f64) = match prev_m {
+                Some(pm) if fails == 0 => {
+                    let prev = &neck[k - 2];
+                    let th = d / (mc - pm);
+                    let y = (0..n)
+                        .map(|i| {
+                            (1.0 + th) * self.y_at(&cur.y, x[i] - d)
+                                - th * self.y_at(&prev.y, x[i] - d - (mc - pm))
+                        })
+                        .collect();
+                    (y, (1.0 + th) * cur.al - th * prev.al)
+                }
+                _ => (
+                    (0..n).map(|i| self.y_at(&cur.y, x[i] - d)).collect(),
+                    cur.al,
+                ),
+            };
+            let guess = y.clone();
+            if bw.krylov > KRYLOV_REFRESH {
+                bw.invalidate();
+            }
+            let con = Con::Plane {
+                row: self.marker_row(m),
+                c: MARK,
+            };
+            let solved = self.bnewton(&con, &mut y, &mut al, bw, false);
+            let ok = match solved {
+                Err(e) if is_unresolved(&e) => return Err(e),
+                Err(_) => false,
+                Ok(_) => (self.edge_marker(&y) - m).abs() <= 1e-9 * (1.0 + m),
+            };
+            if !ok {
+                bw.invalidate();
+                dm *= 0.5;
+                fails += 1;
+                if fails > 8 {
+                    return Err(bad(m));
+                }
+                continue;
+            }
+            let t = self.tangent(bw, &cur.t, false, path::PREDICTOR_RTOL)?;
+            let dist = {
+                let dy: f64 = y.iter().zip(&cur.y).map(|(a, b)| (a - b).powi(2)).sum();
+                (my * dy + (al - cur.al).powi(2)).sqrt()
+            };
+            let st = self.make_state(&y, al, t, cur.s + dist, bw, true)?;
+            let ratio = metric.dist(&cur.pt, &st.pt) / metric.target;
+            if ratio > 3.0 {
+                dm *= (0.8 / ratio).max(0.05);
+                continue;
+            }
+            let e_pred = y
+                .iter()
+                .zip(&guess)
+                .fold(0.0f64, |a, (p, q)| a.max((p - q).abs()));
+            let f = (1.0 / ratio.max(1e-12)).min(NECK_PREDICTOR / e_pred.max(1e-12));
+            dm = d * f.clamp(0.5, 2.0);
+            fails = 0;
+            prev_m = Some(mc);
+            neck.push(st);
+        }
+    }
+
+    /// The log-gap at radius `r` (linear interpolation between the nodes,
+    /// even in `r`).
+    fn y_at(&self, y: &[f64], r: f64) -> f64 {
+        let x = &self.mesh.x;
+        let r = r.abs();
+        let i = x.partition_point(|&v| v <= r).clamp(1, x.len() - 1) - 1;
+        let t = (r - x[i]) / (x[i + 1] - x[i]);
+        y[i] + t * (y[i + 1] - y[i])
     }
 
     /// The extremum of `sign·value(state)` over the marker radius in
@@ -518,7 +725,7 @@ impl EdgePath {
             // interval that ends on the first edge state).
             return self
                 .neck_solver
-                .refine_between(&self.neck, i, &mut self.bw, &|st| sp.phi(st));
+                .refine_between(&self.neck, i, &mut self.bw, sp);
         }
         let j = i - kept;
         let n = self.edge.len();
@@ -573,7 +780,7 @@ impl LjSolver {
     /// [`LjSolver::curve`] by the edge continuation (μ > 1).
     pub(super) fn edge_curve(&self, plan: (f64, f64)) -> Result<LjCurve> {
         let o = self.opts;
-        let mut path = self.edge_march(plan, o.max_force, o.target_points, &|_| false)?;
+        let mut path = self.edge_march(plan, o.max_force, o.target_points, false, &|_| false)?;
         let states = path.states();
         let mut c = self.finish_curve(states, &mut |i, sp| path.refine(self, i, sp))?;
         c.iterations = path.bw.w.iterations;
@@ -594,7 +801,7 @@ impl LjSolver {
             let imin = (0..n).min_by(|&a, &b| f(a).total_cmp(&f(b))).unwrap_or(0);
             n >= 3 && imin + 2 < n && f(n - 1) > f(imin) + 0.02 && e[n - 1].st.al > e[n - 2].st.al
         };
-        let mut path = self.edge_march(plan, 1.0, 80, &stop)?;
+        let mut path = self.edge_march(plan, 1.0, 80, false, &stop)?;
         let states = path.states();
         let Some(i) = Self::min_interval(&states) else {
             return Err(Error::NotConverged {
@@ -620,6 +827,61 @@ impl LjSolver {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The curve with the neck phase continued in its marker, against the
+    /// same discrete problem followed in arclength through the whole neck
+    /// (`dense_neck`, as the table sampler does): far fewer neck states,
+    /// ordered along the path, ending exactly on the switch marker, and the
+    /// same jump-in, jump-out and pull-off (measured: 60 against 104 neck
+    /// states at μ = 3, 53 against 96 at μ = 10; pull-offs equal to 3e-12,
+    /// hysteresis to 4e-7). The jump-out lies in the neck phase at μ = 3
+    /// and in the edge phase at μ = 10.
+    #[test]
+    fn neck_in_the_marker_follows_the_arclength_path() {
+        for mu in [3.0f64, 10.0] {
+            let sv = LjSphere::from_tabor(mu).unwrap().solver(128).unwrap();
+            let plan = sv.band_plan().unwrap();
+            let o = sv.opts;
+            let run = |dense: bool| {
+                let mut p = sv
+                    .edge_march(plan, o.max_force, o.target_points, dense, &|_| false)
+                    .unwrap();
+                let states = p.states();
+                let c = sv
+                    .finish_curve(states, &mut |i, sp| p.refine(&sv, i, sp))
+                    .unwrap();
+                (p, c)
+            };
+            let (fast, cf) = run(false);
+            let (dense, cd) = run(true);
+            let (nf, nd) = (fast.neck.len(), dense.neck.len());
+            assert!(3 * nf < 2 * nd, "μ = {mu}: {nf} neck states against {nd}");
+            assert!(fast.neck.windows(2).all(|w| w[1].s > w[0].s));
+            let m_s = SWITCH * plan.0;
+            let last = &fast.neck[nf - 1];
+            let m_last = fast.neck_solver.edge_marker(&last.y);
+            assert!(
+                (m_last - m_s).abs() <= 1e-9 * m_s,
+                "μ = {mu}: marker {m_last} against {m_s}"
+            );
+            let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+            let (ji, jd) = (cf.jump_in.unwrap(), cd.jump_in.unwrap());
+            let (oi, od) = (cf.jump_out.unwrap(), cd.jump_out.unwrap());
+            for (what, a, b) in [
+                ("jump-in approach", ji.approach, jd.approach),
+                ("jump-in force", ji.force, jd.force),
+                ("jump-out approach", oi.approach, od.approach),
+                ("jump-out force", oi.force, od.force),
+                ("pull-off", cf.pull_off_load.force, cd.pull_off_load.force),
+            ] {
+                assert!(rel(a, b) < 1e-7, "μ = {mu}: {what} {a} against {b}");
+            }
+            // The hysteresis integrates the sampled branches by trapezoids:
+            // fewer neck states move it by their quadrature error only.
+            let (hf, hd) = (cf.hysteresis_energy, cd.hysteresis_energy);
+            assert!(rel(hf, hd) < 1e-3, "μ = {mu}: hysteresis {hf} against {hd}");
+        }
+    }
 
     /// The edge family's mesh: `N` ordered cells on `[0, L]`, a node exactly
     /// at the switch marker, uniform cells of `4w/N` near the centre (the

@@ -667,6 +667,18 @@ impl Special {
             Special::ForceMin => st.df,
         }
     }
+
+    /// The `rtol` of [`LjSolver::path_root`] for the point: the force is an
+    /// extremum at the pull-off (a location error costs its square, and
+    /// `dP̄/ds` by central differences is noisy), [`path::ROOT_RTOL`]; the
+    /// force at a turning point of ᾱ moves with the location at first
+    /// order, 1e-10 (`dᾱ/ds` converges to 1e-16 there).
+    fn root_rtol(self) -> f64 {
+        match self {
+            Special::ApproachMax | Special::ApproachMin => 1e-10,
+            Special::ForceMin => path::ROOT_RTOL,
+        }
+    }
 }
 
 /// Which quantity is prescribed.
@@ -1480,7 +1492,7 @@ impl LjSolver {
         let (states, mut bw) = self.path_march(o.max_force, o.target_points, &|_| false)?;
         let samples = states.clone();
         let mut c = self.finish_curve(states, &mut |i, sp| {
-            self.refine_between(&samples, i, &mut bw, &|st| sp.phi(st))
+            self.refine_between(&samples, i, &mut bw, sp)
         })?;
         c.iterations = bw.w.iterations;
         c.factorizations = bw.w.factorizations;
@@ -1513,15 +1525,36 @@ impl LjSolver {
         let o = self.opts;
         let mut bw = BWork::new(self.n());
         let st0 = self.path_start(o.start_gap, &mut bw, false)?;
-        let metric = self.step_metric(max_force, target);
         let mut states = vec![st0];
-        let mut sigma = 0.01 * o.start_gap;
+        self.march_on(
+            &mut states,
+            &mut bw,
+            max_force,
+            target,
+            0.01 * o.start_gap,
+            stop,
+        )?;
+        Ok((states, bw))
+    }
+
+    /// The march of [`LjSolver::path_march`] continued from the last of
+    /// `states`, with first step `sigma`.
+    fn march_on(
+        &self,
+        states: &mut Vec<State>,
+        bw: &mut BWork,
+        max_force: f64,
+        target: usize,
+        mut sigma: f64,
+        stop: &dyn Fn(&[State]) -> bool,
+    ) -> Result<()> {
+        let metric = self.step_metric(max_force, target);
         let mut guard = 0usize;
         let mut fails = 0u32;
         loop {
             guard += 1;
             let last = states.last().unwrap();
-            if last.pt.force >= max_force || stop(&states) {
+            if last.pt.force >= max_force || stop(states) {
                 break;
             }
             if guard > 50 * target.max(10) {
@@ -1564,7 +1597,7 @@ impl LjSolver {
             if bw.krylov > KRYLOV_REFRESH {
                 bw.invalidate();
             }
-            match self.path_step(last, sigma, guess, &mut bw, false) {
+            match self.path_step(last, sigma, guess, bw, false) {
                 Err(e) => {
                     if is_unresolved(&e) {
                         // Smaller steps cannot help an under-resolved grid.
@@ -1599,7 +1632,7 @@ impl LjSolver {
                 }
             }
         }
-        Ok((states, bw))
+        Ok(())
     }
 
     /// The state `st` again, with its tangent and derivatives exact.
@@ -1620,16 +1653,17 @@ impl LjSolver {
         self.make_state(&y, al, t, st.s, bw, true)
     }
 
-    /// Refine the root of `phi` in the sample interval `[i, i + 1]` of the
-    /// fixed-mesh `states` (or a neighbouring interval when the exact signs
-    /// say so).
+    /// Refine the special point `sp` (the root of [`Special::phi`]) in the
+    /// sample interval `[i, i + 1]` of the fixed-mesh `states` (or a
+    /// neighbouring interval when the exact signs say so).
     fn refine_between(
         &self,
         states: &[State],
         i: usize,
         bw: &mut BWork,
-        phi: &dyn Fn(&State) -> f64,
+        sp: Special,
     ) -> Result<State> {
+        let phi = |st: &State| sp.phi(st);
         let n = states.len();
         let mut cands = vec![i];
         if i > 0 {
@@ -1642,7 +1676,7 @@ impl LjSolver {
             let l = self.exactify(&states[a], bw)?;
             let r = self.exactify(&states[a + 1], bw)?;
             if phi(&l) * phi(&r) <= 0.0 {
-                return self.path_root(&l, &r, bw, phi);
+                return self.path_root(&l, &r, bw, &phi, sp.root_rtol());
             }
         }
         self.exactify(&states[i], bw)
@@ -1827,7 +1861,7 @@ impl LjSolver {
         };
         let (states, mut bw) = s.path_march(1.0, 80, &stop)?;
         let best = match Self::min_interval(&states) {
-            Some(i) => s.refine_between(&states, i, &mut bw, &|st| Special::ForceMin.phi(st))?,
+            Some(i) => s.refine_between(&states, i, &mut bw, Special::ForceMin)?,
             None => {
                 return Err(Error::NotConverged {
                     what: "LJ sphere pull-off: no force minimum along the continuation",

@@ -255,7 +255,7 @@ impl LjSolver {
                 (None, states, Vec::new(), (0.0, 0.0), bw)
             }
             Some(plan) => {
-                let p = self.edge_march(plan, f_tail, target, &|_| false)?;
+                let p = self.edge_march(plan, f_tail, target, true, &|_| false)?;
                 (Some(p.neck_solver), p.neck, p.edge, plan, p.bw)
             }
         };
@@ -300,7 +300,7 @@ impl LjSolver {
         while i + 1 < nodes.len() {
             let (a, b) = (ta(&nodes[i].st), ta(&nodes[i + 1].st));
             if a * b < 0.0 && nodes[i].kind == Kind::Regular && nodes[i + 1].kind == Kind::Regular {
-                let st = ns.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &ta)?;
+                let st = ns.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &ta, 0.0)?;
                 let d2 = ns.second_derivative(&st, &mut bw)?;
                 let nd = ns.node(st, Kind::Turn(d2))?;
                 nodes.insert(i + 1, nd);
@@ -330,7 +330,7 @@ impl LjSolver {
             let st = if gap(&nodes[i + 1].st) == 0.0 {
                 nodes[i + 1].st.clone()
             } else {
-                ns.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &gap)?
+                ns.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &gap, 0.0)?
             };
             let g = ns.onset_slope(&st, &mut bw)?;
             let mut nd = ns.node(st, Kind::Corner(g))?;
@@ -381,7 +381,7 @@ impl LjSolver {
         let (f_min, a_min);
         if let Some(imin) = neck_min {
             let dfs = |s: &State| s.df;
-            let st = ns.path_root(&nodes[imin].st, &nodes[imin + 1].st, &mut bw, &dfs)?;
+            let st = ns.path_root(&nodes[imin].st, &nodes[imin + 1].st, &mut bw, &dfs, 0.0)?;
             let nd = ns.node(st, Kind::Min)?;
             (f_min, a_min) = (nd.st.pt.force, nd.st.pt.contact_radius);
             nodes.insert(imin + 1, nd);
@@ -398,7 +398,7 @@ impl LjSolver {
                 .find(|&i| force(&nodes[i].st) < 0.0 && force(&nodes[i + 1].st) >= 0.0)
         });
         if let Some(i) = zero_n {
-            let st = ns.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &force)?;
+            let st = ns.path_root(&nodes[i].st, &nodes[i + 1].st, &mut bw, &force, 0.0)?;
             let nd = ns.node(st, Kind::Zero)?;
             nodes.insert(i + 1, nd);
         } else {
@@ -961,7 +961,7 @@ mod tests {
         let sv = LjSphere::from_tabor(10.0).unwrap().solver(256).unwrap();
         let plan = sv.band_plan().unwrap();
         let path = sv
-            .edge_march(plan, 1.0, 120, &|e: &[EdgeState]| {
+            .edge_march(plan, 1.0, 120, true, &|e: &[EdgeState]| {
                 e[e.len() - 1].st.pt.force < -0.9
             })
             .unwrap();
