@@ -723,9 +723,11 @@ impl EdgePath {
         if i < kept {
             // Within the neck phase (the dropped last neck state closes the
             // interval that ends on the first edge state).
-            return self
-                .neck_solver
-                .refine_between(&self.neck, i, &mut self.bw, sp);
+            let ns = &self.neck_solver;
+            return match ns.refine_between(&self.neck, i, &mut self.bw, sp) {
+                Err(e) if !is_unresolved(&e) => ns.refine_densely(&self.neck, i, &mut self.bw, sp),
+                r => r,
+            };
         }
         let j = i - kept;
         let n = self.edge.len();

@@ -1682,6 +1682,50 @@ impl LjSolver {
         self.exactify(&states[i], bw)
     }
 
+    /// [`LjSolver::refine_between`] on a dense arclength march from
+    /// `states[i − 1]` past `states[i + 2]`: the neck phase continued in its
+    /// marker (`edge` module) can leave states too far apart for the
+    /// guesses of [`LjSolver::path_root`] (interpolation between the
+    /// states: at μ = 3 with 100 target points, the jump-out). The point's
+    /// arclength is mapped back onto that of `states`, so that it sorts
+    /// among them.
+    fn refine_densely(
+        &self,
+        states: &[State],
+        i: usize,
+        bw: &mut BWork,
+        sp: Special,
+    ) -> Result<State> {
+        let n = self.n();
+        let my = self.metric_y();
+        let (a, b) = (i.saturating_sub(1), (i + 2).min(states.len() - 1));
+        bw.invalidate();
+        let end = &states[b];
+        let ahead = |x: &State| {
+            my * dot(&end.t[..n], &x.y) + end.t[n] * x.al
+                - my * dot(&end.t[..n], &end.y)
+                - end.t[n] * end.al
+        };
+        let mut dense = vec![self.exactify(&states[a], bw)?];
+        let sigma = (end.s - states[a].s) / 16.0;
+        let o = self.opts;
+        self.march_on(&mut dense, bw, o.max_force, o.target_points, sigma, &|st| {
+            ahead(&st[st.len() - 1]) > 0.0
+        })?;
+        let j = (0..dense.len() - 1)
+            .find(|&j| sp.phi(&dense[j]) * sp.phi(&dense[j + 1]) <= 0.0)
+            .ok_or(Error::NotConverged {
+                what: "LJ sphere special point (dense march)",
+                iterations: 0,
+                residual: f64::NAN,
+            })?;
+        let mut st = self.refine_between(&dense, j, bw, sp)?;
+        let (d0, d1) = (dense[0].s, dense[dense.len() - 1].s);
+        let th = ((st.s - d0) / (d1 - d0)).clamp(0.0, 1.0);
+        st.s = states[a].s + th * (end.s - states[a].s);
+        Ok(st)
+    }
+
     /// The sample interval holding the force minimum: `[i−1, i]` or `[i, i+1]`
     /// around the smallest sample `i` (by the parabola through the three).
     fn min_interval(states: &[State]) -> Option<usize> {
@@ -1780,8 +1824,24 @@ impl LjSolver {
         let mut pull_disp = None;
         if let (Some(t1), Some(t2)) = (jump_in, jump_out) {
             let (i1, i2) = (find(&t1).unwrap(), find(&t2).unwrap());
-            let outer = integrate_from_level(&pts[..=i1], t2.approach, false);
-            let inner = integrate_from_level(&pts[i2..], t1.approach, true);
+            // Arclength of each interval in the tangents' metric (the
+            // chord; node by node on the edge family's scaled meshes, as
+            // its derivatives are taken).
+            let my = self.metric_y();
+            let ds: Vec<f64> = all
+                .windows(2)
+                .map(|w| {
+                    let dy: f64 = w[1]
+                        .y
+                        .iter()
+                        .zip(&w[0].y)
+                        .map(|(a, b)| (a - b).powi(2))
+                        .sum();
+                    (my * dy + (w[1].al - w[0].al).powi(2)).sqrt()
+                })
+                .collect();
+            let outer = integrate_from_level(&pts[..=i1], &ds[..i1], t2.approach, false);
+            let inner = integrate_from_level(&pts[i2..], &ds[i2..], t1.approach, true);
             match (outer, inner) {
                 (Some(o), Some(inr)) => hyst = (o - inr).abs(),
                 _ => return Err(Error::OutOfDomain {
@@ -2143,36 +2203,121 @@ fn deriv3(xs: [f64; 3], ys: [f64; 3], x: f64) -> f64 {
         + y2 * ((x - x0) + (x - x1)) / ((x2 - x0) * (x2 - x1))
 }
 
-/// `∫ P̄ dᾱ` along `pts` (trapezoid): with `from_start = false` from the
-/// last crossing of ᾱ = `level` up to the end; with `from_start = true` from
-/// the start up to the first crossing of `level`.
-fn integrate_from_level(pts: &[LjPoint], level: f64, from_start: bool) -> Option<f64> {
+/// `∫ P̄ dᾱ` along `pts`: with `from_start = false` from the last crossing
+/// of ᾱ = `level` up to the end; with `from_start = true` from the start up
+/// to the first crossing of `level`. `ds[i]` is the arclength from point `i`
+/// to `i + 1` in the metric of their path derivatives
+/// ([`LjPoint::d_approach`], [`LjPoint::d_force`]): each interval is a
+/// cubic Hermite in the arclength for ᾱ and P̄, whose product integrates
+/// exactly by 3-point Gauss–Legendre; the crossing is located on the
+/// Hermite ᾱ. An interval without finite derivatives is a trapezoid.
+///
+/// The trapezoid on the points alone erred by 2.2e-3 and 1.3e-3 of the
+/// hysteresis at μ = 3 and 10, N = 256, with the default 250 target points
+/// (against 2000): it ignores the curvature of P̄(ᾱ), and near a turning
+/// point P̄ − P̄₀ ∝ √(ᾱ − ᾱ₀).
+fn integrate_from_level(pts: &[LjPoint], ds: &[f64], level: f64, from_start: bool) -> Option<f64> {
     let n = pts.len();
-    let lerp = |a: &LjPoint, b: &LjPoint| {
-        let t = (level - a.approach) / (b.approach - a.approach);
-        a.force + t * (b.force - a.force)
+    let cross = |i: usize| {
+        let (a, b) = (&pts[i], &pts[i + 1]);
+        (a.approach - level) * (b.approach - level) <= 0.0 && b.approach != a.approach
     };
     if from_start {
         let mut s = 0.0;
         for i in 0..n - 1 {
-            let (a, b) = (&pts[i], &pts[i + 1]);
-            if (a.approach - level) * (b.approach - level) <= 0.0 && b.approach != a.approach {
-                let f = lerp(a, b);
-                return Some(s + 0.5 * (a.force + f) * (level - a.approach));
+            let iv = PathInterval::new(&pts[i], &pts[i + 1], ds[i]);
+            if cross(i) {
+                return Some(s + iv.integral(0.0, iv.at_approach(level)));
             }
-            s += 0.5 * (a.force + b.force) * (b.approach - a.approach);
+            s += iv.integral(0.0, 1.0);
         }
         None
     } else {
         let mut s = 0.0;
         for i in (0..n - 1).rev() {
-            let (a, b) = (&pts[i], &pts[i + 1]);
-            if (a.approach - level) * (b.approach - level) <= 0.0 && b.approach != a.approach {
-                let f = lerp(a, b);
-                return Some(s + 0.5 * (f + b.force) * (b.approach - level));
+            let iv = PathInterval::new(&pts[i], &pts[i + 1], ds[i]);
+            if cross(i) {
+                return Some(s + iv.integral(iv.at_approach(level), 1.0));
             }
-            s += 0.5 * (a.force + b.force) * (b.approach - a.approach);
+            s += iv.integral(0.0, 1.0);
         }
         None
+    }
+}
+
+/// One interval of the curve as cubic Hermites of ᾱ and P̄ in `t ∈ [0, 1]`
+/// (slopes per unit `t`: the path derivatives times the arclength), or
+/// straight lines when a derivative is not finite.
+struct PathInterval {
+    al: [f64; 4],
+    f: [f64; 4],
+    cubic: bool,
+}
+
+impl PathInterval {
+    fn new(a: &LjPoint, b: &LjPoint, ds: f64) -> Self {
+        let d = [a.d_approach, a.d_force, b.d_approach, b.d_force];
+        let cubic = ds > 0.0 && d.iter().all(|v| v.is_finite());
+        let (ma, mf, na, nf) = if cubic {
+            (ds * d[0], ds * d[1], ds * d[2], ds * d[3])
+        } else {
+            let (da, df) = (b.approach - a.approach, b.force - a.force);
+            (da, df, da, df)
+        };
+        Self {
+            al: [a.approach, ma, b.approach, na],
+            f: [a.force, mf, b.force, nf],
+            cubic,
+        }
+    }
+
+    fn value(c: &[f64; 4], t: f64) -> f64 {
+        hermite01(c[0], c[1], c[2], c[3], t)
+    }
+
+    fn slope(c: &[f64; 4], t: f64) -> f64 {
+        let t2 = t * t;
+        (6.0 * t2 - 6.0 * t) * (c[0] - c[2])
+            + (3.0 * t2 - 4.0 * t + 1.0) * c[1]
+            + (3.0 * t2 - 2.0 * t) * c[3]
+    }
+
+    /// `∫ P̄ dᾱ` over `t ∈ [t0, t1]`: degree 5, exact by 3-point Gauss.
+    fn integral(&self, t0: f64, t1: f64) -> f64 {
+        const X: f64 = 0.774_596_669_241_483_4;
+        let (c, h) = (0.5 * (t0 + t1), 0.5 * (t1 - t0));
+        [(-X, 5.0 / 9.0), (0.0, 8.0 / 9.0), (X, 5.0 / 9.0)]
+            .iter()
+            .map(|&(x, w)| {
+                let t = c + h * x;
+                w * Self::value(&self.f, t) * Self::slope(&self.al, t)
+            })
+            .sum::<f64>()
+            * h
+    }
+
+    /// The `t` where ᾱ(t) = `level`, for ends on either side of it
+    /// (bisection on the Hermite; linear without derivatives).
+    fn at_approach(&self, level: f64) -> f64 {
+        let (a0, a1) = (self.al[0], self.al[2]);
+        let lin = ((level - a0) / (a1 - a0)).clamp(0.0, 1.0);
+        if !self.cubic {
+            return lin;
+        }
+        let g = |t: f64| Self::value(&self.al, t) - level;
+        let (mut lo, mut hi) = (0.0f64, 1.0f64);
+        let glo = g(lo);
+        if glo == 0.0 {
+            return 0.0;
+        }
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if g(mid) * glo > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
     }
 }
