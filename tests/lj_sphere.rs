@@ -548,6 +548,15 @@ fn coarse_curve_at_mu_3_finds_the_same_jumps() {
         "{jc:?} against {jd:?}"
     );
     assert!(rel(jc.force, jd.force) < 1e-8, "{jc:?} against {jd:?}");
+    // In its place along the curve: a minimum of the approach.
+    let k = c.points.iter().position(|p| *p == jc).unwrap();
+    for q in [k - 1, k + 1] {
+        assert!(
+            c.points[q].approach >= jc.approach,
+            "{:?} against {jc:?}",
+            c.points[q]
+        );
+    }
     let (ic, id) = (c.jump_in.unwrap(), d.jump_in.unwrap());
     assert!(
         rel(ic.approach, id.approach) < 1e-9,

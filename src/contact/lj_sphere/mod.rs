@@ -1687,8 +1687,8 @@ impl LjSolver {
     /// marker (`edge` module) can leave states too far apart for the
     /// guesses of [`LjSolver::path_root`] (interpolation between the
     /// states: at μ = 3 with 100 target points, the jump-out). The point's
-    /// arclength is mapped back onto that of `states`, so that it sorts
-    /// among them.
+    /// arclength is placed among those of `states` by its projections on
+    /// their tangents, so that it sorts among them.
     fn refine_densely(
         &self,
         states: &[State],
@@ -1720,9 +1720,21 @@ impl LjSolver {
                 residual: f64::NAN,
             })?;
         let mut st = self.refine_between(&dense, j, bw, sp)?;
-        let (d0, d1) = (dense[0].s, dense[dense.len() - 1].s);
-        let th = ((st.s - d0) / (d1 - d0)).clamp(0.0, 1.0);
-        st.s = states[a].s + th * (end.s - states[a].s);
+        // Its place among `states`: after the last state it lies ahead of
+        // (along that state's tangent), at the fraction of the way to the
+        // next one that the projections give.
+        let proj = |k: usize, x: &State| {
+            let e = &states[k];
+            my * (dot(&e.t[..n], &x.y) - dot(&e.t[..n], &e.y)) + e.t[n] * (x.al - e.al)
+        };
+        let k = (a..b).rev().find(|&k| proj(k, &st) >= 0.0).unwrap_or(a);
+        let (p0, p1) = (proj(k, &st), proj(k, &states[k + 1]));
+        let th = if p1 > 0.0 {
+            (p0 / p1).clamp(0.0, 1.0)
+        } else {
+            0.5
+        };
+        st.s = states[k].s + th * (states[k + 1].s - states[k].s);
         Ok(st)
     }
 
