@@ -55,7 +55,8 @@ pub(super) const ROOT_RTOL: f64 = 1e-6;
 /// refactors instead.
 const GMRES_MAX: usize = 12;
 
-/// GMRES cycles of [`LjSolver::bgmres`], each checked by the true residual.
+/// GMRES cycles of [`LjSolver::bgmres`] in a tight solve (each checked by
+/// the true residual; a loose solve runs one).
 const GMRES_CYCLES: usize = 3;
 
 /// Forcing term of the inexact Newton steps: relative residual of the
