@@ -458,7 +458,6 @@ impl LjSolver {
         bw: &mut BWork,
     ) -> Result<()> {
         let n = self.n();
-        let my = self.metric_y();
         let cell = 4.0 * self.opts.edge_width / self.n() as f64;
         let mut dm = cell;
         let mut fails = 0u32;
@@ -524,10 +523,7 @@ impl LjSolver {
                 continue;
             }
             let t = self.tangent(bw, &cur.t, false, path::PREDICTOR_RTOL)?;
-            let dist = {
-                let dy: f64 = y.iter().zip(&cur.y).map(|(a, b)| (a - b).powi(2)).sum();
-                (my * dy + (al - cur.al).powi(2)).sqrt()
-            };
+            let dist = self.chord(&y, al, &cur.y, cur.al);
             let st = self.make_state(&y, al, t, cur.s + dist, bw, true)?;
             let ratio = metric.dist(&cur.pt, &st.pt) / metric.target;
             if ratio > 3.0 {

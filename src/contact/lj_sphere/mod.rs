@@ -1839,18 +1839,9 @@ impl LjSolver {
             // Arclength of each interval in the tangents' metric (the
             // chord; node by node on the edge family's scaled meshes, as
             // its derivatives are taken).
-            let my = self.metric_y();
             let ds: Vec<f64> = all
                 .windows(2)
-                .map(|w| {
-                    let dy: f64 = w[1]
-                        .y
-                        .iter()
-                        .zip(&w[0].y)
-                        .map(|(a, b)| (a - b).powi(2))
-                        .sum();
-                    (my * dy + (w[1].al - w[0].al).powi(2)).sqrt()
-                })
+                .map(|w| self.chord(&w[1].y, w[1].al, &w[0].y, w[0].al))
                 .collect();
             let outer = integrate_from_level(&pts[..=i1], &ds[..i1], t2.approach, false);
             let inner = integrate_from_level(&pts[i2..], &ds[i2..], t1.approach, true);

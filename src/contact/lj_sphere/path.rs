@@ -158,6 +158,14 @@ impl LjSolver {
         1.0 / self.n() as f64
     }
 
+    /// Distance between the states `(y, ᾱ)` and `(y', ᾱ')` in the
+    /// arclength metric ([`LjSolver::metric_y`]): the chord of the path
+    /// between neighbouring states.
+    pub(super) fn chord(&self, y: &[f64], al: f64, y2: &[f64], al2: f64) -> f64 {
+        let dy: f64 = y.iter().zip(y2).map(|(a, b)| (a - b).powi(2)).sum();
+        (self.metric_y() * dy + (al - al2).powi(2)).sqrt()
+    }
+
     fn con_value(&self, con: &Con, y: &[f64], al: f64, w: &Work) -> f64 {
         let n = self.n();
         match con {
@@ -743,10 +751,7 @@ impl LjSolver {
         });
         self.bnewton(&Con::Plane { row, c }, &mut y, &mut al, bw, exact)?;
         let t = self.tangent(bw, &from.t, exact, PREDICTOR_RTOL)?;
-        let dist = {
-            let dy: f64 = y.iter().zip(&from.y).map(|(a, b)| (a - b).powi(2)).sum();
-            (my * dy + (al - from.al).powi(2)).sqrt()
-        };
+        let dist = self.chord(&y, al, &from.y, from.al);
         self.make_state(&y, al, t, from.s + dist, bw, true)
     }
 
@@ -777,10 +782,7 @@ impl LjSolver {
             self.bnewton(&con, &mut y, &mut al, bw, true)?;
         }
         let t = self.tangent(bw, &from.t, false, EXACT_RTOL)?;
-        let dist = {
-            let dy: f64 = y.iter().zip(&from.y).map(|(a, b)| (a - b).powi(2)).sum();
-            (my * dy + (al - from.al).powi(2)).sqrt()
-        };
+        let dist = self.chord(&y, al, &from.y, from.al);
         self.make_state(&y, al, t, from.s + dist, bw, true)
     }
 
