@@ -270,6 +270,49 @@ fn stable_branch_is_monotone_and_continuous() {
     }
 }
 
+/// The stiffness a call returns is the derivative of the force it returns:
+/// against one-sided differences of the table's own force, inside the knots,
+/// at the load-controlled pull-off (a segment start where F − F_c ∝ u², the
+/// finite-limit case) and beside the branch's start.
+#[test]
+fn stiffness_is_the_derivative_of_the_force() {
+    for lam in LAMBDAS {
+        let (m, t) = table(lam);
+        let ds = m.length_scale();
+        let on = ContactState {
+            branch: 1,
+            in_contact: 1,
+            ..Default::default()
+        };
+        let (lo1, _) = t.branch_range(1).unwrap();
+        let pc = t.pull_off_force(Control::Load).unwrap();
+        let d_pc = t.eval_at_load(pc).unwrap().delta;
+        let force = |d: f64| t.eval(d, &on).unwrap().0.force;
+        let mut points: Vec<f64> = (1..400)
+            .map(|i| lo1 + (30.0 * ds - lo1) * (i as f64 / 400.0).powi(2))
+            .collect();
+        // The load-controlled pull-off, and beside the branch's start (the
+        // jump-out turning point, where dF/dδ → −∞; at small λ the point
+        // where the radius reaches zero). δ = lo1 itself may round to
+        // either side of the reduced threshold.
+        points.extend([d_pc, lo1 + 1e-6 * ds, lo1 + 1e-4 * ds]);
+        for d in points {
+            let (r, _) = t.eval(d, &on).unwrap();
+            // Step small against the distance to the turning point lo1,
+            // where the force has a square-root singularity.
+            let h = 1e-5 * (d - lo1).min(ds);
+            // One-sided, second order: F'(δ) ≈ (4F(δ+h) − F(δ+2h) − 3F(δ))/(2h).
+            let fd = (4.0 * force(d + h) - force(d + 2.0 * h) - 3.0 * r.force) / (2.0 * h);
+            assert!(
+                (r.stiffness - fd).abs() <= 1e-3 * r.stiffness.abs() + 1e-6 * pc.abs() / ds,
+                "λ = {lam}, Δ̄ = {}: stiffness {:e} against {fd:e}",
+                d / ds,
+                r.stiffness
+            );
+        }
+    }
+}
+
 #[test]
 fn far_and_deep_extremes() {
     for lam in LAMBDAS {

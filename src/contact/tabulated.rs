@@ -46,11 +46,13 @@
 //!
 //! # Lookup
 //!
-//! O(1) per call: one square root for u, then a bucket index computed from
-//! the bit pattern of `u + bias` (a piecewise-linear logarithm, so buckets
-//! are fine where the knots are dense near a turning point and coarse in the
-//! deep Hertz regime), at most a couple of comparisons, and two cubic
-//! polynomials. The stiffness `dP/dδ` is the derivative of the interpolant.
+//! O(1) per call: a bucket index computed from the bit pattern of
+//! `d + bias`, where `d = ±(Δ − Δ_ref)` is the variable under the square root
+//! (a piecewise-linear logarithm, so buckets are fine where the knots are
+//! dense near a turning point and coarse in the deep Hertz regime), at most a
+//! couple of comparisons, and two cubic polynomials in `u = √d`. The lookup
+//! works on `d` so that it runs while the square root is computed. The
+//! stiffness `dP/dδ` is the derivative of the interpolant.
 //!
 //! # Hysteresis
 //!
@@ -243,6 +245,8 @@ struct TableData {
 struct Interval {
     lo: f64,
     hi: f64,
+    /// `hi` in the segment's pre-root variable `d` (`hi²` or `hi`).
+    d_hi: f64,
     inv_h: f64,
     f: [f64; 4],
     a: [f64; 4],
@@ -252,10 +256,13 @@ struct Interval {
 struct Segment {
     sqrt: bool,
     sign: f64,
+    /// `sign/2` (sqrt) or `sign` (linear): du/dΔ times u or 1.
+    du_dx_factor: f64,
     reference: f64,
     lo: f64,
     hi: f64,
-    u0: f64,
+    /// The first knot in `d`.
+    d0: f64,
     bias: f64,
     bias_bits: i64,
     shift: u32,
@@ -317,6 +324,17 @@ fn horner_d(c: &[f64; 4], t: f64) -> f64 {
     c[1] + t * (2.0 * c[2] + t * (3.0 * c[3]))
 }
 
+/// A segment's pre-root variable `d` at its interpolation variable `u`:
+/// `u²` for a square-root segment, `u` for a linear one.
+#[inline]
+fn d_of_u(sqrt: bool, u: f64) -> f64 {
+    if sqrt {
+        u * u
+    } else {
+        u
+    }
+}
+
 fn coefficients(y0: f64, m0: f64, y1: f64, m1: f64, h: f64) -> [f64; 4] {
     let d = y1 - y0;
     let (p0, p1) = (h * m0, h * m1);
@@ -358,19 +376,22 @@ fn limit(y0: f64, m0: &mut f64, y1: f64, m1: &mut f64, h: f64) {
 }
 
 impl Segment {
+    /// Index key of `d` (see [`Segment::interval`]).
     #[inline]
-    fn key(&self, u: f64) -> i64 {
-        ((u - self.u0) + self.bias).to_bits() as i64 - self.bias_bits
+    fn key(&self, d: f64) -> i64 {
+        ((d - self.d0) + self.bias).to_bits() as i64 - self.bias_bits
     }
 
+    /// The pre-root variable `d = sign·(Δ − reference)`.
     #[inline]
-    fn u_of(&self, x: f64) -> f64 {
-        let d = self.sign * (x - self.reference);
-        if self.sqrt {
-            d.max(0.0).sqrt()
-        } else {
-            d
-        }
+    fn d_of(&self, x: f64) -> f64 {
+        self.sign * (x - self.reference)
+    }
+
+    /// `d` of a knot `u`.
+    #[inline]
+    fn d_of_u(&self, u: f64) -> f64 {
+        d_of_u(self.sqrt, u)
     }
 
     #[inline]
@@ -385,40 +406,50 @@ impl Segment {
     /// Reduced (F, radius, dF/dΔ) at reduced approach x.
     #[inline]
     fn eval(&self, x: f64) -> (f64, f64, f64) {
-        let u = self.u_of(x);
-        // du/dΔ = 1/(2·sign·u) (sqrt) or sign (linear, sign = ±1), taken
-        // here so that the division runs while the interval is looked up.
-        let du_dx = if self.sqrt {
-            1.0 / (2.0 * self.sign * u)
-        } else {
-            self.sign
-        };
-        let iv = self.interval(u);
+        let d = self.d_of(x);
+        // The interval is looked up on d, so that the lookup does not wait
+        // for the square root.
+        let iv = self.interval(d);
+        // u, and du/dΔ = sign/(2u) (sqrt) or sign (linear, sign = ±1), the
+        // quotient taken here so that it runs while the interval is looked
+        // up. Both forms are computed and one is picked: tables mix
+        // segments of both kinds, and a jump on the kind mispredicts.
+        let root = d.max(0.0).sqrt();
+        let (u, den) = if self.sqrt { (root, root) } else { (d, 1.0) };
+        let du_dx = self.du_dx_factor / den;
         let t = (u - iv.lo) * iv.inv_h;
         let f = horner(&iv.f, t);
         let a = horner(&iv.a, t);
-        let dfdu = horner_d(&iv.f, t) * iv.inv_h;
-        let k = if self.sqrt && u == 0.0 && iv.f[1] == 0.0 {
-            // F − F₀ ∝ u²: the finite limit.
-            iv.f[2] * iv.inv_h * iv.inv_h * self.sign
+        let k = horner_d(&iv.f, t) * iv.inv_h * du_dx;
+        let k = if k.abs() < STIFFNESS_BAR_MAX {
+            k
         } else {
-            dfdu * du_dx
-        };
-        let k = if k.is_nan() {
-            STIFFNESS_BAR_MAX
-        } else {
-            k.clamp(-STIFFNESS_BAR_MAX, STIFFNESS_BAR_MAX)
+            self.stiffness_limit(iv, u, k)
         };
         (f, a.max(0.0), k)
     }
 
+    /// The stiffness at a turning point (u = 0, where du/dΔ is infinite)
+    /// or beyond ±[`STIFFNESS_BAR_MAX`].
+    #[cold]
+    fn stiffness_limit(&self, iv: &Interval, u: f64, k: f64) -> f64 {
+        if self.sqrt && u == 0.0 && iv.f[1] == 0.0 {
+            // F − F₀ ∝ u²: the finite limit.
+            iv.f[2] * iv.inv_h * iv.inv_h * self.sign
+        } else if k.is_nan() {
+            STIFFNESS_BAR_MAX
+        } else {
+            k.clamp(-STIFFNESS_BAR_MAX, STIFFNESS_BAR_MAX)
+        }
+    }
+
     #[inline]
-    fn interval(&self, u: f64) -> &Interval {
+    fn interval(&self, d: f64) -> &Interval {
         let nb = self.index.len() as i64;
-        let b = (self.key(u) >> self.shift).clamp(0, nb - 1) as usize;
+        let b = (self.key(d) >> self.shift).clamp(0, nb - 1) as usize;
         let mut i = self.index[b] as usize;
         let last = self.intervals.len() - 1;
-        while i < last && u >= self.intervals[i].hi {
+        while i < last && d >= self.intervals[i].d_hi {
             i += 1;
         }
         &self.intervals[i]
@@ -426,6 +457,7 @@ impl Segment {
 
     fn build(d: &SegmentData) -> Result<Segment> {
         let n = d.u.len();
+        let sqrt = d.transform == Transform::Sqrt;
         let mut intervals = Vec::with_capacity(n);
         for i in 0..n - 1 {
             let h = d.u[i + 1] - d.u[i];
@@ -435,6 +467,7 @@ impl Segment {
             intervals.push(Interval {
                 lo: d.u[i],
                 hi: d.u[i + 1],
+                d_hi: d_of_u(sqrt, d.u[i + 1]),
                 inv_h: 1.0 / h,
                 f: coefficients(
                     d.force[i],
@@ -455,26 +488,31 @@ impl Segment {
         if intervals.is_empty() {
             return Err(bad("segment.u", n as f64, "spanning a non-empty range"));
         }
-        let u0 = intervals[0].lo;
-        let span = intervals[intervals.len() - 1].hi - u0;
-        let bias = (intervals[0].hi - u0).max(span * 1e-12);
+        let d0 = d_of_u(sqrt, intervals[0].lo);
+        let span = intervals[intervals.len() - 1].d_hi - d0;
+        let bias = (intervals[0].d_hi - d0).max(span * 1e-12);
         let mut seg = Segment {
-            sqrt: d.transform == Transform::Sqrt,
+            sqrt,
             sign: d.sign,
+            du_dx_factor: if sqrt { 0.5 * d.sign } else { d.sign },
             reference: d.reference,
             lo: d.lo,
             hi: d.hi,
-            u0,
+            d0,
             bias,
             bias_bits: bias.to_bits() as i64,
             shift: 52,
             intervals,
             index: Vec::new(),
         };
-        // The finest index (smallest shift) whose buckets hold at most two
+        // The coarsest index (largest shift) whose buckets hold at most two
         // interval starts, within MAX_INDEX entries.
-        let keys: Vec<i64> = seg.intervals.iter().map(|iv| seg.key(iv.lo)).collect();
-        let kmax = seg.key(seg.intervals[seg.intervals.len() - 1].hi).max(0);
+        let keys: Vec<i64> = seg
+            .intervals
+            .iter()
+            .map(|iv| seg.key(seg.d_of_u(iv.lo)))
+            .collect();
+        let kmax = seg.key(seg.intervals[seg.intervals.len() - 1].d_hi).max(0);
         let mut best = 62u32;
         for shift in (0..=62u32).rev() {
             let nb = (kmax >> shift) + 1;
@@ -1449,12 +1487,11 @@ impl NormalContact for TabulatedLaw {
     /// Errors: [`Error::InvalidArgument`] for a non-finite δ or a branch
     /// outside `0..branch_count()`; [`Error::OutOfDomain`] when the response
     /// overflows.
-    #[inline]
+    #[inline(always)]
     fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
-        let delta = check_delta(delta)?;
         let br = old.branch;
-        if br < 0 || br as usize >= self.branches.len() {
-            return Err(bad_branch(br));
+        if !(delta.is_finite() && (br as u32 as usize) < self.branches.len()) {
+            return Err(bad_input(delta, br));
         }
         let d = &self.data;
         let x = (delta - d.approach_origin) / d.approach_scale;
@@ -1531,7 +1568,15 @@ impl NormalContact for TabulatedLaw {
     }
 }
 
+/// The error for a non-finite δ or a branch outside the table.
 #[cold]
+fn bad_input(delta: f64, b: i32) -> Error {
+    match check_delta(delta) {
+        Err(e) => e,
+        Ok(_) => bad_branch(b),
+    }
+}
+
 fn bad_branch(b: i32) -> Error {
     Error::InvalidArgument {
         name: "old.branch",
