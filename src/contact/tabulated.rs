@@ -388,12 +388,6 @@ impl Segment {
         self.sign * (x - self.reference)
     }
 
-    /// `d` of a knot `u`.
-    #[inline]
-    fn d_of_u(&self, u: f64) -> f64 {
-        d_of_u(self.sqrt, u)
-    }
-
     #[inline]
     fn x_of(&self, u: f64) -> f64 {
         if self.sqrt {
@@ -510,7 +504,7 @@ impl Segment {
         let keys: Vec<i64> = seg
             .intervals
             .iter()
-            .map(|iv| seg.key(seg.d_of_u(iv.lo)))
+            .map(|iv| seg.key(d_of_u(sqrt, iv.lo)))
             .collect();
         let kmax = seg.key(seg.intervals[seg.intervals.len() - 1].d_hi).max(0);
         let mut best = 62u32;
