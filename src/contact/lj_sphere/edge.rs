@@ -522,7 +522,7 @@ impl LjSolver {
                 }
                 continue;
             }
-            let t = self.tangent(bw, &cur.t, false, path::PREDICTOR_RTOL)?;
+            let t = self.tangent(bw, &cur.t, false, path::PREDICTOR_RTOL, None)?;
             let dist = self.chord(&y, al, &cur.y, cur.al);
             let st = self.make_state(&y, al, t, cur.s + dist, bw, true)?;
             let ratio = metric.dist(&cur.pt, &st.pt) / metric.target;

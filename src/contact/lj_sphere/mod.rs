@@ -171,6 +171,7 @@ use std::sync::Arc;
 
 mod disk;
 mod edge;
+mod kernels;
 mod lu32;
 mod path;
 mod sample;
@@ -765,8 +766,9 @@ pub struct LjSolver {
     tail: Vec<f64>,
     /// Tail deformation factor at r = 0.
     tail0: f64,
-    /// Gauss weights for the force: per cell 3 points, radius, weight·r, and
-    /// the quadratic interpolation (node index i0 and the 3 Lagrange weights).
+    /// Gauss points of the force: per cell 3 points (consecutive), each
+    /// with `r̄²/2`, weight·r̄, and the quadratic interpolation (node index
+    /// i0, the same for the cell's 3 points, and the 3 Lagrange weights).
     quad: Vec<(f64, f64, usize, [f64; 3])>,
     /// The edge continuation's solver at the switch marker, built on first
     /// use ([`LjSolver::family`]); every edge-phase solver is it scaled.
@@ -908,7 +910,7 @@ impl LjSolver {
                 let l0 = (r - x1) * (r - x2) / ((x0 - x1) * (x0 - x2));
                 let l1 = (r - x0) * (r - x2) / ((x1 - x0) * (x1 - x2));
                 let l2 = (r - x0) * (r - x1) / ((x2 - x0) * (x2 - x1));
-                quad.push((r, 0.5 * (hi - lo) * wt * r, i0, [l0, l1, l2]));
+                quad.push((0.5 * r * r, 0.5 * (hi - lo) * wt * r, i0, [l0, l1, l2]));
             }
         }
         Self {
@@ -984,18 +986,9 @@ impl LjSolver {
         self.mesh.x.len()
     }
 
-    /// `out = scale·A q` by faer's matrix–vector product (runtime SIMD
-    /// dispatch).
+    /// `out = scale·A q` ([`kernels::matvec`]).
     fn matvec(&self, q: &[f64], out: &mut [f64]) {
-        let n = self.n();
-        faer::linalg::matmul::matmul(
-            MatMut::from_column_major_slice_mut(out, n, 1),
-            faer::Accum::Replace,
-            MatRef::from_column_major_slice(&self.a, n, n),
-            MatRef::from_column_major_slice(q, n, 1),
-            self.scale,
-            faer::Par::Seq,
-        );
+        kernels::matvec(&self.a, q, self.scale, out);
     }
 
     /// Residual at log-gaps `y`: fills h, p, dp, ap, f; returns the max-norm
@@ -1202,16 +1195,27 @@ impl LjSolver {
     fn force_radius(&self, h: &[f64], p: &[f64], h0: f64) -> (f64, f64) {
         let n = self.n();
         // Force: Gauss on cells with quadratic w̄ = h − r²/2, plus the tail.
-        let mut s = 0.0;
-        for &(r, wr, i0, l) in &self.quad {
-            let wb = |i: usize| h[i] - 0.5 * self.mesh.x[i] * self.mesh.x[i];
-            let (w0, w1, w2) = (wb(i0), wb(i0 + 1), wb(i0 + 2));
-            // Quadratic, limited to the range of its nodes (no overshoot
-            // where an unresolved edge zone makes the profile jump).
-            let wv =
-                (l[0] * w0 + l[1] * w1 + l[2] * w2).clamp(w0.min(w1).min(w2), w0.max(w1).max(w2));
-            s += lj_pressure(wv + 0.5 * r * r).0 * wr;
+        let wb: Vec<f64> = h
+            .iter()
+            .zip(&self.mesh.x)
+            .map(|(h, x)| h - 0.5 * x * x)
+            .collect();
+        // One partial sum per Gauss point of the cells: three independent
+        // chains of additions instead of one.
+        let mut acc = [0.0f64; 3];
+        for cell in self.quad.chunks_exact(3) {
+            let i0 = cell[0].2;
+            let (w0, w1, w2) = (wb[i0], wb[i0 + 1], wb[i0 + 2]);
+            let (lo, hi) = (w0.min(w1).min(w2), w0.max(w1).max(w2));
+            for (a, &(r2, wr, _, l)) in acc.iter_mut().zip(cell) {
+                // Quadratic, limited to the range of its nodes (no
+                // overshoot where an unresolved edge zone makes the
+                // profile jump).
+                let wv = (l[0] * w0 + l[1] * w1 + l[2] * w2).clamp(lo, hi);
+                *a += lj_pressure(wv + r2).0 * wr;
+            }
         }
+        let s = acc[0] + acc[1] + acc[2];
         let l = self.opts.outer_radius;
         let xl = self.mesh.x[n - 1];
         let hl = 0.5 * l * l + (h[n - 1] - 0.5 * xl * xl);
@@ -1649,7 +1653,7 @@ impl LjSolver {
             self.bnewton(&path::Con::Approach(st.al), &mut y, &mut al, bw, true)?;
         }
         // Tangent refined against the true Jacobian (`LjSolver::tangent`).
-        let t = self.tangent(bw, &st.t, false, path::EXACT_RTOL)?;
+        let t = self.tangent(bw, &st.t, false, path::EXACT_RTOL, None)?;
         self.make_state(&y, al, t, st.s, bw, true)
     }
 
