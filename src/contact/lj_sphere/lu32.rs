@@ -173,7 +173,7 @@ impl Lu32 {
 fn substitute(lu: &[f32], linv: &[f32], uinv: &[f32], n: usize, x: &mut [f32]) {
     #[cfg(target_arch = "x86_64")]
     {
-        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+        if kernels::has_avx2_fma() {
             // SAFETY: the target features were detected at run time.
             unsafe { substitute_avx2(lu, linv, uinv, n, x) };
             return;
