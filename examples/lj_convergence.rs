@@ -2,7 +2,9 @@
 //!
 //! `cargo run --release --example lj_convergence [NMAX] [MU,MU,...]` (default
 //! NMAX = 1024 and μ ∈ {0.1, 1, 3}; 2048 and 4096 take minutes: dense LU of
-//! order N; the whole-curve norm stops at N = 1024).
+//! order N for the pull-off; the whole-curve norm at N = 4096 takes 20–50 s
+//! per μ). `lj_convergence whole MU NMIN NMAX` runs the whole-curve norm
+//! alone, for N = NMIN … NMAX.
 //!
 //! For each μ and N = 32, 64, …, NMAX it prints the load-controlled pull-off
 //! `P̄_c` (edge-concentrated mesh, [`LjSphere::pull_off`]), the successive
@@ -66,6 +68,18 @@ fn main() {
         single(&a1, mu, n);
         return;
     }
+    if a1 == "whole" {
+        let arg = |i: usize| std::env::args().nth(i).unwrap();
+        let mu: f64 = arg(2).parse().unwrap();
+        let (nmin, nmax): (usize, usize) = (arg(3).parse().unwrap(), arg(4).parse().unwrap());
+        let ns: Vec<usize> = (0..)
+            .map(|k| nmin << k)
+            .take_while(|&n| n <= nmax)
+            .collect();
+        println!("## μ = {mu}");
+        whole_curve(&LjSphere::from_tabor(mu).unwrap(), &ns);
+        return;
+    }
     let nmax: usize = std::env::args()
         .nth(1)
         .and_then(|s| s.parse().ok())
@@ -117,45 +131,7 @@ fn main() {
                 Err(e) => println!("| {n} | error: {e} | | | | | {:.2?} |", t.elapsed()),
             }
         }
-        // Whole curve at fixed central gaps.
-        let h0s: Vec<f64> = (0..40)
-            .map(|i| {
-                let t = i as f64 / 39.0;
-                6.0 * (1.0 - t) + 0.965 * t
-            })
-            .collect();
-        let mut prev: Option<Vec<f64>> = None;
-        let mut prev_e: Option<f64> = None;
-        println!("\n| N | whole-curve max |ΔP̄| vs N/2 | order |");
-        println!("|---|---|---|");
-        for &n in ns.iter().filter(|&&n| n <= 2048) {
-            let mut o = LjOptions::default();
-            o.n_grid = n;
-            o.max_force = 2.0;
-            let s = LjSolver::new(&sp, o).unwrap();
-            match s.sweep(&h0s) {
-                Ok(pts) => {
-                    let f: Vec<f64> = pts.iter().map(|p| p.force).collect();
-                    if let Some(pf) = &prev {
-                        let e = f
-                            .iter()
-                            .zip(pf)
-                            .map(|(a, b)| (a - b).abs())
-                            .fold(0.0, f64::max);
-                        let ord = prev_e
-                            .map(|pe| format!("{:.2}", (pe / e).log2()))
-                            .unwrap_or_default();
-                        println!("| {n} | {e:.3e} | {ord} |");
-                        prev_e = Some(e);
-                    }
-                    prev = Some(f);
-                }
-                Err(e) => {
-                    println!("| {n} | error: {e} | |");
-                    prev = None;
-                }
-            }
-        }
+        whole_curve(&sp, &ns);
     }
     // S-curve onset by bisection on the largest dᾱ/dh̄₀.
     let slope = |mu: f64| -> f64 {
@@ -181,4 +157,53 @@ fn main() {
         }
     }
     println!("S-curve onset (N = 128): μ_c = {:.4}", 0.5 * (lo + hi));
+}
+
+/// The whole-curve norm: the max over 40 central gaps spanning the curve of
+/// `|P̄_N(h̄₀) − P̄_{N/2}(h̄₀)|` for successive `ns`, with its order and the
+/// Richardson error estimate of the finer curve, `|ΔP̄|/(2^p − 1)` (the
+/// observed order, or the scheme's 2 before one is observed).
+fn whole_curve(sp: &LjSphere, ns: &[usize]) {
+    let h0s: Vec<f64> = (0..40)
+        .map(|i| {
+            let t = i as f64 / 39.0;
+            6.0 * (1.0 - t) + 0.965 * t
+        })
+        .collect();
+    let mut prev: Option<Vec<f64>> = None;
+    let mut prev_e: Option<f64> = None;
+    println!("\n| N | whole-curve max |ΔP̄| vs N/2 | order | Richardson error of P̄_N | time |");
+    println!("|---|---|---|---|---|");
+    for &n in ns {
+        let t = Instant::now();
+        let mut o = LjOptions::default();
+        o.n_grid = n;
+        o.max_force = 2.0;
+        let s = LjSolver::new(sp, o).unwrap();
+        match s.sweep(&h0s) {
+            Ok(pts) => {
+                let f: Vec<f64> = pts.iter().map(|p| p.force).collect();
+                if let Some(pf) = &prev {
+                    let e = f
+                        .iter()
+                        .zip(pf)
+                        .map(|(a, b)| (a - b).abs())
+                        .fold(0.0, f64::max);
+                    let p = prev_e.map(|pe| (pe / e).log2());
+                    let ord = p.map(|p| format!("{p:.2}")).unwrap_or_default();
+                    let rich = e / (2f64.powf(p.unwrap_or(2.0)) - 1.0);
+                    println!(
+                        "| {n} | {e:.3e} | {ord} | {rich:.2e} | {:.1?} |",
+                        t.elapsed()
+                    );
+                    prev_e = Some(e);
+                }
+                prev = Some(f);
+            }
+            Err(e) => {
+                println!("| {n} | error: {e} | | | {:.1?} |", t.elapsed());
+                prev = None;
+            }
+        }
+    }
 }

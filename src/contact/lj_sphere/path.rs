@@ -89,7 +89,7 @@ pub(super) struct BWork {
     row: Vec<f64>,
     yt: Vec<f64>,
     /// Initial guess of a tangent solve, `N+1`.
-    yt_b: Vec<f64>,
+    t0: Vec<f64>,
     g: f64,
     /// Most GMRES iterations of one linear solve in the last Newton solve
     /// (a measure of how stale the factorisation is).
@@ -126,7 +126,7 @@ impl BWork {
             x: vec![0.0; n + 1],
             row: vec![0.0; n + 1],
             yt: vec![0.0; n],
-            yt_b: vec![0.0; n + 1],
+            t0: vec![0.0; n + 1],
             g: 0.0,
             krylov: 0,
             kv: vec![0.0; (GMRES_MAX + 1) * (n + 1)],
@@ -687,7 +687,7 @@ impl LjSolver {
         if !(c.is_finite() && c > 0.0) || rtol < SINGLE_PRECISION_RTOL {
             return false;
         }
-        let mut x0 = core::mem::take(&mut bw.yt_b);
+        let mut x0 = core::mem::take(&mut bw.t0);
         x0.iter_mut().zip(g).for_each(|(x, v)| *x = v / c);
         let mut q = core::mem::take(&mut bw.kq);
         let mut sp = core::mem::take(&mut bw.single);
@@ -710,7 +710,7 @@ impl LjSolver {
         } else {
             false
         };
-        bw.yt_b = x0;
+        bw.t0 = x0;
         ok
     }
 
