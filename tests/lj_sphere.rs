@@ -358,6 +358,36 @@ fn pull_off_at_mu_3_between_jkr_and_mu_1() {
     assert!(p3 > md && p3 < 1.06 * md, "LJ {p3} MD {md}");
 }
 
+/// Above μ = 1 the standalone pull-off runs the curve's edge continuation
+/// on the curve's meshes, so at equal options it is the curve's pull-off,
+/// and on the converged default grid (N = 256 at μ = 3) it is within 2e-5
+/// of the converged value: −1.551032 (N = 1024), −1.5510305 (N = 2048),
+/// second order (`lj_convergence pulloff 3 N`, BENCHMARKS.md §3). Meshes
+/// sized for P̄ = 1 instead gave −1.551255 at N = 256 (2.2e-4 off).
+#[test]
+fn pull_off_above_mu_1_is_the_curves_and_converged() {
+    for mu in [3.0, 10.0] {
+        let sp = LjSphere::from_tabor(mu).unwrap();
+        let po = sp.pull_off(256).unwrap().force;
+        let c = sp.solver(256).unwrap().curve().unwrap();
+        assert!(
+            (po - c.pull_off_load.force).abs() <= 1e-9,
+            "μ = {mu}: pull-off {po} against the curve's {}",
+            c.pull_off_load.force
+        );
+    }
+    let converged = -1.5510305;
+    let po = LjSphere::from_tabor(3.0)
+        .unwrap()
+        .pull_off(0)
+        .unwrap()
+        .force;
+    assert!(
+        (po - converged).abs() <= 2e-5,
+        "μ = 3, default grid: {po} against the converged {converged}"
+    );
+}
+
 #[test]
 fn curve_at_mu_1e_3_is_finite_and_continuous() {
     // Nearly rigid: the curve follows the Derjaguin force of the rigid

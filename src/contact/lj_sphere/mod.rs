@@ -1877,22 +1877,25 @@ impl LjSolver {
         })
     }
 
-    /// Load-controlled pull-off with the edge-concentrated mesh: the contact
-    /// radius at pull-off is located on a coarse (N = 64) curve for μ ≤ 1,
-    /// or taken from Maugis–Dugdale at λ = 1.157μ above; the mesh
-    /// concentrates half the cells within `±w` of that radius
-    /// (`w = clamp(2μ^{-3/2}, 0.1, 1)`, about the width of the edge zone);
-    /// the pseudo-arclength continuation runs from far to just past the
-    /// minimum of P̄, which is then refined as the zero of dP̄/ds (Illinois
-    /// method, exact tangents).
+    /// Load-controlled pull-off. For μ ≤ 1 (or a band given in `options`)
+    /// on the edge-concentrated mesh: the contact radius at pull-off is
+    /// located on a coarse (N = 64) curve; the mesh concentrates half the
+    /// cells within `±w` of that radius (`w = clamp(2μ^{-3/2}, 0.1, 1)`,
+    /// about the width of the edge zone); the pseudo-arclength continuation
+    /// runs from far to just past the minimum of P̄, which is then refined
+    /// as the zero of dP̄/ds (Illinois method, exact tangents). For μ > 1
+    /// the edge continuation (module `edge`) on the meshes of
+    /// [`LjSolver::curve`] with the same options, up to just past the
+    /// minimum: the pull-off is the curve's, at a fraction of its cost.
     pub fn pull_off_with(sphere: &LjSphere, options: LjOptions) -> Result<LjPullOff> {
         let mu = sphere.mu;
         let mut o = options;
         o.max_force = 1.0;
         if mu > 1.0 && options.edge_fraction == 0.0 {
             // The edge continuation (module `edge`) follows the edge from
-            // the neck to the pull-off.
-            let s = LjSolver::new(sphere, o)?;
+            // the neck to the pull-off, on the curve's meshes (sized by the
+            // caller's `max_force`, not the 1 of the banded mesh below).
+            let s = LjSolver::new(sphere, options)?;
             if let Some(plan) = s.band_plan() {
                 return s.edge_pull_off(plan);
             }
