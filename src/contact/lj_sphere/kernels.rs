@@ -185,6 +185,21 @@ mod tests {
     /// vector width.
     #[test]
     fn panel_matches_the_plain_loops() {
+        /// The dispatched and the plain panel from `y0`, equal within
+        /// `tol` relative.
+        fn agree<T: Elem + Into<f64>>(a: &[T], lda: usize, x: &[T; PANEL], y0: &[T], tol: f64) {
+            let (mut fast, mut plain) = (y0.to_vec(), y0.to_vec());
+            T::panel(a, lda, x, &mut fast);
+            panel_plain(a, lda, x, &mut plain);
+            for (&f, &p) in fast.iter().zip(&plain) {
+                let (f, p): (f64, f64) = (f.into(), p.into());
+                assert!(
+                    (f - p).abs() <= tol * (1.0 + p.abs()),
+                    "m = {}: {f} vs {p}",
+                    y0.len()
+                );
+            }
+        }
         let lda = 41;
         let a: Vec<f64> = (0..PANEL * lda)
             .map(|i| ((i * 29 % 83) as f64 - 41.0) / 13.0)
@@ -194,25 +209,9 @@ mod tests {
         let x32: [f32; PANEL] = core::array::from_fn(|k| x[k] as f32);
         for m in 0..=lda {
             let y0: Vec<f64> = (0..m).map(|i| (i as f64 * 0.3).sin()).collect();
-            let (mut fast, mut plain) = (y0.clone(), y0.clone());
-            f64::panel(&a, lda, &x, &mut fast);
-            panel_plain(&a, lda, &x, &mut plain);
-            for (f, p) in fast.iter().zip(&plain) {
-                assert!(
-                    (f - p).abs() <= 1e-14 * (1.0 + p.abs()),
-                    "m = {m}: {f} vs {p}"
-                );
-            }
+            agree(&a, lda, &x, &y0, 1e-14);
             let y32: Vec<f32> = y0.iter().map(|&v| v as f32).collect();
-            let (mut fast, mut plain) = (y32.clone(), y32.clone());
-            f32::panel(&a32, lda, &x32, &mut fast);
-            panel_plain(&a32, lda, &x32, &mut plain);
-            for (f, p) in fast.iter().zip(&plain) {
-                assert!(
-                    (f - p).abs() <= 1e-5 * (1.0 + p.abs()),
-                    "m = {m}: {f} vs {p}"
-                );
-            }
+            agree(&a32, lda, &x32, &y32, 1e-5);
         }
     }
 
