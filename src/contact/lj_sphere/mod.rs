@@ -1195,17 +1195,14 @@ impl LjSolver {
     fn force_radius(&self, h: &[f64], p: &[f64], h0: f64) -> (f64, f64) {
         let n = self.n();
         // Force: Gauss on cells with quadratic w̄ = h − r²/2, plus the tail.
-        let wb: Vec<f64> = h
-            .iter()
-            .zip(&self.mesh.x)
-            .map(|(h, x)| h - 0.5 * x * x)
-            .collect();
+        let x = &self.mesh.x;
+        let wb = |i: usize| h[i] - 0.5 * x[i] * x[i];
         // One partial sum per Gauss point of the cells: three independent
         // chains of additions instead of one.
         let mut acc = [0.0f64; 3];
         for cell in self.quad.chunks_exact(3) {
             let i0 = cell[0].2;
-            let (w0, w1, w2) = (wb[i0], wb[i0 + 1], wb[i0 + 2]);
+            let (w0, w1, w2) = (wb(i0), wb(i0 + 1), wb(i0 + 2));
             let (lo, hi) = (w0.min(w1).min(w2), w0.max(w1).max(w2));
             for (a, &(r2, wr, _, l)) in acc.iter_mut().zip(cell) {
                 // Quadratic, limited to the range of its nodes (no
