@@ -47,12 +47,18 @@
 //! # Lookup
 //!
 //! O(1) per call: a bucket index computed from the bit pattern of
-//! `d + bias`, where `d = ±(Δ − Δ_ref)` is the variable under the square root
-//! (a piecewise-linear logarithm, so buckets are fine where the knots are
-//! dense near a turning point and coarse in the deep Hertz regime), at most a
-//! couple of comparisons, and two cubic polynomials in `u = √d`. The lookup
-//! works on `d` so that it runs while the square root is computed. The
-//! stiffness `dP/dδ` is the derivative of the interpolant.
+//! `max(d − d₀, 0) + bias`, where `d = ±(Δ − Δ_ref)` is the variable under
+//! the square root (a piecewise-linear logarithm, so buckets are fine where
+//! the knots are dense near a turning point and coarse in the deep Hertz
+//! regime), at most a couple of comparisons, and two cubic polynomials in
+//! `u = √d`. The lookup works on `d` so that it runs while the square root is
+//! computed. The stiffness `dP/dδ` is the derivative of the interpolant.
+//!
+//! No division precedes the lookup: branches and segments are chosen by
+//! comparing the overlap δ itself with thresholds computed once per table,
+//! each the last (or first) double for which the reduced approach
+//! `(δ − origin)/unit` lies within the bound, so the choice is exactly the
+//! one the reduced comparison would make; `d` is then `(δ − δ_ref)·(±1/unit)`.
 //!
 //! # Hysteresis
 //!
@@ -109,8 +115,8 @@
 
 use super::curve::{exact_f64, exact_vec, DeepTail, EquilibriumCurve, FarTail, PathPoint};
 use super::{
-    below_pull_off, check_delta, check_force, finite_response, ContactState, Control, LjSphere,
-    MaugisDugdale, NormalContact, NormalResponse,
+    below_pull_off, check_delta, check_force, finite_response, overflow, ContactState, Control,
+    LjSphere, MaugisDugdale, NormalContact, NormalResponse,
 };
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -240,42 +246,63 @@ struct TableData {
 
 // --------------------------------------------------------------- runtime
 
-/// One Hermite interval: `y(t) = c0 + t(c1 + t(c2 + t c3))`, `t = (u − lo)/h`.
+/// One Hermite interval: `y(t) = c0 + t(c1 + t(c2 + t c3))`, `t = (u − lo)/h`,
+/// for the force and the radius side by side (`c[j] = [F_j, a_j]`), so that
+/// both are evaluated by one packed Horner scheme.
 #[derive(Debug, Clone, Copy)]
 struct Interval {
     lo: f64,
     hi: f64,
-    /// `hi` in the segment's pre-root variable `d` (`hi²` or `hi`).
-    d_hi: f64,
     inv_h: f64,
-    f: [f64; 4],
-    a: [f64; 4],
+    c: [[f64; 2]; 4],
+}
+
+impl Interval {
+    /// The force's coefficients.
+    fn f(&self) -> [f64; 4] {
+        self.c.map(|p| p[0])
+    }
 }
 
 #[derive(Debug, Clone)]
 struct Segment {
     sqrt: bool,
     sign: f64,
+    /// Overlap (m) thresholds equivalent to `Δ ≥ lo` and `Δ ≤ hi` (see
+    /// [`overlap_threshold`]).
+    lo_delta: f64,
+    hi_delta: f64,
+    /// Where the segment's range begins in the branch's scan: `lo_delta`
+    /// for the first segment, otherwise the overlap just above the previous
+    /// segment's `hi_delta` (a δ on both is on the earlier one).
+    start_delta: f64,
+    /// The reference as an overlap (m), and `sign/approach_scale`: the
+    /// pre-root variable is `d = (δ − reference_delta)·d_per_delta`.
+    reference_delta: f64,
+    d_per_delta: f64,
     /// `sign/2` (sqrt) or `sign` (linear): du/dΔ times u or 1.
     du_dx_factor: f64,
     reference: f64,
-    lo: f64,
-    hi: f64,
     /// The first knot in `d`.
     d0: f64,
     bias: f64,
-    bias_bits: i64,
+    bias_bits: u64,
     shift: u32,
     intervals: Vec<Interval>,
+    /// The end of each interval in `d` (`hi²` or `hi`), the last one +∞:
+    /// the walk from an index entry stops at the interval holding `d`.
+    ends: Vec<f64>,
     index: Vec<u32>,
 }
 
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 struct Branch {
     lo: f64,
     hi: f64,
-    seg0: usize,
-    seg1: usize,
+    /// Overlap (m) thresholds equivalent to `Δ ≥ lo` and `Δ ≤ hi`.
+    lo_delta: f64,
+    hi_delta: f64,
+    segments: Vec<Segment>,
 }
 
 /// A tabulated adhesive-sphere law; see the module documentation. Build it
@@ -286,9 +313,8 @@ struct Branch {
 pub struct TabulatedLaw {
     data: TableData,
     branches: Vec<Branch>,
-    segments: Vec<Segment>,
     stiffness_scale: f64,
-    load_segment: usize,
+    /// The load-controlled pull-off's interval in the last segment.
     load_interval: usize,
 }
 
@@ -335,6 +361,11 @@ fn d_of_u(sqrt: bool, u: f64) -> f64 {
     }
 }
 
+/// Force and radius coefficients side by side.
+fn pair(f: [f64; 4], a: [f64; 4]) -> [[f64; 2]; 4] {
+    [[f[0], a[0]], [f[1], a[1]], [f[2], a[2]], [f[3], a[3]]]
+}
+
 fn coefficients(y0: f64, m0: f64, y1: f64, m1: f64, h: f64) -> [f64; 4] {
     let d = y1 - y0;
     let (p0, p1) = (h * m0, h * m1);
@@ -376,16 +407,11 @@ fn limit(y0: f64, m0: &mut f64, y1: f64, m1: &mut f64, h: f64) {
 }
 
 impl Segment {
-    /// Index key of `d` (see [`Segment::interval`]).
+    /// Index key of `d` (see [`Segment::interval`]): never negative, as
+    /// `max(d − d0, 0) + bias ≥ bias`.
     #[inline]
-    fn key(&self, d: f64) -> i64 {
-        ((d - self.d0) + self.bias).to_bits() as i64 - self.bias_bits
-    }
-
-    /// The pre-root variable `d = sign·(Δ − reference)`.
-    #[inline]
-    fn d_of(&self, x: f64) -> f64 {
-        self.sign * (x - self.reference)
+    fn key(&self, d: f64) -> u64 {
+        ((d - self.d0).max(0.0) + self.bias).to_bits() - self.bias_bits
     }
 
     #[inline]
@@ -397,10 +423,12 @@ impl Segment {
         }
     }
 
-    /// Reduced (F, radius, dF/dΔ) at reduced approach x.
-    #[inline]
-    fn eval(&self, x: f64) -> (f64, f64, f64) {
-        let d = self.d_of(x);
+    /// Reduced (F, radius, dF/dΔ) at overlap δ (m).
+    #[inline(always)]
+    fn eval(&self, delta: f64) -> (f64, f64, f64) {
+        // d = sign·(Δ − Δ_ref) from δ by one product: no division by the
+        // approach unit on the way to the lookup.
+        let d = (delta - self.reference_delta) * self.d_per_delta;
         // The interval is looked up on d, so that the lookup does not wait
         // for the square root.
         let iv = self.interval(d);
@@ -412,24 +440,30 @@ impl Segment {
         let (u, den) = if self.sqrt { (root, root) } else { (d, 1.0) };
         let du_dx = self.du_dx_factor / den;
         let t = (u - iv.lo) * iv.inv_h;
-        let f = horner(&iv.f, t);
-        let a = horner(&iv.a, t);
-        let k = horner_d(&iv.f, t) * iv.inv_h * du_dx;
+        let c = &iv.c;
+        let mut y = c[3];
+        for cj in [c[2], c[1], c[0]] {
+            y = [cj[0] + t * y[0], cj[1] + t * y[1]];
+        }
+        let dy = c[1][0] + t * (2.0 * c[2][0] + t * (3.0 * c[3][0]));
+        let k = dy * iv.inv_h * du_dx;
         let k = if k.abs() < STIFFNESS_BAR_MAX {
             k
         } else {
             self.stiffness_limit(iv, u, k)
         };
-        (f, a.max(0.0), k)
+        (y[0], y[1].max(0.0), k)
     }
 
     /// The stiffness at a turning point (u = 0, where du/dΔ is infinite)
-    /// or beyond ±[`STIFFNESS_BAR_MAX`].
-    #[cold]
+    /// or beyond ±[`STIFFNESS_BAR_MAX`]. Inlined behind its (predicted)
+    /// test: as a call it would clobber every vector register and make the
+    /// caller spill the interpolant's coefficients on the common path.
+    #[inline(always)]
     fn stiffness_limit(&self, iv: &Interval, u: f64, k: f64) -> f64 {
-        if self.sqrt && u == 0.0 && iv.f[1] == 0.0 {
+        if self.sqrt && u == 0.0 && iv.c[1][0] == 0.0 {
             // F − F₀ ∝ u²: the finite limit.
-            iv.f[2] * iv.inv_h * iv.inv_h * self.sign
+            iv.c[2][0] * iv.inv_h * iv.inv_h * self.sign
         } else if k.is_nan() {
             STIFFNESS_BAR_MAX
         } else {
@@ -437,13 +471,12 @@ impl Segment {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn interval(&self, d: f64) -> &Interval {
-        let nb = self.index.len() as i64;
-        let b = (self.key(d) >> self.shift).clamp(0, nb - 1) as usize;
+        let b = ((self.key(d) >> self.shift) as usize).min(self.index.len() - 1);
         let mut i = self.index[b] as usize;
-        let last = self.intervals.len() - 1;
-        while i < last && d >= self.intervals[i].d_hi {
+        // The last end is +∞ and d < +∞ (or NaN): the walk stops in range.
+        while d >= self.ends[i] {
             i += 1;
         }
         &self.intervals[i]
@@ -453,29 +486,32 @@ impl Segment {
         let n = d.u.len();
         let sqrt = d.transform == Transform::Sqrt;
         let mut intervals = Vec::with_capacity(n);
+        let mut ends = Vec::with_capacity(n);
         for i in 0..n - 1 {
             let h = d.u[i + 1] - d.u[i];
             if h == 0.0 {
                 continue;
             }
+            ends.push(d_of_u(sqrt, d.u[i + 1]));
             intervals.push(Interval {
                 lo: d.u[i],
                 hi: d.u[i + 1],
-                d_hi: d_of_u(sqrt, d.u[i + 1]),
                 inv_h: 1.0 / h,
-                f: coefficients(
-                    d.force[i],
-                    d.d_force[i],
-                    d.force[i + 1],
-                    d.d_force[i + 1],
-                    h,
-                ),
-                a: coefficients(
-                    d.radius[i],
-                    d.d_radius[i],
-                    d.radius[i + 1],
-                    d.d_radius[i + 1],
-                    h,
+                c: pair(
+                    coefficients(
+                        d.force[i],
+                        d.d_force[i],
+                        d.force[i + 1],
+                        d.d_force[i + 1],
+                        h,
+                    ),
+                    coefficients(
+                        d.radius[i],
+                        d.d_radius[i],
+                        d.radius[i + 1],
+                        d.d_radius[i + 1],
+                        h,
+                    ),
                 ),
             });
         }
@@ -483,30 +519,34 @@ impl Segment {
             return Err(bad("segment.u", n as f64, "spanning a non-empty range"));
         }
         let d0 = d_of_u(sqrt, intervals[0].lo);
-        let span = intervals[intervals.len() - 1].d_hi - d0;
-        let bias = (intervals[0].d_hi - d0).max(span * 1e-12);
+        let span = ends[ends.len() - 1] - d0;
+        let bias = (ends[0] - d0).max(span * 1e-12);
         let mut seg = Segment {
             sqrt,
             sign: d.sign,
             du_dx_factor: if sqrt { 0.5 * d.sign } else { d.sign },
             reference: d.reference,
-            lo: d.lo,
-            hi: d.hi,
+            lo_delta: f64::NAN,
+            hi_delta: f64::NAN,
+            start_delta: f64::NAN,
+            reference_delta: f64::NAN,
+            d_per_delta: f64::NAN,
             d0,
             bias,
-            bias_bits: bias.to_bits() as i64,
+            bias_bits: bias.to_bits(),
             shift: 52,
             intervals,
+            ends: Vec::new(),
             index: Vec::new(),
         };
         // The coarsest index (largest shift) whose buckets hold at most two
         // interval starts, within MAX_INDEX entries.
-        let keys: Vec<i64> = seg
+        let keys: Vec<u64> = seg
             .intervals
             .iter()
             .map(|iv| seg.key(d_of_u(sqrt, iv.lo)))
             .collect();
-        let kmax = seg.key(seg.intervals[seg.intervals.len() - 1].d_hi).max(0);
+        let kmax = seg.key(ends[ends.len() - 1]);
         let mut best = 62u32;
         for shift in (0..=62u32).rev() {
             let nb = (kmax >> shift) + 1;
@@ -516,9 +556,9 @@ impl Segment {
             best = shift;
             let mut worst = 0;
             let mut run = 0;
-            let mut prev = -1i64;
+            let mut prev = None;
             for &k in &keys {
-                let b = k.max(0) >> shift;
+                let b = Some(k >> shift);
                 run = if b == prev { run + 1 } else { 1 };
                 prev = b;
                 worst = worst.max(run);
@@ -531,14 +571,18 @@ impl Segment {
         let nb = ((kmax >> best) + 1) as usize;
         let mut index = Vec::with_capacity(nb);
         let mut j = 0usize;
-        for b in 0..nb as i64 {
+        for b in 0..nb as u64 {
             // Largest interval whose start key lies in an earlier bucket.
-            while j + 1 < keys.len() && (keys[j + 1].max(0) >> best) < b {
+            while j + 1 < keys.len() && (keys[j + 1] >> best) < b {
                 j += 1;
             }
             index.push(j as u32);
         }
         seg.index = index;
+        if let Some(last) = ends.last_mut() {
+            *last = f64::INFINITY;
+        }
+        seg.ends = ends;
         Ok(seg)
     }
 }
@@ -796,7 +840,7 @@ impl TabulatedLaw {
         let mut worst = 0.0f64;
         for (k, skipped) in &seg_data {
             for &(x, fe, ae) in skipped {
-                let (ft, at, _) = table.on_branch(*k, x);
+                let (ft, at, _) = table.on_branch(*k, table.overlap(x));
                 worst = worst.max(measure(ft, fe, at, ae, force_floor, radius_floor));
             }
         }
@@ -808,8 +852,7 @@ impl TabulatedLaw {
             } else {
                 continue;
             };
-            let (ft, at, _) = table.on_branch(k, c.delta);
-
+            let (ft, at, _) = table.on_branch(k, table.overlap(c.delta));
             worst = worst.max(measure(
                 ft,
                 c.force,
@@ -941,7 +984,7 @@ impl TabulatedLaw {
             }
             if let Some(mut hi) = fail {
                 let mut lo = best;
-                while hi - lo > 1 {
+                while (hi as i128) - (lo as i128) > 1 {
                     let mid = (lo + hi) / 2;
                     if accept(i, mid) {
                         lo = mid;
@@ -1053,8 +1096,9 @@ impl TabulatedLaw {
         if nbr < 2 && d.branches.first().map_or(true, |b| b.segments.is_empty()) {
             return Err(bad("branches", nbr as f64, "at least one stable branch"));
         }
-        let mut branches = Vec::with_capacity(nbr);
-        let mut segments = Vec::new();
+        crate::error::check::finite("approach_origin", d.approach_origin)?;
+        let (o, sc) = (d.approach_origin, d.approach_scale);
+        let mut branches: Vec<Branch> = Vec::with_capacity(nbr);
         for (k, b) in d.branches.iter().enumerate() {
             let lo = match (k, b.lo) {
                 (0, None) => f64::NEG_INFINITY,
@@ -1085,7 +1129,7 @@ impl TabulatedLaw {
                     "lo < hi and segments on branches ≥ 1",
                 ));
             }
-            let seg0 = segments.len();
+            let mut segments: Vec<Segment> = Vec::with_capacity(b.segments.len());
             let mut x_prev = f64::NEG_INFINITY;
             for s in &b.segments {
                 let n = s.u.len();
@@ -1152,30 +1196,41 @@ impl TabulatedLaw {
                 if (xa - s.lo).abs() > tolx || (xb - s.hi).abs() > tolx {
                     return Err(bad("segment.lo", s.lo, "equal to the Δ of its first knot"));
                 }
-                segments.push(Segment::build(s)?);
+                let mut seg = Segment::build(s)?;
+                seg.lo_delta = overlap_threshold(o, sc, s.lo, true);
+                seg.hi_delta = overlap_threshold(o, sc, s.hi, false);
+                seg.start_delta = match segments.last() {
+                    None => seg.lo_delta,
+                    Some(p) => next_up(p.hi_delta),
+                };
+                seg.reference_delta = o + s.reference * sc;
+                seg.d_per_delta = s.sign / sc;
+                segments.push(seg);
             }
             branches.push(Branch {
                 lo,
                 hi,
-                seg0,
-                seg1: segments.len(),
+                lo_delta: overlap_threshold(o, sc, lo, true),
+                hi_delta: overlap_threshold(o, sc, hi, false),
+                segments,
             });
         }
         let far_k = match d.far {
             FarData::Zero => 0.0,
             FarData::RigidLennardJones { k } => crate::error::check::positive("far.k", k)?,
         };
-        if matches!(d.far, FarData::RigidLennardJones { .. })
-            && branches[0].seg0 == branches[0].seg1
-        {
+        if matches!(d.far, FarData::RigidLennardJones { .. }) && branches[0].segments.is_empty() {
             return Err(bad(
                 "far",
                 far_k,
                 "a far branch with segments for a Lennard-Jones tail",
             ));
         }
-        let load_segment = branches[nbr - 1].seg1 - 1;
-        let ls = &segments[load_segment];
+        let ls = branches[nbr - 1].segments.last().ok_or(bad(
+            "branches",
+            nbr as f64,
+            "segments on the last branch",
+        ))?;
         let load_interval = ls
             .intervals
             .iter()
@@ -1185,10 +1240,10 @@ impl TabulatedLaw {
                 d.load_pull_off_u,
                 "a knot of the last branch",
             ))?;
-        if horner(&ls.intervals[load_interval].f, 0.0) != d.load_pull_off
+        if ls.intervals[load_interval].c[0][0] != d.load_pull_off
             || ls.intervals[load_interval..]
                 .iter()
-                .any(|iv| horner(&iv.f, 1.0) < iv.f[0])
+                .any(|iv| horner(&iv.f(), 1.0) < iv.c[0][0])
         {
             return Err(bad(
                 "load_pull_off",
@@ -1215,8 +1270,6 @@ impl TabulatedLaw {
         Ok(TabulatedLaw {
             stiffness_scale,
             branches,
-            segments,
-            load_segment,
             load_interval,
             data: d,
         })
@@ -1274,26 +1327,32 @@ impl TabulatedLaw {
         ))
     }
 
+    /// All segments, branch by branch.
+    fn segments(&self) -> impl Iterator<Item = &Segment> {
+        self.branches.iter().flat_map(|b| &b.segments)
+    }
+
     /// Number of knots over all segments.
     pub fn knot_count(&self) -> usize {
-        self.segments.iter().map(|s| s.intervals.len() + 1).sum()
+        self.segments().map(|s| s.intervals.len() + 1).sum()
     }
 
     /// Number of lookup-index entries over all segments.
     pub fn index_len(&self) -> usize {
-        self.segments.iter().map(|s| s.index.len()).sum()
+        self.segments().map(|s| s.index.len()).sum()
     }
 
     /// Memory of the evaluation structures (bytes).
     pub fn memory_bytes(&self) -> usize {
-        self.segments
-            .iter()
+        self.segments()
             .map(|s| {
                 s.intervals.len() * core::mem::size_of::<Interval>()
+                    + s.ends.len() * 8
                     + s.index.len() * 4
                     + core::mem::size_of::<Segment>()
             })
             .sum::<usize>()
+            + self.branches.len() * core::mem::size_of::<Branch>()
             + core::mem::size_of::<Self>()
     }
 
@@ -1317,47 +1376,64 @@ impl TabulatedLaw {
 
     // ---------------------------------------------------------- evaluation
 
+    /// Whether overlap δ (m) lies on branch j.
     #[inline]
-    fn jump_forward(&self, k: usize, x: f64) -> usize {
+    fn contains(&self, j: usize, delta: f64) -> bool {
+        let b = &self.branches[j];
+        delta >= b.lo_delta && delta <= b.hi_delta
+    }
+
+    #[inline]
+    fn jump_forward(&self, k: usize, delta: f64) -> usize {
         let n = self.branches.len();
         (k + 1..n)
-            .find(|&j| x >= self.branches[j].lo && x <= self.branches[j].hi)
+            .find(|&j| self.contains(j, delta))
             .unwrap_or(n - 1)
     }
 
     #[inline]
-    fn jump_back(&self, k: usize, x: f64) -> usize {
-        (0..k)
-            .rev()
-            .find(|&j| x >= self.branches[j].lo && x <= self.branches[j].hi)
-            .unwrap_or(0)
+    fn jump_back(&self, k: usize, delta: f64) -> usize {
+        (0..k).rev().find(|&j| self.contains(j, delta)).unwrap_or(0)
     }
 
-    /// Reduced (F, radius, dF/dΔ) on branch k at reduced approach x.
+    /// Overlap δ (m) at reduced approach Δ.
+    fn overlap(&self, x: f64) -> f64 {
+        self.data.approach_origin + x * self.data.approach_scale
+    }
+
+    /// Reduced approach Δ at overlap δ (m).
     #[inline]
-    fn on_branch(&self, k: usize, x: f64) -> (f64, f64, f64) {
-        let b = &self.branches[k];
-        let segs = &self.segments[b.seg0..b.seg1];
-        if let Some(first) = segs.first() {
-            if x >= first.lo {
-                for s in segs {
-                    if x <= s.hi {
-                        return s.eval(x);
-                    }
+    fn reduced(&self, delta: f64) -> f64 {
+        (delta - self.data.approach_origin) / self.data.approach_scale
+    }
+
+    /// Reduced (F, radius, dF/dΔ) on branch k at overlap δ (m).
+    ///
+    /// The segments are scanned from the last, where most of a branch's
+    /// range lies: the first segment that starts at or below δ (the
+    /// `start_delta` are increasing, so this is the first whose range ends
+    /// at or above δ).
+    #[inline(always)]
+    fn on_branch(&self, k: usize, delta: f64) -> (f64, f64, f64) {
+        let segs = &self.branches[k].segments;
+        if let Some(last) = segs.last() {
+            if delta > last.hi_delta {
+                return self.beyond(k, delta);
+            }
+            for s in segs.iter().rev() {
+                if delta >= s.start_delta {
+                    return s.eval(delta);
                 }
-                return self.beyond(k, x);
             }
         }
-        self.far(x)
+        self.far(self.reduced(delta))
     }
 
     #[cold]
-    fn beyond(&self, k: usize, x: f64) -> (f64, f64, f64) {
-        if k + 1 == self.branches.len() {
-            self.deep(x)
-        } else {
-            let b = &self.branches[k];
-            self.segments[b.seg1 - 1].eval(x)
+    fn beyond(&self, k: usize, delta: f64) -> (f64, f64, f64) {
+        match self.branches[k].segments.last() {
+            Some(s) if k + 1 < self.branches.len() => s.eval(delta),
+            _ => self.deep(self.reduced(delta)),
         }
     }
 
@@ -1385,12 +1461,18 @@ impl TabulatedLaw {
         (f, a.max(0.0), k)
     }
 
+    /// The last segment of the last branch (validated to exist).
+    fn last_segment(&self) -> &Segment {
+        let segs = &self.branches[self.branches.len() - 1].segments;
+        &segs[segs.len() - 1]
+    }
+
     /// Reduced approach on the load-controlled stable branch at reduced
     /// force `target` (≥ the load pull-off).
     fn x_at_load(&self, target: f64) -> f64 {
-        let s = &self.segments[self.load_segment];
+        let s = self.last_segment();
         let ivs = &s.intervals[self.load_interval..];
-        let end = horner(&ivs[ivs.len() - 1].f, 1.0);
+        let end = horner(&ivs[ivs.len() - 1].f(), 1.0);
         if target > end {
             // Deep tail: Newton on z, F increasing and convex.
             let d = &self.data.deep;
@@ -1411,14 +1493,15 @@ impl TabulatedLaw {
         }
         // Interval whose force range contains the target.
         let i = ivs
-            .partition_point(|iv| horner(&iv.f, 1.0) < target)
+            .partition_point(|iv| horner(&iv.f(), 1.0) < target)
             .min(ivs.len() - 1);
         let iv = &ivs[i];
+        let fc = iv.f();
         // Safeguarded Newton on t ∈ [0, 1] (monotone cubic).
         let (mut lo, mut hi) = (0.0f64, 1.0f64);
         let mut t = 0.5;
         for _ in 0..100 {
-            let f = horner(&iv.f, t) - target;
+            let f = horner(&fc, t) - target;
             if f == 0.0 {
                 break;
             }
@@ -1427,7 +1510,7 @@ impl TabulatedLaw {
             } else {
                 hi = t;
             }
-            let df = horner_d(&iv.f, t);
+            let df = horner_d(&fc, t);
             let mut tn = t - f / df;
             if !(tn > lo && tn < hi) {
                 tn = 0.5 * (lo + hi);
@@ -1455,11 +1538,11 @@ fn monotone_or_flat(y0: f64, m0: f64, y1: f64, m1: f64, h: f64) -> bool {
 /// Rigid Lennard-Jones sphere (Derjaguin), reduced: `g = −(8/3)[h⁻² − h⁻⁸/4]`,
 /// `h = 1 − x`, and dg/dx.
 fn rigid_lj(x: f64) -> (f64, f64) {
-    let h = 1.0 - x;
-    let h2 = 1.0 / (h * h);
+    let ih = 1.0 / (1.0 - x);
+    let h2 = ih * ih;
     let h8 = h2 * h2 * h2 * h2;
     let g = -(8.0 / 3.0) * (h2 - 0.25 * h8);
-    let dg = -(8.0 / 3.0) * (2.0 * h2 / h - 2.0 * h8 / h);
+    let dg = -(16.0 / 3.0) * (h2 - h8) * ih;
     (g, dg)
 }
 
@@ -1484,19 +1567,21 @@ impl NormalContact for TabulatedLaw {
     #[inline(always)]
     fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
         let br = old.branch;
-        if !(delta.is_finite() && (br as u32 as usize) < self.branches.len()) {
+        let mut k = br as u32 as usize;
+        if !(delta.is_finite() && k < self.branches.len()) {
             return Err(bad_input(delta, br));
         }
         let d = &self.data;
-        let x = (delta - d.approach_origin) / d.approach_scale;
-        let mut k = br as usize;
+        // Branches and segments are chosen on δ against thresholds
+        // equivalent to the reduced ones, so that no division precedes the
+        // choice.
         let b = &self.branches[k];
-        if !(x <= b.hi) {
-            k = self.jump_forward(k, x);
-        } else if x < b.lo {
-            k = self.jump_back(k, x);
+        if !(delta <= b.hi_delta) {
+            k = self.jump_forward(k, delta);
+        } else if delta < b.lo_delta {
+            k = self.jump_back(k, delta);
         }
-        let (f, a, kbar) = self.on_branch(k, x);
+        let (f, a, kbar) = self.on_branch(k, delta);
         let radius = a * d.radius_scale;
         let r = NormalResponse {
             force: f * d.force_scale,
@@ -1512,7 +1597,13 @@ impl NormalContact for TabulatedLaw {
             in_contact: (k > 0 || a > 0.0) as i32,
             branch: k as i32,
         };
-        finite_response((r, s))
+        // One test for the three computed values (δ is finite): x·0 is 0
+        // exactly when x is finite, NaN otherwise.
+        if r.force * 0.0 + radius * 0.0 + r.stiffness * 0.0 == 0.0 {
+            Ok((r, s))
+        } else {
+            Err(overflow(delta))
+        }
     }
 
     /// Equilibrium at force P (N) on the load-controlled stable branch (beyond
@@ -1529,10 +1620,11 @@ impl NormalContact for TabulatedLaw {
         }
         let x = self.x_at_load(target);
         let k = self.branches.len() - 1;
-        let (_, a, kbar) = self.on_branch(k, x);
+        let delta = self.overlap(x);
+        let (_, a, kbar) = self.on_branch(k, delta);
         let r = NormalResponse {
             force,
-            delta: d.approach_origin + x * d.approach_scale,
+            delta,
             contact_radius: a * d.radius_scale,
             stiffness: kbar * self.stiffness_scale,
             in_contact: 1,
@@ -1562,6 +1654,88 @@ impl NormalContact for TabulatedLaw {
     }
 }
 
+/// The overlap threshold (m) equivalent to a reduced-approach bound `x`:
+/// with `Δ(δ) = (δ − origin)/scale` as [`TabulatedLaw::eval`] would compute
+/// it, the smallest δ with `Δ(δ) ≥ x` (`at_least`) or the largest δ with
+/// `Δ(δ) ≤ x`. Rounding keeps `Δ(δ)` monotone in δ, so `δ ≥ threshold` is
+/// exactly `Δ(δ) ≥ x` (and `δ ≤ threshold` exactly `Δ(δ) ≤ x`) for every
+/// finite δ: bisection over the ordered bit patterns of the finite doubles.
+fn overlap_threshold(origin: f64, scale: f64, x: f64, at_least: bool) -> f64 {
+    if x.is_infinite() {
+        return x;
+    }
+    // Order-preserving map of the doubles onto the integers and back.
+    let key = |v: f64| {
+        let b = v.to_bits() as i64;
+        if b < 0 {
+            i64::MIN - b
+        } else {
+            b
+        }
+    };
+    let value = |k: i64| f64::from_bits(if k < 0 { i64::MIN - k } else { k } as u64);
+    let reduced = |v: f64| (v - origin) / scale;
+    // `inside(δ)` is false then true along δ (at_least) or true then false.
+    let inside = |v: f64| {
+        if at_least {
+            reduced(v) >= x
+        } else {
+            reduced(v) <= x
+        }
+    };
+    // The keys span more than i64: differences in i128.
+    let midpoint = |a: i64, b: i64| ((a as i128 + b as i128) >> 1) as i64;
+    let (mut lo, mut hi) = (key(-f64::MAX), key(f64::MAX));
+    if at_least {
+        if !inside(value(hi)) {
+            return f64::INFINITY;
+        }
+        if inside(value(lo)) {
+            return f64::NEG_INFINITY;
+        }
+        // inside(lo) false, inside(hi) true: the first true.
+        while (hi as i128) - (lo as i128) > 1 {
+            let mid = midpoint(lo, hi);
+            if inside(value(mid)) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        value(hi)
+    } else {
+        if !inside(value(lo)) {
+            return f64::NEG_INFINITY;
+        }
+        if inside(value(hi)) {
+            return f64::INFINITY;
+        }
+        // inside(lo) true, inside(hi) false: the last true.
+        while (hi as i128) - (lo as i128) > 1 {
+            let mid = midpoint(lo, hi);
+            if inside(value(mid)) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        value(lo)
+    }
+}
+
+/// The next double above a finite `v` (`f64::next_up`, stable only since
+/// Rust 1.86).
+fn next_up(v: f64) -> f64 {
+    if v.is_nan() || v == f64::INFINITY {
+        return v;
+    }
+    if v == 0.0 {
+        return f64::from_bits(1);
+    }
+    let b = v.to_bits();
+    f64::from_bits(if v > 0.0 { b + 1 } else { b - 1 })
+}
+
 /// The error for a non-finite δ or a branch outside the table.
 #[cold]
 fn bad_input(delta: f64, b: i32) -> Error {
@@ -1576,5 +1750,75 @@ fn bad_branch(b: i32) -> Error {
         name: "old.branch",
         value: b as f64,
         bound: "a branch of the table: 0 (far) to branch_count() - 1",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{next_up, overlap_threshold};
+
+    fn next_down(v: f64) -> f64 {
+        -next_up(-v)
+    }
+
+    #[test]
+    fn next_up_steps_one_ulp() {
+        assert_eq!(next_up(0.0), f64::from_bits(1));
+        assert_eq!(next_up(-0.0), f64::from_bits(1));
+        assert_eq!(next_up(1.0), 1.0 + f64::EPSILON);
+        assert_eq!(next_up(-f64::from_bits(1)), -0.0);
+        assert_eq!(next_up(f64::MAX), f64::INFINITY);
+        assert_eq!(next_up(f64::NEG_INFINITY), -f64::MAX);
+        assert_eq!(next_up(f64::INFINITY), f64::INFINITY);
+        assert_eq!(next_down(1.0), 1.0 - f64::EPSILON / 2.0);
+    }
+
+    /// The overlap thresholds decide exactly as the reduced approach
+    /// `(δ − origin)/scale` compared with the bound: true at the threshold,
+    /// false one double beyond it.
+    #[test]
+    fn overlap_thresholds_reproduce_the_reduced_comparisons() {
+        let reduced = |o: f64, s: f64, d: f64| (d - o) / s;
+        let mut checked = 0;
+        for o in [0.0, -3.7e-9, 1e-6, -2.5] {
+            for s in [3e-10, 1.7320508075688772e-8, 1.0, 7.3, 1e10] {
+                for x in [
+                    -28.90788462585297,
+                    -1.6294154310638171,
+                    -1.7438050853496148,
+                    0.0,
+                    1e-300,
+                    0.1 + 0.2,
+                    8.902789206157527,
+                    7.868170735204815e6,
+                    1e300,
+                ] {
+                    let lo = overlap_threshold(o, s, x, true);
+                    let hi = overlap_threshold(o, s, x, false);
+                    if lo.is_finite() {
+                        assert!(reduced(o, s, lo) >= x, "{o} {s} {x}");
+                        assert!(reduced(o, s, next_down(lo)) < x, "{o} {s} {x}");
+                        checked += 1;
+                    } else {
+                        // No finite δ reaches x (x beyond the range).
+                        assert_eq!(lo, f64::INFINITY);
+                        assert!(reduced(o, s, f64::MAX) < x, "{o} {s} {x}");
+                    }
+                    if hi.is_finite() {
+                        assert!(reduced(o, s, hi) <= x, "{o} {s} {x}");
+                        assert!(reduced(o, s, next_up(hi)) > x, "{o} {s} {x}");
+                    } else {
+                        assert_eq!(hi, f64::INFINITY);
+                        assert!(reduced(o, s, f64::MAX) <= x, "{o} {s} {x}");
+                    }
+                }
+            }
+        }
+        assert!(checked > 150);
+        assert_eq!(overlap_threshold(0.0, 1.0, f64::INFINITY, false), f64::INFINITY);
+        assert_eq!(
+            overlap_threshold(0.0, 1.0, f64::NEG_INFINITY, true),
+            f64::NEG_INFINITY
+        );
     }
 }
