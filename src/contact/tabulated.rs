@@ -246,21 +246,49 @@ struct TableData {
 
 // --------------------------------------------------------------- runtime
 
-/// One Hermite interval: `y(t) = c0 + t(c1 + t(c2 + t c3))`, `t = (u − lo)/h`,
-/// for the force and the radius side by side (`c[j] = [F_j, a_j]`), so that
-/// both are evaluated by one packed Horner scheme.
+/// One Hermite interval as a cubic in `s = u − lo ∈ [0, hi − lo]`:
+/// `y(s) = c0 + s(c1 + s(c2 + s c3))` for the force and the radius side by
+/// side (`c[j] = [F_j, a_j]`), and the stiffness `dF/dΔ = F'(s)·du/dΔ` as
+/// `(e0 + s(e1 + s e2))/u` on a square-root segment (`du/dΔ = ±1/(2u)`) or
+/// without the division on a linear one (`du/dΔ = ±1`), the factor ±½ or ±1
+/// folded into `e`.
 #[derive(Debug, Clone, Copy)]
 struct Interval {
     lo: f64,
     hi: f64,
-    inv_h: f64,
     c: [[f64; 2]; 4],
+    e: [f64; 3],
 }
 
 impl Interval {
-    /// The force's coefficients.
+    /// From the Hermite coefficients in `t = s/(hi − lo)` and the factor of
+    /// du/dΔ (±½ times 1/u, or ±1).
+    fn new(lo: f64, hi: f64, du_dx_factor: f64, ct: [[f64; 2]; 4]) -> Interval {
+        let inv_h = 1.0 / (hi - lo);
+        let mut c = ct;
+        let mut scale = 1.0;
+        for cj in c.iter_mut() {
+            *cj = [cj[0] * scale, cj[1] * scale];
+            scale *= inv_h;
+        }
+        let e = [
+            du_dx_factor * c[1][0],
+            du_dx_factor * 2.0 * c[2][0],
+            du_dx_factor * 3.0 * c[3][0],
+        ];
+        Interval { lo, hi, c, e }
+    }
+
+    /// The force's coefficients (in `s`).
     fn f(&self) -> [f64; 4] {
         self.c.map(|p| p[0])
+    }
+
+    /// The force at `t = s/(hi − lo) ∈ [0, 1]`, and its derivative in t.
+    fn force_at(&self, t: f64) -> (f64, f64) {
+        let h = self.hi - self.lo;
+        let f = self.f();
+        (horner(&f, t * h), horner_d(&f, t * h) * h)
     }
 }
 
@@ -280,8 +308,6 @@ struct Segment {
     /// pre-root variable is `d = (δ − reference_delta)·d_per_delta`.
     reference_delta: f64,
     d_per_delta: f64,
-    /// `sign/2` (sqrt) or `sign` (linear): du/dΔ times u or 1.
-    du_dx_factor: f64,
     reference: f64,
     /// The first knot in `d`.
     d0: f64,
@@ -438,15 +464,15 @@ impl Segment {
         // segments of both kinds, and a jump on the kind mispredicts.
         let root = d.max(0.0).sqrt();
         let (u, den) = if self.sqrt { (root, root) } else { (d, 1.0) };
-        let du_dx = self.du_dx_factor / den;
-        let t = (u - iv.lo) * iv.inv_h;
+        let inv_den = 1.0 / den;
+        let s = u - iv.lo;
         let c = &iv.c;
         let mut y = c[3];
         for cj in [c[2], c[1], c[0]] {
-            y = [cj[0] + t * y[0], cj[1] + t * y[1]];
+            y = [cj[0] + s * y[0], cj[1] + s * y[1]];
         }
-        let dy = c[1][0] + t * (2.0 * c[2][0] + t * (3.0 * c[3][0]));
-        let k = dy * iv.inv_h * du_dx;
+        let e = &iv.e;
+        let k = (e[0] + s * (e[1] + s * e[2])) * inv_den;
         let k = if k.abs() < STIFFNESS_BAR_MAX {
             k
         } else {
@@ -461,9 +487,9 @@ impl Segment {
     /// caller spill the interpolant's coefficients on the common path.
     #[inline(always)]
     fn stiffness_limit(&self, iv: &Interval, u: f64, k: f64) -> f64 {
-        if self.sqrt && u == 0.0 && iv.c[1][0] == 0.0 {
-            // F − F₀ ∝ u²: the finite limit.
-            iv.c[2][0] * iv.inv_h * iv.inv_h * self.sign
+        if self.sqrt && u == 0.0 && iv.e[0] == 0.0 {
+            // F − F₀ ∝ u²: the finite limit, ±F''(0)/2.
+            iv.e[1]
         } else if k.is_nan() {
             STIFFNESS_BAR_MAX
         } else {
@@ -493,11 +519,11 @@ impl Segment {
                 continue;
             }
             ends.push(d_of_u(sqrt, d.u[i + 1]));
-            intervals.push(Interval {
-                lo: d.u[i],
-                hi: d.u[i + 1],
-                inv_h: 1.0 / h,
-                c: pair(
+            intervals.push(Interval::new(
+                d.u[i],
+                d.u[i + 1],
+                if sqrt { 0.5 * d.sign } else { d.sign },
+                pair(
                     coefficients(
                         d.force[i],
                         d.d_force[i],
@@ -513,7 +539,7 @@ impl Segment {
                         h,
                     ),
                 ),
-            });
+            ));
         }
         if intervals.is_empty() {
             return Err(bad("segment.u", n as f64, "spanning a non-empty range"));
@@ -524,7 +550,6 @@ impl Segment {
         let mut seg = Segment {
             sqrt,
             sign: d.sign,
-            du_dx_factor: if sqrt { 0.5 * d.sign } else { d.sign },
             reference: d.reference,
             lo_delta: f64::NAN,
             hi_delta: f64::NAN,
@@ -1243,7 +1268,7 @@ impl TabulatedLaw {
         if ls.intervals[load_interval].c[0][0] != d.load_pull_off
             || ls.intervals[load_interval..]
                 .iter()
-                .any(|iv| horner(&iv.f(), 1.0) < iv.c[0][0])
+                .any(|iv| iv.force_at(1.0).0 < iv.c[0][0])
         {
             return Err(bad(
                 "load_pull_off",
@@ -1472,7 +1497,7 @@ impl TabulatedLaw {
     fn x_at_load(&self, target: f64) -> f64 {
         let s = self.last_segment();
         let ivs = &s.intervals[self.load_interval..];
-        let end = horner(&ivs[ivs.len() - 1].f(), 1.0);
+        let end = ivs[ivs.len() - 1].force_at(1.0).0;
         if target > end {
             // Deep tail: Newton on z, F increasing and convex.
             let d = &self.data.deep;
@@ -1493,15 +1518,15 @@ impl TabulatedLaw {
         }
         // Interval whose force range contains the target.
         let i = ivs
-            .partition_point(|iv| horner(&iv.f(), 1.0) < target)
+            .partition_point(|iv| iv.force_at(1.0).0 < target)
             .min(ivs.len() - 1);
         let iv = &ivs[i];
-        let fc = iv.f();
         // Safeguarded Newton on t ∈ [0, 1] (monotone cubic).
         let (mut lo, mut hi) = (0.0f64, 1.0f64);
         let mut t = 0.5;
         for _ in 0..100 {
-            let f = horner(&fc, t) - target;
+            let (f, df) = iv.force_at(t);
+            let f = f - target;
             if f == 0.0 {
                 break;
             }
@@ -1510,7 +1535,6 @@ impl TabulatedLaw {
             } else {
                 hi = t;
             }
-            let df = horner_d(&fc, t);
             let mut tn = t - f / df;
             if !(tn > lo && tn < hi) {
                 tn = 0.5 * (lo + hi);
@@ -1521,7 +1545,7 @@ impl TabulatedLaw {
             }
             t = tn;
         }
-        s.x_of(iv.lo + t / iv.inv_h)
+        s.x_of(iv.lo + t * (iv.hi - iv.lo))
     }
 }
 
