@@ -77,6 +77,28 @@ pub unsafe fn eval_elementwise<L: NormalContact + ?Sized>(
     law: &L,
     b: &RawBatch,
 ) -> core::result::Result<(), BatchError> {
+    elementwise::<L, true>(law, b)
+}
+
+/// [`eval_elementwise`] for a law whose `eval` already returns an error
+/// rather than a non-finite response: the same loop without the second
+/// finiteness test.
+///
+/// # Safety
+/// The pointers of `b` must satisfy the contract of [`RawBatch`].
+#[inline]
+pub(crate) unsafe fn eval_elementwise_finite<L: NormalContact + ?Sized>(
+    law: &L,
+    b: &RawBatch,
+) -> core::result::Result<(), BatchError> {
+    elementwise::<L, false>(law, b)
+}
+
+#[inline(always)]
+unsafe fn elementwise<L: NormalContact + ?Sized, const CHECK: bool>(
+    law: &L,
+    b: &RawBatch,
+) -> core::result::Result<(), BatchError> {
     for i in 0..b.n {
         let d = b.delta.add(i).read();
         let old = if b.old_state.is_null() {
@@ -87,7 +109,7 @@ pub unsafe fn eval_elementwise<L: NormalContact + ?Sized>(
         let (r, s) = law
             .eval(d, &old)
             .map_err(|error| BatchError { index: i, error })?;
-        if !is_finite(&r) {
+        if CHECK && !is_finite(&r) {
             return Err(BatchError {
                 index: i,
                 error: overflow(d),

@@ -115,8 +115,8 @@
 
 use super::curve::{exact_f64, exact_vec, DeepTail, EquilibriumCurve, FarTail, PathPoint};
 use super::{
-    below_pull_off, check_delta, check_force, finite_response, overflow, ContactState, Control,
-    LjSphere, MaugisDugdale, NormalContact, NormalResponse,
+    below_pull_off, check_delta, check_force, finite_response, overflow, BatchError, ContactState,
+    Control, LjSphere, MaugisDugdale, NormalContact, NormalResponse, RawBatch,
 };
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -1630,6 +1630,13 @@ impl NormalContact for TabulatedLaw {
         }
     }
 
+    /// The element loop without a second finiteness test: `eval` already
+    /// returns an error for a non-finite response.
+    #[inline]
+    unsafe fn eval_batch_raw(&self, b: &RawBatch) -> core::result::Result<(), BatchError> {
+        super::batch::eval_elementwise_finite(self, b)
+    }
+
     /// Equilibrium at force P (N) on the load-controlled stable branch (beyond
     /// the minimum of the force on the last branch), by inverting the
     /// interpolant.
@@ -1839,7 +1846,10 @@ mod tests {
             }
         }
         assert!(checked > 150);
-        assert_eq!(overlap_threshold(0.0, 1.0, f64::INFINITY, false), f64::INFINITY);
+        assert_eq!(
+            overlap_threshold(0.0, 1.0, f64::INFINITY, false),
+            f64::INFINITY
+        );
         assert_eq!(
             overlap_threshold(0.0, 1.0, f64::NEG_INFINITY, true),
             f64::NEG_INFINITY
