@@ -508,6 +508,7 @@ fn corrupted_tables_are_errors() {
             "segment range",
             edit(&|w| w["branches"][1]["segments"][0]["hi"] = "1e300".into()),
         ),
+        ("origin", edit(&|w| w["approach_origin"] = "inf".into())),
     ];
     for (what, text) in cases {
         match TabulatedLaw::from_json(&text) {
@@ -517,6 +518,43 @@ fn corrupted_tables_are_errors() {
     }
     // The untouched text still loads.
     assert!(TabulatedLaw::from_json(&edit(&|_| {})).is_ok());
+    // Extreme but valid units and origins (the overlap thresholds and
+    // references overflow to ±∞): every call is a response or an error,
+    // never a panic.
+    for (scale, origin) in [
+        ("1e300", "0e0"),
+        ("1e307", "0e0"),
+        ("1e-300", "0e0"),
+        ("1e0", "1.7e308"),
+    ] {
+        let text = edit(&|w| {
+            w["approach_scale"] = scale.into();
+            w["approach_origin"] = origin.into();
+        });
+        let u = TabulatedLaw::from_json(&text).unwrap();
+        for delta in [
+            -f64::MAX,
+            -1e300,
+            -1.0,
+            -1e-300,
+            0.0,
+            1e-9,
+            1.0,
+            1e300,
+            f64::MAX,
+        ] {
+            for branch in [0, 1] {
+                let old = ContactState {
+                    branch,
+                    in_contact: branch,
+                    ..Default::default()
+                };
+                if let Ok((r, _)) = u.eval(delta, &old) {
+                    assert!(r.force.is_finite() && r.stiffness.is_finite());
+                }
+            }
+        }
+    }
     // A curve with an unresolved turning point is refused.
     let m = md(2.0);
     let mut c = EquilibriumCurve::from_maugis_dugdale(&m, DEFAULT_TOLERANCE).unwrap();

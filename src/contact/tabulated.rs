@@ -458,10 +458,9 @@ impl Segment {
         // The interval is looked up on d, so that the lookup does not wait
         // for the square root.
         let iv = self.interval(d);
-        // u, and du/dΔ = sign/(2u) (sqrt) or sign (linear, sign = ±1), the
-        // quotient taken here so that it runs while the interval is looked
-        // up. Both forms are computed and one is picked: tables mix
-        // segments of both kinds, and a jump on the kind mispredicts.
+        // u, and 1/u (sqrt; the ±½ of du/dΔ = ±1/(2u) is in the stiffness
+        // coefficients) or 1 (linear), the quotient taken here so that it
+        // runs while the interval is looked up.
         let root = d.max(0.0).sqrt();
         let (u, den) = if self.sqrt { (root, root) } else { (d, 1.0) };
         let inv_den = 1.0 / den;
@@ -501,8 +500,10 @@ impl Segment {
     fn interval(&self, d: f64) -> &Interval {
         let b = ((self.key(d) >> self.shift) as usize).min(self.index.len() - 1);
         let mut i = self.index[b] as usize;
-        // The last end is +∞ and d < +∞ (or NaN): the walk stops in range.
-        while d >= self.ends[i] {
+        // The last end is +∞ and the walk compares a finite value (NaN
+        // becomes f64::MAX), so it stops in range.
+        let dw = d.min(f64::MAX);
+        while dw >= self.ends[i] {
             i += 1;
         }
         &self.intervals[i]
@@ -1009,7 +1010,7 @@ impl TabulatedLaw {
             }
             if let Some(mut hi) = fail {
                 let mut lo = best;
-                while (hi as i128) - (lo as i128) > 1 {
+                while hi - lo > 1 {
                     let mid = (lo + hi) / 2;
                     if accept(i, mid) {
                         lo = mid;
@@ -1686,9 +1687,9 @@ impl NormalContact for TabulatedLaw {
 }
 
 /// The overlap threshold (m) equivalent to a reduced-approach bound `x`:
-/// with `Δ(δ) = (δ − origin)/scale` as [`TabulatedLaw::eval`] would compute
-/// it, the smallest δ with `Δ(δ) ≥ x` (`at_least`) or the largest δ with
-/// `Δ(δ) ≤ x`. Rounding keeps `Δ(δ)` monotone in δ, so `δ ≥ threshold` is
+/// with the reduced approach `Δ(δ) = (δ − origin)/scale` rounded as f64
+/// arithmetic rounds it, the smallest δ with `Δ(δ) ≥ x` (`at_least`) or the
+/// largest δ with `Δ(δ) ≤ x`. Rounding keeps `Δ(δ)` monotone in δ, so `δ ≥ threshold` is
 /// exactly `Δ(δ) ≥ x` (and `δ ≤ threshold` exactly `Δ(δ) ≤ x`) for every
 /// finite δ: bisection over the ordered bit patterns of the finite doubles.
 fn overlap_threshold(origin: f64, scale: f64, x: f64, at_least: bool) -> f64 {
