@@ -1706,53 +1706,34 @@ fn overlap_threshold(origin: f64, scale: f64, x: f64, at_least: bool) -> f64 {
         }
     };
     let value = |k: i64| f64::from_bits(if k < 0 { i64::MIN - k } else { k } as u64);
-    let reduced = |v: f64| (v - origin) / scale;
-    // `inside(δ)` is false then true along δ (at_least) or true then false.
-    let inside = |v: f64| {
+    // Inside the bound is false then true along δ (at_least) or true then
+    // false; `past(k)` is false then true along the keys either way.
+    let past = |k: i64| {
+        let r = (value(k) - origin) / scale;
         if at_least {
-            reduced(v) >= x
+            r >= x
         } else {
-            reduced(v) <= x
+            r > x
         }
     };
-    // The keys span more than i64: differences in i128.
-    let midpoint = |a: i64, b: i64| ((a as i128 + b as i128) >> 1) as i64;
+    // The keys span more than i64: sums and differences in i128.
     let (mut lo, mut hi) = (key(-f64::MAX), key(f64::MAX));
-    if at_least {
-        if !inside(value(hi)) {
-            return f64::INFINITY;
-        }
-        if inside(value(lo)) {
-            return f64::NEG_INFINITY;
-        }
-        // inside(lo) false, inside(hi) true: the first true.
-        while (hi as i128) - (lo as i128) > 1 {
-            let mid = midpoint(lo, hi);
-            if inside(value(mid)) {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-        value(hi)
-    } else {
-        if !inside(value(lo)) {
-            return f64::NEG_INFINITY;
-        }
-        if inside(value(hi)) {
-            return f64::INFINITY;
-        }
-        // inside(lo) true, inside(hi) false: the last true.
-        while (hi as i128) - (lo as i128) > 1 {
-            let mid = midpoint(lo, hi);
-            if inside(value(mid)) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        value(lo)
+    if past(lo) {
+        return f64::NEG_INFINITY;
     }
+    if !past(hi) {
+        return f64::INFINITY;
+    }
+    while (hi as i128) - (lo as i128) > 1 {
+        let mid = ((lo as i128 + hi as i128) >> 1) as i64;
+        if past(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    // The first δ inside (at_least), or the last one inside.
+    value(if at_least { hi } else { lo })
 }
 
 /// The next double above a finite `v` (`f64::next_up`, stable only since
