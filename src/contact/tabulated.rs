@@ -296,13 +296,13 @@ impl Interval {
 struct Segment {
     sqrt: bool,
     sign: f64,
-    /// Overlap (m) thresholds equivalent to `Δ ≥ lo` and `Δ ≤ hi` (see
+    /// Overlap (m) threshold equivalent to `Δ ≤ hi` (see
     /// [`overlap_threshold`]).
-    lo_delta: f64,
     hi_delta: f64,
-    /// Where the segment's range begins in the branch's scan: `lo_delta`
-    /// for the first segment, otherwise the overlap just above the previous
-    /// segment's `hi_delta` (a δ on both is on the earlier one).
+    /// Where the segment's range begins in the branch's scan: the threshold
+    /// equivalent to `Δ ≥ lo` for the first segment, otherwise the overlap
+    /// just above the previous segment's `hi_delta` (a δ on both is on the
+    /// earlier one).
     start_delta: f64,
     /// The reference as an overlap (m), and `sign/approach_scale`: the
     /// pre-root variable is `d = (δ − reference_delta)·d_per_delta`.
@@ -552,7 +552,6 @@ impl Segment {
             sqrt,
             sign: d.sign,
             reference: d.reference,
-            lo_delta: f64::NAN,
             hi_delta: f64::NAN,
             start_delta: f64::NAN,
             reference_delta: f64::NAN,
@@ -1223,10 +1222,9 @@ impl TabulatedLaw {
                     return Err(bad("segment.lo", s.lo, "equal to the Δ of its first knot"));
                 }
                 let mut seg = Segment::build(s)?;
-                seg.lo_delta = overlap_threshold(o, sc, s.lo, true);
                 seg.hi_delta = overlap_threshold(o, sc, s.hi, false);
                 seg.start_delta = match segments.last() {
-                    None => seg.lo_delta,
+                    None => overlap_threshold(o, sc, s.lo, true),
                     Some(p) => next_up(p.hi_delta),
                 };
                 seg.reference_delta = o + s.reference * sc;
