@@ -59,6 +59,8 @@
 //! each the last (or first) double for which the reduced approach
 //! `(δ − origin)/unit` lies within the bound, so the choice is exactly the
 //! one the reduced comparison would make; `d` is then `(δ − δ_ref)·(±1/unit)`.
+//! A call that stays on its branch and lands on the branch's widest segment
+//! (in overlap) takes a single range test for both choices.
 //!
 //! # Hysteresis
 //!
@@ -328,6 +330,14 @@ struct Branch {
     /// Overlap (m) thresholds equivalent to `Δ ≥ lo` and `Δ ≤ hi`.
     lo_delta: f64,
     hi_delta: f64,
+    /// The overlaps (m) where a contact on this branch stays on it and is
+    /// on its widest segment (in overlap), `[max(lo_delta, start),
+    /// min(hi_delta, end)]` of that segment; empty (+∞, −∞) without
+    /// segments. Most calls land here and take one range test.
+    stay_lo: f64,
+    stay_hi: f64,
+    /// The widest segment.
+    stay: usize,
     segments: Vec<Segment>,
 }
 
@@ -432,6 +442,23 @@ fn limit(y0: f64, m0: &mut f64, y1: f64, m1: &mut f64, h: f64) {
     }
 }
 
+impl Branch {
+    /// Whether overlap δ (m) is in the stay range.
+    #[inline(always)]
+    fn stays(&self, delta: f64) -> bool {
+        delta >= self.stay_lo && delta <= self.stay_hi
+    }
+
+    /// The widest segment, on a branch whose stay range is not empty.
+    #[inline(always)]
+    fn stay_segment(&self) -> &Segment {
+        debug_assert!(self.stay_lo <= self.stay_hi);
+        // SAFETY: a non-empty stay range means segments, `stay` one of them
+        // (`from_data`).
+        unsafe { self.segments.get_unchecked(self.stay) }
+    }
+}
+
 impl Segment {
     /// Index key of `d` (see [`Segment::interval`]): never negative, as
     /// `max(d − d0, 0) + bias ≥ bias`.
@@ -499,14 +526,19 @@ impl Segment {
     #[inline(always)]
     fn interval(&self, d: f64) -> &Interval {
         let b = ((self.key(d) >> self.shift) as usize).min(self.index.len() - 1);
-        let mut i = self.index[b] as usize;
-        // The last end is +∞ and the walk compares a finite value (NaN
-        // becomes f64::MAX), so it stops in range.
-        let dw = d.min(f64::MAX);
-        while dw >= self.ends[i] {
-            i += 1;
+        // SAFETY (the invariants of `build`, and a segment is never changed
+        // after it): the index is not empty, so `b` is in range; its entries
+        // are below `intervals.len() == ends.len()`; the last end is +∞ and
+        // the walk compares a finite value (NaN becomes f64::MAX), so it
+        // stops in range.
+        unsafe {
+            let mut i = *self.index.get_unchecked(b) as usize;
+            let dw = d.min(f64::MAX);
+            while dw >= *self.ends.get_unchecked(i) {
+                i += 1;
+            }
+            self.intervals.get_unchecked(i)
         }
-        &self.intervals[i]
     }
 
     fn build(d: &SegmentData) -> Result<Segment> {
@@ -1231,11 +1263,35 @@ impl TabulatedLaw {
                 seg.d_per_delta = s.sign / sc;
                 segments.push(seg);
             }
+            let (lo_delta, hi_delta) = (
+                overlap_threshold(o, sc, lo, true),
+                overlap_threshold(o, sc, hi, false),
+            );
+            // The widest segment (the first of equals), by its overlap range
+            // within the branch's.
+            let range = |s: &Segment| (lo_delta.max(s.start_delta), hi_delta.min(s.hi_delta));
+            let width = |s: &Segment| {
+                let (a, b) = range(s);
+                b - a
+            };
+            let stay = (0..segments.len()).fold(0, |w, j| {
+                if width(&segments[j]) > width(&segments[w]) {
+                    j
+                } else {
+                    w
+                }
+            });
+            let (stay_lo, stay_hi) = segments
+                .get(stay)
+                .map_or((f64::INFINITY, f64::NEG_INFINITY), range);
             branches.push(Branch {
                 lo,
                 hi,
-                lo_delta: overlap_threshold(o, sc, lo, true),
-                hi_delta: overlap_threshold(o, sc, hi, false),
+                lo_delta,
+                hi_delta,
+                stay_lo,
+                stay_hi,
+                stay,
                 segments,
             });
         }
@@ -1407,17 +1463,20 @@ impl TabulatedLaw {
         delta >= b.lo_delta && delta <= b.hi_delta
     }
 
+    /// The first branch after k that contains δ (m), else the last: the
+    /// last needs no test, so a two-branch table jumps without one.
     #[inline]
     fn jump_forward(&self, k: usize, delta: f64) -> usize {
         let n = self.branches.len();
-        (k + 1..n)
+        (k + 1..n - 1)
             .find(|&j| self.contains(j, delta))
             .unwrap_or(n - 1)
     }
 
+    /// The last branch before k that contains δ (m), else branch 0.
     #[inline]
     fn jump_back(&self, k: usize, delta: f64) -> usize {
-        (0..k).rev().find(|&j| self.contains(j, delta)).unwrap_or(0)
+        (1..k).rev().find(|&j| self.contains(j, delta)).unwrap_or(0)
     }
 
     /// Overlap δ (m) at reduced approach Δ.
@@ -1597,14 +1656,19 @@ impl NormalContact for TabulatedLaw {
         let d = &self.data;
         // Branches and segments are chosen on δ against thresholds
         // equivalent to the reduced ones, so that no division precedes the
-        // choice.
+        // choice. Most calls stay on their branch and land on its widest
+        // segment: one range test; otherwise the jumps and the full choice.
         let b = &self.branches[k];
-        if !(delta <= b.hi_delta) {
-            k = self.jump_forward(k, delta);
-        } else if delta < b.lo_delta {
-            k = self.jump_back(k, delta);
-        }
-        let (f, a, kbar) = self.on_branch(k, delta);
+        let (f, a, kbar) = if b.stays(delta) {
+            b.stay_segment().eval(delta)
+        } else {
+            if !(delta <= b.hi_delta) {
+                k = self.jump_forward(k, delta);
+            } else if delta < b.lo_delta {
+                k = self.jump_back(k, delta);
+            }
+            self.on_branch(k, delta)
+        };
         let radius = a * d.radius_scale;
         let r = NormalResponse {
             force: f * d.force_scale,
@@ -1766,7 +1830,8 @@ fn bad_branch(b: i32) -> Error {
 
 #[cfg(test)]
 mod tests {
-    use super::{next_up, overlap_threshold};
+    use super::{next_up, overlap_threshold, TabulatedLaw};
+    use crate::contact::{ContactState, LjSphere, MaugisDugdale, NormalContact};
 
     fn next_down(v: f64) -> f64 {
         -next_up(-v)
@@ -1834,5 +1899,86 @@ mod tests {
             overlap_threshold(0.0, 1.0, f64::NEG_INFINITY, true),
             f64::NEG_INFINITY
         );
+    }
+
+    /// The choice `eval` makes by the rules of the module documentation,
+    /// without the stay range: the branch after the jumps, and the reduced
+    /// response on it.
+    fn full_choice(t: &TabulatedLaw, k: usize, delta: f64) -> (usize, (f64, f64, f64)) {
+        let n = t.branches.len();
+        let b = &t.branches[k];
+        let k = if delta > b.hi_delta {
+            (k + 1..n).find(|&j| t.contains(j, delta)).unwrap_or(n - 1)
+        } else if delta < b.lo_delta {
+            (0..k).rev().find(|&j| t.contains(j, delta)).unwrap_or(0)
+        } else {
+            k
+        };
+        (k, t.on_branch(k, delta))
+    }
+
+    /// The stay range is a shortcut only: from every branch, at every
+    /// threshold of the table and the doubles beside it, and over a sweep,
+    /// `eval` gives bit for bit the response and the branch of the full
+    /// choice. The tables cover a widest segment that is not the last
+    /// (μ = 0.1: linear, then square root), two segments on the contact
+    /// branch (μ = 1) and a far branch without segments (Maugis–Dugdale).
+    #[test]
+    fn stay_range_is_the_full_choice() {
+        let (r, w, z0) = (1e-6f64, 0.05f64, 0.3e-9f64);
+        let lj = |mu: f64| {
+            let e_star = (r * w * w / (mu * mu * mu * z0 * z0 * z0)).sqrt();
+            let lj = LjSphere::new(r, e_star, w, z0).unwrap();
+            TabulatedLaw::from_lj_sphere(&lj, 128, 1e-4).unwrap()
+        };
+        let md = MaugisDugdale::from_maugis_parameter(1e-6, 1e9, 0.05, 2.0).unwrap();
+        let tables = [
+            lj(0.1),
+            lj(1.0),
+            TabulatedLaw::from_maugis_dugdale(&md, 1e-4).unwrap(),
+        ];
+        assert_ne!(
+            tables[0].branches[0].stay,
+            tables[0].branches[0].segments.len() - 1
+        );
+        let mut checked = 0;
+        for t in &tables {
+            let mut points = Vec::new();
+            for b in &t.branches {
+                points.extend([b.lo_delta, b.hi_delta, b.stay_lo, b.stay_hi]);
+                for s in &b.segments {
+                    points.extend([s.start_delta, s.hi_delta]);
+                }
+            }
+            let (lo, hi) = (t.overlap(-30.0), t.overlap(30.0));
+            points.extend((0..=3000).map(|i| lo + (hi - lo) * i as f64 / 3000.0));
+            let mut all = Vec::new();
+            for p in points.into_iter().filter(|p| p.is_finite()) {
+                all.extend([next_down(p), p, next_up(p)]);
+            }
+            for k in 0..t.branches.len() {
+                let old = ContactState {
+                    branch: k as i32,
+                    ..Default::default()
+                };
+                for &delta in &all {
+                    let (kk, (f, a, kbar)) = full_choice(t, k, delta);
+                    let (resp, state) = t.eval(delta, &old).unwrap();
+                    let d = &t.data;
+                    assert_eq!(state.branch, kk as i32, "{} {k} {delta:e}", t.source());
+                    assert_eq!(resp.force.to_bits(), (f * d.force_scale).to_bits());
+                    assert_eq!(
+                        resp.contact_radius.to_bits(),
+                        (a * d.radius_scale).to_bits()
+                    );
+                    assert_eq!(
+                        resp.stiffness.to_bits(),
+                        (kbar * t.stiffness_scale).to_bits()
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 30_000, "{checked}");
     }
 }
