@@ -11,6 +11,7 @@
 use asperity::contact::curve::EquilibriumCurve;
 use asperity::contact::lj_sphere::{rigid_force_bar, LjSolution, LjSolver, LjSphere};
 use asperity::contact::{ContactState, Control, NormalContact, NormalResponse, TabulatedLaw};
+use asperity::Error;
 use core::f64::consts::PI;
 use std::time::Instant;
 
@@ -387,6 +388,23 @@ fn serde_round_trip_is_bit_identical() {
     // The curve round-trips too.
     let c = EquilibriumCurve::from_lj_sphere(&lj, 48, 1e-3).unwrap();
     assert_eq!(EquilibriumCurve::from_json(&c.to_json()).unwrap(), c);
+}
+
+/// At μ = 1 a grid of 64 cells does not resolve the edge zone well enough:
+/// the contact branch dips again by ~1e-4 beyond its force minimum. The
+/// table refuses that curve as too coarse (`NotConverged`, naming the grid),
+/// not as an invalid argument the caller never passed; 96 cells build.
+#[test]
+fn a_grid_too_coarse_for_the_pull_off_is_not_converged() {
+    let lj = LjSphere::from_tabor(1.0).unwrap();
+    match TabulatedLaw::from_lj_sphere(&lj, 64, 1e-4) {
+        Err(Error::NotConverged { what, residual, .. }) => {
+            assert!(what.contains("raise n_grid"), "{what}");
+            assert!(residual < 0.0, "{residual}");
+        }
+        other => panic!("{other:?}"),
+    }
+    assert!(TabulatedLaw::from_lj_sphere(&lj, 96, 1e-3).is_ok());
 }
 
 #[test]

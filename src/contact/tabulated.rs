@@ -892,7 +892,25 @@ impl TabulatedLaw {
             load_pull_off_u: load_u,
             displacement_pull_off: p[disp_idx].force,
         };
-        let mut table = Self::from_data(data)?;
+        // A table requires the force to increase beyond the load-controlled
+        // pull-off. A curve whose contact branch dips again beyond it (a
+        // solver grid that does not resolve the edge zone leaves wiggles of
+        // ~1e-4 there: μ = 1 at N = 64) is too coarse, not an invalid
+        // argument of the caller's.
+        let mut table = Self::from_data(data).map_err(|e| match e {
+            Error::InvalidArgument {
+                name: "load_pull_off",
+                value,
+                ..
+            } => Error::NotConverged {
+                what: "tabulated law: the curve's force decreases again beyond its \
+                       load-controlled pull-off (a grid too coarse for the edge zone: \
+                       raise n_grid)",
+                iterations: 0,
+                residual: value,
+            },
+            e => e,
+        })?;
         // Measure the final table on every skipped point and tail check.
         let mut worst = 0.0f64;
         for (k, skipped) in &seg_data {
