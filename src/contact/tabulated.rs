@@ -680,7 +680,9 @@ impl TabulatedLaw {
     /// Errors: [`Error::InvalidArgument`] for an invalid curve or tolerance;
     /// [`Error::NotConverged`] when the curve is too coarse for the tolerance
     /// (its points interpolate each other, or the tails meet the tail checks,
-    /// less accurately than asked).
+    /// less accurately than asked), or too coarse for a table at all: its
+    /// force dips again beyond the load-controlled pull-off (the residual is
+    /// the largest dip relative to the pull-off force).
     pub fn from_curve(curve: &EquilibriumCurve, tolerance: f64) -> Result<Self> {
         let tol =
             crate::error::check::in_range("tolerance", tolerance, 1e-10, 0.1, "in [1e-10, 0.1]")?;
@@ -900,15 +902,24 @@ impl TabulatedLaw {
         let mut table = Self::from_data(data).map_err(|e| match e {
             Error::InvalidArgument {
                 name: "load_pull_off",
-                value,
                 ..
-            } => Error::NotConverged {
-                what: "tabulated law: the curve's force decreases again beyond its \
-                       load-controlled pull-off (a grid too coarse for the edge zone: \
-                       raise n_grid)",
-                iterations: 0,
-                residual: value,
-            },
+            } => {
+                // The largest fall of the force below its running maximum
+                // beyond the pull-off, relative to the pull-off force.
+                let mut top = p[load_idx].force;
+                let mut dip = 0.0f64;
+                for q in &p[load_idx..=lp1] {
+                    top = top.max(q.force);
+                    dip = dip.max(top - q.force);
+                }
+                Error::NotConverged {
+                    what: "tabulated law: the curve's force decreases again beyond its \
+                           load-controlled pull-off (a grid too coarse for the edge zone: \
+                           raise n_grid)",
+                    iterations: 0,
+                    residual: dip / p[load_idx].force.abs(),
+                }
+            }
             e => e,
         })?;
         // Measure the final table on every skipped point and tail check.
