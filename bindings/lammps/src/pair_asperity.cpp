@@ -521,6 +521,8 @@ void PairAsperity::init_style()
         t.reach_max = laws_[law_for(i * (nt + 1) + j, t.table_radius)].reach;
       }
       t.energy = !t.table;
+      // Hertz and DMT without friction have no history to keep.
+      t.history = !(t.c.law == LAW_HERTZ || t.c.law == LAW_DMT) || t.c.friction != FRICTION_NONE;
     }
   if (any_friction && !comm->ghost_velocity)
     error->all(FLERR, "pair_style asperity with friction requires ghost atoms store velocity: comm_modify vel yes");
@@ -575,6 +577,8 @@ void PairAsperity::compute(int eflag, int vflag)
   FixAsperityHistory *h = fix_history;
 
   for (int i = 0; i < nlocal; i++) h->peratom[i][1] = 0.0;
+  // visited[i*maxpartner + k]: contact k of atom i was evaluated this step.
+  visited.assign((size_t) nlocal * h->maxpartner, 0);
 
   int inum = list->inum;
   int *ilist = list->ilist;
@@ -600,26 +604,15 @@ void PairAsperity::compute(int eflag, int vflag)
       double dx = x[lo][0] - x[hi][0], dy = x[lo][1] - x[hi][1], dz = x[lo][2] - x[hi][2];
       double rsq = dx * dx + dy * dy + dz * dz;
       double radsum = radius[lo] + radius[hi];
+      // Out of reach (the common case): nothing to do. A contact that was
+      // held and is not visited this step is dropped after the loop.
+      double reachsum = radsum - t.reach_max / len;
+      if (rsq >= reachsum * reachsum) continue;
       double rr = sqrt(rsq);
       double delta = (radsum - rr) * len;
-      int li = -1;
-      if (delta >= t.reach_max) {
-        double R = radius[lo] * radius[hi] / radsum * len;
-        li = law_for(tp, R);
-        if (delta < laws_[li].reach) li = -1;
-      }
-      if (li < 0) {
-        // Out of reach: forget the contact if it was one.
-        if (i < nlocal && h->npartner[i]) {
-          int k = h->find(i, tag[j]);
-          if (k >= 0) h->partner[i][k] = 0;
-        }
-        if (j < nlocal && h->npartner[j]) {
-          int k = h->find(j, tag[i]);
-          if (k >= 0) h->partner[j][k] = 0;
-        }
-        continue;
-      }
+      double R = radius[lo] * radius[hi] / radsum * len;
+      int li = law_for(tp, R);
+      if (delta < laws_[li].reach) continue;
       if (li != batch_law || items.size() >= 4096) {
         if (!items.empty()) flush(eflag);
         batch_law = li;
@@ -629,8 +622,8 @@ void PairAsperity::compute(int eflag, int vflag)
       Item it;
       it.i = lo;
       it.j = hi;
-      it.slot_i = lo < nlocal ? h->find(lo, tag[hi]) : -1;
-      it.slot_j = hi < nlocal ? h->find(hi, tag[lo]) : -1;
+      it.slot_i = (t.history && lo < nlocal) ? h->find(lo, tag[hi]) : -1;
+      it.slot_j = (t.history && hi < nlocal) ? h->find(hi, tag[lo]) : -1;
       it.delta = delta;
       double rinv = 1.0 / rr;
       it.n[0] = dx * rinv;
@@ -641,8 +634,18 @@ void PairAsperity::compute(int eflag, int vflag)
     }
   }
   if (!items.empty()) flush(eflag);
-  for (int i = 0; i < nlocal; i++)
-    if (h->npartner[i]) h->compact(i);
+  // Contacts not evaluated this step are out of reach: forget them.
+  if (!update->setupflag) {
+    for (int i = 0; i < nlocal; i++) {
+      int n = h->npartner[i];
+      if (!n) continue;
+      const char *seen = &visited[(size_t) i * h->maxpartner];
+      bool drop = false;
+      for (int k = 0; k < n; k++)
+        if (!seen[k] || h->partner[i][k] == 0) { h->partner[i][k] = 0; drop = true; }
+      if (drop) h->compact(i);
+    }
+  }
 
   // pvector: [0] friction dissipation this rank since the style was set
   // (compute pair sums it over ranks), [1] contacts held by this rank's atoms.
@@ -662,6 +665,7 @@ void PairAsperity::flush(int eflag)
   const int nv = nvalues;
   const bool update_history = !update->setupflag;
 
+  scratch_.resize(nv);
   b_delta.resize(n);
   b_force.resize(n);
   b_radius.resize(n);
@@ -704,13 +708,16 @@ void PairAsperity::flush(int eflag)
     }
     // History slots (created on first contact).
     double *hist = nullptr, *hist2 = nullptr;
-    double scratch[64];
-    if (update_history) {
+    double *scratch = scratch_.data();
+    if (update_history && t.history) {
       int si = it.slot_i, sj = it.slot_j;
       if (lo < nlocal && si < 0) si = h->add(lo, tag[hi]);
       if (hi < nlocal && sj < 0) sj = h->add(hi, tag[lo]);
-      if (si >= 0) hist = &h->values[lo][si * nv];
-      if (sj >= 0) { if (hist) hist2 = &h->values[hi][sj * nv]; else hist = &h->values[hi][sj * nv]; }
+      if (si >= 0) { hist = &h->values[lo][si * nv]; visited[(size_t) lo * h->maxpartner + si] = 1; }
+      if (sj >= 0) {
+        visited[(size_t) hi * h->maxpartner + sj] = 1;
+        if (hist) hist2 = &h->values[hi][sj * nv]; else hist = &h->values[hi][sj * nv];
+      }
     } else {
       // Setup: forces from the stored history, nothing written back.
       hist = scratch;

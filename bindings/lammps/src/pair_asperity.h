@@ -78,6 +78,7 @@ class PairAsperity : public Pair {
     int fstate = 0;                             // friction state doubles
     double reach_max = 0;                       // reach at the largest R (m)
     bool energy = false;                        // library gives its energy
+    bool history = true;                        // contacts keep a history
     std::unordered_map<uint64_t, int> laws;     // R bits -> index in laws_
     int last_law = -1;
   };
@@ -113,6 +114,8 @@ class PairAsperity : public Pair {
   std::vector<Item> items;
   std::vector<double> b_delta, b_force, b_radius;
   std::vector<AsperityContactState> b_old, b_new;
+  std::vector<char> visited;
+  std::vector<double> scratch_;
   int batch_law;
   int nlocal_, eflag_;
   double dissipated_run;   // energy units, this rank
