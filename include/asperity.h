@@ -1653,6 +1653,37 @@ int32_t asperity_pull_off_force(const struct AsperityNormalLaw *law,
                                 int32_t control,
                                 double *force);
 
+// The reach of `law` under `control` (`ASPERITY_CONTROL_LOAD` or
+// `ASPERITY_CONTROL_DISPLACEMENT`): the overlap δ_r (m, ≤ 0) below which
+// the force is exactly zero from any history state, on approach and
+// retraction, when the contact separates under `control` (displacement:
+// the law's own jump-out rule, as `asperity_normal_eval`; load: at the
+// load-controlled pull-off, the force minimum). For laws whose force never
+// vanishes (Lennard-Jones or exponential surface laws) the overlap below
+// which |force| < `rel_force` × |load-controlled pull-off force|.
+// `rel_force` must be finite and in (0, 1) (`ASPERITY_ERR_INVALID_ARGUMENT`
+// naming `rel_force` otherwise); laws with a finite reach ignore its value.
+// Non-adhesive laws and DMT give 0; JKR gives δ_c = −(3/4)(π²w²R/E*²)^{1/3}
+// (displacement) and a²/R − √(2πwa/E*) at a = (9πwR²/(8E*))^{1/3} (load).
+// A host code sizes its neighbour cutoff and releases contacts with it.
+int32_t asperity_normal_reach(const struct AsperityNormalLaw *law,
+                              int32_t control,
+                              double rel_force,
+                              double *delta);
+
+// The energy (J) of the equilibrium of `law` at the overlap `delta` (m)
+// reached from the history `old_state` (NULL: a fresh contact), with the
+// branch choice of `asperity_normal_eval`: elastic energy minus the surface
+// energy of the contact area, with dU/dδ = P along the branch, 0 for a
+// separated contact. Hertz (8/15)E*√R δ^{5/2}, DMT (Hertz − 2πwRδ), JKR
+// (elastic energy − πa²w), flat and power-law punches, Kendall and the
+// Derjaguin rigid sphere (interaction energy, 0 at infinite separation);
+// other laws give `ASPERITY_ERR_OUT_OF_DOMAIN` naming `law`.
+int32_t asperity_normal_energy(const struct AsperityNormalLaw *law,
+                               double delta,
+                               const struct AsperityContactState *old_state,
+                               double *energy);
+
 // A characteristic overlap of `law` (m, finite and > 0), for
 // non-dimensionalising host-code tolerances. `ASPERITY_ERR_OUT_OF_DOMAIN`
 // (naming `law`, `length` untouched) when the parameters are so extreme
@@ -2561,6 +2592,18 @@ int32_t asperity_table_eval_at_load(const struct AsperityTable *table,
 int32_t asperity_table_pull_off_force(const struct AsperityTable *table,
                                       int32_t control,
                                       double *force);
+
+// The reach of `table` under `control` (`ASPERITY_CONTROL_LOAD` or
+// `ASPERITY_CONTROL_DISPLACEMENT`), as `asperity_normal_reach`: the overlap
+// (m) below which the force is zero from any history (displacement: the
+// table's jump-out points; load: the load-controlled pull-off), or, with a
+// Lennard-Jones far tail, below which |force| < `rel_force` ×
+// |load-controlled pull-off force| (`rel_force` finite and in (0, 1),
+// checked for every table).
+int32_t asperity_table_reach(const struct AsperityTable *table,
+                             int32_t control,
+                             double rel_force,
+                             double *delta);
 
 // The stated maximum relative error of `table` (its tolerance) and, if
 // `measured` is not NULL, the largest error measured at construction.

@@ -561,6 +561,30 @@ inline void normal_eval_batch(const AsperityNormalLaw& law, span<const double> d
     return force;
 }
 
+/// `asperity_normal_reach`: the overlap (m, <= 0) below which the force of
+/// `law` is zero from any history when the contact separates under
+/// `control` (`ASPERITY_CONTROL_*`), or below which |force| < `rel_force`
+/// x |load pull-off force| for laws with an infinite tail; `rel_force` in
+/// (0, 1).
+[[nodiscard]] inline double normal_reach(const AsperityNormalLaw& law, std::int32_t control,
+                                         double rel_force = 1e-6)
+{
+    double delta = 0.0;
+    check(asperity_normal_reach(&law, control, rel_force, &delta));
+    return delta;
+}
+
+/// `asperity_normal_energy`: the energy (J) of the equilibrium of `law` at
+/// the overlap `delta` (m) reached from `old_state` (NULL: fresh), with
+/// dU/ddelta = P along the branch; 0 for a separated contact.
+[[nodiscard]] inline double normal_energy(const AsperityNormalLaw& law, double delta,
+                                          const AsperityContactState* old_state = nullptr)
+{
+    double energy = 0.0;
+    check(asperity_normal_energy(&law, delta, old_state, &energy));
+    return energy;
+}
+
 /// `asperity_law_length_scale`: a characteristic overlap of `law` (m).
 [[nodiscard]] inline double law_length_scale(const AsperityNormalLaw& law)
 {
@@ -693,6 +717,17 @@ public:
         double force = 0.0;
         check(asperity_table_pull_off_force(get(), control, &force));
         return force;
+    }
+
+    /// `asperity_table_reach`: the overlap (m) below which the table's force
+    /// is zero from any history under `control` (`ASPERITY_CONTROL_*`), or
+    /// below which |force| < `rel_force` x |load pull-off force| with a
+    /// Lennard-Jones far tail; `rel_force` in (0, 1).
+    [[nodiscard]] double reach(std::int32_t control, double rel_force = 1e-6) const
+    {
+        double delta = 0.0;
+        check(asperity_table_reach(get(), control, rel_force, &delta));
+        return delta;
     }
 
     /// `asperity_table_max_error`: the stated maximum relative error (the

@@ -1632,6 +1632,34 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_pull_off_force
 
+    !> The reach of `law` under `control` (`ASPERITY_CONTROL_LOAD` or
+    !  `ASPERITY_CONTROL_DISPLACEMENT`): the overlap δ_r (m, ≤ 0) below which the force is zero
+    !  from any history, or below which |force| < `rel_force` × |load pull-off force| for laws
+    !  with an infinite tail; `rel_force` finite and in (0, 1).
+    function c_asperity_normal_reach(law, control, rel_force, delta) result(r) bind(c, &
+        name="asperity_normal_reach")
+      import
+      implicit none
+      type(asperity_normal_law), intent(in) :: law
+      integer(c_int32_t), value :: control
+      real(c_double), value :: rel_force
+      real(c_double), intent(out) :: delta
+      integer(c_int32_t) :: r
+    end function c_asperity_normal_reach
+
+    !> The energy (J) of the equilibrium of `law` at the overlap `delta` (m) reached from the
+    !  history `old_state` (NULL: fresh), with dU/dδ = P along the branch; 0 when separated.
+    function c_asperity_normal_energy(law, delta, old_state, energy) result(r) bind(c, &
+        name="asperity_normal_energy")
+      import
+      implicit none
+      type(asperity_normal_law), intent(in) :: law
+      real(c_double), value :: delta
+      type(c_ptr), value :: old_state
+      real(c_double), intent(out) :: energy
+      integer(c_int32_t) :: r
+    end function c_asperity_normal_energy
+
     !> A characteristic overlap of `law` (m), for non-dimensionalising host-code tolerances.
     function c_asperity_law_length_scale(law, length) result(r) bind(c, &
         name="asperity_law_length_scale")
@@ -3015,6 +3043,20 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_table_pull_off_force
 
+    !> The reach of `table` under `control`, as `asperity_normal_reach`: the overlap (m) below
+    !  which the force is zero from any history, or below which |force| < `rel_force` ×
+    !  |load pull-off force| with a Lennard-Jones far tail.
+    function c_asperity_table_reach(table, control, rel_force, delta) result(r) bind(c, &
+        name="asperity_table_reach")
+      import
+      implicit none
+      type(c_ptr), value :: table
+      integer(c_int32_t), value :: control
+      real(c_double), value :: rel_force
+      real(c_double), intent(out) :: delta
+      integer(c_int32_t) :: r
+    end function c_asperity_table_reach
+
     !> The stated maximum relative error of `table` (its tolerance) and, if `measured` is not
     !  NULL, the largest error measured at construction.
     function c_asperity_table_max_error(table, max_error, measured) result(r) bind(c, &
@@ -3088,6 +3130,8 @@ module asperity
   public :: c_asperity_normal_eval_batch
   public :: c_asperity_normal_eval_at_load
   public :: c_asperity_pull_off_force
+  public :: c_asperity_normal_reach
+  public :: c_asperity_normal_energy
   public :: c_asperity_law_length_scale
   public :: c_asperity_fidelity_advise
   public :: c_asperity_slider_geometry_new
@@ -3187,6 +3231,7 @@ module asperity
   public :: c_asperity_table_eval_batch
   public :: c_asperity_table_eval_at_load
   public :: c_asperity_table_pull_off_force
+  public :: c_asperity_table_reach
   public :: c_asperity_table_max_error
   public :: c_asperity_table_to_json
   public :: c_asperity_table_from_json
@@ -3215,6 +3260,8 @@ module asperity
   public :: asperity_normal_eval_batch
   public :: asperity_normal_eval_at_load
   public :: asperity_pull_off_force
+  public :: asperity_normal_reach
+  public :: asperity_normal_energy
   public :: asperity_law_length_scale
   public :: asperity_fidelity_advise
   public :: asperity_slider_geometry_new
@@ -3306,6 +3353,7 @@ module asperity
   public :: asperity_table_eval_batch
   public :: asperity_table_eval_at_load
   public :: asperity_table_pull_off_force
+  public :: asperity_table_reach
   public :: asperity_table_max_error
   public :: asperity_table_to_json
   public :: asperity_table_from_json
@@ -3951,6 +3999,31 @@ contains
     force = 0
     call check(c_asperity_pull_off_force(law, control, force), 'asperity_pull_off_force', status)
   end subroutine asperity_pull_off_force
+
+  !> Reach (m, ≤ 0) of `law` under `control` (`ASPERITY_CONTROL_*`): no force
+  !> below it from any history (below `rel_force` × |pull-off| for infinite tails).
+  subroutine asperity_normal_reach(law, control, rel_force, delta, status)
+    type(asperity_normal_law), intent(in) :: law
+    integer(c_int32_t), intent(in) :: control
+    real(c_double), intent(in) :: rel_force
+    real(c_double), intent(out) :: delta
+    integer(c_int32_t), intent(out), optional :: status
+    delta = 0
+    call check(c_asperity_normal_reach(law, control, rel_force, delta), &
+        'asperity_normal_reach', status)
+  end subroutine asperity_normal_reach
+
+  !> Energy (J) of the equilibrium at `delta` (m) from `old_state` (absent: fresh).
+  subroutine asperity_normal_energy(law, delta, energy, old_state, status)
+    type(asperity_normal_law), intent(in) :: law
+    real(c_double), intent(in) :: delta
+    real(c_double), intent(out) :: energy
+    type(asperity_contact_state), intent(in), optional, target :: old_state
+    integer(c_int32_t), intent(out), optional :: status
+    energy = 0
+    call check(c_asperity_normal_energy(law, delta, loc_contact(old_state), energy), &
+        'asperity_normal_energy', status)
+  end subroutine asperity_normal_energy
 
   !> A characteristic overlap of `law` (m).
   subroutine asperity_law_length_scale(law, length, status)
@@ -5350,6 +5423,19 @@ contains
     call check(c_asperity_table_pull_off_force(table%ptr, control, force), &
         'asperity_table_pull_off_force', status)
   end subroutine asperity_table_pull_off_force
+
+  !> The reach (m) of `table` under `control`: no force below it from any
+  !> history (below `rel_force` × |pull-off| with a Lennard-Jones tail).
+  subroutine asperity_table_reach(table, control, rel_force, delta, status)
+    type(asperity_table), intent(in) :: table
+    integer(c_int32_t), intent(in) :: control
+    real(c_double), intent(in) :: rel_force
+    real(c_double), intent(out) :: delta
+    integer(c_int32_t), intent(out), optional :: status
+    delta = 0
+    call check(c_asperity_table_reach(table%ptr, control, rel_force, delta), &
+        'asperity_table_reach', status)
+  end subroutine asperity_table_reach
 
   !> The stated maximum relative error of `table` and, when given, the
   !> largest error measured at construction.

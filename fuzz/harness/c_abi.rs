@@ -1478,6 +1478,25 @@ pub enum Op {
     DynFree {
         model: u8,
     },
+    // Reach and energy (added last: the existing corpus keeps its meaning).
+    Reach {
+        law: u8,
+        control: Sel,
+        rel_force: F,
+        null: bool,
+    },
+    Energy {
+        law: u8,
+        delta: F,
+        old: OldState,
+        null: bool,
+    },
+    TableReach {
+        table: u8,
+        control: Sel,
+        rel_force: F,
+        null: bool,
+    },
 }
 
 /// A dynamic friction model the input made, and for a Prandtl–Tomlinson tip
@@ -3345,6 +3364,47 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 let i = *model as usize % ctx.dynamics.len();
                 asperity_dynamic_friction_free(ctx.dynamics.swap_remove(i).model);
             }
+        }
+        Op::Reach {
+            law: i,
+            control,
+            rel_force,
+            null,
+        } => {
+            let l = law(ctx, *i);
+            let mut d = 0.0;
+            ok(
+                asperity_normal_reach(&l, control.0, rel_force.0, mp(&mut d, *null)),
+                "normal_reach",
+            );
+        }
+        Op::Energy {
+            law: i,
+            delta,
+            old,
+            null: null_out,
+        } => {
+            let l = law(ctx, *i);
+            let (s, old_null) = old_state(ctx, *old);
+            let old_p: *const ContactState = if old_null { null() } else { &s };
+            let mut u = 0.0;
+            ok(
+                asperity_normal_energy(&l, delta.0, old_p, mp(&mut u, *null_out)),
+                "normal_energy",
+            );
+        }
+        Op::TableReach {
+            table,
+            control,
+            rel_force,
+            null,
+        } => {
+            let t = pick(&ctx.tables, *table);
+            let mut d = 0.0;
+            ok(
+                asperity_table_reach(t, control.0, rel_force.0, mp(&mut d, *null)),
+                "table_reach",
+            );
         }
     }
 }

@@ -684,4 +684,102 @@ impl NormalContact for Derjaguin {
     fn length_scale(&self) -> f64 {
         self.range
     }
+
+    /// The rigid sphere has no hysteresis, so `control` does not matter:
+    /// the force at δ is the same on approach and retraction. With the
+    /// pull-off force `P_c = −2πRw` and `P/P_c = e(D)/w`:
+    ///
+    /// * Dugdale: `e(D) = 0` for `D ≥ h₀`, so the reach is `−h₀`
+    ///   (`rel_force` is checked, then ignored);
+    /// * exponential: `e(D)/w = e^{−D/ℓ} < rel_force` for
+    ///   `D > −ℓ ln(rel_force)`, so δ_r = `ℓ ln(rel_force)`;
+    /// * Lennard-Jones: with `y = (z₀/D)² < 1`,
+    ///   `e(D)/w = (4/3)(y − y⁴/4)` increases with y, so
+    ///   `|P| < rel_force·|P_c|` for D beyond the root of
+    ///   `y − y⁴/4 = (3/4)rel_force` (a safeguarded Newton iteration), and
+    ///   δ_r = `z₀ − z₀/√y`.
+    fn reach(&self, _control: Control, rel_force: f64) -> Result<f64> {
+        let rel = super::check_rel_force(rel_force)?;
+        let (parts, f) = self.parts()?;
+        let z = parts.range;
+        let guess = match parts.kind {
+            DUGDALE => return Ok(-z),
+            EXPONENTIAL => z * rel.ln(),
+            _ => {
+                let y = lj_tail_inverse(0.75 * rel);
+                z - z / y.sqrt()
+            }
+        };
+        // Corrected by a few ulps against the force `eval` computes, so the
+        // bound holds for every δ below in rounded arithmetic too.
+        let bound = rel * f;
+        Ok(super::first_staying(guess, |d| {
+            self.eval(d, &ContactState::default())
+                .map_or(true, |(r, _)| r.force.abs() >= bound)
+        }))
+    }
+
+    /// The interaction energy `U(δ) = ∫_{−∞}^{δ} P dδ' = −2πR ∫_D^∞ e(z) dz`
+    /// (J) of the rigid sphere, zero at infinite separation (from
+    /// `P = −2πR e(D)` and `dD/dδ = −1`):
+    ///
+    /// * Lennard-Jones: `U = −2πRw·(4z₀/3)[(z₀/D) − (z₀/D)⁷/28]`, D = z₀ − δ;
+    /// * Dugdale: `U = −πRσ₀(h₀ + δ)²` for `−h₀ ≤ δ ≤ 0`, 0 below;
+    /// * exponential: `U = −2πRwℓ e^{δ/ℓ}`.
+    fn energy(&self, delta: f64, _old: &ContactState) -> Result<f64> {
+        let delta = check_delta(delta)?;
+        let (parts, f) = self.parts()?;
+        let gap = self.gap_at(&parts, delta)?;
+        let z = parts.range;
+        let u = match parts.kind {
+            DUGDALE => {
+                if gap >= z {
+                    0.0
+                } else {
+                    let x = z - gap;
+                    -0.5 * f / z * x * x
+                }
+            }
+            EXPONENTIAL => -f * z * (-gap / z).exp(),
+            _ => {
+                let s = z / gap;
+                let s7 = s * s * s * s * s * s * s;
+                -f * z * (4.0 / 3.0) * (s - s7 / 28.0)
+            }
+        };
+        check::finite_result(u, "delta", delta, "the energy overflows f64")
+    }
+}
+
+/// The root y ∈ (0, 1) of `y − y⁴/4 = c` for `0 < c < 3/4` (the
+/// Lennard-Jones tail `e/w = (4/3)(y − y⁴/4)`, y = (z₀/D)²): Newton from
+/// the lower bound y = c on the concave, increasing left side (the iterates
+/// increase monotonically to the root), bisection as a safeguard near the
+/// double root at y = 1 (c → 3/4).
+pub(crate) fn lj_tail_inverse(c: f64) -> f64 {
+    let (mut lo, mut hi) = (c, 1.0f64);
+    let mut y = c;
+    for _ in 0..200 {
+        let r = y - 0.25 * y * y * y * y - c;
+        if r == 0.0 {
+            return y;
+        }
+        if r < 0.0 {
+            lo = y;
+        } else {
+            hi = y;
+        }
+        let dr = 1.0 - y * y * y;
+        let mut next = y - r / dr;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        if (next - y).abs() <= 2.0 * f64::EPSILON * y || hi - lo <= 2.0 * f64::EPSILON * hi {
+            // The last point below the root: the tail is below the bound
+            // for every smaller y.
+            return lo;
+        }
+        y = next;
+    }
+    lo
 }

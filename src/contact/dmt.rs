@@ -128,4 +128,22 @@ impl NormalContact for Dmt {
             self.radius
         }
     }
+
+    /// 0 under both controls: the force is exactly zero for δ < 0 (the range
+    /// of the surface forces is neglected). `rel_force` is checked, then
+    /// ignored.
+    fn reach(&self, _control: Control, rel_force: f64) -> Result<f64> {
+        super::check_rel_force(rel_force)?;
+        Ok(0.0)
+    }
+
+    /// `U = (8/15) E* R^{1/2} δ^{5/2} − 2πwRδ` for δ ≥ 0 and 0 for δ < 0,
+    /// the integral of the force (continuous at δ = 0, `dU/dδ = P`).
+    fn energy(&self, delta: f64, _old: &ContactState) -> Result<f64> {
+        let delta = check_delta(delta)?;
+        if delta < 0.0 {
+            return Ok(0.0);
+        }
+        Ok(super::hertz_energy(self.radius, self.e_star, delta) - self.adhesive_force() * delta)
+    }
 }

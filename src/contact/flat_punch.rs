@@ -105,4 +105,20 @@ impl NormalContact for FlatPunch {
     fn length_scale(&self) -> f64 {
         self.radius
     }
+
+    /// 0: no adhesion (`rel_force` is checked, then ignored).
+    fn reach(&self, _control: Control, rel_force: f64) -> Result<f64> {
+        super::check_rel_force(rel_force)?;
+        Ok(0.0)
+    }
+
+    /// `U = ½ k δ²` for δ ≥ 0 (k = 2E*a, times C_NS when bonded), 0 otherwise.
+    fn energy(&self, delta: f64, _old: &ContactState) -> Result<f64> {
+        let delta = check_delta(delta)?;
+        Ok(if delta > 0.0 {
+            0.5 * self.stiffness * delta * delta
+        } else {
+            0.0
+        })
+    }
 }

@@ -128,4 +128,18 @@ impl NormalContact for Hertz {
     fn length_scale(&self) -> f64 {
         self.radius
     }
+
+    /// 0: no adhesion, the force vanishes for δ ≤ 0 (`rel_force` is checked,
+    /// then ignored).
+    fn reach(&self, _control: Control, rel_force: f64) -> Result<f64> {
+        super::check_rel_force(rel_force)?;
+        Ok(0.0)
+    }
+
+    /// `U = (8/15) E* R^{1/2} δ^{5/2}` for δ ≥ 0, 0 otherwise (∫P dδ;
+    /// Johnson 1985 §4.2).
+    fn energy(&self, delta: f64, _old: &ContactState) -> Result<f64> {
+        let delta = check_delta(delta)?;
+        Ok(super::hertz_energy(self.radius, self.e_star, delta))
+    }
 }

@@ -366,4 +366,61 @@ impl NormalContact for Jkr {
             self.radius
         }
     }
+
+    /// Displacement control: δ_c = `−(3/4)(π²w²R/E*²)^{1/3}`, where
+    /// [`Jkr::eval`] jumps out (a contact stays down to δ_c inclusive; out of
+    /// contact there is no force until δ ≥ 0).
+    ///
+    /// Load control: the overlap at the load-controlled pull-off
+    /// `P = −(3/2)πwR`, `a = (9πwR²/(8E*))^{1/3}`,
+    /// `δ = a²/R − √(2πwa/E*)`; in the reduced variables of the module
+    /// (`η³ = 3/4` there) `δ = L η(η³ − 1) = −(3/4)^{1/3} L/4`,
+    /// `L = (4π²w²R/E*²)^{1/3}`, i.e. `δ = −(3/4)(π²w²R/(3E*²))^{1/3}`.
+    /// This is where LAMMPS's `pair_style granular … jkr` releases a
+    /// contact (its γ is w/2).
+    ///
+    /// 0 when w = 0. `rel_force` is checked, then ignored.
+    fn reach(&self, control: Control, rel_force: f64) -> Result<f64> {
+        super::check_rel_force(rel_force)?;
+        if !self.adhesive() {
+            return Ok(0.0);
+        }
+        Ok(match control {
+            Control::Displacement => self.critical_delta,
+            Control::Load => -0.25 * 0.75f64.cbrt() * self.delta_scale,
+        })
+    }
+
+    /// Energy of the contact on the branch `eval` ends on: 0 out of contact,
+    /// otherwise elastic energy minus surface energy,
+    ///
+    /// `U = (8/15)E*a⁵/R² − (4/3)E*k a^{7/2}/R + πwa²`, `k = √(2πw/E*)`.
+    ///
+    /// Derivation (Johnson 1985 §5.5; Maugis 2000, *Contact, Adhesion and
+    /// Rupture of Elastic Solids*, Springer, ch. 5): the JKR state at
+    /// contact radius a is the Hertz state at a (`P₁ = 4E*a³/(3R)`,
+    /// `δ₁ = a²/R`, stored energy `(8/15)E*a⁵/R²`) unloaded at fixed a as a
+    /// flat punch of stiffness `2E*a` by `Δδ = δ₁ − δ = k√a`, which removes
+    /// `P₁Δδ − E*aΔδ²`; the elastic energy is
+    /// `U_E = (8/15)E*a⁵/R² − P₁Δδ + E*aΔδ²` (with `E*aΔδ² = 2πwa²`) and the
+    /// total `U = U_E − πa²w`. Since `∂U/∂a|_δ = 0` is the JKR equilibrium
+    /// (Griffith) and `∂U_E/∂δ|_a = P`, `dU/dδ = P` along the branch. In the
+    /// reduced variables (`a = (kR)^{2/3}η²`)
+    /// `U = 2πwR·L·[(8/15)η¹⁰ − (4/3)η⁷ + η⁴/2]`. w = 0 is Hertz's
+    /// `(8/15)E*√R δ^{5/2}`.
+    fn energy(&self, delta: f64, old: &ContactState) -> Result<f64> {
+        let delta = check_delta(delta)?;
+        if !super::stays_in_contact(old, delta, self.critical_delta) {
+            return Ok(0.0);
+        }
+        if !self.adhesive() {
+            return Ok(super::hertz_energy(self.radius, self.e_star, delta));
+        }
+        let eta = reduced_root(delta * self.inv_delta_scale);
+        let e3 = eta * eta * eta;
+        let e4 = e3 * eta;
+        let u = (self.force_scale * self.delta_scale)
+            * (e4 * ((8.0 / 15.0 * e3 - 4.0 / 3.0) * e3 + 0.5));
+        check::finite_result(u, "delta", delta, "the energy overflows f64")
+    }
 }

@@ -478,6 +478,29 @@ impl NormalContact for JkrPowerPunch {
             1.0
         }
     }
+
+    /// Displacement control: δ_c, the minimum of δ(a) where `eval` jumps
+    /// out (`δ_c = L t_c(1/(2d) − 1)`, `t_c = (2d)^{−1/(2d−1)}`). Load
+    /// control: the overlap at the load-controlled pull-off, the fold
+    /// `t_f = (3/(2d))^{1/(2d−1)}` of the load equation, where
+    /// `Δ = t_f^{2d} − t_f = t_f(3/(2d) − 1)`, so `δ = L t_f(3/(2d) − 1)`
+    /// (d = 2: the JKR sphere's `−(3/4)^{1/3}L/4`). Out of contact the punch
+    /// touches only at δ ≥ 0, so a fresh contact has a force from δ = 0 on:
+    /// the load-control reach is `min(δ, 0)` (for d < 3/2 the load pull-off
+    /// lies at δ > 0). 0 when w = 0; `rel_force` is checked, then ignored.
+    fn reach(&self, control: Control, rel_force: f64) -> Result<f64> {
+        super::check_rel_force(rel_force)?;
+        if !self.adhesive() {
+            return Ok(0.0);
+        }
+        Ok(match control {
+            Control::Displacement => self.critical_delta,
+            Control::Load => {
+                let t = self.load_eq().t_fold;
+                (self.delta_scale * t * (1.5 / self.d - 1.0)).min(0.0)
+            }
+        })
+    }
 }
 
 /// Step of the tanh-sinh rule used by [`k_star`] (finest level).

@@ -151,4 +151,26 @@ impl NormalContact for Kendall {
             self.radius
         }
     }
+
+    /// δ_c = `P_c/(2E* C_NS a)` under both controls (the punch separates at
+    /// the same point under load and displacement control; out of contact it
+    /// touches only at δ ≥ 0). 0 when w = 0. `rel_force` is checked, then
+    /// ignored.
+    fn reach(&self, _control: Control, rel_force: f64) -> Result<f64> {
+        super::check_rel_force(rel_force)?;
+        Ok(self.critical_delta)
+    }
+
+    /// In contact `U = ½ k δ² − πa²w` (elastic energy of the flat punch,
+    /// k = 2E* C_NS a, minus the surface energy of the fixed contact area;
+    /// Kendall 1971), `dU/dδ = kδ = P`; 0 out of contact (same branch
+    /// choice as `eval`).
+    fn energy(&self, delta: f64, old: &ContactState) -> Result<f64> {
+        let (r, _) = self.eval(delta, old)?;
+        if r.in_contact == 0 {
+            return Ok(0.0);
+        }
+        Ok(0.5 * self.stiffness * delta * delta
+            - PI * self.radius * self.radius * self.work_of_adhesion)
+    }
 }

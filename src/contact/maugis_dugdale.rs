@@ -845,4 +845,35 @@ impl NormalContact for MaugisDugdale {
     fn length_scale(&self) -> f64 {
         self.delta_scale
     }
+
+    /// The force is exactly zero outside the cohesive zone, so the reach is
+    /// finite (`rel_force` is checked, then ignored):
+    ///
+    /// * a separated (or fresh) contact feels no force while `δ ≤ −h₀`
+    ///   (`h₀ = w/σ₀`): on approach the cohesive zone forms on the
+    ///   non-contact branch (Johnson & Greenwood 1997) as soon as δ > −h₀;
+    /// * displacement control: a contact on the stable piece stays down to
+    ///   the jump-out point, the minimum of `Δ̄` along the path,
+    ///   `δ = Δ̄_min (π²w²R/K²)^{1/3}` (≤ −h₀), below which `eval` returns
+    ///   zero force; the reach is that point, corrected to the double at
+    ///   which `eval`'s rounded comparison switches;
+    /// * load control: the overlap at the load-controlled pull-off (the
+    ///   minimum of `P̄` on the contact branch), or `−h₀` where that is lower
+    ///   (small λ: the cohesive zone reaches further out than the pull-off).
+    fn reach(&self, control: Control, rel_force: f64) -> Result<f64> {
+        super::check_rel_force(rel_force)?;
+        let h0 = self.range();
+        let ds = self.delta_scale;
+        Ok(match control {
+            Control::Displacement => {
+                let turn = self.turn_dh;
+                let guess = (turn * ds - h0).min(-h0);
+                super::first_staying(guess, |d| (d + h0) / ds >= turn)
+            }
+            Control::Load => {
+                let p = contact_core(self.lambda, self.pull_off_load_s);
+                (p.d * ds).min(-h0)
+            }
+        })
+    }
 }

@@ -45,7 +45,7 @@
 //!   [doi:10.1017/CBO9781139171731](https://doi.org/10.1017/CBO9781139171731).
 //! * The original papers are cited in each law's module.
 
-use crate::error::{Error, Result};
+use crate::error::{check, Error, Result};
 
 pub mod batch;
 pub mod curve;
@@ -155,6 +155,129 @@ pub trait NormalContact {
     /// (for example the JKR critical approach for adhesive spheres, the
     /// radius for Hertz).
     fn length_scale(&self) -> f64;
+
+    /// The **reach** δ_r (m, ≤ 0 for every law of the library): the overlap
+    /// below which the law's force is exactly zero from any history state,
+    /// on approach or retraction, when the contact separates under
+    /// `control`:
+    ///
+    /// * [`Control::Displacement`]: the law's own jump-out rule, i.e. what
+    ///   [`NormalContact::eval`] does: for every δ < δ_r `eval(δ, old)`
+    ///   returns force 0 whatever `old` is, and δ_r is the smallest such
+    ///   bound (a contact that has not yet jumped out still has a force at
+    ///   δ_r for the hysteretic laws);
+    /// * [`Control::Load`]: the contact is taken to separate at the
+    ///   load-controlled pull-off point (the minimum of the force), so δ_r is
+    ///   the overlap there, or lower when a fresh contact already feels a
+    ///   force further out on approach (the cohesive zone of Maugis–Dugdale).
+    ///
+    /// Laws whose force never becomes exactly zero (a Lennard-Jones tail, an
+    /// exponential surface law) return the overlap below which
+    /// `|P| < rel_force · |P_c|`, `P_c` the load-controlled pull-off force;
+    /// each law documents the tail formula it inverts. `rel_force` must be
+    /// finite and in (0, 1) (checked for every law, so a caller's bad value
+    /// never passes silently), and is otherwise ignored by laws with a finite
+    /// reach.
+    ///
+    /// A host code (an MD pair style) uses δ_r to size its neighbour cutoff
+    /// (gap `−δ_r` beyond touching) and to release a contact where the law
+    /// lets go.
+    fn reach(&self, control: Control, rel_force: f64) -> Result<f64>;
+
+    /// The energy U (J) of the equilibrium at overlap `delta` (m) reached
+    /// from the history `old` (the same branch choice as
+    /// [`NormalContact::eval`]): the elastic energy stored in the solids
+    /// minus the surface energy of the contact area, such that
+    /// `dU/dδ = P` along the branch the step ends on; 0 for a separated
+    /// contact. Laws without a closed form return [`Error::OutOfDomain`]
+    /// naming `law` (the default).
+    fn energy(&self, delta: f64, old: &ContactState) -> Result<f64> {
+        let _ = (delta, old);
+        Err(no_energy())
+    }
+}
+
+/// The error of [`NormalContact::energy`] for a law without a closed-form
+/// energy.
+#[cold]
+pub(crate) fn no_energy() -> Error {
+    Error::OutOfDomain {
+        name: "law",
+        value: f64::NAN,
+        reason: "no closed-form energy for this law",
+    }
+}
+
+/// Check the `rel_force` argument of [`NormalContact::reach`]: finite and in
+/// (0, 1).
+#[inline]
+pub(crate) fn check_rel_force(rel_force: f64) -> Result<f64> {
+    if rel_force.is_finite() && rel_force > 0.0 && rel_force < 1.0 {
+        Ok(rel_force)
+    } else {
+        Err(Error::InvalidArgument {
+            name: "rel_force",
+            value: rel_force,
+            bound: "finite and in (0, 1)",
+        })
+    }
+}
+
+/// The smallest double δ near `guess` at which `stays(δ)` holds, for a
+/// predicate that is false below some point and true above it (a jump-out
+/// rule evaluated in rounded arithmetic): `guess` corrected by at most 64
+/// ulps each way, so that every δ below the result fails `stays` and the
+/// result itself passes.
+pub(crate) fn first_staying(guess: f64, stays: impl Fn(f64) -> bool) -> f64 {
+    let down = |v: f64| {
+        if v == 0.0 {
+            -f64::from_bits(1)
+        } else if v > 0.0 {
+            f64::from_bits(v.to_bits() - 1)
+        } else {
+            f64::from_bits(v.to_bits() + 1)
+        }
+    };
+    let up = |v: f64| {
+        if v == 0.0 {
+            f64::from_bits(1)
+        } else if v > 0.0 {
+            f64::from_bits(v.to_bits() + 1)
+        } else {
+            f64::from_bits(v.to_bits() - 1)
+        }
+    };
+    let mut d = guess;
+    if !d.is_finite() {
+        return d;
+    }
+    for _ in 0..64 {
+        let lower = down(d);
+        if stays(lower) {
+            d = lower;
+        } else {
+            break;
+        }
+    }
+    for _ in 0..64 {
+        if stays(d) {
+            break;
+        }
+        d = up(d);
+    }
+    d
+}
+
+/// Hertz's elastic energy `U = (8/15) E* √R δ^{5/2}` (J) at overlap δ ≥ 0
+/// (∫P dδ of `P = (4/3)E*√R δ^{3/2}`), written `(2/5)Pδ` with `a = √(Rδ)`.
+#[inline]
+pub(crate) fn hertz_energy(radius: f64, e_star: f64, delta: f64) -> f64 {
+    if delta > 0.0 {
+        let a = (radius * delta).sqrt();
+        8.0 / 15.0 * e_star * a * delta * delta
+    } else {
+        0.0
+    }
 }
 
 /// Any of the library's normal laws, by value. This is what scenes and the C
@@ -266,6 +389,17 @@ impl NormalContact for NormalLaw {
     #[inline]
     fn length_scale(&self) -> f64 {
         dispatch!(self, l => l.length_scale())
+    }
+    /// A reach that is not finite (parameters at the ends of f64) is
+    /// [`Error::OutOfDomain`] naming `law`.
+    fn reach(&self, control: Control, rel_force: f64) -> Result<f64> {
+        let r = dispatch!(self, l => l.reach(control, rel_force))?;
+        check::finite_result(r, "law", r, "its reach overflows f64")
+    }
+    /// An energy that overflows f64 is [`Error::OutOfDomain`] naming `delta`.
+    fn energy(&self, delta: f64, old: &ContactState) -> Result<f64> {
+        let u = dispatch!(self, l => l.energy(delta, old))?;
+        check::finite_result(u, "delta", delta, "the energy overflows f64")
     }
 }
 

@@ -207,4 +207,22 @@ impl NormalContact for PowerPunch {
             1.0
         }
     }
+
+    /// 0: no adhesion (`rel_force` is checked, then ignored).
+    fn reach(&self, _control: Control, rel_force: f64) -> Result<f64> {
+        super::check_rel_force(rel_force)?;
+        Ok(0.0)
+    }
+
+    /// `U = ∫P dδ = C D B² E* d a^{2d+1}/(2d+1) = (d/(2d+1)) P δ` for δ > 0
+    /// (with `dδ = D B d a^{d−1} da`; d = 2 gives Hertz's (8/15)E*√R δ^{5/2}),
+    /// 0 otherwise.
+    fn energy(&self, delta: f64, old: &ContactState) -> Result<f64> {
+        let (r, _) = self.eval(delta, old)?;
+        Ok(if delta > 0.0 {
+            self.d / (2.0 * self.d + 1.0) * r.force * delta
+        } else {
+            0.0
+        })
+    }
 }

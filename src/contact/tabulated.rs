@@ -1775,6 +1775,64 @@ impl NormalContact for TabulatedLaw {
     fn length_scale(&self) -> f64 {
         self.data.approach_scale
     }
+
+    /// The reach from the table's branches and far tail (see
+    /// [`NormalContact::reach`]); `rel_force` is checked always and used
+    /// only with a Lennard-Jones far tail.
+    ///
+    /// * Approach: a fresh contact (branch 0) feels the far tail up to the
+    ///   first knot of branch 0 (the first stable piece of a path that starts
+    ///   stable, as the Lennard-Jones sphere's does) or, without one, up to
+    ///   branch 0's upper end, where it jumps in. A Maugis–Dugdale table's
+    ///   far tail is zero (up to `−h₀`). The Lennard-Jones sphere's far tail
+    ///   is the rigid sphere's (Derjaguin; REFERENCE §6), in reduced units
+    ///   `F = k·g(Δ)`, `g = −(8/3)[h⁻² − h⁻⁸/4]`, `h = 1 − Δ`; with
+    ///   `y = h⁻² < 1`, `|F| = (8/3)|k|(y − y⁴/4)` increases with y, so
+    ///   `|F| < rel_force·|P_c|` below the root of
+    ///   `y − y⁴/4 = 3 rel_force |P_c|/(8|k|)` (Δ = 1 − 1/√y; the whole tail
+    ///   Δ ≤ 0 when the right side is ≥ 3/4). The approach bound is the
+    ///   lowest of these points: where the tail bound falls inside the
+    ///   tabulated path, the path's first knot is taken instead
+    ///   (conservative: the force there may already be below the bound).
+    /// * Displacement control: also below the jump-out point (the lower end)
+    ///   of every branch after the first, so that every history jumps back
+    ///   to branch 0 below δ_r.
+    /// * Load control: also below the overlap of the load-controlled
+    ///   pull-off knot.
+    fn reach(&self, control: Control, rel_force: f64) -> Result<f64> {
+        let rel = super::check_rel_force(rel_force)?;
+        let d = &self.data;
+        let first = &self.branches[0];
+        let mut onset = f64::INFINITY;
+        if self.branches.len() > 1 {
+            onset = onset.min(first.hi_delta);
+        }
+        if let Some(s) = first.segments.first() {
+            onset = onset.min(s.start_delta);
+        }
+        if let FarData::RigidLennardJones { k } = d.far {
+            if k != 0.0 {
+                let c = 3.0 * rel * d.load_pull_off.abs() / (8.0 * k.abs());
+                let x = if c < 0.75 {
+                    let y = super::derjaguin::lj_tail_inverse(c);
+                    1.0 - 1.0 / y.sqrt()
+                } else {
+                    0.0
+                };
+                onset = onset.min(self.overlap(x));
+            }
+        }
+        let r = match control {
+            Control::Displacement => self.branches[1..]
+                .iter()
+                .fold(onset, |m, b| m.min(b.lo_delta)),
+            Control::Load => {
+                let x = self.last_segment().x_of(d.load_pull_off_u);
+                onset.min(self.overlap(x))
+            }
+        };
+        crate::error::check::finite_result(r, "table", r, "its reach is not finite")
+    }
 }
 
 /// The overlap threshold (m) equivalent to a reduced-approach bound `x`:

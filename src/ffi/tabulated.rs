@@ -179,6 +179,28 @@ pub unsafe extern "C" fn asperity_table_pull_off_force(
     })
 }
 
+/// The reach of `table` under `control` (`ASPERITY_CONTROL_LOAD` or
+/// `ASPERITY_CONTROL_DISPLACEMENT`), as `asperity_normal_reach`: the overlap
+/// (m) below which the force is zero from any history (displacement: the
+/// table's jump-out points; load: the load-controlled pull-off), or, with a
+/// Lennard-Jones far tail, below which |force| < `rel_force` ×
+/// |load-controlled pull-off force| (`rel_force` finite and in (0, 1),
+/// checked for every table).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_table_reach(
+    table: *const AsperityTable,
+    control: i32,
+    rel_force: f64,
+    delta: *mut f64,
+) -> i32 {
+    guard(|| {
+        let t = &input(table, "table")?.0;
+        let c = super::contact::control_of(control)?;
+        *output(delta, "delta")? = t.reach(c, rel_force)?;
+        Ok(())
+    })
+}
+
 /// The stated maximum relative error of `table` (its tolerance) and, if
 /// `measured` is not NULL, the largest error measured at construction.
 #[no_mangle]
