@@ -375,7 +375,7 @@ impl NormalContact for Jkr {
     /// `P = −(3/2)πwR`, `a = (9πwR²/(8E*))^{1/3}`,
     /// `δ = a²/R − √(2πwa/E*)`; in the reduced variables of the module
     /// (`η³ = 3/4` there) `δ = L η(η³ − 1) = −(3/4)^{1/3} L/4`,
-    /// `L = (4π²w²R/E*²)^{1/3}`, i.e. `δ = −(3/4)(π²w²R/(3E*²))^{1/3}`.
+    /// `L = (4π²w²R/E*²)^{1/3}`, i.e. `δ = −(1/4)(3π²w²R/E*²)^{1/3}`.
     /// This is where LAMMPS's `pair_style granular … jkr` releases a
     /// contact (its γ is w/2).
     ///
