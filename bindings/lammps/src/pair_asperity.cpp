@@ -520,7 +520,8 @@ void PairAsperity::init_style()
       } else if (t.table) {
         t.reach_max = laws_[law_for(i * (nt + 1) + j, t.table_radius)].reach;
       }
-      t.energy = !t.table;
+      // The library has the contact energy in closed form for these laws.
+      t.energy = t.c.law == LAW_HERTZ || t.c.law == LAW_DMT || t.c.law == LAW_JKR;
       // Hertz and DMT without friction have no history to keep.
       t.history = !(t.c.law == LAW_HERTZ || t.c.law == LAW_DMT) || t.c.friction != FRICTION_NONE;
     }
