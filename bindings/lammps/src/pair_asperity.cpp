@@ -107,7 +107,7 @@ PairAsperity::~PairAsperity()
 void PairAsperity::free_built()
 {
   for (auto &t : tps) {
-    asperity_table_free(t.table);
+    if (t.owns_table) asperity_table_free(t.table);
     asperity_homogenised_friction_free(t.hom);
     asperity_dynamic_friction_free(t.dyn);
     t = TypePair();
@@ -367,6 +367,21 @@ void PairAsperity::build(int tp)
       if (c.law == LAW_TABLE_MD && !std::isnan(c.lambda))
         // Maugis parameter lambda = sigma0 (9R/(2 pi w E*^2))^(1/3) inverted.
         sigma0 = c.lambda * std::cbrt(2.0 * M_PI * c.w * t.e_star * t.e_star / (9.0 * radius));
+      // A table with the same parameters (another type pair of the same
+      // material and radius) is shared, not built again.
+      for (int o = 0; o < tp; o++) {
+        const TypePair &u = tps[o];
+        const Coeff &d = u.c;
+        auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+        if (u.table && u.owns_table && d.law == c.law && u.e_star == t.e_star && u.table_radius == radius &&
+            same(d.w, c.w) && same(d.sigma0, c.sigma0) && same(d.lambda, c.lambda) && same(d.z0, c.z0) &&
+            d.tolerance == c.tolerance && d.grid == c.grid) {
+          t.table = u.table;
+          t.owns_table = false;
+          t.table_radius = radius;
+          return build_friction(tp);
+        }
+      }
       double t0 = platform::walltime();
       if (c.law == LAW_TABLE_MD)
         status = asperity_table_new_maugis_dugdale(radius, t.e_star, c.w, sigma0, c.tolerance, &t.table);
@@ -378,6 +393,15 @@ void PairAsperity::build(int tp)
     }
     t.table_radius = radius;
   }
+  build_friction(tp);
+}
+
+/* The friction model of type pair tp. */
+void PairAsperity::build_friction(int tp)
+{
+  TypePair &t = tps[tp];
+  const Coeff &c = t.c;
+  int status = ASPERITY_OK;
   if (c.friction == FRICTION_HOMOGENISED) {
     std::ifstream in(c.friction_file);
     if (!in) error->all(FLERR, "pair_coeff asperity: cannot read friction law file {}", c.friction_file);

@@ -72,6 +72,7 @@ class PairAsperity : public Pair {
     Coeff c;
     double e_star = 0;                          // Pa
     AsperityTable *table = nullptr;
+    bool owns_table = true;                     // false: shared with another type pair
     double table_radius = 0;                    // R the table was built for (m)
     AsperityHomogenisedFriction *hom = nullptr;
     AsperityDynamicFriction *dyn = nullptr;
@@ -87,6 +88,7 @@ class PairAsperity : public Pair {
   void allocate();
   void free_built();
   void build(int tp);
+  void build_friction(int tp);
   int law_for(int tp, double radius);
   void flush(int eflag);
 
