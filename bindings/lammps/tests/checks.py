@@ -112,7 +112,7 @@ UNITS = {  # one unit in SI: length, pressure, energy/area (force/length), force
 }
 
 
-def two_spheres(law, units="si", pulloff=None):
+def two_spheres(law, units="si", pulloff=None, mixed=False):
     """Force on the fixed sphere at every step of a wiggle, plugin and granular."""
     L, P, W, F, T = UNITS[units]
     R = 1e-5 / L          # sphere radius
@@ -122,16 +122,19 @@ def two_spheres(law, units="si", pulloff=None):
     amp, gap = 4e-7 / L, 1e-7 / L
     dt = 1e-9 / T
     period = 2000 * dt
+    # mixed: a second type of half the radius and another material
+    R2 = R / 2 if mixed else R
     head = f"""units {units}
 atom_style sphere
 atom_modify map array
 boundary f f f
 region box block {-10*R} {10*R} {-10*R} {10*R} {-10*R} {10*R}
-create_box 1 box
+create_box 2 box
 create_atoms 1 single 0 0 0
-create_atoms 1 single {-(2*R+gap)} 0 0
+create_atoms {2 if mixed else 1} single {-(R+R2+gap)} 0 0
 set type 1 diameter {2*R}
-set type 1 density 1.0
+set type 2 diameter {2*R2}
+set type * density 1.0
 comm_modify vel yes
 timestep {dt}
 group mover id 2
@@ -142,10 +145,21 @@ fix 2 mover move wiggle {amp} 0 0 {period}
             "jkr": f"jkr {E} 0.0 {nu} {w/2}"}[law]
     wkey = "" if law == "hertz" else f" w {w}"
     style = "pair_style asperity" + (f" pulloff {pulloff}" if pulloff else "")
+    gtail = " damping velocity tangential linear_history 0 0 0"
+    gran_pc = f"pair_coeff * * {gran}{gtail}\n"
+    asp_pc = f"pair_coeff * * {law} E {E} nu {nu}{wkey}\n"
+    if mixed:
+        # type 2: E 3x, nu 0.2, w 2x; the 1-2 pair is mixed by both styles
+        E2, nu2, w2 = 3 * E, 0.2, 2 * w
+        gran2 = {"hertz": f"hertz/material {E2} 0.0 {nu2}", "dmt": f"dmt {E2} 0.0 {nu2} {w2/2}",
+                 "jkr": f"jkr {E2} 0.0 {nu2} {w2/2}"}[law]
+        gran_pc = f"pair_coeff 1 1 {gran}{gtail}\npair_coeff 2 2 {gran2}{gtail}\n"
+        asp_pc = (f"pair_coeff 1 1 {law} E {E} nu {nu}{wkey}\n"
+                  f"pair_coeff 2 2 {law} E {E2} nu {nu2}" + ("" if law == "hertz" else f" w {w2}") + "\n")
     out = {}
-    for name, pair in (("granular", f"pair_style granular\npair_coeff * * {gran} damping velocity tangential linear_history 0 0 0\n"),
-                       ("asperity", f"plugin load {PLUGIN}\n{style}\npair_coeff * * {law} E {E} nu {nu}{wkey}\n")):
-        tag = f"{name}_{law}_{units}_{pulloff}"
+    for name, pair in (("granular", f"pair_style granular\n{gran_pc}"),
+                       ("asperity", f"plugin load {PLUGIN}\n{style}\n{asp_pc}")):
+        tag = f"{name}_{law}_{units}_{pulloff}_{mixed}"
         run_lmp(tag, head + pair + f"dump 1 all custom 1 dump.{tag} id fx\ndump_modify 1 format float %.17g sort id\n"
                 "compute vir all pressure NULL virial\nthermo_style custom step c_vir\nthermo_modify format float %.17g\nthermo 1\nrun 2000\n")
         out[name] = read_dump(os.path.join(WORK, "dump." + tag))
@@ -153,15 +167,16 @@ fix 2 mover move wiggle {amp} 0 0 {period}
     return out, F
 
 
-def check_two_spheres(law, units="si", pulloff=None):
-    out, F = two_spheres(law, units, pulloff)
+def check_two_spheres(law, units="si", pulloff=None, mixed=False):
+    out, F = two_spheres(law, units, pulloff, mixed)
     g, a = out["granular"], out["asperity"]
     # Scale: the pull-off force for adhesive laws, the largest force for hertz.
     Estar = 1e8 / (2 * (1 - 0.3 ** 2))
+    reff, weff = (1e-5 * 0.5e-5 / 1.5e-5, 0.1 * 2 ** 0.5) if mixed else (5e-6, 0.1)
     if law == "jkr":
-        scale = 1.5 * 3.141592653589793 * 0.1 * 5e-6 / F
+        scale = 1.5 * 3.141592653589793 * weff * reff / F
     elif law == "dmt":
-        scale = 2 * 3.141592653589793 * 0.1 * 5e-6 / F
+        scale = 2 * 3.141592653589793 * weff * reff / F
     else:
         scale = max(abs(v[1][0]) for v in g.values())
     worst, n_contact, extra = 0.0, 0, 0
@@ -177,7 +192,8 @@ def check_two_spheres(law, units="si", pulloff=None):
     gv_, av_ = out["granular_virial"], out["asperity_virial"]
     pscale = max(abs(p) for p in gv_)
     pworst = max((abs(p - q) / pscale for p, q in zip(gv_, av_) if p != 0.0), default=1.0)
-    name = f"two spheres, {law}, units {units}" + (f", pulloff {pulloff}" if pulloff else "")
+    name = f"two spheres, {law}, units {units}" + (f", pulloff {pulloff}" if pulloff else "") + (
+        ", two materials and radii (mixed 1-2 coefficients)" if mixed else "")
     ok = worst <= 1e-8 and n_contact > 200 and pworst <= 1e-8 and len(gv_) == len(av_) == 2001
     detail = (f"{n_contact} steps in contact, max |F - F_lammps| = {worst:.2e} of the force scale, "
               f"virial pressure {pworst:.1e} of its largest")
@@ -195,7 +211,7 @@ def check_two_spheres(law, units="si", pulloff=None):
 
 # ---------------------------------------------------------------- the bed
 
-def bed_input(pair, steps, np_tag, extra="", restart_write=None, restart_read=None, nx=10, cols=""):
+def bed_input(pair, steps, np_tag, extra="", restart_write=None, restart_read=None, nx=10, cols="", newton="off"):
     """Adhesive spheres on a frozen floor layer under gravity, periodic in x, y."""
     d = 1e-5
     n = nx
@@ -205,7 +221,7 @@ atom_style sphere
 atom_modify map array
 boundary p p fm
 comm_modify vel yes
-newton off
+newton {newton}
 """
     if restart_read:
         body += f"read_restart {restart_read}\n"
@@ -263,6 +279,15 @@ def check_bed():
         return max(abs(x - y) / max(abs(x), 1e-300) for x, y in zip(a, b))
     check("bed, granular JKR, 1 vs 2 ranks", rel(ke["gran1"], ke["gran2"]) <= 1e-6,
           f"max relative KE difference {rel(ke['gran1'], ke['gran2']):.2e} over {len(ke['gran1'])} thermo rows (LAMMPS's own law, for reference)")
+    # The global newton setting does not matter to the style (its list is
+    # newton off): the same run with newton on, on 2 ranks, energies too.
+    run_lmp("bed_asp2on", bed_input(plug + jkr, 1000, 2, extra=pr, cols=cols, newton="on"), np=2)
+    on = thermo(os.path.join(WORK, "log.bed_asp2on"))
+    off = thermo(os.path.join(WORK, "log.bed_asp1"))
+    ron = max(rel([r["c_ke"] + r["c_rot"] for r in off], [r["c_ke"] + r["c_rot"] for r in on]),
+              rel([r["PotEng"] for r in off[2:]], [r["PotEng"] for r in on[2:]]))
+    check("bed, asperity, newton on (2 ranks) equals newton off", ron <= 1e-12 and len(on) == len(off),
+          f"max relative difference of KE and pe {ron:.2e}")
     r12 = rel(ke["asp1"], ke["asp2"])
     check("bed, asperity JKR + Maxwell-slip, 1 vs 2 ranks", r12 <= 1e-6 and len(ke["asp1"]) == 11 and contacts > 500 and diss > 0,
           f"max relative KE difference {r12:.2e} over 1000 steps; {contacts:.0f} contacts and {diss:.3e} J dissipated at the end")
@@ -386,6 +411,8 @@ if __name__ == "__main__":
                 check_two_spheres(law)
             check_two_spheres("jkr", pulloff="load")
             check_two_spheres("jkr", units="micro")
+            for law in ("hertz", "jkr"):
+                check_two_spheres(law, mixed=True)
         if want("errors"):
             check_errors()
         if want("energy"):
