@@ -75,7 +75,7 @@ PairAsperity::PairAsperity(LAMMPS *lmp) : Pair(lmp)
   single_enable = 0;
   no_virial_fdotr_compute = 1;
   finitecutflag = 1;
-  restartinfo = 0;
+  restartinfo = 1;
   writedata = 0;
   nextra = 2;
   pvector = new double[nextra];
@@ -126,12 +126,13 @@ void PairAsperity::allocate()
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   ntp = (n + 1) * (n + 1);
   coeffs.assign(ntp, Coeff());
+  coeff_args.assign(ntp, {});
   tps.assign(ntp, TypePair());
   maxrad.assign(n + 1, 0.0);
 }
 
 /* pair_style asperity [pulloff displacement|load] [maxcontacts N] */
-void PairAsperity::settings(int narg, char **arg)
+void PairAsperity::set_units()
 {
   const char *units = update->unit_style;
   if (strcmp(units, "si") == 0) {
@@ -146,6 +147,11 @@ void PairAsperity::settings(int narg, char **arg)
                "works in SI and the plugin converts only these three exactly",
                units);
   }
+}
+
+void PairAsperity::settings(int narg, char **arg)
+{
+  set_units();
   int iarg = 0;
   while (iarg < narg) {
     std::string key = arg[iarg];
@@ -328,6 +334,7 @@ void PairAsperity::coeff(int narg, char **arg)
   for (int i = ilo; i <= ihi; i++)
     for (int j = std::max(jlo, i); j <= jhi; j++) {
       coeffs[i * (atom->ntypes + 1) + j] = c;
+      coeff_args[i * (atom->ntypes + 1) + j].assign(arg + 2, arg + narg);
       setflag[i][j] = 1;
       count++;
     }
@@ -578,6 +585,76 @@ double PairAsperity::init_one(int i, int j)
   double cut = maxrad[i] + maxrad[j] - t.reach_max / len;
   if (t.table && maxrad[i] <= 0) cut = -t.reach_max / len;
   return cut > 0 ? cut : 0.0;
+}
+
+/* Restart: the pair_style settings and, per type pair, the words of its
+   pair_coeff, read back through coeff() (so a restart needs the plugin
+   loaded before read_restart, and nothing else). Tables are rebuilt. */
+void PairAsperity::write_restart_settings(FILE *fp)
+{
+  int v[2] = {pulloff_control, maxcontacts};
+  fwrite(v, sizeof(int), 2, fp);
+}
+
+void PairAsperity::read_restart_settings(FILE *fp)
+{
+  int v[2] = {0, 0};
+  if (comm->me == 0) utils::sfread(FLERR, v, sizeof(int), 2, fp, nullptr, error);
+  MPI_Bcast(v, 2, MPI_INT, 0, world);
+  set_units();
+  pulloff_control = v[0];
+  maxcontacts = v[1];
+}
+
+void PairAsperity::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  int nt = atom->ntypes;
+  for (int i = 1; i <= nt; i++)
+    for (int j = i; j <= nt; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (!setflag[i][j]) continue;
+      const auto &words = coeff_args[i * (nt + 1) + j];
+      int n = (int) words.size();
+      fwrite(&n, sizeof(int), 1, fp);
+      for (const auto &w : words) {
+        int len = (int) w.size() + 1;
+        fwrite(&len, sizeof(int), 1, fp);
+        fwrite(w.c_str(), 1, len, fp);
+      }
+    }
+}
+
+void PairAsperity::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  int nt = atom->ntypes;
+  int me = comm->me;
+  for (int i = 1; i <= nt; i++)
+    for (int j = i; j <= nt; j++) {
+      int flag = 0;
+      if (me == 0) utils::sfread(FLERR, &flag, sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&flag, 1, MPI_INT, 0, world);
+      if (!flag) continue;
+      int n = 0;
+      if (me == 0) utils::sfread(FLERR, &n, sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&n, 1, MPI_INT, 0, world);
+      std::vector<std::string> words(n);
+      for (int k = 0; k < n; k++) {
+        int len = 0;
+        if (me == 0) utils::sfread(FLERR, &len, sizeof(int), 1, fp, nullptr, error);
+        MPI_Bcast(&len, 1, MPI_INT, 0, world);
+        std::vector<char> buf(len);
+        if (me == 0) utils::sfread(FLERR, buf.data(), 1, len, fp, nullptr, error);
+        MPI_Bcast(buf.data(), len, MPI_CHAR, 0, world);
+        words[k] = std::string(buf.data());
+      }
+      std::string si = std::to_string(i), sj = std::to_string(j);
+      std::vector<char *> argv = {(char *) si.c_str(), (char *) sj.c_str()};
+      for (auto &w : words) argv.push_back((char *) w.c_str());
+      coeff((int) argv.size(), argv.data());
+    }
 }
 
 void *PairAsperity::extract(const char *str, int &dim)

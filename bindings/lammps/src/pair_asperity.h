@@ -34,6 +34,10 @@ class PairAsperity : public Pair {
   void init_style() override;
   double init_one(int, int) override;
   void *extract(const char *, int &) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
   double memory_usage() override;
 
   // What pair_coeff said for one type pair (values in SI units).
@@ -86,6 +90,7 @@ class PairAsperity : public Pair {
 
  protected:
   void allocate();
+  void set_units();
   void free_built();
   void build(int tp);
   void build_friction(int tp);
@@ -97,6 +102,7 @@ class PairAsperity : public Pair {
   double len, frc, eng, prs, tim;    // one unit of the unit style in SI
   int ntp;                           // (ntypes+1)^2
   std::vector<Coeff> coeffs;         // by tp = i*(ntypes+1)+j
+  std::vector<std::vector<std::string>> coeff_args;    // pair_coeff words after I J, by tp
   std::vector<TypePair> tps;
   std::vector<Law> laws_;
   std::vector<double> maxrad;        // per type, distance units

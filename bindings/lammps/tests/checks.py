@@ -211,7 +211,7 @@ def check_two_spheres(law, units="si", pulloff=None, mixed=False):
 
 # ---------------------------------------------------------------- the bed
 
-def bed_input(pair, steps, np_tag, extra="", restart_write=None, restart_read=None, nx=10, cols="", newton="off"):
+def bed_input(pair, steps, np_tag, extra="", restart_write=None, restart_read=None, nx=10, cols="", newton="off", pre=""):
     """Adhesive spheres on a frozen floor layer under gravity, periodic in x, y."""
     d = 1e-5
     n = nx
@@ -224,7 +224,7 @@ comm_modify vel yes
 newton {newton}
 """
     if restart_read:
-        body += f"read_restart {restart_read}\n"
+        body += f"{pre}read_restart {restart_read}\n"
     else:
         body += f"""lattice sc {d*1.02}
 region box block 0 {n} 0 {n} 0 {3*n} units lattice
@@ -293,7 +293,9 @@ def check_bed():
           f"max relative KE difference {r12:.2e} over 1000 steps; {contacts:.0f} contacts and {diss:.3e} J dissipated at the end")
     # Split run: 500 steps, write_restart, read_restart in a new LAMMPS, 500 more.
     run_lmp("bed_split_a", bed_input(plug + jkr, 500, 1, restart_write="bed.restart", extra=pr, cols=cols))
-    run_lmp("bed_split_b", bed_input(plug + jkr, 500, 1, restart_read="bed.restart", extra=pr, cols=cols))
+    # (the plugin is loaded before read_restart, which restores its pair
+    # style; pair_style and pair_coeff given again, as users may)
+    run_lmp("bed_split_b", bed_input(jkr, 500, 1, restart_read="bed.restart", extra=pr, cols=cols, pre=plug))
     whole = thermo(os.path.join(WORK, "log.bed_asp1"))
     split = thermo(os.path.join(WORK, "log.bed_split_a"))[:-1] + thermo(os.path.join(WORK, "log.bed_split_b"))
     kw = [r["c_ke"] + r["c_rot"] for r in whole]
@@ -303,6 +305,13 @@ def check_bed():
     rs = max(rs, rel([r["c_pr[2]"] for r in whole], [r["c_pr[2]"] for r in split]))
     check("bed, write_restart/read_restart equals the unbroken run", rs <= 1e-6 and len(ks) == len(kw),
           f"max relative KE difference {rs:.2e} ({len(ks)} rows)")
+    # The restart file carries pair_style and pair_coeff: load the plugin
+    # before read_restart and give nothing else.
+    run_lmp("bed_split_c", bed_input("", 500, 1, restart_read="bed.restart", extra=pr, cols=cols, pre=plug))
+    split_c = thermo(os.path.join(WORK, "log.bed_split_a"))[:-1] + thermo(os.path.join(WORK, "log.bed_split_c"))
+    rc = rel(kw, [r["c_ke"] + r["c_rot"] for r in split_c])
+    check("bed, read_restart alone restores pair_style and pair_coeff", rc <= 1e-6 and len(split_c) == len(kw),
+          f"max relative KE difference {rc:.2e}")
 
 
 # ---------------------------------------------------------------- energy
