@@ -72,7 +72,9 @@ uint64_t bits(double x)
 
 PairAsperity::PairAsperity(LAMMPS *lmp) : Pair(lmp)
 {
-  single_enable = 0;
+  single_enable = 1;
+  single_extra = 2;
+  svector = new double[single_extra];
   no_virial_fdotr_compute = 1;
   finitecutflag = 1;
   restartinfo = 1;
@@ -96,6 +98,7 @@ PairAsperity::PairAsperity(LAMMPS *lmp) : Pair(lmp)
 PairAsperity::~PairAsperity()
 {
   delete[] pvector;
+  delete[] svector;
   free_built();
   if (modify->get_fix_by_id(FIX_ID)) modify->delete_fix(FIX_ID);
   if (allocated) {
@@ -585,6 +588,47 @@ double PairAsperity::init_one(int i, int j)
   double cut = maxrad[i] + maxrad[j] - t.reach_max / len;
   if (t.table && maxrad[i] <= 0) cut = -t.reach_max / len;
   return cut > 0 ? cut : 0.0;
+}
+
+/* One pair's normal force for compute pair/local and the like: the force
+   from its stored history (nothing is written), fforce = F/r, the energy
+   where the library has it; svector = [contact radius (distance units),
+   1 in contact / 0 not]. The tangential force is not included: it is the
+   outcome of the last step's increment, not a function of the positions. */
+double PairAsperity::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,
+                            double /*factor_lj*/, double &fforce)
+{
+  fforce = 0.0;
+  svector[0] = svector[1] = 0.0;
+  int nt = atom->ntypes;
+  int tp = std::min(itype, jtype) * (nt + 1) + std::max(itype, jtype);
+  const double *radius = atom->radius;
+  double radsum = radius[i] + radius[j];
+  double r = sqrt(rsq);
+  if (r == 0.0) return 0.0;
+  double delta = (radsum - r) * len;
+  int li = law_for(tp, radius[i] * radius[j] / radsum * len);
+  const Law &l = laws_[li];
+  if (delta < l.reach) return 0.0;
+  AsperityContactState old{};
+  FixAsperityHistory *h = fix_history;
+  tagint *tag = atom->tag;
+  int k = -1;
+  const double *src = nullptr;
+  if (h && i < atom->nlocal && (k = h->find(i, tag[j])) >= 0) src = &h->values[i][k * nvalues];
+  else if (h && j < atom->nlocal && (k = h->find(j, tag[i])) >= 0) src = &h->values[j][k * nvalues];
+  if (src) std::memcpy(&old, src, sizeof(old));
+  AsperityContactState st;
+  AsperityNormalResponse resp;
+  int status = l.table ? asperity_table_eval(l.table, delta, &old, &st, &resp)
+                       : asperity_normal_eval(&l.law, delta, &old, &st, &resp);
+  if (status != ASPERITY_OK) error->one(FLERR, "pair asperity: {}", library_message());
+  fforce = resp.force / frc / r;
+  svector[0] = resp.contact_radius / len;
+  svector[1] = resp.in_contact;
+  double u = 0.0;
+  if (tps[tp].energy && asperity_normal_energy(&l.law, delta, &old, &u) != ASPERITY_OK) u = 0.0;
+  return u / eng;
 }
 
 /* Restart: the pair_style settings and, per type pair, the words of its

@@ -160,10 +160,17 @@ fix 2 mover move wiggle {amp} 0 0 {period}
     for name, pair in (("granular", f"pair_style granular\n{gran_pc}"),
                        ("asperity", f"plugin load {PLUGIN}\n{style}\n{asp_pc}")):
         tag = f"{name}_{law}_{units}_{pulloff}_{mixed}"
+        local = ("compute pl all pair/local force\ncompute ps all reduce sum c_pl inputs local\n" if name == "asperity" else "")
+        cols = " c_ps" if name == "asperity" else ""
         run_lmp(tag, head + pair + f"dump 1 all custom 1 dump.{tag} id fx\ndump_modify 1 format float %.17g sort id\n"
-                "compute vir all pressure NULL virial\nthermo_style custom step c_vir\nthermo_modify format float %.17g\nthermo 1\nrun 2000\n")
+                f"compute vir all pressure NULL virial\n{local}thermo_style custom step c_vir{cols}\n"
+                "thermo_modify format float %.17g\nthermo 1\nrun 2000\n")
         out[name] = read_dump(os.path.join(WORK, "dump." + tag))
-        out[name + "_virial"] = [r["c_vir"] for r in thermo(os.path.join(WORK, "log." + tag))]
+        rows = thermo(os.path.join(WORK, "log." + tag))
+        out[name + "_virial"] = [r["c_vir"] for r in rows]
+        if name == "asperity":
+            # compute pair/local (the style's single()): the pair's force
+            out["single"] = [r["c_ps"] for r in rows]
     return out, F
 
 
@@ -192,11 +199,13 @@ def check_two_spheres(law, units="si", pulloff=None, mixed=False):
     gv_, av_ = out["granular_virial"], out["asperity_virial"]
     pscale = max(abs(p) for p in gv_)
     pworst = max((abs(p - q) / pscale for p, q in zip(gv_, av_) if p != 0.0), default=1.0)
+    # single() gives the force the step applied (repulsive > 0 = fx of atom 1)
+    sworst = max(abs(out["single"][k] - a[k][1][0]) / scale for k in range(len(out["single"])) if k in a)
     name = f"two spheres, {law}, units {units}" + (f", pulloff {pulloff}" if pulloff else "") + (
         ", two materials and radii (mixed 1-2 coefficients)" if mixed else "")
-    ok = worst <= 1e-8 and n_contact > 200 and pworst <= 1e-8 and len(gv_) == len(av_) == 2001
+    ok = worst <= 1e-8 and n_contact > 200 and pworst <= 1e-8 and len(gv_) == len(av_) == 2001 and sworst <= 1e-12
     detail = (f"{n_contact} steps in contact, max |F - F_lammps| = {worst:.2e} of the force scale, "
-              f"virial pressure {pworst:.1e} of its largest")
+              f"virial pressure {pworst:.1e} of its largest, compute pair/local {sworst:.1e}")
     if law == "jkr":
         # Displacement control holds on past LAMMPS's release (force minimum)
         # down to delta_c; pulloff load lets go where LAMMPS does.
