@@ -66,7 +66,11 @@ fn indent_json_on_measured_fused_silica() {
         .join("..")
         .join("shared/data/indentation/fused_silica_berkovich_agilent_calibration_test001.csv");
     if !file.exists() {
-        println!("SKIPPED: {} not present", file.display());
+        common::skip(format_args!(
+            "{} is not present (the measured data live outside the project, in \
+             ../shared/data next to the crate)",
+            file.display()
+        ));
         return;
     }
     let text = run(&[
@@ -445,7 +449,11 @@ fn profile_errors_are_one_line_messages() {
 fn profile_on_every_measured_profile() {
     let dir = manifest().join("..").join("shared/data/profiles");
     let Ok(entries) = std::fs::read_dir(&dir) else {
-        println!("SKIPPED: {} not present", dir.display());
+        common::skip(format_args!(
+            "{} is not present (the measured data live outside the project, in \
+             ../shared/data next to the crate)",
+            dir.display()
+        ));
         return;
     };
     let mut files: Vec<PathBuf> = entries
@@ -454,7 +462,10 @@ fn profile_on_every_measured_profile() {
         .collect();
     files.sort();
     if files.is_empty() {
-        println!("SKIPPED: no .csv profile in {}", dir.display());
+        common::skip(format_args!(
+            "no .csv profile in {} (the measured profiles of ../shared/data/profiles)",
+            dir.display()
+        ));
         return;
     }
     let out = scratch("measured");

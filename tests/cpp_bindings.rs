@@ -321,7 +321,10 @@ fn built() -> Option<&'static Binaries> {
     match BUILT.get_or_init(build_all) {
         Ok(Built::Ready(b)) => Some(b),
         Ok(Built::Skipped(reason)) => {
-            println!("SKIPPED: no usable C++ compiler ({reason})");
+            common::skip(format_args!(
+                "no usable C++ compiler ({reason}); install one (e.g. `apt-get install g++`) \
+                 or name it with CXX=..."
+            ));
             None
         }
         Err(e) => panic!("building the library and the C++ examples failed: {e}"),

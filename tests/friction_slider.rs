@@ -214,7 +214,11 @@ fn measured_profile_slides() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/profiles");
     let file = dir.join("hommel_hfm1_stylus_linescan.csv");
     if !file.exists() {
-        println!("skipped: {} absent", file.display());
+        common::skip(format_args!(
+            "{} is not present (the measured data live outside the project, in \
+             ../shared/data next to the crate)",
+            file.display()
+        ));
         return;
     }
     let mut s = with_fraction(0.1);

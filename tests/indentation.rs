@@ -1,5 +1,6 @@
 //! Indentation analysis: synthetic curves with known κ, d, E*, H; the measured
-//! curves of `../shared/data/indentation` (skipped with a reason when absent);
+//! curves of `../shared/data/indentation` (skipped with a reason when absent,
+//! a failure under `ASPERITY_REQUIRE_ALL=1`);
 //! hardness numbers; extremes (κ → 0, κ = 1, d → 1, large d, noise, negative
 //! depths, non-monotonic loading, too few points, a single segment).
 
@@ -8,18 +9,23 @@ use asperity::indentation::*;
 use asperity::Error;
 use std::path::PathBuf;
 
+#[allow(dead_code)]
+mod common;
+
 fn data_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/data/indentation")
 }
 
-/// Read a data file, or print why the test is skipped and return None.
+/// Read a data file, or skip (`common::skip`: a printed reason, a failure
+/// under `ASPERITY_REQUIRE_ALL=1`) and return None.
 fn data(name: &str) -> Option<Curve> {
     let p = data_dir().join(name);
     if !p.exists() {
-        println!(
-            "SKIPPED: {} is not present (measured data live outside the project)",
+        common::skip(format_args!(
+            "{} is not present (the measured data live outside the project, in \
+             ../shared/data next to the crate)",
             p.display()
-        );
+        ));
         return None;
     }
     Some(Curve::read(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display())))

@@ -2,7 +2,8 @@
 //! profile, nested levels, the nano-asperities of a square-wave profile
 //! (exact) and of a sine (closed forms), the hand calculation of thesis 4.4
 //! built from numbers, serde, every bad input, and the measured profiles of
-//! `../shared/data/profiles` (skipped with a message when absent; print with
+//! `../shared/data/profiles` (skipped, through `common::skip`, when absent: a
+//! printed reason, and a failure under `ASPERITY_REQUIRE_ALL=1`; print with
 //! `cargo test --test slider_geometry -- --nocapture`).
 //!
 //! Expected values are computed by hand in the comments, never taken from
@@ -13,6 +14,9 @@ use asperity::friction::*;
 use asperity::surface::{Form, MapForm, Profile, Spacing, Topography};
 use std::f64::consts::{PI, SQRT_2};
 use std::path::PathBuf;
+
+#[allow(dead_code)]
+mod common;
 
 const NM: f64 = 1e-9;
 const UM: f64 = 1e-6;
@@ -513,10 +517,11 @@ fn data_dir() -> Option<PathBuf> {
     if d.join("README.md").is_file() {
         Some(d)
     } else {
-        eprintln!(
-            "skipping: measured data not found at {} (the project does not copy it)",
+        common::skip(format_args!(
+            "measured data not found at {} (the project does not copy them: they live \
+             outside it, in ../shared/data next to the crate)",
             d.display()
-        );
+        ));
         None
     }
 }

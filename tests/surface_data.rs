@@ -4,22 +4,27 @@
 //! figures the README quotes, and the parameters printed for the record
 //! (`cargo test --test surface_data -- --nocapture`).
 //!
-//! Skipped, with a message, when the data folder is absent.
+//! Skipped when the data folder is absent (`common::skip`: a printed reason,
+//! and a failure under `ASPERITY_REQUIRE_ALL=1`).
 
 use asperity::error::Error;
 use asperity::surface::*;
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
+#[allow(dead_code)]
+mod common;
+
 fn data_dir() -> Option<PathBuf> {
     let d = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/data/profiles");
     if d.join("README.md").is_file() {
         Some(d)
     } else {
-        eprintln!(
-            "skipping: measured data not found at {} (the project does not copy it)",
+        common::skip(format_args!(
+            "measured data not found at {} (the project does not copy them: they live \
+             outside it, in ../shared/data next to the crate)",
             d.display()
-        );
+        ));
         None
     }
 }

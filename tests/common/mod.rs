@@ -1,7 +1,8 @@
-//! Shared by the integration tests that run programs (`mod common;` in each):
-//! where the crate is, the `asperity` binary the command-line tests run, and
-//! (`native`) the helpers of the tests that compile C, C++ and Fortran
-//! programs against the library.
+//! Shared by the integration tests that run programs or need what the project
+//! does not hold (`mod common;` in each): where the crate is, the `asperity`
+//! binary the command-line tests run, how a check that cannot run here skips
+//! (`skip`), and (`native`) the helpers of the tests that compile C, C++ and
+//! Fortran programs against the library.
 
 pub mod c_errors;
 pub mod counting;
@@ -10,6 +11,20 @@ pub mod native;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::OnceLock;
+
+/// A check that cannot run here (a tool, a host code or `../shared/data`
+/// missing): prints `SKIPPED: {reason}`, so the skip is never a silent pass,
+/// and under `ASPERITY_REQUIRE_ALL=1` (which `.ci/run` sets) fails instead.
+/// The reason says what is missing and how to get it. The caller then returns
+/// without running the check.
+#[allow(dead_code)]
+#[track_caller]
+pub fn skip(reason: impl std::fmt::Display) {
+    println!("SKIPPED: {reason}");
+    if std::env::var_os("ASPERITY_REQUIRE_ALL").is_some_and(|v| v == "1") {
+        panic!("this check could not run ({reason}), and ASPERITY_REQUIRE_ALL=1 forbids skipping");
+    }
+}
 
 /// The crate's root directory.
 #[allow(dead_code)]
