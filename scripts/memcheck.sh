@@ -63,8 +63,17 @@ do_valgrind=1
 do_san=1
 [ "$mode" = --sanitizers-only ] && do_valgrind=0
 [ "$mode" = --valgrind-only ] && do_san=0
+# A tool that is missing skips its runs; under ASPERITY_REQUIRE_ALL=1 (set by
+# .ci/run) it fails the script instead.
+missing() {
+  echo "memcheck: SKIPPED $1"
+  if [ "${ASPERITY_REQUIRE_ALL:-0}" = 1 ]; then
+    echo "memcheck: ASPERITY_REQUIRE_ALL=1 forbids skipping" >&2
+    exit 1
+  fi
+}
 if [ $do_valgrind = 1 ] && ! have valgrind; then
-  echo "memcheck: SKIPPED valgrind runs: valgrind not found (apt-get install valgrind)"
+  missing "valgrind runs: valgrind not found (apt-get install valgrind)"
   do_valgrind=0
 fi
 
@@ -126,7 +135,7 @@ if have "$CC"; then
     build_variants "$name" "$CC" "$src" && add_runs "$name" "$out/$name"
   done
 else
-  echo "memcheck: SKIPPED C examples: no C compiler ($CC)"
+  missing "C examples: no C compiler ($CC)"
 fi
 
 # ---------------------------------------------------------------- C++
@@ -146,7 +155,7 @@ if have "$CXX"; then
     build_variants "$name" "$CXX" ${units[$prog]} && add_runs "$name" "$out/$name"
   done
 else
-  echo "memcheck: SKIPPED C++ examples: no C++ compiler ($CXX)"
+  missing "C++ examples: no C++ compiler ($CXX)"
 fi
 
 # ---------------------------------------------------------------- Fortran
@@ -178,7 +187,7 @@ if have "$FC"; then
     done
   fi
 else
-  echo "memcheck: SKIPPED Fortran examples: no Fortran compiler ($FC)"
+  missing "Fortran examples: no Fortran compiler ($FC)"
 fi
 
 built=$(date +%s)
