@@ -24,9 +24,8 @@
 //! curve on N = 128 radial cells for μ ≤ 1 and 256 above (above μ = 1 the
 //! edge continuation on meshes that move with the contact edge), evaluated
 //! through its table (within 1e-4 relative of the solver on that grid), so
-//! curve errors below about 1e-4·πRw (μ ≤ 1) are not resolved; at μ = 10
-//! the N = 256 curve itself is uncertain by up to 1e-2 πRw near the
-//! pull-off (BENCHMARKS.md §3). The tabulated Lennard-Jones model is that
+//! curve errors below about 1e-4·πRw are not resolved; at μ = 10 and 30
+//! the pull-off itself is known to about 2e-4 πRw (BENCHMARKS.md §3). The tabulated Lennard-Jones model is that
 //! table, so its pull-off error is its grid's. The full Lennard-Jones model
 //! is the solver on the converged grid. **Cost** is measured on this machine when [`assess`] runs (time
 //! per `eval`, median of repeated passes over the path); the choice itself

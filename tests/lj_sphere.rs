@@ -481,7 +481,7 @@ fn curve_at_mu_3_on_256_cells_with_the_edge_continuation() {
     let (ji, jo) = (c.jump_in.unwrap(), c.jump_out.unwrap());
     assert!(ji.approach > jo.approach);
     let p = -c.pull_off_load.force;
-    // Richardson estimate 1.5511 (BENCHMARKS.md §3); N = 256 is within 2e-3.
+    // Richardson estimate 1.55103 (BENCHMARKS.md §3); N = 256 is within 2e-3.
     assert!((p - 1.551).abs() < 2e-3, "{p}");
 }
 

@@ -1,5 +1,5 @@
 //! The flat slider step allocates nothing once its `SliderWork` exists
-//! (DESIGN.md: the hot path does not allocate): a counting global allocator,
+//! (ARCHITECTURE.md: the hot path does not allocate): a counting global allocator,
 //! in its own test binary, around `Slider::step_flat`, `step_flat_in_place`
 //! (with tangents, zero slip, a fresh state seated inside the call) and
 //! `step_flat_block`.

@@ -80,7 +80,7 @@ pub(super) const MARK: f64 = 0.183_102_048_111_638_9;
 /// N = 256 of −1.509508, −1.509443, −1.509019, −1.508411 at μ = 10 and
 /// −1.501963, −1.501438, −1.497187 at μ = 30 for 0.75 w, 0.5 w, 0.3 w and
 /// 0.15 w (the last fails the resolution check at μ = 30), against
-/// about −1.510 and −1.503 converged (BENCHMARKS §3).
+/// about −1.5093 and −1.5016 converged (BENCHMARKS §3).
 const SWITCH: f64 = 0.75;
 
 /// The neck phase continues in its marker once the marker has passed this
