@@ -62,17 +62,21 @@ use std::time::Instant;
 /// The models the advisor weighs, in order of cost per call.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Fidelity {
-    /// [`Dmt`]: Hertz plus a constant adhesive force (≈ 2–3 ns).
+    /// [`Dmt`]: Hertz plus a constant adhesive force, a few arithmetic
+    /// operations per call.
     Dmt,
-    /// [`TabulatedLaw`] of Maugis–Dugdale (≈ 20 ns; built once).
+    /// [`TabulatedLaw`] of Maugis–Dugdale: an interpolation per call in a
+    /// table built once.
     TabulatedMaugisDugdale,
-    /// [`TabulatedLaw`] of the Lennard-Jones sphere (≈ 20 ns; built once).
+    /// [`TabulatedLaw`] of the Lennard-Jones sphere: an interpolation per
+    /// call in a table built once.
     TabulatedLennardJones,
-    /// [`Jkr`]: closed form (≈ 40 ns).
+    /// [`Jkr`]: closed form, the root of a quartic per call.
     Jkr,
-    /// [`MaugisDugdale`]: root finding per call (≈ 0.5–1 µs).
+    /// [`MaugisDugdale`]: root finding per call.
     MaugisDugdale,
-    /// The numerical [`LjSphere`]: a Newton solve per call (≈ ms).
+    /// The numerical [`LjSphere`]: a Newton solve of the discretised
+    /// surface per call, orders of magnitude dearer than the others.
     LennardJones,
 }
 

@@ -1,4 +1,4 @@
-//! Scenes: a serde JSON description of a sliding simulation (issue 6 §5) —
+//! Scenes: a serde JSON description of a sliding simulation —
 //! material, surfaces (files or seeded generators), rods, mechanisms,
 //! loading, sliding distance and step, outputs — validated on load and built
 //! into a [`Slider`].

@@ -1,4 +1,4 @@
-//! Compile-time proof of the library's thread-safety contract (issue 8 §3).
+//! Compile-time proof of the library's thread-safety contract.
 //!
 //! Host codes evaluate one law, one table, one friction law or one slider from
 //! many threads at once. Every handle a user shares is immutable after

@@ -114,8 +114,8 @@ impl NormalContact for Dmt {
 
     /// The overlap at which the Hertz force equals the adhesive force,
     /// `(3πw√R/(2E*))^{2/3}`; the radius when w = 0, or when that power
-    /// under- or overflows f64 (found by tests/sweeps.rs: w = 1e-300 gave a
-    /// length scale of 0).
+    /// under- or overflows f64 (a tiny w such as 1e-300 J/m² would otherwise
+    /// give a length scale of 0).
     fn length_scale(&self) -> f64 {
         if self.work_of_adhesion == 0.0 {
             return self.radius;

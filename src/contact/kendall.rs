@@ -142,7 +142,7 @@ impl NormalContact for Kendall {
     }
 
     /// `|δ_c| = √(2πwa/(E* C_NS))`; the radius when w = 0, or when |δ_c|
-    /// is not a normal number (found by tests/sweeps.rs: E* = 5e-324 gave
+    /// is not a normal number (a subnormal E* such as 5e-324 Pa makes it
     /// +∞).
     fn length_scale(&self) -> f64 {
         if self.critical_delta < 0.0 && (-self.critical_delta).is_normal() {

@@ -349,8 +349,8 @@ impl NormalContact for NormalLaw {
     #[inline]
     fn eval(&self, delta: f64, old: &ContactState) -> Result<(NormalResponse, ContactState)> {
         // The check sits inside each arm so the response is checked in
-        // registers and written once (a check after the merge made every
-        // call re-read the stored tuple with mismatched widths: ~8 ns).
+        // registers and written once; a check after the merge would make
+        // every call re-read the stored tuple with mismatched widths.
         dispatch!(self, l => l.eval(delta, old).and_then(finite_response))
     }
     #[inline]
@@ -370,9 +370,9 @@ impl NormalContact for NormalLaw {
             })
         }
     }
-    /// A pull-off force that overflows f64 (a DMT sphere of radius 1.8e308
-    /// gave −∞ with `Ok`, found by tests/sweeps.rs) is
-    /// [`Error::OutOfDomain`] naming `law`.
+    /// A pull-off force that overflows f64 (a DMT sphere of radius near
+    /// f64::MAX, whose force is −∞) is [`Error::OutOfDomain`] naming `law`,
+    /// not an `Ok` infinity.
     #[inline]
     fn pull_off_force(&self, control: Control) -> Result<f64> {
         let f = dispatch!(self, l => l.pull_off_force(control))?;

@@ -113,9 +113,9 @@ impl PowerPunch {
 
     /// A cone of half-angle `half_angle` (rad, in (0, π/2)): `d = 1`, `B = cot γ`.
     ///
-    /// A half-angle so small that `cot γ` overflows f64 is an error naming
-    /// `half_angle` (found by tests/sweeps.rs: γ = 5e-324 was refused with a
-    /// message naming `b`, which is not an argument of this function).
+    /// A half-angle so small that `cot γ` overflows f64 (γ = 5e-324, say) is
+    /// an error naming `half_angle`, the argument the caller gave, rather
+    /// than `b`, which is not an argument of this function.
     pub fn cone(half_angle: f64, e_star: f64) -> Result<Self> {
         let g = check::half_angle("half_angle", half_angle)?;
         let b = 1.0 / g.tan();
@@ -193,8 +193,7 @@ impl NormalContact for PowerPunch {
     /// `(D B)^{−1/(d−1)}` (m), for d > 1. A cone has no intrinsic length
     /// (`δ/a = D B` is constant); its scale is taken as 1 m, and so is that
     /// of a punch so close to a cone that `(D B)^{−1/(d−1)}` under- or
-    /// overflows f64 (found by tests/sweeps.rs: d = 1 + 2⁻⁵², B = 1477 gave
-    /// 0).
+    /// overflows f64 (d = 1 + 2⁻⁵², B = 1477 would otherwise give 0).
     fn length_scale(&self) -> f64 {
         let l = if self.d > 1.0 {
             self.depth_coefficient.powf(-1.0 / (self.d - 1.0))

@@ -1,7 +1,6 @@
 //! C ABI for `crate::friction::dynamic`: the dynamic friction models of
 //! thesis chapter 5 (LuGre, Maxwell-slip, Prandtl–Tomlinson with one or two
-//! springs, the Burridge–Knopoff chain) as per-increment friction steps
-//! (issue 9 §3).
+//! springs, the Burridge–Knopoff chain) as per-increment friction steps.
 //!
 //! * `AsperityDynamicFriction` (opaque, a boxed [`DynamicModel`]) is built by
 //!   `asperity_dynamic_lugre_new`, `asperity_dynamic_maxwell_slip_new`,

@@ -1,5 +1,5 @@
 //! C ABI for `crate::friction::slider`: the full hierarchical slider as the
-//! friction step per time increment of a surface patch (issue 6 §4 (a)).
+//! friction step per time increment of a surface patch.
 //!
 //! * `AsperitySlider` (opaque, a boxed [`Slider`]) is built from a scene's
 //!   JSON text ([`Scene::from_json`], [`Scene::build`]) or from structs

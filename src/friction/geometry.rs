@@ -7,7 +7,7 @@
 //! nano-asperity is a body (the van der Waals interaction domain, width
 //! w_vdW, height h_vdW) with a tip on top (the chemical interaction domain,
 //! width w_chem, height h_chem); both have square cross-sections, depth equal
-//! to width (thesis lines 6714–6825).
+//! to width (thesis 6.2.1).
 //!
 //! ## Input profiles: mean line and form
 //!
@@ -33,18 +33,18 @@
 //! k = 0..N with N = ⌊(n − 1)·dx / w⌋ (the rods cover the sampled extent; the
 //! remainder shorter than one rod at the end is not used). The height of rod
 //! k is the mean of the profile heights at its two sides, interpolated
-//! linearly between samples (thesis 6-1, lines 6696–6712):
+//! linearly between samples (thesis (6-1), 6.2.1):
 //!
 //! h_k = (Z(x_k) + Z(x_k + w)) / 2.
 //!
 //! With several widths w₀ > w₁ > … each level's rods are nested inside the
 //! previous level's rods: w_{ℓ−1}/w_ℓ must be an integer m_ℓ ≥ 2 (a parent
 //! rod has at least two descendants, the thesis's definition of a
-//! hierarchical model, lines 5376–5383), and level ℓ has N₀·m₁·…·m_ℓ rods
+//! hierarchical model, 5.1), and level ℓ has N₀·m₁·…·m_ℓ rods
 //! that exactly tile the N₀ rods of level 0. All levels' heights are measured
 //! from the same mean line (not from the parent's tip); the model is
 //! multi-level in the thesis's sense (rods of one generation at different
-//! heights, lines 5365–5374).
+//! heights, 5.1).
 //!
 //! ## Nano-asperities (5-15, 6-2, 6-3)
 //!
@@ -58,8 +58,8 @@
 //! model's asperity height Rq (5-15), mean width at the Rq level (5-16,
 //! 5-17) and spacing λ_a = 2π Rq/Δq (5-18, 5-19). The slider keeps them as a
 //! record; they also suggest a rod width (the thesis says the width "should
-//! correspond to some statistical property of the roughness profile", line
-//! 6692).
+//! correspond to some statistical property of the roughness profile",
+//! 6.2.1).
 //!
 //!
 //! # Formulas
@@ -189,7 +189,7 @@ fn check_profile(heights: &[f64], dx: f64, min_len: usize, names: Names) -> Resu
 // ------------------------------------------------------------------ 5.6.1
 
 /// The asperity statistics of one profile used by the single-level
-/// hierarchical model (thesis 5.6.1, lines 6354–6414). Lengths in m, Δq
+/// hierarchical model (thesis 5.6.1). Lengths in m, Δq
 /// dimensionless.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct AsperityStatistics {
@@ -279,7 +279,7 @@ fn statistics_named(heights: &[f64], dx: f64, names: Names) -> Result<AsperitySt
 /// [`Self::h_vdw`] and width [`Self::w_vdw`] (the van der Waals interaction
 /// domain) with a tip of height [`Self::h_chem`] and width [`Self::w_chem`]
 /// (the chemical interaction domain) on top, square cross-sections, equally
-/// spaced at [`Self::spacing`] (thesis 6.2.1, lines 6714–6825).
+/// spaced at [`Self::spacing`] (thesis 6.2.1).
 ///
 /// A plain value: build it from numbers (e.g. the hand calculation of thesis
 /// 4.4, w_vdW = 430 nm, w_chem = 161 nm) or get it from [`nano_analysis`];
@@ -288,7 +288,7 @@ fn statistics_named(heights: &[f64], dx: f64, names: Names) -> Result<AsperitySt
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct NanoAsperities {
     /// Height of the van der Waals slab h_vdW (m), > 0: the RMS of the nano
-    /// profile about its mean line, thesis (5-15) (line 6753).
+    /// profile about its mean line, thesis (5-15) as 6.2.1 applies it.
     #[serde(with = "crate::serde_exact::lenient")]
     pub h_vdw: f64,
     /// Width of the van der Waals interaction domain w_vdW (m), > 0, thesis
@@ -310,7 +310,7 @@ pub struct NanoAsperities {
 
 impl NanoAsperities {
     /// Total height of a nano-asperity, body and tip: h_vdW + h_chem (m)
-    /// (8.2 nm in the thesis's Figure 6-12, line 6801).
+    /// (8.2 nm in the thesis's Figure 6-12).
     #[inline]
     pub fn height(&self) -> f64 {
         self.h_vdw + self.h_chem
@@ -368,10 +368,10 @@ pub struct NanoAnalysis {
 }
 
 /// The nano-asperities of the AFM profile `heights` (m) sampled at `dx` (m)
-/// (thesis 6.2.1, lines 6745–6825). With Z_i the heights from the mean line
+/// (thesis 6.2.1). With Z_i the heights from the mean line
 /// (see the module docs) and each sample standing for one interval dx:
 ///
-/// * h_vdW = Rq = √((1/n) Σ Z_i²), thesis (5-15) (line 6753: the van der
+/// * h_vdW = Rq = √((1/n) Σ Z_i²), thesis (5-15) (6.2.1: the van der
 ///   Waals slab height is the RMS about the mean line).
 /// * n_mean, the number of asperities intersected by the mean line, is
 ///   ⌈c/2⌉ with c the number of mean-line crossings (sign changes of Z > 0
@@ -381,24 +381,24 @@ pub struct NanoAnalysis {
 /// * w_vdW = A_vdW / (h_vdW · n_mean), thesis (6-2), with A_vdW = dx Σ
 ///   clamp(Z_i, 0, h_vdW): "the asperity volume bounded by the mean-line and
 ///   the height of the van der Waals interaction slab … equally distributed
-///   to the number of asperities intersected by the mean-line" (lines
-///   6757–6764; material only: valleys below the mean line add nothing, and
+///   to the number of asperities intersected by the mean-line" (6.2.1;
+///   material only: valleys below the mean line add nothing, and
 ///   above h_vdW only the slab's thickness counts).
-/// * λ = L_nano / n_mean with L_nano = n·dx, thesis (6-3) (lines 6790–6795).
+/// * λ = L_nano / n_mean with L_nano = n·dx, thesis (6-3).
 /// * h_chem = (1/m) Σ_{Z_i > h_vdW} (Z_i − h_vdW), m = #{Z_i > h_vdW}: "the
 ///   arithmetic average of all asperity heights above the height of the van
-///   der Waals interaction slab" (lines 6797–6800), measured from the top of
+///   der Waals interaction slab" (6.2.1), measured from the top of
 ///   the slab, where the tip stands. The total height h_vdW + h_chem is then
 ///   the mean of the heights above the slab, the quantity the thesis quotes
-///   (8.2 nm against a 13.9 nm maximum, line 6801) — the only reading under
+///   (8.2 nm against a 13.9 nm maximum, Figure 6-12) — the only reading under
 ///   which that comparison is made on one scale. Read as heights from the
 ///   mean line, the same number would be the total height, so both readings
 ///   give the same geometry.
 /// * w_chem = A_chem / (h_chem · n_mean) with A_chem = dx Σ max(Z_i −
 ///   h_vdW, 0): "computed in a similar way to the width of the van der Waals
 ///   interaction domain. The volume of the asperities above the height of the
-///   quadratic mean … is equally distributed to all nano-asperities" (lines
-///   6806–6812; "all nano-asperities" are the n_mean of (6-2)). Since A_chem
+///   quadratic mean … is equally distributed to all nano-asperities" (6.2.1;
+///   "all nano-asperities" are the n_mean of (6-2)). Since A_chem
 ///   = m·dx·h_chem, w_chem = m·dx/n_mean, the length above the slab shared
 ///   among the asperities. When no sample lies above h_vdW (a profile whose
 ///   RMS is set by deep valleys), h_chem = w_chem = 0: no chemical tip.
@@ -471,7 +471,7 @@ fn nano_named(heights: &[f64], dx: f64, names: Names) -> Result<NanoAnalysis> {
 /// The number of nano-asperities on one square rod tip of width `tip_width`
 /// (m) at the nano-asperity `spacing` (m): n² with n = ⌊tip_width/spacing⌋,
 /// each nano-asperity owning a cell of side λ on the tip (the thesis's
-/// "equally spaced rectangles on the tip", line 6716, with λ from (6-3); its
+/// "equally spaced rectangles on the tip", 6.2.1, with λ from (6-3); its
 /// hand calculation has 100 on a 13.5 µm tip, i.e. 10 × 10 at 1.35 µm).
 ///
 /// Errors: arguments not finite and > 0; a tip narrower than one spacing

@@ -1,5 +1,5 @@
-//! The homogenised friction law of an FE integration point (issue 6 §4,
-//! granularity (b)): the slider model's results over a range of nominal
+//! The homogenised friction law of an FE integration point: the slider
+//! model's results over a range of nominal
 //! pressures — coefficient of friction μ(p), adhesive holding pressure,
 //! true contact fraction and the split of the dissipation between the
 //! mechanisms — tabulated once, then evaluated per point and per time
@@ -438,8 +438,8 @@ fn constant_point(s: &HomogenisedSample) -> Point {
 #[cold]
 /// `√(x² + y²)`, by `hypot` when the squares are subnormal (|(x, y)| below
 /// 1e-150): there the plain sum loses bits and a unit direction x/|(x, y)|
-/// came out above 1 (|F| > F_lim by 1e-10 at a slip of 8e-158 m, found by
-/// tests/sweeps.rs). Above, the plain form (and its overflow to ∞, which the
+/// comes out above 1 (|F| > F_lim by 1e-10 at a slip of 8e-158 m). Above,
+/// the plain form (and its overflow to ∞, which the
 /// step reports) is kept.
 #[inline(always)]
 fn norm2(x: f64, y: f64) -> f64 {

@@ -26,7 +26,7 @@
 //!   with volume-conserving pile-up (6.2.3), energies (4-15, 4-16), and rods
 //!   coupled through an elastic substrate ([`CoupledRodBed`]).
 //! * [`homogenised`]: the friction step per time increment of an FE
-//!   integration point (issue 6 §4 (b)) — [`HomogenisedFriction`], μ(p),
+//!   integration point — [`HomogenisedFriction`], μ(p),
 //!   adhesion, contact fraction and dissipation shares tabulated over the
 //!   nominal pressure (monotone cubic interpolation), evaluated by a
 //!   regularised Coulomb/Derjaguin return mapping with caller-owned

@@ -4,7 +4,7 @@
 //! # The model
 //!
 //! The slider's micro-asperities are `n` flat-ended rods of square
-//! cross-section A = w² (thesis line 6712: "rods having square
+//! cross-section A = w² (thesis 6.2.1: "rods having square
 //! cross-section"; the chapter-6 loads P = 0.05 σ_y A_n = 25 mN for ten
 //! 13.5 µm rods only come out with A_n = 10·w², so the model is 3-D, not per
 //! unit depth). Each rod is elastic–perfectly plastic (thesis 4.3.1, Figure
@@ -16,7 +16,7 @@
 //!   ([`crate::material::rod_effective_modulus`]; with a rigid
 //!   counter-surface E is the slider's own modulus);
 //! * yield force F_y = σ_y·A (N); past it the force stays F_y ("constant
-//!   stress is assumed even if strain increases", line 4884).
+//!   stress is assumed even if strain increases", 4.3.1).
 //!
 //! The rod length L_i is measured from the face of the bulk to the rod tip.
 //! The thesis calls it "the height of the asperity" H_i but never says where
@@ -122,14 +122,14 @@
 //!
 //! The removed volume A·s_i is given to rods that did not yield in the same
 //! solve ("equally distributed to the closest neighbouring
-//! micro-asperities which did not deform plastically", lines 6903–6906):
+//! micro-asperities which did not deform plastically", 6.2.3):
 //!
 //! * [`PlasticUpdate::NearestNeighbours`] (the thesis): the nearest
 //!   non-yielded rod on each side gets half (all of it when only one side
 //!   has one);
 //! * [`PlasticUpdate::Gaussian`] (the thesis's proposed improvement, "a
 //!   weighting function to define how the dislocated material will be
-//!   reallocated", lines 6916–6919): every non-yielded rod j gets a share
+//!   reallocated", 6.2.3): every non-yielded rod j gets a share
 //!   proportional to exp(−(x_j − x_i)²/(2ℓ²)), ℓ the given width;
 //! * [`PlasticUpdate::ShortenOnly`]: no pile-up (volume not conserved).
 //!
@@ -162,7 +162,7 @@
 //! solves it, and an outer bracketed Newton iteration on b gives fixed load.
 //! This replaces the rigid bulk of (6-9)..(6-16) by an elastic one that
 //! couples the asperities ("the behaviour of the bulk of the body, which will
-//! couple the micro-asperities together", line 5362).
+//! couple the micro-asperities together", 5.1).
 //!
 //! ## Multi-level sliders
 //!

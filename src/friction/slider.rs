@@ -20,9 +20,9 @@
 //!    old state's position, with volume-conserving plasticity (6.2.3);
 //! 3. counts the nano-asperities in contact (thesis 4.2, 4.3.1 and 6.3: "we
 //!    determine which of the nano-asperities are within the adhesive layer
-//!    and thus brought into contact by the van der Waals forces", lines
-//!    7110–7113; "when one micro-asperity deforms plastically, all
-//!    nano-asperities on its tip establish contact", lines 7204–7206);
+//!    and thus brought into contact by the van der Waals forces", 6.3;
+//!    "when one micro-asperity deforms plastically, all nano-asperities on
+//!    its tip establish contact", 6.5.1);
 //! 4. books the increment with [`ledger_step`] (REFERENCE.md §5 "per-step
 //!    ledger"): chemical and van der Waals bonds of the nano-asperities in
 //!    contact (4-6..4-9), plastic work of the rods yielding (4-16) and the
@@ -33,8 +33,8 @@
 //! # The nano-asperities of a rod
 //!
 //! The counter-surface is a profile extruded in depth ("The support surface
-//! is extruded to a depth equal to the width of the micro-asperity", line
-//! 7178), so its height varies along the sliding direction only. A rod of
+//! is extruded to a depth equal to the width of the micro-asperity", 6.5),
+//! so its height varies along the sliding direction only. A rod of
 //! width w (along the track) and depth D carries m_x × m_y nano-asperities,
 //! m_x = ⌊w/λ⌋ columns along the track and m_y = ⌊D/λ⌋ rows in depth (λ the
 //! nano-asperity spacing, (6-3); for a square tip this is
@@ -64,7 +64,7 @@
 //!
 //! "The true contact area was obtained by multiplying the area of the van der
 //! Waals interaction domain of one nano-asperity with the number of
-//! nano-asperities in contact" (lines 7487–7489): A_r = N_c·w_vdW² (m²).
+//! nano-asperities in contact": A_r = N_c·w_vdW² (m²).
 //! That definition is used here; [`SlideStep::adhesion_area_share`] is the
 //! fraction of N_c in contact only thanks to adhesion.
 //!
@@ -73,7 +73,7 @@
 //! Rod i has section w × D (m²). D defaults to w (square rods, the
 //! ten 13.5 µm rods of 6.5); the thesis's fine discretisation keeps the
 //! slider's depth at 13.5 µm while narrowing the rods to 1.5 µm (A_m =
-//! 20.25 µm² = 1.5 µm × 13.5 µm, Table 6-2, line 7400), so give
+//! 20.25 µm² = 1.5 µm × 13.5 µm, Table 6-2), so give
 //! [`SliderOptions::depth`] = 13.5 µm there. The [`RodBed`] takes square
 //! sections, so the bed is built with the equivalent side √(wD) (same area,
 //! hence the same stiffness EA/L and yield force σ_y A).
@@ -86,7 +86,7 @@
 //! and counter-surface moduli ("The slider reflects the mechanical
 //! characteristics for the rubbing pair", 6.2.2).
 //!
-//! # The step per time increment of a host code (issue 6 §4 (a))
+//! # The step per time increment of a host code
 //!
 //! [`Slider::step_flat`] is the whole slider as the friction law of one
 //! surface patch of an FE (or DEM) host: a pure function of the slider, a
@@ -884,8 +884,8 @@ impl Slider {
         )
     }
 
-    /// The homogenised friction law of this slider for FE integration points
-    /// (issue 6 §4 (b)): one run ([`Self::slide`] over `distance` in
+    /// The homogenised friction law of this slider for FE integration
+    /// points: one run ([`Self::slide`] over `distance` in
     /// increments of `step`) at the fixed load p·A_n for each nominal
     /// pressure p of `pressures` (Pa, increasing, ≥ 0, each within the
     /// capacity σ_y·A_rods/A_n), tabulated by [`HomogenisedFriction`] in this
@@ -1276,8 +1276,8 @@ impl Slider {
         flat[h + n..h + 2 * n].copy_from_slice(&st.rod.energy);
     }
 
-    /// The friction step per time increment of a slider patch (issue 6
-    /// §4 (a)): a pure function of the slider, the caller's flat state `old`
+    /// The friction step per time increment of a slider patch: a pure
+    /// function of the slider, the caller's flat state `old`
     /// ([`Self::state_len`] values, layout there; all-zero = fresh) and the
     /// increment `inc`, writing the state after the increment into `new` and
     /// returning the response. `old` is only read, so an increment can be

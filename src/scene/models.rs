@@ -1,4 +1,4 @@
-//! The dynamic friction models a scene chooses (issue 9 §3), and the run of
+//! The dynamic friction models a scene chooses, and the run of
 //! a dynamic model along the energy-dissipation slider's track.
 //!
 //! # In a scene

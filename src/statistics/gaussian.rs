@@ -72,9 +72,9 @@ const RANGE_E: f64 = 45.0;
 
 /// Above this h every tail moment F_q(h), 0 ≤ q ≤ 16, is below the smallest
 /// subnormal (F_q(h) < Γ(q+1) φ(h) / h^{q+1} and φ(40) ≈ 1e-348): the
-/// moments return 0 at once. Without it, h² overflowed for h > 1.3e154 and
-/// the trapezoidal sum ran 2³² terms (fuzzing: a GW surface with σ =
-/// 2.2e-308 m, `fuzz/regressions/c_abi/gw_tiny_sigma_slow`).
+/// moments return 0 at once. Without it, h² overflows for h > 1.3e154 and
+/// the trapezoidal sum runs 2³² terms, which a GW surface with σ near the
+/// smallest normal f64 (2.2e-308 m) reaches.
 const UNDERFLOW_H: f64 = 40.0;
 /// Largest accepted order q of [`tail_moment`].
 pub const MAX_ORDER: f64 = 16.0;

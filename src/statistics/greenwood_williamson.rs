@@ -15,8 +15,8 @@
 //!
 //! For Gaussian heights the integrals are `σ^q F_q(d/σ)` of
 //! [`super::gaussian`]: an evaluation of the load costs one trapezoidal sum
-//! of at most 61 exponentials (≈ 0.1–0.3 µs, relative accuracy 1e-12; see
-//! `benches/statistics.rs`) and allocates nothing.
+//! of at most 61 exponentials (relative accuracy 1e-12; timings in
+//! BENCHMARKS.md §6) and allocates nothing.
 //!
 //! Area and load are nearly proportional (GW 1966): for Gaussian heights the
 //! mean real pressure `P/A = (4/(3π)) E* (σ/R)^{1/2} F_{3/2}/F₁` falls by a

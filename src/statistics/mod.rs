@@ -17,8 +17,9 @@
 //!   Borodich's rescaling of one known solution ((3-27), (3-28)).
 //!
 //! The height integrals live in [`heights`] (distributions and their tail
-//! moments) and [`gaussian`] (the Gaussian `F_q(h)`, accurate to 1e-12 and a
-//! few hundred nanoseconds per evaluation).
+//! moments) and [`gaussian`] (the Gaussian `F_q(h)`, accurate to 1e-12 and
+//! cheap: one short trapezoidal sum per evaluation; timings in
+//! BENCHMARKS.md §6).
 //!
 //! Units: SI. Separations d (m) are heights of the counter-surface's
 //! reference plane in the frame of the summit heights (zero-mean for the

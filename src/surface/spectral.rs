@@ -208,7 +208,7 @@ impl LogBins {
         }
         // A band wider than f64 can express (q_max / q_min = inf, e.g. a
         // subnormal q_min) has no finite bin count: an error, not an
-        // overflowing count (fuzzing, fuzz/regressions/c_abi/).
+        // overflowing count.
         let decades = (q_max / q_min).log10();
         if !decades.is_finite() {
             return Err(Error::InvalidArgument {

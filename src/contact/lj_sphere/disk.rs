@@ -36,13 +36,13 @@
 //! The matrix evaluates each column (one cell edge `c`) over all nodes in
 //! blocks of [`LANES`] nodes, the same number of AGM iterations per block,
 //! so that the compiler vectorises the block (AVX2 with FMA when the CPU
-//! has them, detected at run time). Measured against the `ellip` crate's
-//! scalar `K` and `E` on a banded N = 256 mesh: 2.8–4.5× faster (no
-//! division in the iteration: `c_{n+1} = c_n²/(4a_{n+1})` instead of the
-//! difference was 12 % slower and no more accurate), and the largest
+//! has them, detected at run time). The iteration takes `c_{n+1}` as the
+//! difference `(a_n − b_n)/2`, with no division: `c_n²/(4a_{n+1})` is no
+//! more accurate and adds a division per step. This is faster than the
+//! `ellip` crate's scalar `K` and `E` (BENCHMARKS.md §3), and the largest
 //! relative error of `D` over `r/c ∈ [10⁻⁴, 10⁴]` and within `10⁻¹²` of the
-//! rim is 2.4e-15 against 3.3e-8 (`tests::matches_forty_digit_values` pins
-//! values; BENCHMARKS §3, session 10).
+//! rim is 2.4e-15 against their 3.3e-8 (`tests::matches_forty_digit_values`
+//! pins values).
 //!
 //! # References
 //!

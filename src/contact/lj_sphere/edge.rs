@@ -47,11 +47,11 @@
 //!
 //! The discrete problem at marker `m` depends smoothly on `m` (the nodes,
 //! the matrix and the parabola scale), so its solutions form a smooth
-//! family: no node crosses the marker. (Until session 13 every marker had
-//! its own mesh with a band of fixed width centred on it; the nodes drifted
-//! past the marker, and the family had a corner at each crossing and
-//! wiggles between them: spurious folds of the contact branch, 13 branches
-//! in the μ = 10, N = 512 table, which then did not build; BENCHMARKS §3.)
+//! family: no node crosses the marker. A mesh of its own per marker, with a
+//! band of fixed width centred on it, would let the nodes drift past the
+//! marker, and the family would have a corner at each crossing and wiggles
+//! between them: spurious folds of the contact branch (13 branches in the
+//! μ = 10, N = 512 table, which then does not build; BENCHMARKS §3).
 //!
 //! The edge-phase path derivatives are taken along the family, by 3-point
 //! differences in `m`: smooth, unlike the tangent of one fixed mesh, which
@@ -71,11 +71,10 @@ pub(super) const MARK: f64 = 0.183_102_048_111_638_9;
 ///
 /// In the arclength march the neck spreads over the fixed mesh of the neck
 /// phase by steps of at most `DY_STEP` in a log-gap, so the neck phase's
-/// cost grew with the switch marker: at μ = 10, N = 256 it took 159 of the
-/// curve's 324 states (55 of 220 since the marker continues it,
-/// [`LjSolver::neck_by_marker`]). With the scaled edge family (session 13)
-/// an earlier switch is
-/// cheaper but less accurate, because the neck mesh then spreads its
+/// cost grows with the switch marker (at μ = 10, N = 256 it takes 55 of the
+/// curve's 220 states, the marker continuing it,
+/// [`LjSolver::neck_by_marker`]). An earlier switch is cheaper but less
+/// accurate, because the neck mesh then spreads its
 /// geometric grading over a larger travel of the marker: pull-offs at
 /// N = 256 of −1.509508, −1.509443, −1.509019, −1.508411 at μ = 10 and
 /// −1.501963, −1.501438, −1.497187 at μ = 30 for 0.75 w, 0.5 w, 0.3 w and
@@ -389,9 +388,9 @@ impl LjSolver {
                 vec![(cur, 1.0)]
             };
             // Refresh the factorisation once it needed more than a few GMRES
-            // iterations, as the fixed-mesh march does (an LU costs about
-            // a dozen iterations; without this the edge phase averaged
-            // 30 iterations per marker at μ = 10 and ran 8 % slower).
+            // iterations, as the fixed-mesh march does: an LU costs about a
+            // dozen iterations, while a stale one lets the edge phase spend
+            // some 30 iterations per marker at μ = 10.
             if bw.krylov > KRYLOV_REFRESH {
                 bw.invalidate();
             }

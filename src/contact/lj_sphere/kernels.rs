@@ -12,12 +12,10 @@
 //! columns are combined per pass over the output (`panel`): one load and
 //! one store of `out` per eight columns, the eight column streams summed in
 //! two accumulators with fused multiply–adds. A column-at-a-time update
-//! (as the triangular solves did) loads and stores `out` once per column.
-//! Measured side by side in one process (best of 30 rounds of 2000 products,
-//! order 256, AVX2/FMA, 2026-11-22): f32 4.1–4.2 µs here against 6.7 µs for
-//! faer's `matmul` (1.6×), f64 8.4 µs against 13.6 µs (1.6×). Machines
-//! without AVX2 and FMA, and other architectures, take the plain loops
-//! (same results to rounding).
+//! loads and stores `out` once per column. For these single vectors the
+//! panels are faster than faer's `matmul`, in f32 and in f64 (BENCHMARKS.md
+//! §3). Machines without AVX2 and FMA, and other architectures, take the
+//! plain loops (same results to rounding).
 
 /// Columns combined per pass over the output.
 const PANEL: usize = 8;

@@ -7,24 +7,23 @@
 //! faer's `PartialPivLu::new` allocates and copies the matrix on every
 //! factorisation; at order 257 (N = 256 plus the border) that is a 264 KB
 //! block, which the allocator maps and the kernel zero-fills anew each time
-//! (11 % of a μ = 1 curve in a `perf` profile, all in page faults). Here the
+//! (a visible share of a μ = 1 curve, all in page faults). Here the
 //! bordered Jacobian is assembled straight into the buffer that
 //! [`faer::linalg::lu::partial_pivoting::factor::lu_in_place`] factors, so a
 //! factorisation allocates nothing after the first.
 //!
 //! For the solves, faer's triangular kernels are built for many right-hand
-//! sides and recurse into blocks; for a single vector of order 257 they took
-//! 12–16 µs, against 6–7 µs for a plain column-oriented substitution
-//! compiled for AVX2/FMA (measured side by side in one process, same factors;
-//! results equal to single-precision rounding). Every GMRES iteration of the
+//! sides and recurse into blocks; for a single vector of order 257 a plain
+//! column-oriented substitution compiled for AVX2/FMA is about twice as
+//! fast, with results equal to single-precision rounding. Every GMRES
+//! iteration of the
 //! continuation applies the preconditioner once, so this is on the critical
 //! path of every curve. The substitution below works in blocks of eight
 //! columns: the inverses of the diagonal blocks are formed once per
 //! factorisation, so a block's unknowns are one small dense product instead
 //! of a chain of dependent scalar updates, and the rest of the vector is
-//! updated by eight columns per pass ([`kernels::update`]). Best of 30 rounds
-//! of 2000 solves at order 257 (one process, 2026-11-22): 8.2 µs column by
-//! column, 5.9–6.3 µs blocked (1.3–1.4×).
+//! updated by eight columns per pass ([`kernels::update`]), which is faster
+//! again than column by column (BENCHMARKS.md §3).
 
 use super::kernels;
 use faer::dyn_stack::{MemBuffer, MemStack};

@@ -520,7 +520,7 @@ impl Mesh {
             // step (Newton can cycle around the inflections of the tanh
             // band). The bracket's upper end is L, far away: a rule that
             // asks the bracket itself to halve bisects towards L although
-            // Newton converges from below, and cost 5× the evaluations.
+            // Newton converges from below, at 5× the evaluations.
             let (mut lo, mut hi) = (from, l);
             let (p0, d0) = phi_dphi(from);
             let mut r = from + (target - p0) / d0;

@@ -953,9 +953,9 @@ mod tests {
     /// jump-out: ᾱ(m) on 13 equally spaced markers around its minimum has
     /// third differences far below its second differences, and the node's
     /// central-difference slope matches the secant of nearby values on both
-    /// sides. (The banded meshes of sessions 3–12 had a corner there, where a
-    /// node crossed the marker: dᾱ/dm jumped from −0.004 to +0.40, a third
-    /// difference as large as the second.)
+    /// sides. (A mesh banded about each marker would have a corner there,
+    /// where a node crosses the marker: dᾱ/dm jumps from −0.004 to +0.40, a
+    /// third difference as large as the second.)
     #[test]
     fn edge_family_is_smooth_through_the_jump_out() {
         let sv = LjSphere::from_tabor(10.0).unwrap().solver(256).unwrap();

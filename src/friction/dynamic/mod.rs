@@ -1,4 +1,4 @@
-//! The dynamic friction models of thesis chapter 5 (issue 9), through the
+//! The dynamic friction models of thesis chapter 5, through the
 //! friction step's conventions: a pure function of the model's parameters,
 //! a caller-owned old state and one increment, giving the new state and the
 //! response. Nothing is allocated, old and new states are separate (a host

@@ -1,7 +1,6 @@
 //! Stick-slip detection, and the static and kinetic friction of a run, from
 //! a friction force history (thesis 5.3.1: the Prandtl–Tomlinson model
-//! "reflects the distinction between static and kinetic friction"; issue 9
-//! §1).
+//! "reflects the distinction between static and kinetic friction").
 //!
 //! # Definition
 //!
