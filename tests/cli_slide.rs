@@ -1,8 +1,10 @@
 //! `asperity slide` (feature `cli`), run as a user would: the chapter-6
 //! scene with `--json` (keys and ranges), the contact-area-against-load plot
-//! (a load sweep, against separate library runs; per step otherwise; only
-//! with `--out`), the dynamic friction models a scene chooses (the models'
-//! CSV, plot and summaries), and bad scenes (clear error, exit code != 0).
+//! (a load sweep, against separate library runs; per step at a fixed gap;
+//! only with `--out`, and only with several loads), `--json` without `--out`
+//! writing nothing but the JSON, the dynamic friction models a scene chooses
+//! (the models' CSV, plot and summaries), and bad scenes (clear error, exit
+//! code != 0).
 //! The binary is found or built by `tests/common`.
 
 use std::path::PathBuf;
@@ -53,22 +55,24 @@ fn chapter6_scene_json() {
         .collect();
     assert!(parts.iter().all(|x| *x >= 0.0));
     assert!(parts[0] > parts[1] + parts[2] + parts[3]);
-    for f in [
+    let want = [
         "chapter6_copper.csv",
         "chapter6_copper_cof.svg",
         "chapter6_copper_dissipation.svg",
-        "chapter6_copper_area_load.svg",
-    ] {
+    ];
+    for f in want {
         assert!(out.join(f).is_file(), "{f}");
     }
-    // No load sweep: the true contact area of every step against its load
-    // (one fixed load here, so no line).
-    let a = &v["area_load"];
-    assert_eq!(a["source"], "steps", "{a}");
-    assert_eq!(a["loads"].as_array().map(|l| l.len()), Some(100));
-    assert!(a["r_squared"].is_null(), "one load: R^2 undefined ({a})");
-    let svg = std::fs::read_to_string(out.join("chapter6_copper_area_load.svg")).unwrap();
-    assert!(svg.contains("<svg") && svg.contains("one load"));
+    assert_eq!(
+        v["files"].as_array().map(|f| f.len()),
+        Some(want.len()),
+        "{v}"
+    );
+    // No load sweep and one fixed load: the area against the load would be
+    // one vertical column of points (issue 30 §5), so neither the plot nor
+    // its JSON.
+    assert!(!out.join("chapter6_copper_area_load.svg").exists());
+    assert!(v.get("area_load").is_none(), "{v}");
     let csv = std::fs::read_to_string(out.join("chapter6_copper.csv")).unwrap();
     assert_eq!(csv.lines().count(), 101);
     assert!(csv.starts_with("position_m,"));
@@ -323,23 +327,97 @@ fn load_sweep_plots_area_against_load() {
     );
 }
 
-/// Without `--out` the extra plot (and its slides) are skipped.
+/// `--json` without `--out` (issue 30 §5): the JSON object on stdout and
+/// nothing else, no CSV, no SVG in the current directory (nor the area
+/// plot's slides); with `--out` the same scene writes its files there.
 #[test]
-fn area_load_plot_only_with_out() {
-    let dir = tmp("no-out");
-    let scene = manifest().join("examples/scenes/chapter6_load_sweep.json");
-    let o = Command::new(binary())
-        .current_dir(&dir)
-        .arg("slide")
-        .arg(&scene)
-        .arg("--json")
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert!(v.get("area_load").is_none(), "{v}");
-    assert!(dir.join("chapter6_load_sweep_cof.svg").is_file());
-    assert!(!dir.join("chapter6_load_sweep_area_load.svg").exists());
+fn json_without_out_writes_nothing() {
+    for scene in ["chapter6_load_sweep", "dynamic_models"] {
+        let dir = tmp(&format!("no-out-{scene}"));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = manifest().join(format!("examples/scenes/{scene}.json"));
+        let o = Command::new(binary())
+            .current_dir(&dir)
+            .arg("slide")
+            .arg(&file)
+            .arg("--json")
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert!(v.get("area_load").is_none(), "{v}");
+        assert_eq!(v["files"], serde_json::json!([]), "{v}");
+        let left: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert!(left.is_empty(), "{scene}: --json alone wrote {left:?}");
+        // With `--out` the files are there.
+        let o = Command::new(binary())
+            .current_dir(&dir)
+            .arg("slide")
+            .arg(&file)
+            .args(["--json", "--out", "out"])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        assert!(dir.join(format!("out/{scene}.csv")).is_file());
+        assert!(dir.join(format!("out/{scene}_cof.svg")).is_file());
+    }
+}
+
+/// The area-against-load plot needs several loads (issue 30 §5): a fixed
+/// gap (the load varies along the slide) draws it from the steps; a sweep
+/// of one load, like a fixed load without a sweep, draws nothing.
+#[test]
+fn area_load_plot_only_with_several_loads() {
+    let copper =
+        std::fs::read_to_string(manifest().join("examples/scenes/chapter6_copper.json")).unwrap();
+    let fixed_load = r#""fixed_load": { "load": 0.18 }"#;
+    assert!(copper.contains(fixed_load));
+    let gap = copper.replace(fixed_load, r#""fixed_gap": { "position": 5e-7 }"#);
+    let one = copper.replace(
+        r#""outputs""#,
+        r#""load_sweep": { "fractions": [0.25] }, "outputs""#,
+    );
+    let dir = tmp("several-loads");
+    for (name, text, plotted) in [("gap", &gap, true), ("one_load", &one, false)] {
+        let scene = dir.join(format!("{name}.json"));
+        std::fs::write(&scene, text).unwrap();
+        let out = dir.join(format!("out-{name}"));
+        let _ = std::fs::remove_dir_all(&out);
+        let o = Command::new(binary())
+            .arg("slide")
+            .arg(&scene)
+            .arg("--json")
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let svg = out.join(format!("{name}_area_load.svg"));
+        assert_eq!(svg.is_file(), plotted, "{name}: {v}");
+        assert_eq!(v.get("area_load").is_some(), plotted, "{name}: {v}");
+        assert!(out.join(format!("{name}_cof.svg")).is_file(), "{name}");
+        if plotted {
+            let a = &v["area_load"];
+            assert_eq!(a["source"], "steps", "{a}");
+            let loads: Vec<f64> = a["loads"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .collect();
+            assert_eq!(loads.len(), 100);
+            let (lo, hi) = loads
+                .iter()
+                .fold((f64::INFINITY, 0.0f64), |(l, h), &x| (l.min(x), h.max(x)));
+            assert!(hi > 1.5 * lo, "the load varies at a fixed gap: {lo}..{hi}");
+            assert!(a["r_squared"].as_f64().is_some(), "{a}");
+        }
+    }
 }
 
 fn fails(name: &str, text: &str, expect: &str) {

@@ -4,6 +4,11 @@
 //! the public Rust API like any other user; tables go to stdout (or CSV/JSON
 //! files), plots to SVG. One module per subcommand that needs more than a
 //! few lines (`profile.rs`).
+//!
+//! Everything the command prints to stdout goes through [`outln!`]: when the
+//! reader goes away (`asperity lj … | head -1`) the command exits quietly
+//! with status 0 instead of panicking on the broken pipe, as `println!`
+//! does (issue 30 §5). Plots label their axes through `axis.rs`.
 
 use asperity::contact::{Dmt, Jkr, LjSphere, MaugisDugdale, NormalContact};
 use asperity::{ContactState, Control};
@@ -11,8 +16,39 @@ use clap::{Parser, Subcommand};
 use std::error::Error;
 use std::path::PathBuf;
 
+/// `println!` for the command's output on stdout, through [`out`]: a
+/// reader that went away ends the command quietly (status 0); another
+/// write error ends it with a one-line message (status 1). Never panics.
+macro_rules! outln {
+    () => {
+        $crate::out(format_args!(""))
+    };
+    ($($arg:tt)*) => {
+        $crate::out(format_args!($($arg)*))
+    };
+}
+
+mod axis;
 mod profile;
 mod slide;
+
+/// Writes one line to stdout (see [`outln!`]).
+pub(crate) fn out(args: std::fmt::Arguments<'_>) {
+    use std::io::Write;
+    let mut stdout = std::io::stdout().lock();
+    let written = stdout
+        .write_fmt(args)
+        .and_then(|()| stdout.write_all(b"\n"))
+        .and_then(|()| stdout.flush());
+    if let Err(e) = written {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            // `… | head`: the reader has all it wants.
+            std::process::exit(0);
+        }
+        let _ = writeln!(std::io::stderr(), "asperity: cannot write the output: {e}");
+        std::process::exit(1);
+    }
+}
 
 #[derive(Parser)]
 #[command(
@@ -117,7 +153,9 @@ enum Command {
 
 fn main() {
     if let Err(e) = run(Cli::parse()) {
-        eprintln!("asperity: {e}");
+        use std::io::Write;
+        // Not `eprintln!`: it panics when stderr is gone too.
+        let _ = writeln!(std::io::stderr(), "asperity: {e}");
         std::process::exit(1);
     }
 }
@@ -139,13 +177,15 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
             let len = md.length_scale();
             let mu =
                 asperity::material::tabor_parameter(s.radius, s.work_of_adhesion, s.e_star, s.z0)?;
-            println!(
+            outln!(
                 "Tabor mu = {mu:.5}, Maugis lambda = {:.5}, length scale = {len:.4e} m",
                 md.lambda()
             );
-            println!(
+            outln!(
                 "{:<16} {:>16} {:>16}",
-                "model", "P_c load / N", "P_c displ. / N"
+                "model",
+                "P_c load / N",
+                "P_c displ. / N"
             );
             for (name, l, d) in [
                 (
@@ -164,7 +204,7 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
                     md.pull_off_force(Control::Displacement)?,
                 ),
             ] {
-                println!("{name:<16} {l:>16.6e} {d:>16.6e}");
+                outln!("{name:<16} {l:>16.6e} {d:>16.6e}");
             }
             let lo = -3.0 * len - md.range();
             let hi = 4.0 * len;
@@ -242,29 +282,29 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
             let curve = lj.solver(grid)?.curve()?;
             bar.finish_and_clear();
             let fs = lj.force_scale();
-            println!("Tabor mu = {:.5}, grid {} cells, {} points, {} Newton iterations, max residual {:.2e}",
+            outln!("Tabor mu = {:.5}, grid {} cells, {} points, {} Newton iterations, max residual {:.2e}",
                 lj.tabor(), curve.n_grid, curve.points.len(), curve.iterations, curve.max_residual);
-            println!(
+            outln!(
                 "pull-off (load control)         = {:.6e} N ({:.6} pi w R)",
                 curve.pull_off_load.force * fs,
                 curve.pull_off_load.force
             );
             if let Some(p) = curve.pull_off_displacement {
-                println!(
+                outln!(
                     "pull-off (displacement control) = {:.6e} N ({:.6} pi w R)",
                     p * fs,
                     p
                 );
             }
             if let (Some(i), Some(o)) = (curve.jump_in, curve.jump_out) {
-                println!(
+                outln!(
                     "jump-in at approach {:.5} z0, jump-out at {:.5} z0, hysteresis {:.5e} J",
                     i.approach,
                     o.approach,
                     curve.hysteresis_energy * lj.energy_scale()
                 );
             } else {
-                println!("no jumps: the curve is single-valued (mu below the S-curve onset)");
+                outln!("no jumps: the curve is single-valued (mu below the S-curve onset)");
             }
             let pts: Vec<(f64, f64)> = curve.points.iter().map(|p| (p.approach, p.force)).collect();
             let series = vec![("Lennard-Jones".to_string(), pts)];
@@ -334,14 +374,14 @@ fn indent(
     let r = analyze(&curve, &options)?;
     bar.finish_and_clear();
     if json {
-        println!("{}", r.to_json());
+        outln!("{}", r.to_json());
     } else {
         let gpa = |x: Option<f64>, e: Option<f64>| match (x, e) {
             (Some(x), Some(e)) => format!("{:.3} ± {:.3} GPa", x / 1e9, e / 1e9),
             (Some(x), None) => format!("{:.3} GPa", x / 1e9),
             _ => "n/a (no unloading)".to_string(),
         };
-        println!(
+        outln!(
             "{}: {} points, segments {}",
             file.display(),
             curve.len(),
@@ -351,45 +391,55 @@ fn indent(
                 "detected"
             }
         );
-        println!(
+        outln!(
             "  kappa (hardening index)  {:.4} ± {:.4}  ({:?})",
-            r.kappa, r.kappa_stderr, r.kappa_source
+            r.kappa,
+            r.kappa_stderr,
+            r.kappa_source
         );
-        println!(
+        outln!(
             "  d (bluntness index)      {:.4} ± {:.4}  ({:?})",
-            r.d, r.d_stderr, r.d_source
+            r.d,
+            r.d_stderr,
+            r.d_source
         );
-        println!(
+        outln!(
             "  loading slope            {:.4} ± {:.4}  (R² {:.5})",
-            r.loading.slope, r.loading.slope_stderr, r.loading.r_squared
+            r.loading.slope,
+            r.loading.slope_stderr,
+            r.loading.r_squared
         );
-        println!(
+        outln!(
             "  reduced modulus E_r      {}",
             gpa(r.reduced_modulus, r.reduced_modulus_stderr)
         );
-        println!(
+        outln!(
             "  sample modulus E         {}",
             gpa(r.sample_modulus, r.sample_modulus_stderr)
         );
-        println!(
+        outln!(
             "  hardness H               {}",
             gpa(r.hardness, r.hardness_stderr)
         );
         if r.flag_details.is_empty() {
-            println!("  flags: none");
+            outln!("  flags: none");
         }
         for f in &r.flag_details {
-            println!("  flag {}: {}", f.code, f.message);
+            outln!("  flag {}: {}", f.code, f.message);
         }
     }
     if let Some(p) = svg {
-        let to_nm = |h: f64| h * 1e9;
-        let to_mn = |p: f64| p * 1e3;
+        // Depth and load in the SI prefixes of their largest values (nm and
+        // mN for a Berkovich test, µm and N for a macro-indentation).
+        let (hs, hp) = axis::si_prefix(axis::magnitude(curve.depth.iter().copied()));
+        let (ps, pp) = axis::si_prefix(axis::magnitude(curve.load.iter().copied()));
+        let in_depth_unit = |h: f64| h / hs;
+        let in_load_unit = |p: f64| p / ps;
         let data: Vec<(f64, f64)> = curve
             .depth
             .iter()
             .zip(&curve.load)
-            .map(|(&h, &p)| (to_nm(h), to_mn(p)))
+            .map(|(&h, &p)| (in_depth_unit(h), in_load_unit(p)))
             .collect();
         let mut series: Vec<Series> = vec![("data".into(), data)];
         let lf = &r.loading;
@@ -402,8 +452,8 @@ fn indent(
             .map(|i| {
                 let h = hmax * i as f64 / 100.0;
                 (
-                    to_nm(h),
-                    to_mn(lf.reference_load * (h / lf.reference_depth).powf(lf.slope)),
+                    in_depth_unit(h),
+                    in_load_unit(lf.reference_load * (h / lf.reference_depth).powf(lf.slope)),
                 )
             })
             .collect();
@@ -414,14 +464,20 @@ fn indent(
                 .map(|i| {
                     let h = u.final_depth + (op.peak_depth - u.final_depth) * i as f64 / 100.0;
                     (
-                        to_nm(h),
-                        to_mn(u.prefactor * (h - u.final_depth).max(0.0).powf(u.exponent)),
+                        in_depth_unit(h),
+                        in_load_unit(u.prefactor * (h - u.final_depth).max(0.0).powf(u.exponent)),
                     )
                 })
                 .collect();
             series.push((format!("unloading fit, m = {:.3}", u.exponent), fit));
         }
-        plot(&p, "Indentation", "depth / nm", "load / mN", &series)?;
+        plot(
+            &p,
+            "Indentation",
+            &format!("depth / {hp}m"),
+            &format!("load / {pp}N"),
+            &series,
+        )?;
     }
     Ok(())
 }
@@ -467,7 +523,33 @@ fn plot(
             y1 = y1.max(b);
         }
     }
-    let pad = 0.05 * (y1 - y0).max(1e-30);
+    if !(x1 > x0) {
+        // One abscissa (or none): an axis of some width around it.
+        let w = if x0.is_finite() && x0 != 0.0 {
+            0.1 * x0.abs()
+        } else {
+            1.0
+        };
+        (x0, x1) = if x0.is_finite() {
+            (x0 - w, x0 + w)
+        } else {
+            (0.0, 1.0)
+        };
+    }
+    if !(y1 > y0) {
+        let w = if y0.is_finite() && y0 != 0.0 {
+            0.1 * y0.abs()
+        } else {
+            1.0
+        };
+        (y0, y1) = if y0.is_finite() {
+            (y0 - w, y0 + w)
+        } else {
+            (0.0, 1.0)
+        };
+    }
+    let pad = 0.05 * (y1 - y0);
+    let (fx, fy) = (axis::ticks(x0, x1), axis::ticks(y0 - pad, y1 + pad));
     let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
     root.fill(&WHITE)?;
     let mut chart = ChartBuilder::on(&root)
@@ -476,7 +558,13 @@ fn plot(
         .x_label_area_size(45)
         .y_label_area_size(65)
         .build_cartesian_2d(x0..x1, (y0 - pad)..(y1 + pad))?;
-    chart.configure_mesh().x_desc(x).y_desc(y).draw()?;
+    chart
+        .configure_mesh()
+        .x_desc(x)
+        .y_desc(y)
+        .x_label_formatter(&*fx)
+        .y_label_formatter(&*fy)
+        .draw()?;
     for (i, (name, pts)) in series.iter().enumerate() {
         let color = Palette99::pick(i).to_rgba();
         chart

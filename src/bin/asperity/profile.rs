@@ -18,6 +18,8 @@ use serde_json::{json, Value};
 use std::error::Error;
 use std::path::{Path, PathBuf};
 
+use crate::axis::ticks;
+
 type Res<T> = Result<T, Box<dyn Error>>;
 
 /// Form removed by least squares before the analysis.
@@ -235,7 +237,7 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
         if let Value::Object(extra) = extra {
             o.extend(extra);
         }
-        println!("{v}");
+        outln!("{v}");
         return Ok(());
     }
     let (hs, hu) = length_unit(p.rt);
@@ -247,7 +249,7 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
     };
     let num = |v: f64| (sig(v, 4), "");
     let sci = |v: f64, u: &'static str| (format!("{v:.4e}"), u);
-    println!(
+    outln!(
         "{}: line scan, {} points, dx = {}, length {}{}",
         args.file.display(),
         a.raw.len(),
@@ -270,8 +272,8 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
         ),
         None => "no cut-off".to_string(),
     };
-    println!("detrend {}, {filter}", args.detrend.name());
-    println!(
+    outln!("detrend {}, {filter}", args.detrend.name());
+    outln!(
         "evaluation length {} = {} sampling length{} of {}",
         length_text(p.sampling_length * p.sampling_lengths as f64),
         p.sampling_lengths,
@@ -322,13 +324,17 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
     ];
     print_rows(&rows);
     if let Some(f) = &a.fit {
-        println!(
+        outln!(
             "PSD power law G = A q^{:.4} over q = {:.3e} … {:.3e} rad/m ({} bins, r² = {:.4})",
-            f.slope, f.q_min, f.q_max, f.bins, f.r_squared
+            f.slope,
+            f.q_min,
+            f.q_max,
+            f.bins,
+            f.r_squared
         );
     }
     for p in &plots {
-        println!("wrote {p}");
+        outln!("wrote {p}");
     }
     Ok(())
 }
@@ -379,10 +385,10 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
         if let Value::Object(extra) = extra {
             o.extend(extra);
         }
-        println!("{v}");
+        outln!("{v}");
         return Ok(());
     }
-    println!(
+    outln!(
         "{}: height map, {} × {} points, dx = {}, dy = {}, {} × {}",
         args.file.display(),
         t.nx(),
@@ -392,7 +398,7 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
         length_text(t.nx() as f64 * t.dx()),
         length_text(t.ny() as f64 * t.dy())
     );
-    println!(
+    outln!(
         "detrend {}{}",
         args.detrend.name(),
         match args.detrend {
@@ -416,14 +422,14 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
     ];
     print_rows(&rows);
     for p in &plots {
-        println!("wrote {p}");
+        outln!("wrote {p}");
     }
     Ok(())
 }
 
 fn print_rows(rows: &[(&str, (String, &str), &str)]) {
     for (name, (value, unit), what) in rows {
-        println!("  {name:<22} {value:>12} {unit:<4} {what}");
+        outln!("  {name:<22} {value:>12} {unit:<4} {what}");
     }
 }
 
@@ -577,6 +583,7 @@ fn linear_chart(
 ) -> Res<()> {
     let (x0, x1) = range(lines, true, 0.0);
     let (y0, y1) = range(lines, false, 0.05);
+    let (fx, fy) = (ticks(x0, x1), ticks(y0, y1));
     let mut chart = ChartBuilder::on(area)
         .caption(caption, ("sans-serif", 20))
         .margin(15)
@@ -587,6 +594,8 @@ fn linear_chart(
         .configure_mesh()
         .x_desc(x_desc)
         .y_desc(y_desc)
+        .x_label_formatter(&*fx)
+        .y_label_formatter(&*fy)
         .draw()?;
     draw_lines(&mut chart, lines)
 }

@@ -2,13 +2,23 @@
 //! (issue 6 §5), writes the per-step CSV and SVG plots, prints a summary or,
 //! with `--json`, exactly one JSON object (issue 6 §9).
 //!
+//! Where the files go: into `--out DIR`; without `--out`, into the current
+//! directory, except with `--json`, which then writes nothing but the JSON
+//! object to stdout (its `files` is empty; issue 30 §5).
+//!
 //! With `--out DIR` (and SVG outputs on) it also plots the true contact area
 //! against the load (thesis 6.5.3, Figure 6-60) with its least-squares line
 //! and R²: the mean true contact area of one slide per load of the scene's
 //! `load_sweep` when it has one, otherwise the true contact area of every
 //! increment against its normal load (meaningful at a fixed gap, where the
-//! load varies; at a fixed load all points share one load and R² is
-//! undefined).
+//! load varies). When all those points share one load (a fixed-load scene
+//! without a sweep, or a sweep of one load) the plot would be one vertical
+//! column of points with no line: neither the plot nor the JSON's
+//! `area_load` is written.
+//!
+//! Every axis is labelled in an SI prefix of its quantity (position in µm,
+//! energy in nJ, …, chosen from the values) with distinct tick labels
+//! (`axis.rs`).
 //!
 //! When the scene chooses dynamic friction models (`friction_models`, with
 //! `sliding.velocity`; see `asperity::scene::models`), each runs along the
@@ -42,6 +52,8 @@
 
 use asperity::friction::{Loading, SlideRun, SlideStep, Slider};
 use asperity::scene::{Scene, TrackRun};
+
+use crate::axis;
 use plotters::prelude::*;
 use std::error::Error;
 use std::io::IsTerminal;
@@ -59,7 +71,8 @@ pub struct SlideArgs {
     /// Print one JSON object with the summary (no progress bar, no table).
     #[arg(long)]
     json: bool,
-    /// Directory for the CSV and SVG outputs (default: the current one).
+    /// Directory for the CSV and SVG outputs (default: the current one;
+    /// with `--json` and no `--out`, no files are written).
     #[arg(long)]
     out: Option<PathBuf>,
 }
@@ -88,11 +101,14 @@ pub fn run(args: &SlideArgs) -> Res<()> {
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "slide".into());
     let mut written = vec![];
-    if scene.outputs.csv || scene.outputs.svg {
+    // `--json` alone: the JSON object on stdout and nothing else.
+    let files = !(args.json && args.out.is_none());
+    let (csv, svg) = (files && scene.outputs.csv, files && scene.outputs.svg);
+    if csv || svg {
         std::fs::create_dir_all(&out)
             .map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     }
-    if scene.outputs.csv {
+    if csv {
         let p = out.join(format!("{stem}.csv"));
         write_csv(&p, &run.steps)?;
         written.push(p);
@@ -102,7 +118,7 @@ pub fn run(args: &SlideArgs) -> Res<()> {
             written.push(p);
         }
     }
-    if scene.outputs.svg {
+    if svg {
         let p = out.join(format!("{stem}_cof.svg"));
         cof_plot(&p, &run.steps)?;
         written.push(p);
@@ -115,36 +131,40 @@ pub fn run(args: &SlideArgs) -> Res<()> {
             written.push(p);
         }
     }
-    let area_load = if scene.outputs.svg && args.out.is_some() {
+    let area_load = if svg && args.out.is_some() {
         let data = area_load_data(&scene, &slider, &run)?;
-        let p = out.join(format!("{stem}_area_load.svg"));
-        area_load_plot(&p, &data)?;
-        written.push(p);
-        Some(data)
+        if several_loads(&data.points) {
+            let p = out.join(format!("{stem}_area_load.svg"));
+            area_load_plot(&p, &data)?;
+            written.push(p);
+            Some(data)
+        } else {
+            None
+        }
     } else {
         None
     };
     if args.json {
-        println!(
+        outln!(
             "{}",
             summary_json(&scene, &run, &tracks, &written, area_load.as_ref())
         );
     } else {
         let s = &run.summary;
-        println!("steps                     {}", s.steps);
-        println!("normal load               {:.6e} N", s.normal_load);
-        println!("mean COF                  {:.4}", s.mean_cof);
-        println!("mean friction force       {:.6e} N", s.mean_friction_force);
-        println!(
+        outln!("steps                     {}", s.steps);
+        outln!("normal load               {:.6e} N", s.normal_load);
+        outln!("mean COF                  {:.4}", s.mean_cof);
+        outln!("mean friction force       {:.6e} N", s.mean_friction_force);
+        outln!(
             "mean true contact area    {:.6e} m^2",
             s.mean_true_contact_area
         );
-        println!(
+        outln!(
             "adhesion share of area    {:.2} %",
             100.0 * s.mean_adhesion_area_share
         );
         let d = s.dissipation;
-        println!(
+        outln!(
             "dissipation (J)           chemical {:.4e}, van der Waals {:.4e}, elastic {:.4e}, plastic {:.4e}",
             d.chemical, d.van_der_waals, d.elastic, d.plastic
         );
@@ -152,7 +172,7 @@ pub fn run(args: &SlideArgs) -> Res<()> {
             print_models(&scene, &run, &tracks);
         }
         for p in &written {
-            println!("wrote {}", p.display());
+            outln!("wrote {}", p.display());
         }
     }
     Ok(())
@@ -161,7 +181,7 @@ pub fn run(args: &SlideArgs) -> Res<()> {
 /// The table of the dynamic models next to the energy-dissipation model.
 fn print_models(scene: &Scene, run: &SlideRun, tracks: &[TrackRun]) {
     let v = scene.sliding.velocity.unwrap_or(f64::NAN);
-    println!("friction models at {v:.4e} m/s along the same track:");
+    outln!("friction models at {v:.4e} m/s along the same track:");
     let width = scene
         .friction_models
         .iter()
@@ -169,13 +189,17 @@ fn print_models(scene: &Scene, run: &SlideRun, tracks: &[TrackRun]) {
         .chain([ENERGY_DISSIPATION.len()])
         .max()
         .unwrap_or(0);
-    println!(
+    outln!(
         "  {:width$}  {:>9}  {:>10}  {:>15}  {:>17}",
-        "model", "mean COF", "static COF", "dissipation (J)", "stick-slip events"
+        "model",
+        "mean COF",
+        "static COF",
+        "dissipation (J)",
+        "stick-slip events"
     );
     let s = &run.summary;
     let static_cof = run.steps.iter().map(|r| r.cof).fold(0.0, f64::max);
-    println!(
+    outln!(
         "  {:width$}  {:>9.4}  {:>10.4}  {:>15.4e}  {:>17}",
         ENERGY_DISSIPATION,
         s.mean_cof,
@@ -185,9 +209,13 @@ fn print_models(scene: &Scene, run: &SlideRun, tracks: &[TrackRun]) {
     );
     for (spec, t) in scene.friction_models.iter().zip(tracks) {
         let m = &t.summary;
-        println!(
+        outln!(
             "  {:width$}  {:>9.4}  {:>10.4}  {:>15.4e}  {:>17}",
-            spec.name, m.mean_cof, m.static_cof, m.dissipation, m.stick_slip_events
+            spec.name,
+            m.mean_cof,
+            m.static_cof,
+            m.dissipation,
+            m.stick_slip_events
         );
     }
 }
@@ -223,7 +251,7 @@ fn models_csv(path: &Path, scene: &Scene, run: &SlideRun, tracks: &[TrackRun]) -
 }
 
 fn models_plot(path: &Path, scene: &Scene, run: &SlideRun, tracks: &[TrackRun]) -> Res<()> {
-    let x: Vec<f64> = run.steps.iter().map(|r| r.position * 1e6).collect();
+    let x: Vec<f64> = run.steps.iter().map(|r| r.position).collect();
     let mut series: Vec<Series<'_>> = vec![(
         ENERGY_DISSIPATION,
         x.iter().zip(&run.steps).map(|(&x, r)| (x, r.cof)).collect(),
@@ -242,6 +270,7 @@ fn models_plot(path: &Path, scene: &Scene, run: &SlideRun, tracks: &[TrackRun]) 
         path,
         "Coefficient of friction: energy dissipation and dynamic models",
         "COF",
+        "",
         &series,
     )
 }
@@ -358,6 +387,14 @@ struct AreaLoad {
     fit: Fit,
 }
 
+/// Whether `points` (load, area) hold more than one load: loads that differ
+/// by more than a relative 1e-9 (the rounding of a fixed-load run).
+fn several_loads(points: &[(f64, f64)]) -> bool {
+    let lo = points.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+    let hi = points.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+    hi - lo > 1e-9 * lo.abs().max(hi.abs())
+}
+
 fn area_load_data(scene: &Scene, slider: &Slider, run: &SlideRun) -> Res<AreaLoad> {
     let (sweep, points) = match scene.sweep_loads(slider) {
         Some(loads) => {
@@ -384,14 +421,14 @@ fn area_load_data(scene: &Scene, slider: &Slider, run: &SlideRun) -> Res<AreaLoa
 }
 
 fn area_load_plot(path: &Path, data: &AreaLoad) -> Res<()> {
-    // Plot in mN and µm².
-    let pts: Vec<(f64, f64)> = data
-        .points
-        .iter()
-        .map(|&(p, a)| (p * 1e3, a * 1e12))
-        .collect();
+    // Plot in SI prefixes of the largest load and area (mN and µm² for the
+    // chapter-6 scenes).
+    let (ls, lp) = axis::si_prefix(axis::magnitude(data.points.iter().map(|p| p.0)));
+    let (s2, ap) = axis::si_prefix_squared(axis::magnitude(data.points.iter().map(|p| p.1)));
+    let pts: Vec<(f64, f64)> = data.points.iter().map(|&(p, a)| (p / ls, a / s2)).collect();
     let f = &data.fit;
-    let line = |x: f64| f.slope * 1e9 * x + f.intercept * 1e12;
+    // The fit in plot units: A/s2 = slope·ls/s2 · P/ls + intercept/s2.
+    let line = |x: f64| f.slope * ls / s2 * x + f.intercept / s2;
     let lo = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
     let hi = pts.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
     let (x0, x1) = if hi > lo {
@@ -432,10 +469,13 @@ fn area_load_plot(path: &Path, data: &AreaLoad) -> Res<()> {
             .x_label_area_size(40)
             .y_label_area_size(70)
             .build_cartesian_2d(x0..x1, y0..y1)?;
+        let (fx, fy) = (axis::ticks(x0, x1), axis::ticks(y0, y1));
         chart
             .configure_mesh()
-            .x_desc("normal load (mN)")
-            .y_desc("true contact area (µm²)")
+            .x_desc(format!("normal load ({lp}N)"))
+            .y_desc(format!("true contact area ({ap}m²)"))
+            .x_label_formatter(&*fx)
+            .y_label_formatter(&*fy)
             .draw()?;
         let label = if data.sweep {
             "mean over a slide, per load"
@@ -450,7 +490,6 @@ fn area_load_plot(path: &Path, data: &AreaLoad) -> Res<()> {
             .label(label)
             .legend(|(x, y)| Circle::new((x + 9, y), 4, BLUE.filled()));
         if f.slope.is_finite() {
-            // The fit in plot units: A[µm²] = slope·1e9 · P[mN] + intercept·1e12.
             chart
                 .draw_series(LineSeries::new(
                     [(x0, line(x0)), (x1, line(x1))],
@@ -523,13 +562,32 @@ fn bounds(series: &[Vec<(f64, f64)>]) -> (f64, f64, f64, f64) {
     (x0, x1, y0, y1 + 0.05 * (y1 - y0))
 }
 
-fn plot(path: &Path, title: &str, y_label: &str, series: &[Series<'_>]) -> Res<()> {
+/// Plots `series` (x: slider position in m; y: the quantity in `unit`, or
+/// dimensionless when `unit` is empty) against the slider position, both
+/// axes in SI prefixes of their largest values: "energy (nJ)".
+fn plot(path: &Path, title: &str, quantity: &str, unit: &str, series: &[Series<'_>]) -> Res<()> {
+    let all = || series.iter().flat_map(|s| s.1.iter());
+    let (xs, xp) = axis::si_prefix(axis::magnitude(all().map(|p| p.0)));
+    let (ys, yp) = if unit.is_empty() {
+        (1.0, "")
+    } else {
+        axis::si_prefix(axis::magnitude(all().map(|p| p.1)))
+    };
+    let y_label = if unit.is_empty() {
+        quantity.to_string()
+    } else {
+        format!("{quantity} ({yp}{unit})")
+    };
     let mut buf = String::new();
     {
         let root = SVGBackend::with_string(&mut buf, (900, 500)).into_drawing_area();
         root.fill(&WHITE)?;
-        let data: Vec<_> = series.iter().map(|s| s.1.clone()).collect();
+        let data: Vec<Vec<(f64, f64)>> = series
+            .iter()
+            .map(|s| s.1.iter().map(|&(x, y)| (x / xs, y / ys)).collect())
+            .collect();
         let (x0, x1, y0, y1) = bounds(&data);
+        let (fx, fy) = (axis::ticks(x0, x1), axis::ticks(y0, y1));
         let mut chart = ChartBuilder::on(&root)
             .caption(title, ("sans-serif", 20))
             .margin(12)
@@ -538,10 +596,12 @@ fn plot(path: &Path, title: &str, y_label: &str, series: &[Series<'_>]) -> Res<(
             .build_cartesian_2d(x0..x1, y0..y1)?;
         chart
             .configure_mesh()
-            .x_desc("slider position (µm)")
+            .x_desc(format!("slider position ({xp}m)"))
             .y_desc(y_label)
+            .x_label_formatter(&*fx)
+            .y_label_formatter(&*fy)
             .draw()?;
-        for (name, pts, color) in series {
+        for ((name, _, color), pts) in series.iter().zip(&data) {
             let c = *color;
             chart
                 .draw_series(LineSeries::new(pts.iter().copied(), c.stroke_width(2)))?
@@ -564,23 +624,25 @@ fn plot(path: &Path, title: &str, y_label: &str, series: &[Series<'_>]) -> Res<(
 }
 
 fn cof_plot(path: &Path, steps: &[SlideStep]) -> Res<()> {
-    let pts = steps.iter().map(|r| (r.position * 1e6, r.cof)).collect();
+    let pts = steps.iter().map(|r| (r.position, r.cof)).collect();
     plot(
         path,
         "Coefficient of friction",
         "COF",
+        "",
         &[("COF", pts, BLUE)],
     )
 }
 
 fn dissipation_plot(path: &Path, steps: &[SlideStep]) -> Res<()> {
     let pick = |f: fn(&SlideStep) -> f64| -> Vec<(f64, f64)> {
-        steps.iter().map(|r| (r.position * 1e6, f(r))).collect()
+        steps.iter().map(|r| (r.position, f(r))).collect()
     };
     plot(
         path,
         "Energy dissipated per step, by mechanism",
-        "energy (J)",
+        "energy",
+        "J",
         &[
             ("chemical", pick(|r| r.dissipation.chemical), RED),
             ("van der Waals", pick(|r| r.dissipation.van_der_waals), BLUE),
