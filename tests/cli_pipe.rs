@@ -67,7 +67,10 @@ fn every_subcommand_exits_quietly_on_a_closed_pipe() {
     let mut s = String::from("x_m,z_m\n");
     for j in 0..2000 {
         let x = j as f64 * 1e-7;
-        s.push_str(&format!("{x:e},{:e}\n", 1e-6 * (x / 2e-5 * 6.283).sin()));
+        s.push_str(&format!(
+            "{x:e},{:e}\n",
+            1e-6 * (x / 2e-5 * std::f64::consts::TAU).sin()
+        ));
     }
     std::fs::write(dir.join("sine.csv"), s).unwrap();
     let mut s = String::new();

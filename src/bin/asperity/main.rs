@@ -506,6 +506,19 @@ fn write_csv(path: &PathBuf, series: &[Series], x: &str, y: &str) -> std::io::Re
     Ok(())
 }
 
+/// `lo..hi` when it is a finite, non-empty range; otherwise a range of some
+/// width around `lo` (one value, or none: 0..1).
+fn widen(lo: f64, hi: f64) -> (f64, f64) {
+    if lo.is_finite() && hi.is_finite() && hi > lo {
+        (lo, hi)
+    } else if lo.is_finite() {
+        let w = if lo == 0.0 { 1.0 } else { 0.1 * lo.abs() };
+        (lo - w, lo + w)
+    } else {
+        (0.0, 1.0)
+    }
+}
+
 fn plot(
     path: &PathBuf,
     title: &str,
@@ -514,7 +527,12 @@ fn plot(
     series: &[Series],
 ) -> Result<(), Box<dyn Error>> {
     use plotters::prelude::*;
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    let (mut x0, mut x1, mut y0, mut y1) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
     for (_, pts) in series {
         for &(a, b) in pts {
             x0 = x0.min(a);
@@ -523,31 +541,8 @@ fn plot(
             y1 = y1.max(b);
         }
     }
-    if !(x1 > x0) {
-        // One abscissa (or none): an axis of some width around it.
-        let w = if x0.is_finite() && x0 != 0.0 {
-            0.1 * x0.abs()
-        } else {
-            1.0
-        };
-        (x0, x1) = if x0.is_finite() {
-            (x0 - w, x0 + w)
-        } else {
-            (0.0, 1.0)
-        };
-    }
-    if !(y1 > y0) {
-        let w = if y0.is_finite() && y0 != 0.0 {
-            0.1 * y0.abs()
-        } else {
-            1.0
-        };
-        (y0, y1) = if y0.is_finite() {
-            (y0 - w, y0 + w)
-        } else {
-            (0.0, 1.0)
-        };
-    }
+    let (x0, x1) = widen(x0, x1);
+    let (y0, y1) = widen(y0, y1);
     let pad = 0.05 * (y1 - y0);
     let (fx, fy) = (axis::ticks(x0, x1), axis::ticks(y0 - pad, y1 + pad));
     let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
