@@ -2,7 +2,7 @@
 //!
 //! Six models describe an elastic sphere with short-range adhesion, from the
 //! cheapest to the most faithful: [`Dmt`], [`Jkr`], [`MaugisDugdale`] (Dugdale
-//! stress = the Lennard-Jones theoretical stress, λ = 1.157μ), a
+//! stress = the Lennard-Jones theoretical stress), a
 //! [`TabulatedLaw`] of Maugis–Dugdale, a [`TabulatedLaw`] of the numerical
 //! Lennard-Jones sphere, and the numerical [`LjSphere`] itself (Greenwood
 //! 1997; seed 001). [`assess`] measures, for one sphere, each model's error
@@ -10,8 +10,8 @@
 //! [`advise`] returns the cheapest one whose error is within a force
 //! tolerance.
 //!
-//! **Errors** are absolute forces (N):
-//! * `pull_off_error`: |P_c,model − P_c,LJ| for the load-controlled pull-off;
+//! **Errors** are absolute forces (N), as in *Formulas*:
+//! * `pull_off_error`: the difference of the load-controlled pull-offs;
 //! * `curve_error`: the largest force difference over a displacement-controlled
 //!   approach from far away (−50 z₀) to deep contact (P ≈ 10 πRw) and back,
 //!   each model keeping its own hysteresis state. Near a jump the models'

@@ -5,37 +5,37 @@
 //!
 //! ## The pipeline ([`analyze`])
 //!
+//! The formulas of the steps are under *Formulas* below.
+//!
 //! 1. **Segments** ([`segment`]): the labels of the file when present
 //!    (`approach`, `loading`, `hold_at_peak`, `unloading`, `thermal_drift_hold`,
 //!    `final_unloading`), otherwise detected from the load signal (peak, hold at
 //!    ≥ 99.8 % of the peak, unloading until the load stops falling).
-//! 2. **Loading branch** ([`log_log_fit`]): least-squares slope of `ln P`
-//!    against `ln δ` through the anchor point, by default the maximum
-//!    indentation point (thesis §3.6.1): `ln(P/P₁) = m_l ln(δ/δ₁)` ((3-20),
-//!    (3-26)), with `m_l = (2 + κ(d − 1))/d`.
+//! 2. **Loading branch** ([`log_log_fit`]): least-squares slope m_l of
+//!    `ln P` against `ln δ` through the anchor point, by default the maximum
+//!    indentation point (thesis §3.6.1; (3-20), (3-26)).
 //! 3. **Unloading branch** ([`fit_unloading`], [`oliver_pharr`]): the power law
-//!    `P = α(h − h_f)^m` of Oliver & Pharr (1992) fitted to the upper part of
-//!    unloading (default 25–95 % of P_max). Its exponent is the elastic (κ = 1)
-//!    rescaling slope of (3-26) with the depth measured from the residual
-//!    imprint h_f, so `d = 1/(m − 1)`. *Note:* the thesis writes (3-26) with δ
+//!    of Oliver & Pharr (1992) fitted to the upper part of unloading (default
+//!    25–95 % of P_max). Its exponent m is the elastic (κ = 1) rescaling
+//!    slope of (3-26) with the depth measured from the residual imprint h_f,
+//!    which gives d. *Note:* the thesis writes (3-26) with δ
 //!    and does not say where δ is measured from on unloading; measured from the
 //!    original surface, the slopes of real unloading curves are far above 2
 //!    (d < 1), inconsistent with the thesis's own 1.24 for fused silica. We
 //!    follow the literature (Oliver & Pharr 1992; Galanov's effective shape:
 //!    unloading is the elastic contact of the indenter with its own imprint,
 //!    which starts at h_f).
-//! 4. **κ and d**: d from the unloading exponent and κ from the loading slope,
-//!    `κ = (d m_l − 2)/(d − 1)`; or κ from loading with d known (a sphere:
-//!    d = 2, `κ = 2m_l − 2`, (3-21)); or d from loading with κ known,
-//!    `d = (2 − κ)/(m_l − κ)`. Standard errors by first-order propagation.
+//! 4. **κ and d**: d from the unloading exponent and κ from the loading
+//!    slope; or κ from loading with d known (a sphere: d = 2,
+//!    $\kappa = 2m_l - 2$, (3-21)); or d from loading with κ known.
+//!    Standard errors by first-order propagation.
 //! 5. **Modulus and hardness** (Oliver & Pharr 1992, J. Mater. Res. 7:1564):
-//!    `S = dP/dh = α m (h_max − h_f)^{m−1}` at the start of unloading,
-//!    `h_c = h_max − ε P_max/S` (ε = 0.75), `A = A(h_c)` from the area function,
-//!    `E_r = (√π/2) S/(β√A)` and `H = P_max/A`. β = 1.05 for pyramids
-//!    (Oliver & Pharr 2004), 1 for axisymmetric indenters; β = 1 is the BASh
-//!    formula (2-14), `S = 2E*a` (2-13). The sample modulus follows from
-//!    `1/E_r = (1 − ν²)/E + (1 − ν_i²)/E_i` (2-15); diamond `E_i = 1141 GPa`,
-//!    `ν_i = 0.07` by default.
+//!    the unloading stiffness S at the start of unloading, the contact depth
+//!    h_c (ε = 0.75), the area A(h_c) from the area function, the reduced
+//!    modulus E_r and the hardness H. β = 1.05 for pyramids (Oliver & Pharr
+//!    2004), 1 for axisymmetric indenters; β = 1 is the BASh formula
+//!    ((2-13), (2-14)). The sample modulus follows from E_r by (2-15);
+//!    diamond `E_i = 1141 GPa`, `ν_i = 0.07` by default.
 //! 6. **Validity flags** (thesis §3.6), each a code with an explanation
 //!    ([`Flag`]).
 //!

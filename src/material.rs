@@ -1,11 +1,16 @@
 //! Materials, effective moduli and the dimensionless groups of adhesive contact.
 //!
-//! Conventions (see `REFERENCE.md` §1): SI units; the *contact modulus*
-//! `E*` is defined by `1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂` (Johnson's convention,
-//! thesis (1-15)); JKR-era papers use `K = 4E*/3` ([`jkr_k`]); `w` is the work of
+//! Conventions (see `REFERENCE.md` §1): SI units; `w` is the work of
 //! adhesion (Dupré), `w = 2γ` for identical surfaces.
 //!
 //! # Formulas
+//!
+//! The *contact modulus* E* in Johnson's convention (thesis (1-15)), the
+//! `K` of JKR-era papers ([`jkr_k`]) and the rod modulus of (6-4)–(6-8); the
+//! no-slip factor and ε of Borodich et al. 2014; the Tabor and Maugis
+//! parameters with the Lennard-Jones theoretical stress ((1-42)–(1-44));
+//! the surface energy from bulk properties (Weir 2008; seed 001, Eq. 4) and
+//! the Hamaker work of adhesion (Israelachvili §13):
 //!
 //! $$\frac{1}{E^\ast} = \frac{1-\nu_1^2}{E_1} + \frac{1-\nu_2^2}{E_2}, \qquad K = \tfrac43 E^\ast, \qquad \frac{1}{E_\mathrm{rod}} = \frac{1}{E_1} + \frac{1}{E_2},$$
 //!

@@ -3,6 +3,8 @@
 //! hardening index κ and the bluntness index d from log–log slopes, and the
 //! Zhuravlev-type integrals for power-law asperities.
 //!
+//! # Formulas
+//!
 //! ## Setting
 //!
 //! A punch of shape `f(r) = B r^d` (d ≥ 1) is pressed into a half-space whose
@@ -10,11 +12,10 @@
 //! perfectly plastic). The contact problem is self-similar (Borodich 1983,
 //! 1989, 1993; thesis (3-10)..(3-12)): from **one** known solution
 //! `(P₁, δ₁, a₁)` for the shape scale `B₁`, the solution for any load P and any
-//! shape scale `B = λ B₁` follows by rescaling. With `s = 2 + κ(d − 1)`:
+//! shape scale `B = λ B₁` follows by rescaling, (3-13), (3-14) and (3-24),
+//! with $s = 2 + \kappa(d-1)$:
 //!
-//! * `δ(λ, P) = λ^{(2−κ)/s} (P/P₁)^{d/s} δ₁` (3-13),
-//! * `a(λ, P) = λ^{−κ/s} (P/P₁)^{1/s} a₁` (3-14),
-//! * `P(λ, δ) = λ^{(κ−2)/d} (δ/δ₁)^{s/d} P₁` (3-24),
+//! $$\delta(\lambda, P) = \lambda^{(2-\kappa)/s}\Bigl(\frac{P}{P_1}\Bigr)^{d/s}\delta_1, \qquad a(\lambda, P) = \lambda^{-\kappa/s}\Bigl(\frac{P}{P_1}\Bigr)^{1/s}a_1, \qquad P(\lambda, \delta) = \lambda^{(\kappa-2)/d}\Bigl(\frac{\delta}{\delta_1}\Bigr)^{s/d}P_1 ,$$
 //!
 //! where λ is the ratio of the shape coefficients of the *new* and the *known*
 //! punch, `λ = B/B₁`: for spheres (`B = 1/(2R)`) `λ = R₁/R` (3-15), for cones
@@ -26,26 +27,29 @@
 //!
 //! ## Extraction of κ and d (thesis §3.4–3.5, (3-20), (3-26))
 //!
-//! At λ = 1 the log–log slope of the loading branch is
-//! `m_l = (2 + κ(d − 1))/d` ([`loading_slope`]) and, for the elastic unloading
-//! branch (κ = 1), `m_u = (d + 1)/d` ([`unloading_slope`]). Hence
-//! `d = 1/(m_u − 1)` ([`d_from_unloading_slope`]),
-//! `κ = (d m_l − 2)/(d − 1)` ([`kappa_from_loading_slope`]; for a sphere
-//! `κ = 2 m_l − 2`, (3-21)) and, when κ is known instead,
-//! `d = (2 − κ)/(m_l − κ)` ([`d_from_loading_slope`]). For a cone (d = 1)
-//! `m_l = 2` whatever κ is: κ cannot be read from the loading slope of a cone,
-//! and the functions say so with [`Error::OutOfDomain`].
+//! At λ = 1 the log–log slope of the loading branch m_l ([`loading_slope`])
+//! and, for the elastic unloading branch (κ = 1), m_u ([`unloading_slope`])
+//! give d ([`d_from_unloading_slope`]) and κ ([`kappa_from_loading_slope`];
+//! for a sphere $\kappa = 2 m_l - 2$, (3-21)):
+//!
+//! $$m_l = \frac{2 + \kappa(d-1)}{d}, \qquad m_u = \frac{d+1}{d}, \qquad d = \frac{1}{m_u - 1}, \qquad \kappa = \frac{d\\,m_l - 2}{d - 1} .$$
+//!
+//! When κ is known instead, $d = (2 - \kappa)/(m_l - \kappa)$
+//! ([`d_from_loading_slope`]). For a cone (d = 1) $m_l = 2$ whatever κ is:
+//! κ cannot be read from the loading slope of a cone, and the functions say
+//! so with [`Error::OutOfDomain`].
 //!
 //! ## Galanov effect (thesis §2.5, (3-22), (3-23), (2-18), (2-19))
 //!
-//! The elastic unloading branch of a sphere of radius R is that of a sphere in
-//! its own crater of radius `R_medium`: `1/R₂ = 1/R − 1/R_medium` (3-23), and the
-//! effective radius `R₂` follows from any Hertz solution `(P₁, δ₁)` on `R₁` and a
-//! measured unloading point `(P₂, δ₂)` by rescaling with κ = 1:
-//! `R₂ = R₁ (P₂/P₁)² (δ₁/δ₂)³` (3-22). The cone analogue is
-//! `B_eff = cot γ_i − cot γ_f` (2-18).
+//! The elastic unloading branch of a sphere of radius R is that of a sphere
+//! in its own crater of radius $R_\mathrm{medium}$, of effective radius $R_2$
+//! (3-23), which follows from any Hertz solution `(P₁, δ₁)` on `R₁` and a
+//! measured unloading point `(P₂, δ₂)` by rescaling with κ = 1 (3-22). The
+//! cone analogue is the effective cotangent $B_\mathrm{eff}$ (2-18):
 //!
-//! ## Conventions and notes
+//! $$R_2 = R_1\Bigl(\frac{P_2}{P_1}\Bigr)^2\Bigl(\frac{\delta_1}{\delta_2}\Bigr)^3, \qquad \frac{1}{R_2} = \frac{1}{R} - \frac{1}{R_\mathrm{medium}}, \qquad B_\mathrm{eff} = \cot\gamma_i - \cot\gamma_f .$$
+//!
+//! # Conventions and notes
 //!
 //! * (P₁, δ₁, a₁) is the known solution ([`KnownSolution`]), best taken at the
 //!   maximum indentation point (thesis §3.6.1).
@@ -56,16 +60,6 @@
 //! * The exponent of λ in (3-13) is `(2−κ)/s`; at κ = 2 the load–depth relation
 //!   does not depend on the punch scale and λ cannot be recovered from two
 //!   points ([`shape_scale_from_points`] refuses κ = 2).
-//!
-//! # Formulas
-//!
-//! With $s = 2 + \kappa(d-1)$ and $\lambda = B/B_1$:
-//!
-//! $$\delta(\lambda, P) = \lambda^{(2-\kappa)/s}\Bigl(\frac{P}{P_1}\Bigr)^{d/s}\delta_1, \qquad a(\lambda, P) = \lambda^{-\kappa/s}\Bigl(\frac{P}{P_1}\Bigr)^{1/s}a_1, \qquad P(\lambda, \delta) = \lambda^{(\kappa-2)/d}\Bigl(\frac{\delta}{\delta_1}\Bigr)^{s/d}P_1,$$
-//!
-//! $$m_l = \frac{2 + \kappa(d-1)}{d}, \qquad m_u = \frac{d+1}{d}, \qquad d = \frac{1}{m_u - 1}, \qquad \kappa = \frac{d\\,m_l - 2}{d - 1},$$
-//!
-//! $$R_2 = R_1\Bigl(\frac{P_2}{P_1}\Bigr)^2\Bigl(\frac{\delta_1}{\delta_2}\Bigr)^3, \qquad \frac{1}{R_2} = \frac{1}{R} - \frac{1}{R_\mathrm{medium}}, \qquad B_\mathrm{eff} = \cot\gamma_i - \cot\gamma_f .$$
 //!
 //! # References
 //!

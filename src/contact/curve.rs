@@ -17,11 +17,11 @@
 //! * ordered [`PathPoint`]s from far to deep, each with the reduced approach
 //!   Δ, the reduced force F (repulsive positive) and the reduced contact
 //!   radius, and their derivatives along a path parameter t (any parameter,
-//!   which may change from point to point: only the ratios `dF/dΔ`,
-//!   `da/dΔ` are used, and the sign of `dΔ/dt`);
-//! * the SI scales that make them dimensional:
-//!   `δ = approach_origin + Δ·approach_scale` (m), `P = F·force_scale` (N),
-//!   `a = radius·radius_scale` (m);
+//!   which may change from point to point: only the ratios of *Formulas*
+//!   are used, and the sign of `dΔ/dt`);
+//! * the SI scales that make them dimensional (*Formulas*):
+//!   `approach_origin` and `approach_scale` (m), `force_scale` (N),
+//!   `radius_scale` (m);
 //! * the far-field tail before the first point ([`FarTail`]) and the deep tail
 //!   after the last one ([`DeepTail`]);
 //! * exact source points beyond both ends (`tail_checks`), used only to
@@ -40,9 +40,8 @@
 //! * **Corners** (a derivative discontinuity, such as the point where a
 //!   Maugis–Dugdale contact radius leaves zero) are two consecutive points with
 //!   equal values and different derivatives. A point with `d_delta == 0` where
-//!   Δ does not turn back (after a corner: Δ − Δ_c ∝ t², as at the
-//!   Maugis–Dugdale contact onset, where the radius grows like √(Δ − Δ_c))
-//!   is allowed and also needs `d2_delta`.
+//!   Δ does not turn back (after a corner, as at the Maugis–Dugdale contact
+//!   onset; *Formulas*) is allowed and also needs `d2_delta`.
 //! * **Zero crossings of the force** on stable pieces should be points with
 //!   `force == 0` exactly: the error measure is relative down to a floor, and
 //!   a knot there keeps the error small.
@@ -60,7 +59,9 @@
 //!
 //! $$\delta = \delta_\mathrm{origin} + \Delta\\,\delta_\mathrm{scale}, \qquad P = F\\,P_\mathrm{scale}, \qquad a = \bar a\\, a_\mathrm{scale},$$
 //!
-//! and only the ratios $dF/d\Delta = (dF/dt)/(d\Delta/dt)$,
+//! ($\delta_\mathrm{origin}$ = `approach_origin`, $\delta_\mathrm{scale}$ =
+//! `approach_scale`, $P_\mathrm{scale}$ = `force_scale`, $a_\mathrm{scale}$ =
+//! `radius_scale`), and only the ratios $dF/d\Delta = (dF/dt)/(d\Delta/dt)$,
 //! $d\bar a/d\Delta$ of its path derivatives enter the tables. At a corner
 //! after which $\Delta - \Delta_c \propto t^2$ the radius grows like
 //! $\sqrt{\Delta - \Delta_c}$.

@@ -1,31 +1,29 @@
 //! Rigid sphere under a surface-force law: the Derjaguin approximation.
 //!
-//! # The law
+//! # Formulas
 //!
 //! A rigid sphere of radius R faces a rigid flat. Two flats a distance z apart
 //! attract each other with the pressure p(z) of a [`SurfaceLaw`] (attraction
 //! positive), whose energy per unit area is e(D) = ∫_D^∞ p(z) dz, e(z_eq) = w.
 //! Derjaguin (1934; thesis (1-32); Greenwood 1997, Proc. R. Soc. A 453) sums
 //! the flat-flat interaction over the rings of the sphere, whose gap is
-//! z = D + r²/(2R) near the apex (D the minimum gap), and gets
+//! z = D + r²/(2R) near the apex (D the minimum gap), and gets the force F
+//! (attraction positive). The library's force P is repulsive positive, and
+//! its tangent follows from dD/dδ = −1, which holds for every law below:
 //!
-//! ```text
-//! F(D) = 2πR ∫_D^∞ p(z) dz = 2πR e(D)        (attraction positive)
-//! ```
+//! $$F(D) = 2\pi R\int_D^\infty p(z)\\,dz = 2\pi R\\, e(D), \qquad P = -2\pi R\\, e(D), \qquad \frac{dP}{d\delta} = -2\pi R\\, p(D) .$$
 //!
-//! The library's force is repulsive positive, so `P = −2πR e(D)`. Its tangent
-//! is `dP/dδ = −2πR p(D)` (dD/dδ = −1 for every law below).
+//! The surface laws:
 //!
-//! # The surface laws
-//!
-//! | law | p(z) | e(D) | range |
+//! | law | $p(z)$ | $e(D)$ | range |
 //! |---|---|---|---|
-//! | Lennard-Jones 3-9 (seed 001, Eq. 1) | (8w/(3z₀))[(z₀/z)³ − (z₀/z)⁹] | (4w/3)[(z₀/D)² − (z₀/D)⁸/4] | z₀ |
-//! | Dugdale step (Maugis 1992) | σ₀ for 0 ≤ z ≤ h₀, 0 beyond | σ₀(h₀ − D) for D ≤ h₀, 0 beyond | h₀ = w/σ₀ |
-//! | exponential | (w/ℓ) e^{−z/ℓ} | w e^{−D/ℓ} | ℓ |
+//! | Lennard-Jones 3-9 (seed 001, Eq. 1) | $\frac{8w}{3z_0}\bigl((z_0/z)^3 - (z_0/z)^9\bigr)$ | $\frac{4w}{3}\bigl((z_0/D)^2 - \frac{1}{4}(z_0/D)^8\bigr)$ | $z_0$ |
+//! | Dugdale step (Maugis 1992) | $\sigma_0$ for $0 \le z \le h_0$, 0 beyond | $\sigma_0 (h_0 - D)$ for $D \le h_0$, 0 beyond | $h_0 = w/\sigma_0$ |
+//! | exponential | $(w/\ell)\\,e^{-z/\ell}$ | $w\\,e^{-D/\ell}$ | $\ell$ |
 //!
 //! The Lennard-Jones law is repulsive below z₀, attractive above, and its
-//! tension peaks at 16w/(9√3 z₀) at z = 3^{1/6} z₀ (thesis (1-44), see
+//! tension peaks at $\sigma_\mathrm{th} = 16w/(9\sqrt{3}\\,z_0)$ at
+//! $z = 3^{1/6} z_0$ (thesis (1-44), see
 //! [`crate::material::lennard_jones_theoretical_stress`]). The Dugdale and
 //! exponential laws are purely attractive: a rigid sphere under them cannot
 //! carry a compressive load, nor penetrate.
@@ -50,7 +48,7 @@
 //!   is unbounded.
 //! * `in_contact` is 1 while the surfaces interact (the force is nonzero) or
 //!   touch (δ ≥ 0).
-//! * `stiffness` is `dP/dδ = −2πR p(D)`, analytic. For the Dugdale law it is
+//! * `stiffness` is the tangent dP/dδ of *Formulas*, analytic. For the Dugdale law it is
 //!   −2πRσ₀ for 0 ≤ D ≤ h₀ and 0 beyond: at the kink D = h₀ it is the
 //!   one-sided derivative on the approach side (δ → −h₀⁺), the tangent of the
 //!   interacting branch, consistent with p(h₀) = σ₀.
@@ -60,14 +58,6 @@
 //! Evaluations never allocate. Every output is finite or the call returns an
 //! error; an overflow at an extreme overlap or load is
 //! [`Error::OutOfDomain`].
-//!
-//! # Formulas
-//!
-//! $$F(D) = 2\pi R\int_D^\infty p(z)\\,dz = 2\pi R\\, e(D), \qquad P = -2\pi R\\, e(D), \qquad \frac{dP}{d\delta} = -2\pi R\\, p(D),$$
-//!
-//! and for the Lennard-Jones 3-9 law
-//!
-//! $$p(z) = \frac{8w}{3z_0}\left(\Bigl(\frac{z_0}{z}\Bigr)^3 - \Bigl(\frac{z_0}{z}\Bigr)^9\right), \qquad e(D) = \frac{4w}{3}\left(\Bigl(\frac{z_0}{D}\Bigr)^2 - \frac{1}{4}\Bigl(\frac{z_0}{D}\Bigr)^8\right), \qquad \sigma_\mathrm{th} = \frac{16 w}{9\sqrt{3}\\, z_0} .$$
 //!
 //! # References
 //!

@@ -1,13 +1,13 @@
 //! Derjaguin–Muller–Toporov: Hertz deformation plus a constant adhesive force
 //! acting while in contact.
 //!
-//! Thesis (1-41); Derjaguin, Muller & Toporov 1975:
-//! `P = (4/3) E* R^{1/2} δ^{3/2} − 2π w R` for δ ≥ 0, `a = √(Rδ)`; out of contact
-//! (δ < 0) the force is zero (the range of the surface forces is neglected).
-//! Pull-off is `−2πwR` under both controls. The limit λ → 0 of
-//! [`super::MaugisDugdale`].
+//! Out of contact (δ < 0) the force is zero: the range of the surface forces
+//! is neglected. Pull-off is the same under both controls. The limit λ → 0
+//! of [`super::MaugisDugdale`].
 //!
 //! # Formulas
+//!
+//! Thesis (1-41); Derjaguin, Muller & Toporov 1975:
 //!
 //! $$P(\delta) = \tfrac{4}{3} E^\ast R^{1/2} \delta^{3/2} - 2\pi w R \quad (\delta \ge 0), \qquad P = 0 \quad (\delta < 0),$$
 //!

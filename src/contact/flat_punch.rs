@@ -1,10 +1,11 @@
 //! Rigid flat-ended cylindrical punch on an elastic half-space (Boussinesq),
-//! no adhesion: `P = 2 E* a δ` (frictionless), `P = 2 E* a δ · C_NS` when the
-//! punch is bonded (no slip; thesis §4.4, Borodich et al. 2014, with
-//! [`crate::material::no_slip_factor`]). The stiffness is constant while in
-//! contact. The adhesive version is [`super::Kendall`].
+//! no adhesion, frictionless or bonded (no slip; thesis §4.4, Borodich et
+//! al. 2014, with [`crate::material::no_slip_factor`]). The stiffness is
+//! constant while in contact. The adhesive version is [`super::Kendall`].
 //!
 //! # Formulas
+//!
+//! Boussinesq; the no-slip factor from Borodich et al. 2014:
 //!
 //! $$P = 2 E^\ast a \delta \ \ \text{(frictionless)}, \qquad P = 2 E^\ast a \delta\\, C_\mathrm{NS} \ \ \text{(no slip)}, \qquad C_\mathrm{NS} = \frac{(1-\nu)\ln(3-4\nu)}{1-2\nu},$$
 //!

@@ -1,15 +1,13 @@
 //! Hertz: elastic sphere (paraboloid) on a flat, no adhesion.
 //!
-//! Thesis (1-15)..(1-17); Hertz 1882; Johnson 1985 §4.2:
-//!
-//! * `a = √(R δ)`, `P = (4/3) E* R^{1/2} δ^{3/2}`, `dP/dδ = 2 E* a`,
-//! * `a = (3 P R / (4 E*))^{1/3}` under load, peak pressure `p₀ = 3P/(2πa²)`.
-//!
 //! With the Galanov effective radius ([`Hertz::sphere_in_crater`], thesis
 //! (2-19)) the same law describes a sphere unloading from its own plastic
 //! crater.
 //!
 //! # Formulas
+//!
+//! Thesis (1-15)..(1-17); Hertz 1882; Johnson 1985 §4.2. Under an overlap
+//! δ, and under a load P with the peak pressure:
 //!
 //! $$a = \sqrt{R\delta}, \qquad P = \tfrac{4}{3} E^\ast R^{1/2} \delta^{3/2}, \qquad \frac{dP}{d\delta} = 2E^\ast a,$$
 //!

@@ -1,30 +1,31 @@
 //! Johnson–Kendall–Roberts: elastic sphere (paraboloid) with short-range
 //! adhesion, the limit of large Tabor parameter.
 //!
+//! # Formulas
+//!
 //! Thesis (1-34)..(1-36); Johnson, Kendall & Roberts 1971, Proc. R. Soc. Lond.
 //! A 324:301; written with the contact modulus E* (K = 4E*/3) and the work of
-//! adhesion w:
+//! adhesion w. The equilibrium curve and its tangent stiffness
+//! `dP/dδ = (dP/da)/(dδ/da)`:
 //!
-//! * `P(a) = 4E*a³/(3R) − √(8πwE*a³)`,
-//! * `δ(a) = a²/R − √(2πwa/E*)`,
-//! * tangent stiffness along the equilibrium curve
-//!   `dP/dδ = (dP/da)/(dδ/da) = 2E*a·(4a^{3/2} − 3kR)/(4a^{3/2} − kR)`, with
-//!   `k = √(2πw/E*)`.
+//! $$P(a) = \frac{4E^\ast a^3}{3R} - \sqrt{8\pi w E^\ast a^3}, \qquad \delta(a) = \frac{a^2}{R} - \sqrt{\frac{2\pi w a}{E^\ast}},$$
 //!
-//! Note that the tangent stiffness is **not** the BASh value `2E*a` unless
-//! w = 0: `2E*a` is `∂P/∂δ` at *fixed* contact radius (the adhesive term is a
+//! $$\frac{dP}{d\delta} = 2E^\ast a\\,\frac{4a^{3/2} - 3kR}{4a^{3/2} - kR}, \qquad k = \sqrt{2\pi w/E^\ast} .$$
+//!
+//! The tangent stiffness is **not** the BASh value `2E*a` unless w = 0:
+//! `2E*a` is `∂P/∂δ` at *fixed* contact radius (the adhesive term is a
 //! flat-punch mode, `P_adh = 2E*a·δ_adh`), while along the equilibrium curve
 //! the radius changes too. The tangent vanishes at the load-controlled pull-off
 //! and is vertical (`dδ/da = 0`) at the displacement-controlled instability.
 //!
-//! Critical points (REFERENCE.md §1):
+//! Critical points (REFERENCE.md §1; Maugis 1992): the load-controlled
+//! pull-off and the displacement-controlled instability,
 //!
-//! * load-controlled pull-off `P_c = −(3/2)πwR` at `a = (9πwR²/(8E*))^{1/3}`;
-//! * displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}` at
-//!   `a = (πwR²/(8E*))^{1/3}`, `P = −(5/6)πwR`;
-//! * on approach the contact forms at δ = 0 with a jump to
-//!   `a = (2πwR²/E*)^{1/3}` (force `−(4/3)πwR`); the zero-load radius is
-//!   `a₀ = (9πwR²/(2E*))^{1/3}`.
+//! $$P_c = -\tfrac{3}{2}\pi w R \ \ \text{at}\ \ a = \left(\frac{9\pi w R^2}{8E^\ast}\right)^{1/3}, \qquad \delta_c = -\frac{3}{4}\left(\frac{\pi^2 w^2 R}{E^{\ast 2}}\right)^{1/3} \ \ \text{at}\ \ a = \left(\frac{\pi w R^2}{8E^\ast}\right)^{1/3}, \ \ P(\delta_c) = -\tfrac{5}{6}\pi w R .$$
+//!
+//! On approach the contact forms at δ = 0 with a jump to
+//! $a = (2\pi w R^2/E^\ast)^{1/3}$ (force $-\tfrac{4}{3}\pi w R$); the
+//! zero-load radius is $a_0 = (9\pi w R^2/(2E^\ast))^{1/3}$.
 //!
 //! # Hysteresis (displacement control, [`NormalContact::eval`])
 //!
@@ -54,14 +55,6 @@
 //! `η⁴ − η − Δ`. Accuracy: ≤ 1e-13 relative against a bracketed reference
 //! away from the fold (tests/jkr.rs); within `|Δ − Δ_c| ≲ 1e-3` the root
 //! itself is ill-conditioned (`∂η/∂Δ → ∞`), as for any method.
-//!
-//! # Formulas
-//!
-//! $$P(a) = \frac{4E^\ast a^3}{3R} - \sqrt{8\pi w E^\ast a^3}, \qquad \delta(a) = \frac{a^2}{R} - \sqrt{\frac{2\pi w a}{E^\ast}},$$
-//!
-//! $$\frac{dP}{d\delta} = 2E^\ast a\\,\frac{4a^{3/2} - 3kR}{4a^{3/2} - kR}, \qquad k = \sqrt{2\pi w/E^\ast},$$
-//!
-//! $$P_c = -\tfrac{3}{2}\pi w R \ \ \text{at}\ \ a = \left(\frac{9\pi w R^2}{8E^\ast}\right)^{1/3}, \qquad \delta_c = -\frac{3}{4}\left(\frac{\pi^2 w^2 R}{E^{\ast 2}}\right)^{1/3}, \ \ P(\delta_c) = -\tfrac{5}{6}\pi w R .$$
 //!
 //! # References
 //!

@@ -3,22 +3,31 @@
 //! Solids 68:14 ("The JKR-type adhesive contact problems for power-law shaped
 //! axisymmetric punches"); thesis (1-37)..(1-40); REFERENCE.md §1, §7.
 //!
-//! Frictionless ((1-37), (1-38)):
+//! # Formulas
 //!
-//! * `P(a) = C(d) B E* a^{d+1} − √(8πwE* a³)`,
-//! * `δ(a) = D(d) B a^d − √(2πwa/E*)`,
+//! Frictionless (1-37), (1-38), with Galin's $C(d)$ = [`galin_c`] and
+//! $D(d)$ = [`galin_d`]:
 //!
-//! with Galin's [`galin_c`], [`galin_d`]. No slip ((1-39), (1-40)), for a punch
-//! bonded to a half-space of Poisson's ratio ν:
+//! $$P(a) = C(d)\\,B\\,E^\ast a^{d+1} - \sqrt{8\pi w E^\ast a^3}, \qquad \delta(a) = D(d)\\,B\\,a^d - \sqrt{\frac{2\pi w a}{E^\ast}} .$$
 //!
-//! * `P(a) = C_NS C(d) B E* a^{d+1}/k*(d) − √(8πwE* C_NS a³)`,
-//! * `δ(a) = D(d) B a^d/k*(d) − √(2πwa/(E* C_NS))`,
+//! No slip (1-39), (1-40), for a punch bonded to a half-space of Poisson's
+//! ratio ν, with $C_\mathrm{NS}$ = [`no_slip_factor`], $\varepsilon$ =
+//! [`no_slip_epsilon`] and $k^\ast(d)$ = [`k_star`]:
 //!
-//! with `C_NS` = [`no_slip_factor`], `ε` = [`no_slip_epsilon`] and
-//! `k*(d) = d ∫₀¹ x^{d−1} cos[ε ln((1−x)/(1+x))] dx` ([`k_star`]). Both
-//! reduce to the frictionless law as ν → 1/2 (ε → 0, k* → 1, C_NS → 1) and to
-//! Galin's punch ([`super::PowerPunch`]) when w = 0; d = 2, B = 1/(2R) is the
-//! JKR sphere ([`super::Jkr`]).
+//! $$P(a) = \frac{C_\mathrm{NS}\\, C(d)\\,B\\,E^\ast a^{d+1}}{k^\ast(d)} - \sqrt{8\pi w E^\ast C_\mathrm{NS}\\, a^3}, \qquad \delta(a) = \frac{D(d)\\,B\\,a^d}{k^\ast(d)} - \sqrt{\frac{2\pi w a}{E^\ast C_\mathrm{NS}}},$$
+//!
+//! $$k^\ast(d) = d\int_0^1 x^{d-1} \cos\Bigl(\varepsilon \ln\frac{1-x}{1+x}\Bigr)\\,dx, \qquad \varepsilon = \frac{\ln(3-4\nu)}{2\pi} .$$
+//!
+//! Both reduce to the frictionless law as ν → 1/2 (ε → 0, k* → 1, C_NS → 1)
+//! and to Galin's punch ([`super::PowerPunch`]) when w = 0; d = 2,
+//! B = 1/(2R) is the JKR sphere ([`super::Jkr`]).
+//!
+//! Load-controlled pull-off (REFERENCE.md §7), with $A = C(d)BE^\ast$ (no slip: $C_\mathrm{NS}C(d)BE^\ast/k^\ast$) and $b = \sqrt{8\pi w E^\ast}$ (no slip: $\sqrt{8\pi w E^\ast C_\mathrm{NS}}$):
+//!
+//! $$a_c^{d-1/2} = \frac{3b}{2(d+1)A}, \qquad P_c = -\frac{b(2d-1)}{2(d+1)}\left(\frac{3b}{2(d+1)A}\right)^{3/(2d-1)} .$$
+//!
+//! d = 2 gives `−(3/2)πwR`; the cone (d = 1, B = cot γ, frictionless) gives
+//! `−(54/π) w² tan³γ/E*`.
 //!
 //! # Reduced form
 //!
@@ -38,12 +47,8 @@
 //!   `t^{2d−1} = 1/(2d)`, `Δ_c = t(1/(2d) − 1)`, force
 //!   `Π = −t³(2d+1)/(2(d+1))`.
 //! * Load-controlled pull-off (minimum of P(a)): `t^{2d−1} = 3/(2d)`,
-//!   `Π_c = −t³(2d−1)/(2(d+1))`. In dimensional form, with `A = α`, `b = β`:
-//!   `a_c^{d−1/2} = 3b/(2(d+1)A)`,
-//!   `P_c = −b(2d−1)/(2(d+1))·[3b/(2(d+1)A)]^{3/(2d−1)}` (REFERENCE.md §7);
-//!   d = 2 gives `−(3/2)πwR`, the cone (d = 1, B = cot γ, frictionless) gives
-//!   `−(54/π) w² tan³γ/E*`. No slip: the same with `A = C_NS C B E*/k*`,
-//!   `b = √(8πwE*C_NS)`.
+//!   `Π_c = −t³(2d−1)/(2(d+1))`; in dimensional form, with `A = α`, `b = β`,
+//!   the pull-off of *Formulas*.
 //!
 //! # Solving for the contact radius
 //!
@@ -63,22 +68,6 @@
 //!
 //! Hysteresis under displacement control is that of [`super::Jkr`]: jump-in at
 //! δ = 0 to the stable branch, jump-out below the minimum δ_c of δ(a).
-//!
-//! # Formulas
-//!
-//! Frictionless (1-37), (1-38):
-//!
-//! $$P(a) = C(d)\\,B\\,E^\ast a^{d+1} - \sqrt{8\pi w E^\ast a^3}, \qquad \delta(a) = D(d)\\,B\\,a^d - \sqrt{\frac{2\pi w a}{E^\ast}} .$$
-//!
-//! No slip (1-39), (1-40):
-//!
-//! $$P(a) = \frac{C_\mathrm{NS}\\, C(d)\\,B\\,E^\ast a^{d+1}}{k^\ast(d)} - \sqrt{8\pi w E^\ast C_\mathrm{NS}\\, a^3}, \qquad \delta(a) = \frac{D(d)\\,B\\,a^d}{k^\ast(d)} - \sqrt{\frac{2\pi w a}{E^\ast C_\mathrm{NS}}},$$
-//!
-//! $$k^\ast(d) = d\int_0^1 x^{d-1} \cos\Bigl(\varepsilon \ln\frac{1-x}{1+x}\Bigr)\\,dx, \qquad \varepsilon = \frac{\ln(3-4\nu)}{2\pi} .$$
-//!
-//! Load-controlled pull-off, with $A = C(d)BE^\ast$ (no slip: $C_\mathrm{NS}C(d)BE^\ast/k^\ast$) and $b = \sqrt{8\pi w E^\ast}$ (no slip: $\sqrt{8\pi w E^\ast C_\mathrm{NS}}$):
-//!
-//! $$a_c^{d-1/2} = \frac{3b}{2(d+1)A}, \qquad P_c = -\frac{b(2d-1)}{2(d+1)}\left(\frac{3b}{2(d+1)A}\right)^{3/(2d-1)} .$$
 //!
 //! # References
 //!

@@ -27,9 +27,9 @@
 //!
 //! The only non-trivial piece is the cube root of `cbrt_positive`, whose seed
 //! `from_bits(bits(x)/3 + K)` divides a `u64` by 3. AVX2 has neither a 64-bit
-//! division nor a 64-bit high multiply, so the quotient is formed exactly as
-//! `⌊bits·M / 2^65⌋`, `M = 0xAAAA_AAAA_AAAA_AAAB` (the reciprocal the
-//! compiler itself uses for the scalar u64 division by 3), with the 128-bit
+//! division nor a 64-bit high multiply, so the quotient is formed exactly by
+//! the multiplication of *Formulas* (the reciprocal the compiler itself uses
+//! for the scalar u64 division by 3), with the 128-bit
 //! product's high half assembled from four 32×32→64 multiplications
 //! (`vpmuludq`) and their carries. The seed, and so the two Halley steps after
 //! it, are those of the scalar code.

@@ -1,18 +1,13 @@
 //! Kendall: rigid flat-ended cylindrical punch of radius a adhering to an
 //! elastic half-space.
 //!
-//! Kendall 1971, "The adhesion and surface energy of elastic solids", J. Phys.
-//! D: Appl. Phys. 4:1186; thesis §4.4; REFERENCE.md §1:
-//!
-//! * in contact the punch is the Boussinesq flat punch,
-//!   `P = 2E* C_NS a δ`, constant stiffness `2E* C_NS a` (`C_NS = 1`
-//!   frictionless; for a bonded punch the no-slip factor of
-//!   [`crate::material::no_slip_factor`]);
-//! * the contact (whose radius is fixed) separates when the energy release
-//!   rate of the edge crack reaches w: `P_c = −√(8πwE* C_NS a³)` under both
-//!   controls (the radius cannot shrink, so there is no stable partial
-//!   detachment), at `δ_c = P_c/(2E* C_NS a) = −√(2πwa/(E* C_NS))`.
-//!   Thesis §4.4 uses the no-slip form for a nano-asperity.
+//! In contact the punch is the Boussinesq flat punch, of constant stiffness
+//! ($C_\mathrm{NS} = 1$ frictionless; for a bonded punch the no-slip factor
+//! of [`crate::material::no_slip_factor`]). The contact, whose radius is
+//! fixed, separates when the energy release rate of the edge crack reaches
+//! w, at the same force under both controls: the radius cannot shrink, so
+//! there is no stable partial detachment. Thesis §4.4 uses the no-slip form
+//! for a nano-asperity.
 //!
 //! Hysteresis under displacement control: out of contact (including the
 //! all-zero fresh state) the punch touches at δ ≥ 0; in contact it stays
@@ -21,9 +16,12 @@
 //!
 //! # Formulas
 //!
+//! Kendall 1971; thesis §4.4; REFERENCE.md §1:
+//!
 //! $$P = 2E^\ast C_\mathrm{NS}\\, a\\, \delta, \qquad P_c = -\sqrt{8\pi w E^\ast C_\mathrm{NS} a^3}, \qquad \delta_c = \frac{P_c}{2E^\ast C_\mathrm{NS} a} = -\sqrt{\frac{2\pi w a}{E^\ast C_\mathrm{NS}}},$$
 //!
-//! with $C_\mathrm{NS} = 1$ for a frictionless punch.
+//! with the constant stiffness $dP/d\delta = 2E^\ast C_\mathrm{NS} a$ in
+//! contact and $C_\mathrm{NS} = 1$ for a frictionless punch.
 //!
 //! # References
 //!

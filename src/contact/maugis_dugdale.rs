@@ -1,26 +1,24 @@
 //! Maugis–Dugdale: elastic sphere with a Dugdale (constant-stress) cohesive
 //! zone, the continuous bridge between DMT (λ → 0) and JKR (λ → ∞).
 //!
-//! # Model
+//! # Formulas
 //!
 //! Maugis, D. (1992) "Adhesion of spheres: the JKR-DMT transition using a
 //! Dugdale model", J. Colloid Interface Sci. 150:243–269; thesis (1-43).
 //! A uniform tension σ₀ acts between the surfaces wherever their gap is below
-//! `h₀ = w/σ₀` (so the work of adhesion is `σ₀h₀ = w`): over the annulus
-//! `a ≤ r ≤ c` around the contact of radius `a`. With `K = 4E*/3` the
-//! dimensionless variables are
+//! $h_0 = w/\sigma_0$ (so the work of adhesion is $\sigma_0 h_0 = w$): over
+//! the annulus `a ≤ r ≤ c` around the contact of radius `a`. With
+//! $K = 4E^\ast/3$ and $m = c/a$, the Maugis parameter λ
+//! ([`MaugisDugdale::lambda`]) and the dimensionless radii, load (P > 0
+//! repulsive) and overlap (δ > 0) are
 //!
-//! * `λ = 2σ₀ (R/(πwK²))^{1/3}` (Maugis parameter, [`MaugisDugdale::lambda`]),
-//! * `Ā = a (K/(πwR²))^{1/3}`, `C̄ = c (K/(πwR²))^{1/3}`, `m = c/a`,
-//! * `P̄ = P/(πwR)` (P > 0 repulsive), `Δ̄ = δ (K²/(π²w²R))^{1/3}` (δ > 0 overlap).
+//! $$\lambda = 2\sigma_0\left(\frac{R}{\pi w K^2}\right)^{1/3}, \quad \bar A = a\left(\frac{K}{\pi w R^2}\right)^{1/3}, \quad \bar C = c\left(\frac{K}{\pi w R^2}\right)^{1/3}, \quad \bar P = \frac{P}{\pi w R}, \quad \bar\Delta = \delta\left(\frac{K^2}{\pi^2 w^2 R}\right)^{1/3} .$$
 //!
 //! **Contact branch** (a > 0), Maugis (1992); thesis (1-43):
 //!
-//! ```text
-//! (λĀ²/2)[√(m²−1) + (m²−2) atan√(m²−1)] + (4λ²Ā/3)[√(m²−1) atan√(m²−1) − m + 1] = 1
-//! P̄ = Ā³ − λĀ²[√(m²−1) + m² atan√(m²−1)]
-//! Δ̄ = Ā² − (4/3)λĀ√(m²−1)
-//! ```
+//! $$\frac{\lambda \bar A^2}{2}\Bigl(\sqrt{m^2-1} + (m^2-2)\arctan\sqrt{m^2-1}\Bigr) + \frac{4\lambda^2 \bar A}{3}\Bigl(\sqrt{m^2-1}\arctan\sqrt{m^2-1} - m + 1\Bigr) = 1,$$
+//!
+//! $$\bar P = \bar A^3 - \lambda \bar A^2\Bigl(\sqrt{m^2-1} + m^2 \arctan\sqrt{m^2-1}\Bigr), \qquad \bar\Delta = \bar A^2 - \tfrac{4}{3}\lambda \bar A\sqrt{m^2-1} .$$
 //!
 //! It is evaluated along the parameter `s = √(m²−1) ∈ (0, ∞)`, `m = √(1+s²)`.
 //! For a given `s` the first equation is the quadratic `αĀ² + βĀ − 1 = 0` with
@@ -42,9 +40,7 @@
 //! contact of elastic spheres", J. Colloid Interface Sci. 192:326, from the
 //! displacements of a uniformly loaded disk, Johnson 1985, *Contact Mechanics*, ch. 3):
 //!
-//! ```text
-//! P̄ = −λπC̄²/2,   Δ̄ = C̄²/2 − 8λC̄/(3π) − 2/(πλ)
-//! ```
+//! $$\bar P = -\frac{\lambda\pi \bar C^2}{2}, \qquad \bar\Delta = \frac{\bar C^2}{2} - \frac{8\lambda \bar C}{3\pi} - \frac{2}{\pi\lambda} .$$
 //!
 //! It starts at `C̄ = 0` (`δ = −h₀`, zero force) and ends at `C̄₀`, the
 //! positive root of `λπC̄²/4 + (4λ²/3)(π/2 − 1)C̄ = 1`, where the central gap
@@ -85,20 +81,6 @@
 //! Evaluations never allocate: a bracketed, safeguarded Newton iteration in
 //! `ln s` on the monotone stable piece, started from the old state's `m = c/a`
 //! when there is one.
-//!
-//! # Formulas
-//!
-//! With $K = 4E^\ast/3$, $h_0 = w/\sigma_0$ and $m = c/a$:
-//!
-//! $$\lambda = 2\sigma_0\left(\frac{R}{\pi w K^2}\right)^{1/3}, \quad \bar A = a\left(\frac{K}{\pi w R^2}\right)^{1/3}, \quad \bar P = \frac{P}{\pi w R}, \quad \bar\Delta = \delta\left(\frac{K^2}{\pi^2 w^2 R}\right)^{1/3},$$
-//!
-//! $$\frac{\lambda \bar A^2}{2}\Bigl(\sqrt{m^2-1} + (m^2-2)\arctan\sqrt{m^2-1}\Bigr) + \frac{4\lambda^2 \bar A}{3}\Bigl(\sqrt{m^2-1}\arctan\sqrt{m^2-1} - m + 1\Bigr) = 1,$$
-//!
-//! $$\bar P = \bar A^3 - \lambda \bar A^2\Bigl(\sqrt{m^2-1} + m^2 \arctan\sqrt{m^2-1}\Bigr), \qquad \bar\Delta = \bar A^2 - \tfrac{4}{3}\lambda \bar A\sqrt{m^2-1},$$
-//!
-//! and on the non-contact branch ($a = 0$, cohesive disk of reduced radius $\bar C$)
-//!
-//! $$\bar P = -\frac{\lambda\pi \bar C^2}{2}, \qquad \bar\Delta = \frac{\bar C^2}{2} - \frac{8\lambda \bar C}{3\pi} - \frac{2}{\pi\lambda} .$$
 //!
 //! # References
 //!

@@ -1,11 +1,6 @@
 //! Galin's axisymmetric power-law punch `f(r) = B r^d`, d ≥ 1, no adhesion.
 //!
-//! Thesis (1-19)..(1-22); Galin 1946; Borodich 1983; Sneddon 1965:
-//!
-//! * `δ(a) = D(d) B a^d`, `D(d) = √π Γ(d/2 + 1) / Γ(d/2 + 1/2)`,
-//! * `P(a) = C(d) B E* a^{d+1}`, `C(d) = (2d/(d+1)) D(d)`,
-//! * `dP/dδ = 2 E* a` for every d (the BASh relation).
-//!
+//! The stiffness `dP/dδ = 2E*a` holds for every d (the BASh relation).
 //! `d = 2, B = 1/(2R)` is Hertz; `d = 1, B = cot γ` the cone of half-angle γ
 //! (`P = (π/2) E* a² cot γ`, `δ = (π/2) a cot γ`). Pyramids enter through the
 //! cone of equal projected area ([`BERKOVICH_EQUIVALENT_HALF_ANGLE`], …). A cone
@@ -13,6 +8,8 @@
 //! ([`PowerPunch::cone_in_imprint`], thesis (2-18)).
 //!
 //! # Formulas
+//!
+//! Thesis (1-19)..(1-22); Galin 1946; Borodich 1983; Sneddon 1965:
 //!
 //! $$\delta(a) = D(d)\\,B\\,a^d, \qquad P(a) = C(d)\\,B\\,E^\ast a^{d+1}, \qquad \frac{dP}{d\delta} = 2E^\ast a,$$
 //!

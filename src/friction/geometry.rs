@@ -12,8 +12,8 @@
 //! ## Input profiles: mean line and form
 //!
 //! Every height here is measured from the profile's mean line, taken as the
-//! least-squares level of the profile as given: Z_j = z_j − z̄ with
-//! z̄ = (1/n) Σ z_j, the convention of [`crate::surface::iso`]. Remove form
+//! least-squares level of the profile as given (Z_j of *Formulas*, with
+//! z̄ = (1/n) Σ z_j), the convention of [`crate::surface::iso`]. Remove form
 //! first so that this level is the mean line of the roughness:
 //! `profile.remove_form(Form::Linear)` for a tilt, `Form::Quadratic` for a
 //! bow or a stylus arc ([`Profile::remove_form`],
@@ -29,13 +29,11 @@
 //!
 //! ## Micro-rods (6-1), multi-level
 //!
-//! Rods of width w tile the profile from its first sample, x_k = x₀ + k·w,
-//! k = 0..N with N = ⌊(n − 1)·dx / w⌋ (the rods cover the sampled extent; the
-//! remainder shorter than one rod at the end is not used). The height of rod
-//! k is the mean of the profile heights at its two sides, interpolated
-//! linearly between samples (thesis (6-1), 6.2.1):
-//!
-//! h_k = (Z(x_k) + Z(x_k + w)) / 2.
+//! Rods of width w tile the profile from its first sample (x_k of
+//! *Formulas*), k = 0..N with N = ⌊(n − 1)·dx / w⌋ (the rods cover the
+//! sampled extent; the remainder shorter than one rod at the end is not
+//! used). The height h_k of rod k is the mean of the profile heights at its
+//! two sides, interpolated linearly between samples (thesis (6-1), 6.2.1).
 //!
 //! With several widths w₀ > w₁ > … each level's rods are nested inside the
 //! previous level's rods: w_{ℓ−1}/w_ℓ must be an integer m_ℓ ≥ 2 (a parent
@@ -56,11 +54,10 @@
 //!
 //! [`asperity_statistics`] gives, for either profile, the single-level
 //! model's asperity height Rq (5-15), mean width at the Rq level (5-16,
-//! 5-17) and spacing λ_a = 2π Rq/Δq (5-18, 5-19). The slider keeps them as a
+//! 5-17) and spacing λ_a (5-18, 5-19). The slider keeps them as a
 //! record; they also suggest a rod width (the thesis says the width "should
 //! correspond to some statistical property of the roughness profile",
 //! 6.2.1).
-//!
 //!
 //! # Formulas
 //!

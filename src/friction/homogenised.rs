@@ -15,8 +15,7 @@
 //! Fritsch & Carlson (SIAM J. Numer. Anal. 17 (1980) 238–246), with the
 //! slopes of Fritsch & Butland (SIAM J. Sci. Stat. Comput. 5 (1984)
 //! 300–304) as in MATLAB's `pchip`: at an interior knot the weighted
-//! harmonic mean `m_k = (w₁ + w₂)/(w₁/δ_{k−1} + w₂/δ_k)`, `w₁ = 2h_k +
-//! h_{k−1}`, `w₂ = h_k + 2h_{k−1}` of the neighbouring secants δ, and 0 where
+//! harmonic mean m_k of the neighbouring secants δ (*Formulas*), and 0 where
 //! the secants change sign (a local extremum); the one-sided three-point
 //! slope at the ends, limited to keep the shape. The interpolant is C¹,
 //! passes through every sample exactly, and is monotone wherever the samples
@@ -32,17 +31,17 @@
 //! [`HomogenisedFriction::step`] is the return mapping of regularised
 //! Coulomb friction (Wriggers, *Computational Contact Mechanics*, 2nd ed.,
 //! 2006, §5.2 and §6.2; Simo & Hughes, *Computational Inelasticity*, 1998,
-//! §1.2) with the slip limit of the Derjaguin law (thesis (4-3)):
+//! §1.2) with the slip limit of the Derjaguin law (thesis (4-3)), each step
+//! under *Formulas*:
 //!
-//! * nominal pressure `p = N/A_n`, adhesive force `A = p_adh(p)·A_n`;
-//! * slip limit `F_lim = μ(p)(N + A)` (or `μN`, `A + μN` for the Amontons
-//!   and Coulomb forms (1-1), (1-2) of [`CofForm`]);
-//! * trial force `F_tr = F_old − k Δs` (k the stick stiffness);
-//! * `|F_tr| ≤ F_lim`: stick, `F = F_tr`;
-//! * otherwise slip: `F = F_lim F_tr/|F_tr|`, plastic slip
-//!   `Δs_p = −Δλ F_tr/|F_tr|` with `Δλ = (|F_tr| − F_lim)/k`, dissipation
-//!   `ΔD = −F·Δs_p = F_lim Δλ ≥ 0`, split between the mechanisms by the
-//!   interpolated shares.
+//! * nominal pressure p and adhesive force A;
+//! * slip limit F_lim (or `μN`, `A + μN` for the Amontons and Coulomb forms
+//!   (1-1), (1-2) of [`CofForm`]);
+//! * trial force F_tr (k the stick stiffness);
+//! * `|F_tr| ≤ F_lim`: stick;
+//! * otherwise slip, with the plastic slip Δs_p and the dissipation
+//!   `ΔD = −F·Δs_p`, split between the mechanisms by the interpolated
+//!   shares.
 //!
 //! With `k = 0` (rigid–plastic) any non-zero slip increment slides:
 //! `F = −F_lim Δs/|Δs|`, `Δs_p = Δs`, `ΔD = F_lim|Δs|`.
@@ -64,7 +63,6 @@
 //!
 //! The step is rate independent: the time increment is validated and
 //! otherwise unused, so rate-dependent laws can share the signature.
-//!
 //!
 //! # Formulas
 //!

@@ -4,17 +4,17 @@
 //! (4-3)..(4-5)), the hand calculation of thesis 4.4 and the single-rod
 //! model of thesis 5.2.
 //!
-//! Where each formula of the thesis lives:
+//! Where each formula of the thesis lives (the formulas themselves are under
+//! *Formulas*):
 //!
 //! | thesis | here |
 //! |---|---|
-//! | (4-1) F_f = U_diss/x | [`ledger_step`], [`apparent_friction`] |
+//! | (4-1) friction force from the dissipated energy | [`ledger_step`], [`apparent_friction`] |
 //! | (4-2), (4-4), (4-5) U and μ as sums over mechanisms | [`Dissipation`] |
-//! | (1-1) μ = F/N; (1-2) F = A + μN; (4-3) μ = F/(N + A) | [`coefficient_of_friction`], [`CofForm`] |
+//! | (1-1) Amontons, (1-2) Coulomb, (4-3) Derjaguin forms of μ | [`coefficient_of_friction`], [`CofForm`] |
 //! | 4.3.3 "energy dissipated for every time-step" | [`ledger_step`] |
 //! | 4.4 hand calculation (μ = 1.0156) | [`apparent_friction`], [`yielded_slider_friction`] |
 //! | 5.2 single-rod model (μ ≈ 6.2) | [`single_rod`] |
-//!
 //!
 //! # Formulas
 //!

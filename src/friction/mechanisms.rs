@@ -4,35 +4,35 @@
 //! pull-off, 4.4), its Lennard-Jones stiffness (4.3.2) and the mechanical
 //! energies of an elastic–perfectly plastic micro-rod (4.3.1, 4.3.3).
 //!
-//! Where each formula of the thesis lives:
+//! Where each formula of the thesis lives (the formulas themselves are under
+//! *Formulas*):
 //!
 //! | thesis | here |
 //! |---|---|
-//! | (4-6) n_chem = (w_chem/D_chem)² | [`chemical_bond_count`] |
-//! | (4-7) U_chem,nano = n_chem U_chem,1 | [`bond_dissipation_per_slip`], [`NanoAsperityBonds`] |
-//! | (4-8) n_vdW = (w_vdW/D_chem)² | [`vdw_bond_count`] |
-//! | (4-9) U_vdW,nano = n_vdW U_vdW,1 | [`bond_dissipation_per_slip`], [`NanoAsperityBonds`] |
-//! | (4-10) δ = PL/(EA) | [`ElasticPlasticRod`] |
+//! | (4-6) number of chemical bonds n_chem | [`chemical_bond_count`] |
+//! | (4-7) chemical bond energy of a nano-asperity | [`bond_dissipation_per_slip`], [`NanoAsperityBonds`] |
+//! | (4-8) number of van der Waals bonds n_vdW | [`vdw_bond_count`] |
+//! | (4-9) van der Waals bond energy of a nano-asperity | [`bond_dissipation_per_slip`], [`NanoAsperityBonds`] |
+//! | (4-10) elastic shortening δ of a rod | [`ElasticPlasticRod`] |
 //! | (4-11), (4-12) 12-6 Lennard-Jones potential and force | [`LjNanoAsperity::potential`], [`LjNanoAsperity::pair_force`] |
-//! | (4-13) σ = D_chem/2^{1/6} | [`LjNanoAsperity::sigma`] |
-//! | (4-14) Σ = F_LJ N_A, E = 72εN_A/ρ | [`LjNanoAsperity::stress`], [`LjNanoAsperity::epsilon`] |
-//! | (4-15) ΔU_e = E A_c δ_e²/(2L) | [`elastic_strain_energy`] |
-//! | (4-16) ΔU_p = σ_y ε_p V_d | [`plastic_work`] |
-//! | 4.4 F_adh,1 = √(8πW₁₂E*C_NS a₁³), a₁ = w_vdW/2 | [`nano_holding_force`] |
-//! | 4.4 W₁₂ = A/(12πD₀²) | [`crate::material::hamaker_work_of_adhesion`] |
+//! | (4-13) Lennard-Jones σ from the bond spacing D_chem | [`LjNanoAsperity::sigma`] |
+//! | (4-14) Lennard-Jones stress Σ and modulus E | [`LjNanoAsperity::stress`], [`LjNanoAsperity::epsilon`] |
+//! | (4-15) elastic strain energy ΔU_e | [`elastic_strain_energy`] |
+//! | (4-16) plastic work ΔU_p | [`plastic_work`] |
+//! | 4.4 holding force F_adh,1 (Kendall no-slip pull-off) | [`nano_holding_force`] |
+//! | 4.4 Hamaker work of adhesion W₁₂ | [`crate::material::hamaker_work_of_adhesion`] |
 //!
 //! All quantities SI: m, N, Pa, J, J/m², J/m (energy per unit slip = N).
-//!
 //!
 //! # Formulas
 //!
 //! Bonds of one nano-asperity (4-6)–(4-9) and their dissipation per unit slip:
 //!
-//! $$n_\mathrm{chem} = \Bigl(\frac{w_\mathrm{chem}}{D_\mathrm{chem}}\Bigr)^2, \qquad n_\mathrm{vdW} = \Bigl(\frac{w_\mathrm{vdW}}{D_\mathrm{chem}}\Bigr)^2, \qquad \frac{dU}{dx} = \frac{n_\mathrm{chem}U_\mathrm{chem} + n_\mathrm{vdW}U_\mathrm{vdW}}{D_\mathrm{chem}} .$$
+//! $$n_\mathrm{chem} = \Bigl(\frac{w_\mathrm{chem}}{D_\mathrm{chem}}\Bigr)^2, \qquad n_\mathrm{vdW} = \Bigl(\frac{w_\mathrm{vdW}}{D_\mathrm{chem}}\Bigr)^2, \qquad U_\mathrm{chem,nano} = n_\mathrm{chem}U_\mathrm{chem,1}, \qquad U_\mathrm{vdW,nano} = n_\mathrm{vdW}U_\mathrm{vdW,1}, \qquad \frac{dU}{dx} = \frac{n_\mathrm{chem}U_\mathrm{chem} + n_\mathrm{vdW}U_\mathrm{vdW}}{D_\mathrm{chem}} .$$
 //!
 //! Lennard-Jones nano-asperity (4-11)–(4-14), $\rho = 2^{1/6}\sigma = D_\mathrm{chem}$:
 //!
-//! $$U(r) = 4\epsilon\Bigl(\Bigl(\frac{\sigma}{r}\Bigr)^{12} - \Bigl(\frac{\sigma}{r}\Bigr)^{6}\Bigr), \qquad F(r) = 24\epsilon\Bigl(\frac{2\sigma^{12}}{r^{13}} - \frac{\sigma^6}{r^7}\Bigr), \qquad \Sigma(\varepsilon_s) = \frac{E}{6}\bigl((1-\varepsilon_s)^{-13} - (1-\varepsilon_s)^{-7}\bigr), \qquad E = \frac{72\\,\epsilon N_A}{\rho} .$$
+//! $$U(r) = 4\epsilon\Bigl(\Bigl(\frac{\sigma}{r}\Bigr)^{12} - \Bigl(\frac{\sigma}{r}\Bigr)^{6}\Bigr), \qquad F(r) = 24\epsilon\Bigl(\frac{2\sigma^{12}}{r^{13}} - \frac{\sigma^6}{r^7}\Bigr), \qquad \Sigma(\varepsilon_s) = F_\mathrm{LJ} N_A = \frac{E}{6}\bigl((1-\varepsilon_s)^{-13} - (1-\varepsilon_s)^{-7}\bigr), \qquad E = \frac{72\\,\epsilon N_A}{\rho} .$$
 //!
 //! Micro-rod energies (4-10), (4-15), (4-16) and the holding force (4.4):
 //!

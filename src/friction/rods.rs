@@ -10,12 +10,12 @@
 //! unit depth). Each rod is elastic–perfectly plastic (thesis 4.3.1, Figure
 //! 4-3, (4-10)):
 //!
-//! * stiffness k_i = E·A / L_i (N/m), thesis (4-10) and the input list of 6.3
+//! * stiffness k_i (N/m, *Formulas*), thesis (4-10) and the input list of 6.3
 //!   ("k_i = E A_i / L_i … L_i is the height of the asperity"), with E the
 //!   effective rod modulus of (6-8), 1/E = 1/E₁ + 1/E₂
 //!   ([`crate::material::rod_effective_modulus`]; with a rigid
 //!   counter-surface E is the slider's own modulus);
-//! * yield force F_y = σ_y·A (N); past it the force stays F_y ("constant
+//! * yield force F_y (N); past it the force stays F_y ("constant
 //!   stress is assumed even if strain increases", 4.3.1).
 //!
 //! The rod length L_i is measured from the face of the bulk to the rod tip.
@@ -37,18 +37,13 @@
 //! The slider's free rod heights H_i are measured from the slider's mean line
 //! *toward* the counter-surface (downward). The **position** b (m) is the
 //! height of the slider's mean line above the counter-surface's mean line.
-//! Rod i's free tip is then at height b − H_i, and its **overlap**
-//!
-//! o_i = g_i + H_i − b
-//!
-//! is positive when the free rod would penetrate the counter-surface (then
+//! Rod i's free tip is then at height b − H_i, and its **overlap** o_i
+//! (*Formulas*) is positive when the free rod would penetrate the counter-surface (then
 //! it is compressed by o_i) and negative when there is a clearance. Lowering
 //! the slider (decreasing b) increases every overlap, so the total force
-//! F(b) = Σ f_i(o_i) is nonincreasing in b. Forces are compressive-positive:
-//!
-//! f_i = min(k_i·max(o_i, 0), F_y),
-//!
-//! which is (6-9)/(6-13) with (4-10) and the yield cap of 4.3.1. Each rod has
+//! F(b) is nonincreasing in b. Forces f_i are compressive-positive, the rod
+//! law of *Formulas*, which is (6-9)/(6-13) with (4-10) and the yield cap of
+//! 4.3.1. Each rod has
 //! two breakpoints in b: contact onset a_i = g_i + H_i (o_i = 0) and yield
 //! onset y_i = a_i − F_y/k_i (o_i = F_y/k_i). Between breakpoints F is linear.
 //!
@@ -115,10 +110,8 @@
 //! ## Plasticity with volume conservation, thesis 6.2.3
 //!
 //! After the equilibrium is found, each yielded rod is shortened
-//! permanently by s_i so that, at the solved position, it carries exactly
-//! F_y elastically: (o_i − s_i) = ε_y·(L_i − s_i) with ε_y = σ_y/E, i.e.
-//!
-//! s_i = (o_i − ε_y·L_i)/(1 − ε_y) ≥ 0.
+//! permanently by s_i ≥ 0 (*Formulas*) so that, at the solved position, it
+//! carries exactly F_y elastically: (o_i − s_i) = ε_y·(L_i − s_i).
 //!
 //! The removed volume A·s_i is given to rods that did not yield in the same
 //! solve ("equally distributed to the closest neighbouring
@@ -141,24 +134,23 @@
 //!
 //! ## Energies (thesis 4-15, 4-16)
 //!
-//! * Plastic work of the increment (4-16): σ_y ε_p V_d = F_y·s_i per rod.
-//! * Elastic strain energy stored (4-15): ½ f_i e_i with e_i = f_i/k_i the
-//!   elastic compression after the plastic update.
-//! * Released energy: for each rod, max(0, U_old − U_new) between the stored
-//!   energy recorded in the old state and the new one — the strain energy
+//! * Plastic work of the increment (4-16), U_p,i per rod (σ_y ε_p V_d).
+//! * Elastic strain energy stored (4-15), U_e,i, with e_i the elastic
+//!   compression after the plastic update.
+//! * Released energy: for each rod, the drop between the stored energy
+//!   recorded in the old state and the new one — the strain energy
 //!   given back by rods that unload, for a dissipation ledger. Energy stored
 //!   on loading is not dissipated. Every term is ≥ 0.
 //!
 //! ## Rods on an elastic substrate
 //!
 //! [`CoupledRodBed`] couples the rod bases through an elastic half-space of
-//! contact modulus E* (Boussinesq): the base of rod i sinks by
-//! u_i = Σ_j C_ij f_j, C_ij the displacement at the centre of square i due
-//! to a unit force spread uniformly over square j ([`square_influence`]:
-//! Love's closed form for near pairs, Gauss–Legendre quadrature of the
-//! Boussinesq kernel 1/(π E* r) for far ones). With M = diag(1/k) + C the
-//! rod forces solve the box-constrained problem 0 ≤ f ≤ F_y with
-//! (M f)_i = o_i where 0 < f_i < F_y; an active-set iteration with dense LU
+//! contact modulus E* (Boussinesq): the base of rod i sinks by u_i
+//! (*Formulas*), C_ij the displacement at the centre of square i due to a
+//! unit force spread uniformly over square j ([`square_influence`]: Love's
+//! closed form for near pairs, Gauss–Legendre quadrature of the Boussinesq
+//! kernel for far ones). The rod forces solve the box-constrained problem
+//! 0 ≤ f ≤ F_y of *Formulas*; an active-set iteration with dense LU
 //! solves it, and an outer bracketed Newton iteration on b gives fixed load.
 //! This replaces the rigid bulk of (6-9)..(6-16) by an elastic one that
 //! couples the asperities ("the behaviour of the bulk of the body, which will
@@ -181,7 +173,6 @@
 //! ([`RodBed::solution`]) the sweep and warm-start solves do not allocate
 //! (the new state's vectors are resized only when their length differs).
 //! The dense reference and the coupled model allocate their matrices.
-//!
 //!
 //! # Formulas
 //!

@@ -1,30 +1,26 @@
-//! The Gaussian height integrals of the Greenwood–Williamson model,
+//! The Gaussian height integrals F_q(h) of the Greenwood–Williamson model
+//! (defined under *Formulas*) for the standard normal density φ (Greenwood &
+//! Williamson 1966, Proc. R. Soc. A 295, 300–319; thesis (1-29), (1-30)).
 //!
-//! `F_q(h) = ∫_h^∞ (s − h)^q φ(s) ds`, `φ(s) = e^{−s²/2}/√(2π)`,
-//!
-//! for the standard normal density φ (Greenwood & Williamson 1966, Proc. R.
-//! Soc. A 295, 300–319; thesis (1-29), (1-30)). With summit heights of
-//! standard deviation σ and the separation d measured from their mean, the
-//! height integrals of (1-29), (1-30) are `∫_d^∞ (z − d)^q φ_σ(z) dz =
-//! σ^q F_q(d/σ)`: F₀ gives the number of contacts, F₁ the real area and
-//! F_{3/2} the load.
+//! With summit heights of standard deviation σ and the separation d measured
+//! from their mean, the height integrals of (1-29), (1-30) are
+//! $\int_d^\infty (z - d)^q\\,\varphi_\sigma(z)\\,dz = \sigma^q F_q(d/\sigma)$:
+//! F₀ gives the number of contacts, F₁ the real area and F_{3/2} the load.
 //!
 //! ## Methods
 //!
-//! * F₀ and F₁ in closed form: `F₀ = Q(h) = erfc(h/√2)/2`,
-//!   `F₁ = φ(h) − h Q(h)` ([`f0`], [`f1`]).
+//! * F₀ and F₁ in closed form ([`f0`], [`f1`]).
 //! * Half-integer orders q = m − 1/2 (m = 0..3: F_{−1/2}, F_{1/2}, F_{3/2},
-//!   F_{5/2}), the hot path of the load: with `s − h = u²`,
-//!   `F_{m−1/2}(h) = (1/√(2π)) ∫_{−∞}^{∞} u^{2m} e^{−(u²+h)²/2} du`,
-//!   an entire, even, super-exponentially decaying integrand, so the
-//!   trapezoidal rule converges exponentially (Trefethen & Weideman 2014,
+//!   F_{5/2}), the hot path of the load: with `s − h = u²` the integral over
+//!   u of *Formulas*, an entire, even, super-exponentially decaying
+//!   integrand, so the trapezoidal rule converges exponentially (Trefethen & Weideman 2014,
 //!   SIAM Rev. 56). The step is set from the width of the integrand (about
 //!   `1/√(2h)` for h ≫ 0, `1/(2√(−h))` for h ≪ 0) and the range from where
 //!   `e^{−(u²+h)²/2}` falls below `e^{−45}` of its peak: 9 to 61 exponentials
 //!   per call, measured relative error 6e-14 at worst for −30 ≤ h ≤ 37 and
-//!   4e-15 for −3 ≤ h ≤ 6, against the parabolic-cylinder closed form
-//!   `F_q(h) = Γ(q+1) e^{−h²/4} D_{−q−1}(h)/√(2π)` evaluated in 40-digit
-//!   arithmetic (`tests/statistics_gaussian.rs`).
+//!   4e-15 for −3 ≤ h ≤ 6, against the parabolic-cylinder closed form of
+//!   *Formulas* evaluated in 40-digit arithmetic
+//!   (`tests/statistics_gaussian.rs`).
 //! * h ≤ −30, any q: the binomial moment series
 //!   `F_q(h) = |h|^q Σ_k C(q, 2k) (2k−1)!! h^{−2k}` (the neglected lower tail
 //!   `Q(30)` is below 1e-197).

@@ -1,22 +1,26 @@
 //! Greenwood–Williamson (1966): a rough surface of N summits of equal radius
 //! R and random heights against a rigid (or equivalent) flat, each summit a
-//! Hertz contact with the overlap `z − d` (thesis §1.7, (1-29), (1-30)):
+//! Hertz contact with the overlap `z − d` (thesis §1.7, (1-29), (1-30)).
 //!
-//! * load `P = (4/3) N E* R^{1/2} ∫_d^∞ (z − d)^{3/2} φ(z) dz` (1-29),
-//! * real area `A = π N R ∫_d^∞ (z − d) φ(z) dz` (1-30),
-//! * contacts `n = N ∫_d^∞ φ(z) dz`,
-//! * stiffness `−dP/dd = 2 N E* R^{1/2} ∫_d^∞ (z − d)^{1/2} φ(z) dz`,
+//! # Formulas
+//!
+//! The load (1-29), the real area (1-30), the number of contacts, the
+//! stiffness, and the plasticity index (1-31), which says whether the
+//! summits stay elastic:
+//!
+//! $$P = \tfrac43 N E^\ast R^{1/2}\int_d^\infty (z-d)^{3/2}\varphi(z)\\,dz, \qquad A = \pi N R\int_d^\infty (z-d)\\,\varphi(z)\\,dz, \qquad n = N\int_d^\infty \varphi(z)\\,dz,$$
+//!
+//! $$-\frac{dP}{dd} = 2NE^\ast R^{1/2}\int_d^\infty (z-d)^{1/2}\varphi(z)\\,dz, \qquad \psi = \frac{E^\ast}{H}\sqrt{\frac{\sigma}{R}} .$$
 //!
 //! with d the separation of the flat from the mean summit height and φ the
 //! summit-height density ([`HeightDistribution`]). Two rough surfaces reduce
 //! to one against a flat with `1/R = 1/R₁ + 1/R₂`, `σ² = σ₁² + σ₂²`
-//! (GW 1966; Greenwood & Tripp 1970). The plasticity index
-//! `ψ = (E*/H)√(σ/R)` (1-31) says whether the summits stay elastic.
+//! (GW 1966; Greenwood & Tripp 1970).
 //!
-//! For Gaussian heights the integrals are `σ^q F_q(d/σ)` of
-//! [`super::gaussian`]: an evaluation of the load costs one trapezoidal sum
-//! of at most 61 exponentials (relative accuracy 1e-12; timings in
-//! BENCHMARKS.md §6) and allocates nothing.
+//! For Gaussian heights of standard deviation $\sigma$ the integrals are
+//! $\sigma^q F_q(d/\sigma)$ ([`super::gaussian`]): an evaluation of the load
+//! costs one trapezoidal sum of at most 61 exponentials (relative accuracy
+//! 1e-12; timings in BENCHMARKS.md §6) and allocates nothing.
 //!
 //! Area and load are nearly proportional (GW 1966): for Gaussian heights the
 //! mean real pressure `P/A = (4/(3π)) E* (σ/R)^{1/2} F_{3/2}/F₁` falls by a
@@ -24,15 +28,6 @@
 //! decades (d/σ from 1 to 3.33), the local exponent d ln A / d ln P rising
 //! from 0.922 to 0.972; for exponential heights it is exactly constant,
 //! `E* √(σ/(πR))`.
-//!
-//! # Formulas
-//!
-//! $$P = \tfrac43 N E^\ast R^{1/2}\int_d^\infty (z-d)^{3/2}\varphi(z)\\,dz, \qquad A = \pi N R\int_d^\infty (z-d)\\,\varphi(z)\\,dz, \qquad n = N\int_d^\infty \varphi(z)\\,dz,$$
-//!
-//! $$-\frac{dP}{dd} = 2NE^\ast R^{1/2}\int_d^\infty (z-d)^{1/2}\varphi(z)\\,dz, \qquad \psi = \frac{E^\ast}{H}\sqrt{\frac{\sigma}{R}} .$$
-//!
-//! For Gaussian heights of standard deviation $\sigma$ the integrals are
-//! $\sigma^q F_q(d/\sigma)$ ([`super::gaussian`]).
 //!
 //! # References
 //!

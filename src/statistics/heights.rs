@@ -1,7 +1,6 @@
-//! Summit-height distributions and their tail moments
-//! `M_q(d) = ∫_d^∞ (z − d)^q φ(z) dz` (m^q), the height integrals of the
-//! Zhuravlev / Greenwood–Williamson / Kragelsky models (thesis (1-29),
-//! (1-30), (5-7)).
+//! Summit-height distributions and their tail moments M_q(d) (m^q), the
+//! height integrals of the Zhuravlev / Greenwood–Williamson / Kragelsky
+//! models (thesis (1-29), (1-30), (5-7)).
 //!
 //! Heights z (m) are measured upwards; the separation d (m) is the height of
 //! the counter-surface's reference plane in the same frame. The parametric

@@ -4,33 +4,29 @@
 //! counter-surface, so a rod of height z carries `k (z − d)` at the separation
 //! d (k its axial stiffness `E A_rod/L`).
 //!
-//! * [`KragelskyRods`]: any height distribution ([`HeightDistribution`]):
-//!   `P = N k ∫_d^∞ (z − d) φ dz`, `A = N A_rod ∫_d^∞ φ dz`, `n = N ∫_d^∞ φ dz`.
-//!   Load and area are exactly proportional for exponential heights and
-//!   nearly so for Gaussian ones.
-//! * [`BearingCurveRods`]: Kragelsky's own closed form, with the top of the
-//!   roughness described by the bearing-area curve `η(ε) = b ε^ν` (the
-//!   fraction of the contour area A_c cut at the relative approach
-//!   `ε = a/R_max`): `A_r = A_c b ε^ν` and
-//!   `N = K A_c b R_max ε^{ν+1}/(ν+1) = γ₁ γ₂ A_c K a^{ν+1}` with
-//!   `γ₁ = b/R_max^ν`, `γ₂ = 1/(ν+1)` and K the rod stiffness per unit area
-//!   (`E/L`, Pa/m).
+//! # Formulas
+//!
+//! [`KragelskyRods`]: any height distribution ([`HeightDistribution`]), rods
+//! of stiffness $k$ and section $A_\mathrm{rod}$:
+//!
+//! $$P = Nk\int_d^\infty (z-d)\\,\varphi(z)\\,dz, \qquad A = N A_\mathrm{rod}\int_d^\infty \varphi(z)\\,dz, \qquad n = N\int_d^\infty \varphi(z)\\,dz .$$
+//!
+//! Load and area are exactly proportional for exponential heights and nearly
+//! so for Gaussian ones.
+//!
+//! [`BearingCurveRods`]: Kragelsky's own closed form, with the top of the
+//! roughness described by the bearing-area curve
+//! $\eta(\varepsilon) = b\\,\varepsilon^\nu$ (the fraction of the contour area
+//! A_c cut at the relative approach $\varepsilon = a/R_\mathrm{max}$), the
+//! real area, the load, and K the rod stiffness per unit area (`E/L`, Pa/m):
+//!
+//! $$A_r = A_c\\, b\\,\varepsilon^\nu, \qquad N = \frac{K A_c\\, b\\, R_\mathrm{max}\\,\varepsilon^{\nu+1}}{\nu+1} = \gamma_1\gamma_2 A_c K a^{\nu+1}, \qquad \gamma_1 = \frac{b}{R_\mathrm{max}^\nu}, \ \ \gamma_2 = \frac{1}{\nu+1} .$$
 //!
 //! The thesis's (5-7) is unreadable in the extracted text; the form above is
 //! the rod model's own integral with the thesis's names (N the load, A_c the
 //! contour area, a the approach, γ₁, γ₂ factors of the distribution, K the
 //! stiffness), and it is checked against [`KragelskyRods`] on a sampled
 //! bearing curve in `tests/statistics.rs`.
-//!
-//! # Formulas
-//!
-//! Rods of stiffness $k$ and section $A_\mathrm{rod}$:
-//!
-//! $$P = Nk\int_d^\infty (z-d)\\,\varphi(z)\\,dz, \qquad A = N A_\mathrm{rod}\int_d^\infty \varphi(z)\\,dz, \qquad n = N\int_d^\infty \varphi(z)\\,dz .$$
-//!
-//! Bearing-area curve $\eta(\varepsilon) = b\\,\varepsilon^\nu$, $\varepsilon = a/R_\mathrm{max}$:
-//!
-//! $$A_r = A_c\\, b\\,\varepsilon^\nu, \qquad N = \frac{K A_c\\, b\\, R_\mathrm{max}\\,\varepsilon^{\nu+1}}{\nu+1} = \gamma_1\gamma_2 A_c K a^{\nu+1}, \qquad \gamma_1 = \frac{b}{R_\mathrm{max}^\nu}, \ \ \gamma_2 = \frac{1}{\nu+1} .$$
 //!
 //! # References
 //!

@@ -6,8 +6,9 @@
 //! of summit heights:
 //!
 //! * [`zhuravlev`]: two rough surfaces of Hertzian caps, summit density
-//!   linear in depth (closed forms (1-25)..(1-28): P ∝ x^{11/2}, S ∝ x⁵,
-//!   μ ∝ P^{−1/11}) or any density by quadrature ((1-23), (1-24)).
+//!   linear in depth (closed forms (1-25)..(1-28): $P \propto x^{11/2}$,
+//!   $S \propto x^5$, $\mu \propto P^{-1/11}$) or any density by quadrature
+//!   ((1-23), (1-24)).
 //! * [`greenwood_williamson`]: a rough surface of equal-radius Hertzian
 //!   summits against a flat, Gaussian, exponential or empirical heights
 //!   ((1-29), (1-30)), its inverse (separation at a load) and the plasticity
@@ -34,8 +35,7 @@
 //!
 //! with $f(w) = \tfrac43 E^\ast R^{1/2} w^{3/2}$ (Greenwood–Williamson), $f(w) = kw$
 //! (Kragelsky), $f(w) \propto w^{(2+\kappa(d-1))/d}$ (power-law asperities), or
-//! the pair double integral of Zhuravlev, $P \propto x^{11/2}$ for a summit
-//! density linear in depth.
+//! the pair double integral of Zhuravlev.
 //!
 //! # References
 //!

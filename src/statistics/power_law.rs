@@ -1,19 +1,22 @@
 //! Power-law asperities and nonlinear materials through Borodich's rescaling
 //! (thesis §3.7, (3-27), (3-28)).
 //!
+//! # Formulas
+//!
 //! An asperity `B r^d` pressed by w into a material `σ ∝ ε^κ` carries, by the
 //! rescaling of one known solution `(P₁, δ₁, a₁)` at shape scale `B₁`
-//! ((3-13), (3-14), (3-24); [`crate::rescaling`]),
+//! ((3-13), (3-14), (3-24); [`crate::rescaling`]), with
+//! $q = (2 + \kappa(d-1))/d$ and $\lambda = B/B_1$, the load and (eliminating
+//! P between (3-13) and (3-14)) the contact radius
 //!
-//! * `P(w) = λ^{(κ−2)/d} P₁ (w/δ₁)^q`, `q = (2 + κ(d−1))/d`,
-//! * `a(w) = a₁ λ^{−1/d} (w/δ₁)^{1/d}` (eliminating P between (3-13) and
-//!   (3-14)),
+//! $$P(w) = \lambda^{(\kappa-2)/d} P_1 \Bigl(\frac{w}{\delta_1}\Bigr)^q, \qquad a(w) = a_1\lambda^{-1/d}\Bigl(\frac{w}{\delta_1}\Bigr)^{1/d} .$$
 //!
-//! with `λ = B/B₁`. Summing over summit heights:
+//! Summing over summit heights:
 //!
 //! * Greenwood–Williamson type (against a flat):
-//!   `P = N λ^{(κ−2)/d} (P₁/δ₁^q) ∫_d^∞ (z − d)^q φ dz`,
-//!   `A = N π a₁² λ^{−2/d} δ₁^{−2/d} ∫_d^∞ (z − d)^{2/d} φ dz`;
+//!
+//!   $$P = N\lambda^{(\kappa-2)/d}\frac{P_1}{\delta_1^q}\int_d^\infty (z-d)^q\varphi\\,dz, \qquad A = N\pi a_1^2\lambda^{-2/d}\delta_1^{-2/d}\int_d^\infty (z-d)^{2/d}\varphi\\,dz ;$$
+//!
 //! * Zhuravlev type (two rough surfaces, pair interference
 //!   `x − (ξ₁ + ξ₂)`): `P = λ^{(κ−2)/d} (P₁/δ₁^q) (1/N) ∫∫ [x − (ξ₁+ξ₂)]^q n n`
 //!   — (3-27) for κ = 1 (exponent `(d+1)/d`, prefactor `λ^{−1/d}`) and (3-28)
@@ -23,14 +26,6 @@
 //!
 //! κ = 1, d = 2 with a Hertz solution is Greenwood–Williamson, resp.
 //! Zhuravlev: `q = 3/2`, area exponent 1 (tested in `tests/statistics.rs`).
-//!
-//! # Formulas
-//!
-//! With $q = (2 + \kappa(d-1))/d$ and $\lambda = B/B_1$:
-//!
-//! $$P(w) = \lambda^{(\kappa-2)/d} P_1 \Bigl(\frac{w}{\delta_1}\Bigr)^q, \qquad a(w) = a_1\lambda^{-1/d}\Bigl(\frac{w}{\delta_1}\Bigr)^{1/d},$$
-//!
-//! $$P = N\lambda^{(\kappa-2)/d}\frac{P_1}{\delta_1^q}\int_d^\infty (z-d)^q\varphi\\,dz, \qquad A = N\pi a_1^2\lambda^{-2/d}\delta_1^{-2/d}\int_d^\infty (z-d)^{2/d}\varphi\\,dz .$$
 //!
 //! # References
 //!

@@ -3,8 +3,8 @@
 //! (Gaussian height moments of arbitrary order, see
 //! [`super::gaussian::tail_moment_quadrature`]).
 //!
-//! Takahasi & Mori (1974): with `x = c + w·tanh((π/2) sinh t)` the integrand
-//! decays double-exponentially in `t`, so the trapezoidal rule in `t` converges
+//! Takahasi & Mori (1974): under the substitution of *Formulas* the
+//! integrand decays double-exponentially in `t`, so the trapezoidal rule in `t` converges
 //! exponentially even for algebraic endpoint singularities (`t^q` at 0). Each
 //! level halves the step and reuses the previous nodes; the difference between
 //! two successive levels is the error estimate (a pessimistic one: the error

@@ -1,23 +1,28 @@
 //! Zhuravlev's model (1940; thesis §1.7, (1-23)..(1-28)): two statistically
 //! identical rough surfaces of spherical caps of radius R, summit density
-//! `n(ξ)` per unit depth ξ below the highest summit (N summits in all). At
-//! the approach x of the two highest-summit planes, the caps at depths ξ₁, ξ₂
-//! overlap by `x − (ξ₁ + ξ₂)`, and the Hertz law of a pair
-//! (effective radius `R_eff = R/2`, contact modulus E*) gives
+//! `n(ξ)` per unit depth ξ below the highest summit (N summits in all).
 //!
-//! * load `P = (4/3) E* R_eff^{1/2} (1/N) ∫∫_{ξ₁+ξ₂≤x} [x − (ξ₁+ξ₂)]^{3/2}
-//!   n(ξ₁) n(ξ₂) dξ₁ dξ₂` (1-23) — with `E* = E/(2(1−ν²))` the thesis's
-//!   `√2 R^{1/2} E/(3(1−ν²))`,
-//! * real area `S = π R_eff (1/N) ∫∫ [x − (ξ₁+ξ₂)] n n dξ₁ dξ₂` (1-24),
-//! * contacting pairs `(1/N) ∫∫ n n dξ₁ dξ₂`,
+//! # Formulas
 //!
+//! At the approach x of the two highest-summit planes, the caps at depths
+//! ξ₁, ξ₂ overlap by `x − (ξ₁ + ξ₂)`, and the Hertz law of a pair (effective
+//! radius `R_eff = R/2`, contact modulus E*) gives the load (1-23) and the
+//! real area (1-24)
+//!
+//! $$P = \tfrac43 E^\ast R_\mathrm{eff}^{1/2}\\,\frac1N\iint_{\xi_1+\xi_2 \le x}\bigl(x - (\xi_1+\xi_2)\bigr)^{3/2} n(\xi_1)\\,n(\xi_2)\\,d\xi_1\\,d\xi_2, \qquad S = \pi R_\mathrm{eff}\\,\frac1N\iint \bigl(x - (\xi_1+\xi_2)\bigr)\\,n\\,n\\,d\xi_1\\,d\xi_2 ,$$
+//!
+//! and the number of contacting pairs $\frac1N\iint n\\,n\\,d\xi_1\\,d\xi_2$,
 //! where `n(ξ₂)dξ₂/N` is the probability that a summit of one surface meets
-//! one of the other in the layer dξ₂. Zhuravlev's linear density
-//! `n(ξ) = αξ` makes the double integrals `α² ∫₀^x (x − s)^q s³/6 ds =
-//! α² x^{q+4} Γ(q+1)/Γ(q+5)`, so `P = C₁ x^{11/2}` (1-25), `S = C₂ x⁵`
-//! (1-26), and with the friction force proportional to the area,
-//! `F = τ S` (1-27), `F ∝ P^{10/11}` (1-28) and `μ = F/P ∝ P^{−1/11}`:
-//! nearly independent of the load, as Zhuravlev argued.
+//! one of the other in the layer dξ₂. With `E* = E/(2(1−ν²))` the prefactor
+//! of the load is the thesis's `√2 R^{1/2} E/(3(1−ν²))`. Zhuravlev's linear
+//! density $n(\xi) = \alpha\xi$ gives the double integrals in closed form,
+//! hence the load (1-25) and the area (1-26) and, with the friction force
+//! proportional to the area (1-27), the friction law (1-28):
+//!
+//! $$\alpha^2\int_0^x (x-s)^q\\,\frac{s^3}{6}\\,ds = \alpha^2 x^{q+4}\\,\frac{\Gamma(q+1)}{\Gamma(q+5)}, \qquad P = C_1 x^{11/2}, \quad S = C_2 x^5, \quad F = \tau S \propto P^{10/11}, \quad \mu \propto P^{-1/11} .$$
+//!
+//! The coefficient of friction is nearly independent of the load, as
+//! Zhuravlev argued.
 //!
 //! The double integrals are those of [`crate::rescaling`]
 //! ([`zhuravlev_integral_linear`] in closed form, [`zhuravlev_integral`] by
@@ -25,14 +30,6 @@
 //! prefactors, the inversion at a given load and the friction law. The
 //! power-law asperity version (3-27), (3-28) is
 //! [`super::PowerLawAsperities::zhuravlev_linear`].
-//!
-//! # Formulas
-//!
-//! $$P = \tfrac43 E^\ast R_\mathrm{eff}^{1/2}\\,\frac1N\iint_{\xi_1+\xi_2 \le x}\bigl(x - (\xi_1+\xi_2)\bigr)^{3/2} n(\xi_1)\\,n(\xi_2)\\,d\xi_1\\,d\xi_2, \qquad S = \pi R_\mathrm{eff}\\,\frac1N\iint \bigl(x - (\xi_1+\xi_2)\bigr)\\,n\\,n\\,d\xi_1\\,d\xi_2,$$
-//!
-//! and for $n(\xi) = \alpha\xi$
-//!
-//! $$\alpha^2\int_0^x (x-s)^q\\,\frac{s^3}{6}\\,ds = \alpha^2 x^{q+4}\\,\frac{\Gamma(q+1)}{\Gamma(q+5)}, \qquad P = C_1 x^{11/2}, \quad S = C_2 x^5, \quad F = \tau S \propto P^{10/11}, \quad \mu \propto P^{-1/11} .$$
 //!
 //! # References
 //!

@@ -6,7 +6,6 @@
 //! so the plans of the last [`PLAN_CACHE`] lengths are kept per thread
 //! (bounded memory: a plan holds its twiddle table, 16 bytes per point).
 //!
-//!
 //! # Formulas
 //!
 //! The real-input forward transform computes, for $n$ even,

@@ -1,13 +1,10 @@
 //! The ISO 16610-21 Gaussian profile filter (formerly ISO 11562): mean line
 //! and roughness profile for a cut-off wavelength λc.
 //!
-//! Weighting function (ISO 16610-21, eq. 1):
-//!
-//! s(x) = (1/(αλc)) exp(−π (x/(αλc))²),  α = √(ln 2/π) ≈ 0.4697,
-//!
-//! whose amplitude transmission for the mean line is
-//! a₁/a₀ = exp(−π (αλc/λ)²): 50 % at λ = λc. The roughness profile is the
-//! profile minus the mean line (transmission 1 − exp(−π(αλc/λ)²)).
+//! The weighting function s(x) is that of ISO 16610-21, eq. 1, and its
+//! amplitude transmission a₁/a₀ for the mean line is 50 % at λ = λc (both
+//! under *Formulas*). The roughness profile is the profile minus the mean
+//! line (transmission 1 − a₁/a₀).
 //!
 //! Discretisation: weights s(k·dx)·dx, truncated at |x| ≤ λc (the neglected
 //! tail is exp(−π/α²) ≈ 7·10⁻⁷ of the peak) and normalised to unit sum. The

@@ -8,16 +8,15 @@
 //! differ.
 //!
 //! * [`SelfAffine`]: Gaussian self-affine profiles and maps by Fourier
-//!   filtering of white noise (PSD ∝ q^{−(1+2H)} on a profile,
-//!   q^{−2(1+H)} on a map; roll-off and short-wavelength cut-off), scaled to a
-//!   target Rq.
+//!   filtering of white noise (the power-law PSD of *Formulas*, with a
+//!   roll-off and a short-wavelength cut-off), scaled to a target Rq.
 //! * [`WeierstrassMandelbrot`]: the Weierstrass–Mandelbrot function with
 //!   random phases (Berry & Lewis 1980; Ausloos & Berman 1985; thesis 1.5.3,
 //!   after Roques-Carmes et al. 1988).
 //! * [`CantorBorodich`]: the Cantor–Borodich profile (Borodich & Mosolov
 //!   1991; Borodich & Onishchenko 1993) with two descendants, or three
-//!   (Warren & Krajcinovic 1995), and its box-counting dimension
-//!   dim = 1 + ln(mβ)/ln(1/α) (thesis 1.5.3 for m = 2).
+//!   (Warren & Krajcinovic 1995), and its box-counting dimension (*Formulas*;
+//!   thesis 1.5.3 for m = 2).
 //!
 //! # Formulas
 //!

@@ -14,7 +14,7 @@
 //!   averaged (ISO 4287 §4, ISO 4288 §4.1). Rt is over the evaluation length.
 //!   Without a sampling length the whole profile is one sampling length.
 //! * Integrals over a sampling length are sample means (each sample stands
-//!   for one interval dx), e.g. Rq = √((1/m) Σ Z_j²) for (1-5).
+//!   for one interval dx), e.g. Rq for (1-5) (*Formulas*).
 //! * Profile elements (Rc, RSm): a peak (the profile above the mean line
 //!   between two crossings) with the valley that follows it. Peaks or valleys
 //!   lower than the height discrimination (default 10 % of Rz of the sampling
@@ -23,11 +23,9 @@
 //!   §3.2.8–3.2.9). Elements cut by a sampling-length boundary are ignored.
 //!   Rc and RSm are averaged over the sampling lengths that hold at least one
 //!   element, and are `None` when none does.
-//! * Local slopes dZ/dX for RΔq use the seven-point formula
-//!   dZ/dX_j = (Z_{j+3} − 9Z_{j+2} + 45Z_{j+1} − 45Z_{j−1} + 9Z_{j−2} −
-//!   Z_{j−3}) / (60 dx), with the 5- and 3-point central formulas within
+//! * Local slopes dZ/dX for RΔq use the seven-point formula of *Formulas*,
+//!   with the 5- and 3-point central formulas within
 //!   three samples of the ends and one-sided differences at the end points.
-//!
 //!
 //! # Formulas
 //!

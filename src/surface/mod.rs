@@ -38,7 +38,6 @@
 //! (`heights: &[f64], dx: f64`) so that callers holding plain arrays (the C
 //! ABI) need not build one.
 //!
-//!
 //! # Formulas
 //!
 //! The central quantities, detailed in the submodules:

@@ -3,24 +3,20 @@
 //!
 //! Among all sections of k consecutive samples of a profile, the pattern is
 //! the one whose height distribution is closest to that of the whole profile
-//! in the two-sample Kolmogorov–Smirnov sense,
-//!
-//! D(s) = sup_z |F_{s,k}(z) − F_n(z)|,
-//!
+//! in the two-sample Kolmogorov–Smirnov sense (D(s) of *Formulas*, with
 //! F_{s,k} the empirical distribution of z_s..z_{s+k−1} and F_n that of all n
-//! heights. Replicating the pattern gives a profile "equivalent in terms of
+//! heights). Replicating the pattern gives a profile "equivalent in terms of
 //! height distribution" (thesis Figs. 1-11…1-13: a 52-point pattern of a
 //! 668-point profile).
 //!
 //! Algorithm, O(n log n): heights are ranked once (ties grouped, since both
 //! distribution functions jump at the same values). For each distinct value
-//! g the scaled difference V(g) = n·C_w(g) − k·E(g), with C_w(g) the number of
+//! g the scaled difference V(g) of *Formulas*, with C_w(g) the number of
 //! window heights ≤ g and E(g) the number of all heights ≤ g, lives in a
 //! segment tree with range addition; sliding the window by one sample adds
-//! ±n to a suffix of groups, and D = max_g |V(g)| / (n k) is read at the root.
+//! ±n to a suffix of groups, and D is read at the root.
 //! Integer arithmetic makes D exact and the choice among equal D
 //! deterministic (the first start wins).
-//!
 //!
 //! # Formulas
 //!

@@ -4,13 +4,12 @@
 //!
 //! * **Peak** (profile, 3-point definition): z_j > z_{j−1} and z_j > z_{j+1}
 //!   (a flat top of equal samples counts once, at its middle sample).
-//!   Curvature κ = −(z_{j+1} − 2z_j + z_{j−1})/dx² (1/m, > 0 at a peak).
+//!   Curvature κ_peak from the second difference (1/m, > 0 at a peak).
 //! * **Summit** (map, 8-neighbour definition; Greenwood 1984): z_{ij} higher
-//!   than all 8 neighbours. Curvature κ = −(z_xx + z_yy)/2, the mean of the
-//!   principal curvatures, from central second differences.
+//!   than all 8 neighbours. Curvature κ_summit, the mean of the principal
+//!   curvatures, from central second differences.
 //!
 //! Heights are measured from the mean line (mean plane).
-//!
 //!
 //! # Formulas
 //!

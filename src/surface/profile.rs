@@ -1,7 +1,6 @@
 //! Uniformly sampled line scans ([`Profile`]) and height maps
 //! ([`Topography`]), and least-squares form removal ([`Form`], [`MapForm`]).
 //!
-//!
 //! # Formulas
 //!
 //! Form removal fits, by least squares over the samples $(x_j, z_j)$, a

@@ -3,30 +3,26 @@
 //!
 //! ## Normalisation
 //!
-//! The PSD follows the thesis's (1-7): G(ω) = (2/π) ∫₀^∞ R(δ) cos(ωδ) dδ, a
-//! **one-sided** density in angular wavenumber q = ω (rad/m), so that
-//! R(δ) = ∫₀^∞ G(q) cos(qδ) dq and in particular **Rq² = R(0) = ∫₀^∞ G(q) dq**.
-//! For n samples z_j at spacing dx (length L = n·dx), with Z_j = z_j − z̄ and
-//! its DFT X_k = Σ_j Z_j e^{−2πijk/n}, the estimate is
-//!
-//! q_k = 2πk/L,  G_k = (dx / (π n)) |X_k|²  for 0 < k < n/2,
-//!
+//! The PSD G follows the thesis's (1-7) (*Formulas*): a **one-sided**
+//! density in angular wavenumber q = ω (rad/m), whose integral is the
+//! variance, **Rq² = R(0)**. For n samples z_j at spacing dx (length
+//! L = n·dx), with Z_j = z_j − z̄ and its DFT X_k = Σ_j Z_j e^{−2πijk/n}, the
+//! estimate G_k at the wavenumbers q_k of *Formulas* holds for 0 < k < n/2,
 //! and half that at k = 0 and (n even) k = n/2. Then Σ_k G_k Δq, with
 //! Δq = 2π/L, equals (1/n) Σ_j Z_j² exactly (Parseval): m₀ = Rq² to rounding.
 //! Units: m² per rad/m = m³.
 //!
-//! Spectral moments m_p = ∫ q^p G(q) dq (discretised as Σ q_k^p G_k Δq):
-//! m₀ is the height variance, m₂ the slope variance, m₄ the curvature
-//! variance of the band-limited profile; Nayak's bandwidth parameter is
-//! α = m₀ m₄ / m₂² (≥ 1; 1.5 for a Gaussian ideal low-pass, → ∞ broadband).
+//! Spectral moments m_p (discretised as Σ q_k^p G_k Δq): m₀ is the height
+//! variance, m₂ the slope variance, m₄ the curvature variance of the
+//! band-limited profile; Nayak's bandwidth parameter α is ≥ 1 (1.5 for a
+//! Gaussian ideal low-pass, → ∞ broadband).
 //!
-//! The ACF (1-6, 1-8) is the biased estimator R_k = (1/n) Σ_{j<n−k} Z_j Z_{j+k},
-//! R_0 = Rq², computed by zero-padded FFT. Both ACF and PSD are even in Z:
+//! The ACF (1-6, 1-8) is the biased estimator R_k, R_0 = Rq², computed by
+//! zero-padded FFT. Both ACF and PSD are even in Z:
 //! the inverted profile −z has the same ones (1-9).
 //!
 //! Windowed PSDs (Hann) divide by the window's mean square, so ∫ G dq still
 //! estimates the variance; Parseval is then no longer exact.
-//!
 //!
 //! # Formulas
 //!

@@ -4,18 +4,36 @@
 //! 2000, Colloids Surf. A 172:175; seed 001, Lee & Chong 2015, Eqs. 1–5;
 //! REFERENCE §6).
 //!
-//! # Equations (non-dimensional, REFERENCE §6)
+//! # Formulas
 //!
-//! With `h̄ = h/z₀`, `r̄ = r/√(Rz₀)`, `p̄ = p z₀/Δγ` (attraction positive),
-//! `ᾱ = α/z₀` (the rigid approach, 0 when the undeformed apex sits at z₀) and
-//! the Tabor parameter `μ = (RΔγ²/(E*²z₀³))^{1/3}`:
+//! Greenwood 1997; Feng 2000; seed 001, Eqs. 1–5; REFERENCE §6. The gap
+//! h(r) of the sphere at the rigid approach α (0 when the undeformed apex
+//! sits at z₀), the Lennard-Jones 3-9 pressure p (attraction positive), the
+//! elastic displacement u and the force P (P > 0 repulsive):
 //!
-//! ```text
-//! h̄(r̄) = −ᾱ + r̄²/2 + 1 + ū(r̄)
-//! ū(r̄) = −(4μ^{3/2}/π) ∫₀^∞ p̄(s̄) · s̄/(r̄+s̄) · K(2√(r̄s̄)/(r̄+s̄)) ds̄
-//! p̄(h̄) = (8/3)[h̄⁻³ − h̄⁻⁹]
-//! P/(πRΔγ) = −2 ∫₀^∞ p̄ r̄ dr̄          (P > 0 repulsive)
-//! ```
+//! $$h(r) = -\alpha + \frac{r^2}{2R} + z_0 + u(r), \qquad p(h) = \frac{8\Delta\gamma}{3z_0}\left(\Bigl(\frac{z_0}{h}\Bigr)^3 - \Bigl(\frac{z_0}{h}\Bigr)^9\right),$$
+//!
+//! $$u(r) = -\frac{4}{\pi E^\ast}\int_0^\infty p(s)\\,\frac{s}{r+s}\\,K\\!\left(\frac{2\sqrt{rs}}{r+s}\right) ds, \qquad P = -2\pi\int_0^\infty p(r)\\, r\\, dr,$$
+//!
+//! with $K(k)$ the complete elliptic integral of the first kind of modulus $k$
+//! and the Tabor parameter $\mu = \bigl(R\\,\Delta\gamma^2/(E^{\ast 2} z_0^3)\bigr)^{1/3}$.
+//! The solver works in $\bar h = h/z_0$, $\bar r = r/\sqrt{R z_0}$,
+//! $\bar p = p z_0/\Delta\gamma$ and $\bar\alpha = \alpha/z_0$, where the
+//! equations read
+//!
+//! $$\bar h(\bar r) = -\bar\alpha + \frac{\bar r^2}{2} + 1 + \bar u(\bar r), \qquad \bar p(\bar h) = \frac{8}{3}\left(\bar h^{-3} - \bar h^{-9}\right),$$
+//!
+//! $$\bar u(\bar r) = -\frac{4\mu^{3/2}}{\pi}\int_0^\infty \bar p(\bar s)\\,\frac{\bar s}{\bar r+\bar s}\\,K\\!\left(\frac{2\sqrt{\bar r\bar s}}{\bar r+\bar s}\right) d\bar s, \qquad \frac{P}{\pi R\\,\Delta\gamma} = -2\int_0^\infty \bar p\\,\bar r\\,d\bar r .$$
+//!
+//! Rigid limit ($\mu \to 0$), $h_m = 1 - \bar\alpha$:
+//!
+//! $$\frac{P}{\pi R\\,\Delta\gamma} = -\frac{8}{3}\left(h_m^{-2} - \frac{h_m^{-8}}{4}\right).$$
+//!
+//! The displacement under a uniform pressure $p$ on a disk of radius $c$
+//! (Johnson 1985, §3.4; REFERENCE §6), both branches equal to $c$ at
+//! $r = c$:
+//!
+//! $$u = \frac{4p}{\pi E^\ast}\\,D(r, c), \qquad D(r, c) = \int_0^c \frac{s}{r+s}\\,K\\!\left(\frac{2\sqrt{rs}}{r+s}\right) ds = c\\,E(r/c) \ \ (r \le c), \qquad D(r, c) = r\Bigl(E(c/r) - \bigl(1 - c^2/r^2\bigr)K(c/r)\Bigr) \ \ (r \ge c).$$
 //!
 //! # Discretisation
 //!
@@ -33,10 +51,8 @@
 //!   map ([`LjSolver::mesh`]).
 //! * **Pressure** piecewise constant on each cell, `p̄_j = p̄(h̄(x_j))`.
 //! * **Influence matrix** exact for that pressure: a uniform pressure on a
-//!   disk of radius `c` gives (Johnson 1985, §3.4; REFERENCE §6)
-//!   `D(r, c) = ∫₀^c s/(r+s) K(2√(rs)/(r+s)) ds = c E(r/c)` for `r ≤ c` and
-//!   `r [E(c/r) − (1 − c²/r²) K(c/r)]` for `r ≥ c` (both `= c` at `r = c`,
-//!   taken exactly), annuli are differences of disks:
+//!   disk of radius `c` gives the influence `D(r, c)` of *Formulas* (at
+//!   `r = c` taken exactly), annuli are differences of disks:
 //!   `A_ij = D(x_i, c_{j+1}) − D(x_i, c_j)`. The logarithmic singularity of the
 //!   kernel is integrated analytically. `D` is evaluated through the
 //!   arithmetic–geometric mean, vectorised over the nodes (module `disk`).
@@ -116,24 +132,6 @@
 //! displacement-controlled loop (outer
 //! branch up to the jump-in, jump at fixed ᾱ, contact branch back down to the
 //! jump-out, jump back), `∮ P̄ dᾱ` in units of `πRΔγ z₀`.
-//!
-//! # Formulas
-//!
-//! Dimensional form (REFERENCE §6; attraction positive, $P > 0$ repulsive):
-//!
-//! $$h(r) = -\alpha + \frac{r^2}{2R} + z_0 + u(r), \qquad p(h) = \frac{8\Delta\gamma}{3z_0}\left(\Bigl(\frac{z_0}{h}\Bigr)^3 - \Bigl(\frac{z_0}{h}\Bigr)^9\right),$$
-//!
-//! $$u(r) = -\frac{4}{\pi E^\ast}\int_0^\infty p(s)\\,\frac{s}{r+s}\\,K\\!\left(\frac{2\sqrt{rs}}{r+s}\right) ds, \qquad P = -2\pi\int_0^\infty p(r)\\, r\\, dr,$$
-//!
-//! with $K(k)$ the complete elliptic integral of the first kind of modulus $k$
-//! and the Tabor parameter $\mu = \bigl(R\\,\Delta\gamma^2/(E^{\ast 2} z_0^3)\bigr)^{1/3}$.
-//! Rigid limit ($\mu \to 0$), $h_m = 1 - \bar\alpha$:
-//!
-//! $$\frac{P}{\pi R\\,\Delta\gamma} = -\frac{8}{3}\left(h_m^{-2} - \frac{h_m^{-8}}{4}\right).$$
-//!
-//! Influence of a uniform pressure $p$ on a disk of radius $c$:
-//!
-//! $$u = \frac{4pc}{\pi E^\ast}\\,E(r/c) \ \ (r \le c), \qquad u = \frac{4pr}{\pi E^\ast}\Bigl(E(c/r) - \bigl(1 - c^2/r^2\bigr)K(c/r)\Bigr) \ \ (r \ge c).$$
 //!
 //! # References
 //!
