@@ -243,6 +243,8 @@ struct Case {
     nu_sample: f64,
     indenter: Indenter,
     area: Option<Vec<f64>>,
+    /// The instrument's own E and H for test 1 (data README; CSM averages
+    /// over 100–200 nm depth with the same tip area function).
     instrument: Option<(f64, f64)>,
 }
 
@@ -291,61 +293,111 @@ fn options(c: &Case) -> IndentationOptions {
     }
 }
 
-#[test]
-fn measured_curves_table() {
-    println!(
-        "{:<56} {:>16} {:>16} {:>16} {:>16} {:>16} {:>8} {:>8}  flags",
-        "file", "kappa", "d", "E_r GPa", "E GPa", "H GPa", "m", "h_f nm"
+fn is_fused_silica(c: &Case) -> bool {
+    c.file.starts_with("fused_silica")
+}
+
+/// Diamond: E_i = 1141 GPa, ν_i = 0.07 (Oliver & Pharr 1992).
+const E_DIAMOND: f64 = 1141e9;
+const NU_DIAMOND: f64 = 0.07;
+
+/// E_r from a sample modulus and Poisson ratio against a diamond tip (2-15).
+fn reduced_vs_diamond(e: f64, nu: f64) -> f64 {
+    1.0 / ((1.0 - nu * nu) / e + (1.0 - NU_DIAMOND * NU_DIAMOND) / E_DIAMOND)
+}
+
+/// The independent reference: fused silica E = 72 GPa, ν = 0.17, the
+/// calibration values of Oliver & Pharr (1992, J. Mater. Res. 7:1564; 2004,
+/// J. Mater. Res. 19:3), against diamond: E_r = 69.6 GPa.
+fn fused_silica_reduced_modulus() -> f64 {
+    reduced_vs_diamond(72e9, 0.17)
+}
+
+/// How far from 69.6 GPa Oliver–Pharr can land on a fused-silica file, from
+/// that file's calibration, not from our result. E_r ∝ A^{-1/2}, and the tip
+/// area function is the only calibration the files carry (data README). Two
+/// independent measures of its error, added:
+/// 1. the instrument's own modulus with the same area function (data README,
+///    test 1: CSM average over 100–200 nm, 76.3 and 76.0 GPa at ν = 0.18)
+///    misses the reference by 6.0 % and 5.6 % in E_r;
+/// 2. at our contact depths (h_c = 0.7–1.35 µm) A is dominated by C0·h_c²
+///    (the C1, C2 terms are 0.4 % and 2.3 % of it), and the ideal Berkovich
+///    geometry fixes C0 = 24.5; the calibrated C0 departs from it by
+///    √(27.31/24.5) − 1 = 5.6 % in E_r for the Agilent tip, 0.4 % for the
+///    XP tip (C0 = 24.70).
+///
+/// So 11.6 % (Agilent calibration file) and 6.0 % (XP file). Oliver–Pharr
+/// gives 62.6 and 66.0 GPa on them (10.1 % and 5.2 % below 69.6 GPa).
+fn fused_silica_tolerance(c: &Case) -> f64 {
+    let (e_instrument, _) = c.instrument.expect("instrument values");
+    let er_instrument = reduced_vs_diamond(e_instrument, c.nu_sample);
+    let c0 = c.area.as_ref().expect("area function")[0];
+    (er_instrument / fused_silica_reduced_modulus() - 1.0).abs() + ((c0 / 24.5).sqrt() - 1.0).abs()
+}
+
+/// The unloading exponent of fused silica, independently measured: 1.24
+/// (Gadelrab, thesis case M, ../shared/REFERENCE.md §3) and 1.25 (Oliver &
+/// Pharr 1992, Table I), each printed to ±0.005.
+const FUSED_SILICA_UNLOADING_EXPONENT: (f64, f64) = (1.24 - 0.005, 1.25 + 0.005);
+
+fn assert_fused_silica(c: &Case, what: &str, er: f64, m: f64, m_stderr: f64) {
+    let reference = fused_silica_reduced_modulus();
+    let tol = fused_silica_tolerance(c);
+    assert!(
+        (er / reference - 1.0).abs() <= tol,
+        "{} ({what}): E_r = {:.2} GPa, reference {:.2} GPa ± {:.1} %",
+        c.file,
+        er / 1e9,
+        reference / 1e9,
+        100.0 * tol
     );
+    // Our fit's exponent within three of its standard errors of the range.
+    let (lo, hi) = FUSED_SILICA_UNLOADING_EXPONENT;
+    assert!(
+        (lo - 3.0 * m_stderr..=hi + 3.0 * m_stderr).contains(&m),
+        "{} ({what}): unloading exponent {m} ± {m_stderr}, measured elsewhere 1.24–1.25",
+        c.file
+    );
+}
+
+/// The measured curves against independent values where they exist:
+/// fused silica's E_r and unloading exponent (see [`assert_fused_silica`]);
+/// the segments the instrument marked (the labels) against the ones we
+/// detect without them; the README's statement that the steel file's
+/// indenter is undocumented. NiAl (composition and state unknown) and the
+/// steel (grade and tip unknown) have no independent modulus: for them only
+/// a finite analysis is claimed.
+#[test]
+fn measured_curves_against_references() {
     for c in cases() {
         let Some(curve) = data(c.file) else { continue };
         let r = analyze(&curve, &options(&c)).unwrap_or_else(|e| panic!("{}: {e}", c.file));
+        assert_finite(&r);
         let op = r.unloading.as_ref().expect("unloading");
+        let er = r.reduced_modulus.unwrap();
         println!(
-            "{:<56} {:>7.3} ± {:<6.3} {:>7.3} ± {:<6.3} {:>7.2} ± {:<6.2} {:>7.2} ± {:<6.2} {:>7.3} ± {:<6.3} {:>8.3} {:>8.1}  {}",
+            "{:<56} κ {:.3} ± {:.3}, d {:.3} ± {:.3}, m {:.3} ± {:.3}, E_r {:.2} GPa, E {:.2} GPa, H {:.3} GPa, flags {}",
             c.file,
             r.kappa,
             r.kappa_stderr,
             r.d,
             r.d_stderr,
-            r.reduced_modulus.unwrap() / 1e9,
-            r.reduced_modulus_stderr.unwrap() / 1e9,
-            r.sample_modulus.unwrap_or(0.0) / 1e9,
-            r.sample_modulus_stderr.unwrap_or(0.0) / 1e9,
-            r.hardness.unwrap() / 1e9,
-            r.hardness_stderr.unwrap() / 1e9,
             op.fit.exponent,
-            op.fit.final_depth * 1e9,
+            op.fit.exponent_stderr,
+            er / 1e9,
+            r.sample_modulus.unwrap_or(0.0) / 1e9,
+            r.hardness.unwrap() / 1e9,
             r.flags.join(",")
         );
-        println!(
-            "    loading slope {:.4} ± {:.4} (R² {:.5}, n {}), unloading R² {:.6} n {}, S = {:.4e} N/m, h_c = {:.1} nm, A = {:.4e} m², E_r(BASh) = {:.2} GPa, P_max = {:.4e} N, h_max = {:.1} nm, segments {:?}",
-            r.loading.slope,
-            r.loading.slope_stderr,
-            r.loading.r_squared,
-            r.loading.n_points,
-            op.fit.r_squared,
-            op.fit.n_points,
-            op.stiffness,
-            op.contact_depth * 1e9,
-            op.contact_area,
-            op.reduced_modulus_bash / 1e9,
-            op.peak_load,
-            op.peak_depth * 1e9,
-            r.segmentation
-        );
-        if let Some((e, h)) = c.instrument {
-            println!(
-                "    instrument (CSM average 100-200 nm): E = {:.2} GPa, H = {:.3} GPa; ours/instrument: E {:.3}, H {:.3}",
-                e / 1e9,
-                h / 1e9,
-                r.sample_modulus.unwrap() / e,
-                r.hardness.unwrap() / h
-            );
+        if is_fused_silica(&c) {
+            assert_fused_silica(&c, "labels", er, op.fit.exponent, op.fit.exponent_stderr);
         }
-        // Detection without labels finds nearly the same segments.
-        let det = segment(&curve, false).unwrap();
-        println!("    detected segments {:?}", det);
+        if c.indenter == Indenter::Unknown {
+            // Data README: the steel file does not state its indenter.
+            assert!(r.flags.contains(&"area_function_assumed"), "{:?}", r.flags);
+        }
+        // The instrument's segment markers are the reference for detection:
+        // without them E_r moves by less than 1 %.
         let r2 = analyze(
             &curve,
             &IndentationOptions {
@@ -354,15 +406,25 @@ fn measured_curves_table() {
             },
         )
         .unwrap();
-        println!(
-            "    unlabelled: kappa {:.3} ± {:.3}, d {:.3} ± {:.3}, E_r {:.2} GPa, H {:.3} GPa",
-            r2.kappa,
-            r2.kappa_stderr,
-            r2.d,
-            r2.d_stderr,
-            r2.reduced_modulus.unwrap() / 1e9,
-            r2.hardness.unwrap() / 1e9
+        assert_finite(&r2);
+        let er2 = r2.reduced_modulus.unwrap();
+        assert!(
+            (er2 / er - 1.0).abs() < 0.01,
+            "{}: detected segments give E_r = {:.2} GPa, the instrument's labels {:.2} GPa",
+            c.file,
+            er2 / 1e9,
+            er / 1e9
         );
+        if is_fused_silica(&c) {
+            let op2 = r2.unloading.as_ref().unwrap();
+            assert_fused_silica(
+                &c,
+                "detected segments",
+                er2,
+                op2.fit.exponent,
+                op2.fit.exponent_stderr,
+            );
+        }
     }
 }
 
@@ -572,10 +634,12 @@ fn too_few_points_and_single_segments() {
     ));
 }
 
+/// The Oliver–Pharr numbers depend on the unloading window: on fused silica,
+/// every usual window must still meet the independent reference. NiAl and
+/// the steel have no independent value and are not run here.
 #[test]
 fn measured_window_sensitivity() {
-    // The Oliver–Pharr numbers depend on the unloading window: print it.
-    for c in cases() {
+    for c in cases().into_iter().filter(is_fused_silica) {
         let Some(curve) = data(c.file) else { continue };
         for w in [[0.25, 0.95], [0.5, 0.95], [0.2, 1.0]] {
             let o = IndentationOptions {
@@ -585,9 +649,19 @@ fn measured_window_sensitivity() {
             let r = analyze(&curve, &o).unwrap();
             let u = r.unloading.as_ref().unwrap();
             println!(
-                "{:<56} window {:?}: m {:.3} ± {:.3}, d {:.2} ± {:.2}, E_r {:.2} GPa, E {:.2} GPa, H {:.3} GPa",
-                c.file, w, u.fit.exponent, u.fit.exponent_stderr, r.d, r.d_stderr,
-                r.reduced_modulus.unwrap() / 1e9, r.sample_modulus.unwrap_or(0.0) / 1e9, r.hardness.unwrap() / 1e9
+                "{:<56} window {:?}: m {:.3} ± {:.3}, E_r {:.2} GPa",
+                c.file,
+                w,
+                u.fit.exponent,
+                u.fit.exponent_stderr,
+                r.reduced_modulus.unwrap() / 1e9
+            );
+            assert_fused_silica(
+                &c,
+                &format!("window {w:?}"),
+                r.reduced_modulus.unwrap(),
+                u.fit.exponent,
+                u.fit.exponent_stderr,
             );
         }
     }
