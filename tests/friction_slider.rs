@@ -209,6 +209,16 @@ fn cof_independent_of_nominal_area() {
     assert!(mu.iter().all(|x| (x / m - 1.0).abs() <= 0.15));
 }
 
+/// The chapter-6 copper scene at 0.1 σ_y A_n with both surfaces cut from the
+/// measured Hommel stylus profile. No independent COF exists for it: the
+/// profile's material is not documented (profiles README) and its texture is
+/// not the thesis's (rms 0.14 µm after a quadratic detrend against the
+/// scene's 0.5 µm), and the model gives 1.9 here, outside both the thesis's
+/// chapter-6 figures (0.79–1.08, Tables 6-1 to 6-3) and the Cu–Cu literature
+/// range (0.8–1.2, thesis 6.5.1). So no COF is claimed. What is claimed: every
+/// step's ledger is valid, the friction force is the dissipation over the
+/// distance ((4-1)), and chemical bonds dominate the dissipation as thesis
+/// 6.5.2 finds for copper (93 % here).
 #[test]
 fn measured_profile_slides() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/profiles");
@@ -240,7 +250,13 @@ fn measured_profile_slides() {
     for r in &run.steps {
         check_step(r);
     }
-    assert!(run.summary.mean_cof > 0.0 && run.summary.mean_cof.is_finite());
+    let d = run.summary.dissipation;
+    let f = d.total() / s.sliding.distance;
+    assert!((run.summary.mean_friction_force - f).abs() <= 1e-12 * f);
+    assert!(
+        d.chemical > d.van_der_waals + d.elastic + d.plastic && d.chemical / d.total() > 0.5,
+        "{d:?}"
+    );
 }
 
 // ----------------------------------------------------- no allocation
