@@ -501,7 +501,9 @@ impl TabulatedLaw {
     /// `lj.solver(n_grid)` (the same discrete model) within `tolerance` in
     /// the error measure of the module documentation, jumps at the solver's
     /// turning points and pulls off at its force minimum (the last one along
-    /// the contact branch where the grid leaves several).
+    /// the contact branch where the grid leaves several). The grid's own
+    /// error comes on top: at μ = 1 an N = 128 table built for 1e-4 pulls off
+    /// 4e-4 πRw from the converged pull-off (BENCHMARKS.md §4).
     ///
     /// Build time (optimised, tolerance 1e-4): 0.1–0.5 s at N = 128 for
     /// μ ≤ 1, about 2 s at μ = 3 and 10 (N = 256) and 17 s at μ = 10 on the
