@@ -23,7 +23,9 @@
 //! for μ ≤ 3, 512 up to μ = 10). The curve reference is the Lennard-Jones
 //! curve on N = 128 radial cells for μ ≤ 1 and 256 above (above μ = 1 the
 //! edge continuation on meshes that move with the contact edge), evaluated
-//! through its table (within 1e-4 relative of the solver on that grid), so
+//! through its table (within 1e-4 relative of the solver on that grid; on
+//! N = 128 at μ = 1 the grid itself is 4e-4 πRw from the converged
+//! pull-off, BENCHMARKS.md §4), so
 //! curve errors below about 1e-4·πRw are not resolved; at μ = 10 and 30
 //! the pull-off itself is known to about 2e-4 πRw (BENCHMARKS.md §3). The tabulated Lennard-Jones model is that
 //! table, so its pull-off error is its grid's. The full Lennard-Jones model
