@@ -205,7 +205,7 @@ fn influence_matrix_generic(x: &[f64], c: &[f64]) -> Vec<f64> {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use super::{disk_column, disk_displacement, influence_matrix};
 
     /// `D(r, 1)` against values computed with mpmath at 40 digits for the
     /// double nearest each `r` (`r E(1/r²) − r(1 − 1/r²)K(1/r²)` outside,

@@ -61,8 +61,15 @@
 //! monotonically along the branch, so an extremum in `m` is one along the
 //! path.
 
-use super::path::{BWork, Con, State};
-use super::*;
+use super::march::{StepMetric, KRYLOV_REFRESH};
+use super::mesh::Mesh;
+use super::numeric::{deriv3, stencil3};
+use super::observe::is_unresolved;
+use super::path::{self, BWork, Con, State};
+use super::setup::jkr_radius_estimate;
+use super::special::Special;
+use super::{LjCurve, LjPullOff, LjSolver};
+use crate::error::{Error, Result};
 
 /// `ln 3^{1/6}`: the log-gap of the peak of the Lennard-Jones attraction.
 pub(super) const MARK: f64 = 0.183_102_048_111_638_9;
@@ -823,7 +830,8 @@ impl LjSolver {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use super::{jkr_radius_estimate, LjSolver, Mesh, SWITCH};
+    use crate::contact::lj_sphere::LjSphere;
 
     /// The curve with the neck phase continued in its marker, against the
     /// same discrete problem followed in arclength through the whole neck

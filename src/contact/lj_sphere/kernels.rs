@@ -176,7 +176,7 @@ pub(super) fn matvec<T: Elem + core::ops::Neg<Output = T>>(
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use super::{matvec, panel_plain, Elem, PANEL};
 
     /// The dispatched panel (AVX2/FMA where available) equals the plain
     /// loops that machines without them run, for every remainder of the

@@ -219,7 +219,7 @@ fn substitute_generic(lu: &[f32], linv: &[f32], uinv: &[f32], n: usize, x: &mut 
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use super::{Lu32, MatMut};
     use faer::linalg::solvers::{PartialPivLu, Solve};
     use faer::MatRef;
 

@@ -21,8 +21,13 @@
 // Index loops mirror the matrix algebra.
 #![allow(clippy::needless_range_loop)]
 
+use super::kernels;
 use super::lu32::Lu32;
-use super::*;
+use super::newton::{Mode, Work};
+use super::numeric::{dot, norm2};
+use super::observe::unresolved;
+use super::{LjPoint, LjSolver};
+use crate::error::{Error, Result};
 
 /// The extra equation of the bordered system.
 #[derive(Debug, Clone)]

@@ -8,9 +8,11 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
 use super::edge::EdgeState;
-use super::path::State;
-use super::*;
+use super::observe::unresolved;
+use super::path::{BWork, State};
+use super::LjSolver;
 use crate::contact::curve::PathPoint;
+use crate::error::{check, Error, Result};
 
 /// The sampled path of [`LjSolver::path_samples`], in the reduced units of
 /// the sphere: `delta` = ᾱ (approach in units of z₀, 0 where the undeformed
@@ -947,7 +949,8 @@ fn path_point(st: &State, d: [f64; 3]) -> PathPoint {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use super::{EdgeState, Kind, EDGE_DIFF};
+    use crate::contact::lj_sphere::LjSphere;
 
     /// At μ = 10, N = 256 the edge-phase family is smooth through the
     /// jump-out: ᾱ(m) on 13 equally spaced markers around its minimum has
