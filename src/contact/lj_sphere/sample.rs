@@ -28,7 +28,7 @@ pub struct LjPathSamples {
     /// start gap): the far tail's checks.
     pub tail_checks: Vec<PathPoint>,
     /// Exact points beyond the last one (the continuation up to three times
-    /// [`LjOptions::max_force`]), outside the range the mesh is designed for:
+    /// [`LjOptions::max_force`](super::LjOptions::max_force)), outside the range the mesh is designed for:
     /// there the discrete solution carries node-crossing ripples of ~1e-4
     /// (force) to ~1e-3 (radius) relative at N = 128 that no smooth tail
     /// follows; for reporting the deep tail's deviation, not for bounds.
@@ -193,14 +193,14 @@ impl LjSolver {
 
     /// Dense samples of the equilibrium path for a tabulated law, from the
     /// continuation start (far, stable, attractive) to `P̄ ≥`
-    /// [`LjOptions::max_force`], such that cubic Hermite interpolation along
+    /// [`LjOptions::max_force`](super::LjOptions::max_force), such that cubic Hermite interpolation along
     /// the path parameter between neighbouring points reproduces the exact
     /// path to `tolerance/8` (force and radius relative to
     /// `max(|value|, 10⁻³·scale)`, approach absolute to `0.1·tolerance/8`);
     /// the midpoints of accepted intervals are kept as extra points.
     ///
     /// Derivatives are along the pseudo-arclength `s` of the continuation
-    /// (unit tangent; see [`LjPoint::d_approach`]), except at the special
+    /// (unit tangent; see [`LjPoint::d_approach`](super::LjPoint::d_approach)), except at the special
     /// points, which are exact roots along the path (Illinois method, exact
     /// tangents):
     ///
@@ -210,7 +210,7 @@ impl LjSolver {
     ///   piece): `d_force = 0`;
     /// * the zero of P̄ on the last stable piece: `force = 0`;
     /// * the contact onset `h̄₀ = 1`, where the contact radius (first root of
-    ///   `h̄ = 1`, see [`LjSolution::contact_radius`]) leaves zero like
+    ///   `h̄ = 1`, see [`LjSolution::contact_radius`](super::LjSolution::contact_radius)) leaves zero like
     ///   `√(s − s₀)`: a corner, two points with radius 0, the second with
     ///   derivatives along `τ = √(s − s₀)` (`d_delta = d_force = 0`,
     ///   `d2_delta = 2 dᾱ/ds`, `d_radius = lim a/τ`); the interval after it is
