@@ -1080,11 +1080,15 @@ fn check_indentation_fit(linkage: Linkage) {
     c.close(INDENT, "two_points_status", -2.0, 0.0);
     let data_present = c.get(INDENT, "data_present") == Some(1.0);
     if data_present {
-        // Fused silica (E ≈ 72 GPa, H ≈ 9 GPa) with the README's tip area
-        // function: Oliver–Pharr gives about 64 GPa and 8.2 GPa on this curve.
-        c.within(INDENT, "sample_modulus_GPa", 55.0, 85.0);
+        // Fused silica against diamond: E_r = 69.6 GPa (E = 72 GPa, ν = 0.17,
+        // Oliver & Pharr 1992), within the 11.6 % this file's tip calibration
+        // allows (tests/indentation.rs, `fused_silica_tolerance`): E_r in
+        // 61.5–77.7 GPa, E (ν = 0.18) in 62.9–80.6 GPa. Oliver–Pharr gives
+        // about 62.6 and 64.1 GPa on this curve.
+        // H ≈ 9 GPa; Oliver–Pharr gives about 8.2 GPa.
+        c.within(INDENT, "sample_modulus_GPa", 62.9, 80.6);
         c.within(INDENT, "hardness_GPa", 7.0, 11.0);
-        c.within(INDENT, "reduced_modulus_GPa", 55.0, 80.0);
+        c.within(INDENT, "reduced_modulus_GPa", 61.5, 77.7);
         c.within(INDENT, "d", 3.0, 5.5);
         c.within(INDENT, "kappa", 1.0, 3.0);
         c.within(INDENT, "kappa_stderr", 0.0, 0.05);

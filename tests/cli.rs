@@ -96,12 +96,13 @@ fn indent_json_on_measured_fused_silica() {
     ] {
         assert!(v.get(key).is_some(), "missing `{key}` in {text}");
     }
-    // Fused silica: E_r ≈ 60–75 GPa and H ≈ 7–10 GPa (known E 72 GPa, H 9 GPa;
-    // this curve gives ~10 % less, see the closing note of issue 4), unloading
-    // exponent ≈ 1.24 as the thesis quotes (d ≈ 4.1).
+    // Fused silica against diamond: E_r = 69.6 GPa (E = 72 GPa, ν = 0.17,
+    // Oliver & Pharr 1992) within the 11.6 % this file's tip calibration
+    // allows (tests/indentation.rs, `fused_silica_tolerance`), H ≈ 7–10 GPa
+    // (known 9 GPa), unloading exponent ≈ 1.24 as the thesis quotes (d ≈ 4.1).
     let er = v["reduced_modulus"].as_f64().unwrap();
     let h = v["hardness"].as_f64().unwrap();
-    assert!((55e9..80e9).contains(&er), "E_r = {er}");
+    assert!((61.5e9..77.7e9).contains(&er), "E_r = {er}");
     assert!((7e9..10e9).contains(&h), "H = {h}");
     assert!((3.8..4.4).contains(&v["d"].as_f64().unwrap()));
     let flags: Vec<&str> = v["flags"]

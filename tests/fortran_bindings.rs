@@ -1588,10 +1588,11 @@ fn check_indentation_fit(linkage: Linkage) {
     c.close(INDENT, "two_points_status", -2.0, 0.0);
     let data_present = c.get(INDENT, "data_present") == Some(1.0);
     if data_present {
-        // Fused silica with the README's tip area function (as the C example).
-        c.within(INDENT, "sample_modulus_GPa", 55.0, 85.0);
+        // Fused silica: the bounds of the C example (tests/c_examples.rs),
+        // from E_r = 69.6 GPa and this file's tip calibration (11.6 %).
+        c.within(INDENT, "sample_modulus_GPa", 62.9, 80.6);
         c.within(INDENT, "hardness_GPa", 7.0, 11.0);
-        c.within(INDENT, "reduced_modulus_GPa", 55.0, 80.0);
+        c.within(INDENT, "reduced_modulus_GPa", 61.5, 77.7);
         c.within(INDENT, "d", 3.0, 5.5);
         c.within(INDENT, "kappa", 1.0, 3.0);
         c.close(INDENT, "has_unloading", 1.0, 0.0);
