@@ -99,8 +99,20 @@ fn table_json_corpus() {
 fn c_abi_harness_calls_every_c_function() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let header = std::fs::read_to_string(root.join("include/asperity.h")).expect("read header");
-    let harness =
-        std::fs::read_to_string(root.join("fuzz/harness/c_abi.rs")).expect("read harness");
+    // The harness: `fuzz/harness/c_abi.rs` and its per-domain modules in
+    // `fuzz/harness/c_abi/`.
+    let mut files = vec![root.join("fuzz/harness/c_abi.rs")];
+    let mut modules: Vec<PathBuf> = std::fs::read_dir(root.join("fuzz/harness/c_abi"))
+        .expect("read fuzz/harness/c_abi/")
+        .map(|e| e.expect("read fuzz/harness/c_abi/").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .collect();
+    modules.sort();
+    files.extend(modules);
+    let harness: String = files
+        .iter()
+        .map(|f| std::fs::read_to_string(f).expect("read harness"))
+        .collect();
     // Declarations: `<type> asperity_name(` at the start of a line.
     let declared: Vec<&str> = header
         .lines()
@@ -126,7 +138,7 @@ fn c_abi_harness_calls_every_c_function() {
         .collect();
     assert!(
         missing.is_empty(),
-        "fuzz/harness/c_abi.rs never calls {} of the {} C functions: {missing:?}",
+        "fuzz/harness/c_abi{{.rs,/}} never calls {} of the {} C functions: {missing:?}",
         missing.len(),
         declared.len()
     );

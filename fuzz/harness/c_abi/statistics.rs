@@ -1,0 +1,295 @@
+//! Multi-asperity statistics (`src/ffi/statistics.rs`): Greenwood–Williamson
+//! (parametric and empirical surfaces), plasticity index, deformation
+//! regime, Zhuravlev.
+
+use super::common::*;
+use super::{pick, take, Ctx, Op};
+use arbitrary::Arbitrary;
+use asperity::ffi::statistics::*;
+use std::ffi::c_void;
+use std::ptr::{null, null_mut};
+
+/// Runs one operation of this domain; `super::call` routes each variant
+/// to the module of its `src/ffi/` file.
+pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
+    match op {
+        Op::Gw { gw, x, nulls } => {
+            let g = gw.get();
+            let mut out: AsperityGwResponse = zeroed();
+            ok(
+                asperity_gw_eval(cp(&g, nulls.at(0)), x.0, mp(&mut out, nulls.at(1))),
+                "gw_eval",
+            );
+        }
+        Op::GwBatch {
+            gw,
+            x,
+            nulls,
+            alias,
+        } => {
+            let g = gw.get();
+            let mut xs: Vec<f64> = x.iter().take(256).map(|f| f.0).collect();
+            let n = xs.len();
+            let (mut l, mut a, mut c, mut k) =
+                (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+            let xp = bufm(&mut xs, nulls.at(1));
+            let lp = if *alias {
+                xp
+            } else {
+                bufm(&mut l, nulls.at(2))
+            };
+            let s = asperity_gw_eval_batch(
+                cp(&g, nulls.at(0)),
+                n,
+                xp,
+                lp,
+                bufm(&mut a, nulls.at(3)),
+                bufm(&mut c, nulls.at(4)),
+                bufm(&mut k, nulls.at(5)),
+            );
+            ok(s, "gw_eval_batch");
+        }
+        Op::GwAtLoad { gw, load, nulls } => {
+            let g = gw.get();
+            let mut out: AsperitySeparation = zeroed();
+            ok(
+                asperity_gw_separation_at_load(
+                    cp(&g, nulls.at(0)),
+                    load.0,
+                    mp(&mut out, nulls.at(1)),
+                ),
+                "gw_separation_at_load",
+            );
+        }
+        Op::GwPlasticity {
+            gw,
+            hardness,
+            nulls,
+        } => {
+            let g = gw.get();
+            let mut out = 0.0;
+            ok(
+                asperity_gw_plasticity_index(
+                    cp(&g, nulls.at(0)),
+                    hardness.0,
+                    mp(&mut out, nulls.at(1)),
+                ),
+                "gw_plasticity_index",
+            );
+        }
+        Op::Plasticity { a, null } => {
+            let [a0, a1, a2, a3] = fs(*a);
+            let mut out = 0.0;
+            ok(
+                asperity_plasticity_index(a0, a1, a2, a3, mp(&mut out, *null)),
+                "plasticity_index",
+            );
+        }
+        Op::Regime { psi, null } => {
+            let mut out = 0i32;
+            ok(
+                asperity_deformation_regime(psi.0, mp(&mut out, *null)),
+                "deformation_regime",
+            );
+        }
+        Op::GwEmpiricalNew {
+            a,
+            heights,
+            radii,
+            nulls,
+        } => {
+            let h = heights.make();
+            let n = h.len();
+            let r: Option<Vec<f64>> = radii
+                .as_ref()
+                .map(|r| (0..n).map(|i| r.get(i).map_or(1e-6, |f| f.0)).collect());
+            let mut out = null_mut();
+            let s = asperity_gw_empirical_new(
+                a[0].0,
+                a[1].0,
+                a[2].0,
+                n,
+                bufp(&h, nulls.at(0)),
+                r.as_ref().map_or(null(), |r| r.as_ptr()),
+                mp(&mut out, nulls.at(1)),
+            );
+            if let Some(g) = made(s, out, !nulls.at(1), "gw_empirical_new") {
+                ctx.gws.push(g);
+            }
+        }
+        Op::GwEmpirical {
+            gw,
+            which,
+            x,
+            n,
+            nulls,
+        } => {
+            let g = pick(&ctx.gws, *gw);
+            match which % 4 {
+                0 => {
+                    let mut out: AsperityGwResponse = zeroed();
+                    ok(
+                        asperity_gw_empirical_eval(g, x.0, mp(&mut out, nulls.at(0))),
+                        "gw_emp_eval",
+                    );
+                }
+                1 => {
+                    let xs: Vec<f64> = n.iter().take(256).map(|f| f.0).collect();
+                    let k = xs.len();
+                    let (mut l, mut a, mut c, mut st) =
+                        (vec![0.0; k], vec![0.0; k], vec![0.0; k], vec![0.0; k]);
+                    let s = asperity_gw_empirical_eval_batch(
+                        g,
+                        k,
+                        bufp(&xs, nulls.at(0)),
+                        bufm(&mut l, nulls.at(1)),
+                        bufm(&mut a, nulls.at(2)),
+                        bufm(&mut c, nulls.at(3)),
+                        bufm(&mut st, nulls.at(4)),
+                    );
+                    ok(s, "gw_emp_eval_batch");
+                }
+                2 => {
+                    let mut out: AsperitySeparation = zeroed();
+                    ok(
+                        asperity_gw_empirical_separation_at_load(g, x.0, mp(&mut out, nulls.at(0))),
+                        "gw_emp_separation_at_load",
+                    );
+                }
+                _ => {
+                    let mut out = 0.0;
+                    ok(
+                        asperity_gw_empirical_plasticity_index(g, x.0, mp(&mut out, nulls.at(0))),
+                        "gw_emp_plasticity_index",
+                    );
+                }
+            }
+        }
+        Op::GwEmpiricalFree { gw } => {
+            if let Some(g) = take(&mut ctx.gws, *gw) {
+                asperity_gw_empirical_free(g);
+            } else {
+                asperity_gw_empirical_free(null_mut());
+            }
+        }
+        Op::Zhuravlev {
+            model,
+            which,
+            a,
+            nulls,
+        } => {
+            let m = fs(*model);
+            let z = AsperityZhuravlev {
+                cap_radius: m[0],
+                effective_radius: m[1],
+                e_star: m[2],
+                summit_count: m[3],
+            };
+            let zp = cp(&z, nulls.at(0));
+            let [a0, a1, a2, a3] = fs(*a);
+            let s = match which % 3 {
+                0 => {
+                    let mut out: AsperityZhuravlevResponse = zeroed();
+                    asperity_zhuravlev_linear(zp, a0, a1, a2, mp(&mut out, nulls.at(1)))
+                }
+                1 => {
+                    let mut out = 0.0;
+                    asperity_zhuravlev_approach_at_load_linear(
+                        zp,
+                        a0,
+                        a1,
+                        a2,
+                        mp(&mut out, nulls.at(1)),
+                    )
+                }
+                _ => {
+                    let mut out: AsperityZhuravlevFriction = zeroed();
+                    asperity_zhuravlev_friction_linear(
+                        zp,
+                        a0,
+                        a1,
+                        a2,
+                        a3,
+                        mp(&mut out, nulls.at(1)),
+                    )
+                }
+            };
+            ok(s, "zhuravlev");
+        }
+        Op::ZhuravlevEval {
+            model,
+            approach,
+            n1,
+            n2,
+            order,
+            nulls,
+        } => {
+            let m = fs(*model);
+            let z = AsperityZhuravlev {
+                cap_radius: m[0],
+                effective_radius: m[1],
+                e_star: m[2],
+                summit_count: m[3],
+            };
+            let mut d1 = n1.1 .0;
+            let mut d2 = n2.1 .0;
+            let mut out: AsperityZhuravlevResponse = zeroed();
+            let s = asperity_zhuravlev_eval(
+                cp(&z, nulls.at(0)),
+                approach.0,
+                density(n1.0),
+                &mut d1 as *mut f64 as *mut c_void,
+                density(n2.0),
+                &mut d2 as *mut f64 as *mut c_void,
+                order.0,
+                mp(&mut out, nulls.at(1)),
+            );
+            ok(s, "zhuravlev_eval");
+        }
+        _ => unreachable!("not a statistics operation: {op:?}"),
+    }
+}
+
+#[derive(Debug, Clone, Arbitrary)]
+pub struct GwSpec {
+    distribution: Sel,
+    v: [F; 4],
+}
+
+impl GwSpec {
+    fn get(&self) -> AsperityGwParams {
+        AsperityGwParams {
+            distribution: self.distribution.0,
+            reserved: 0,
+            summit_count: self.v[0].0,
+            radius: self.v[1].0,
+            sigma: self.v[2].0,
+            e_star: self.v[3].0,
+        }
+    }
+}
+
+pub(super) unsafe extern "C" fn density_const(_xi: f64, data: *mut c_void) -> f64 {
+    *(data as *const f64)
+}
+
+pub(super) unsafe extern "C" fn density_linear(xi: f64, data: *mut c_void) -> f64 {
+    *(data as *const f64) * xi
+}
+
+pub(super) unsafe extern "C" fn density_step(xi: f64, data: *mut c_void) -> f64 {
+    if xi < *(data as *const f64) {
+        0.0
+    } else {
+        1e12
+    }
+}
+
+pub(super) fn density(sel: u8) -> AsperitySummitDensity {
+    match sel % 4 {
+        0 => None,
+        1 => Some(density_const),
+        2 => Some(density_linear),
+        _ => Some(density_step),
+    }
+}
