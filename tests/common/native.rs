@@ -180,9 +180,7 @@ fn build_library_now(l: &Layout) -> Result<(), String> {
     } else {
         "cargo build --lib"
     };
-    let out = cmd
-        .output()
-        .map_err(|e| format!("running {what}: {e}"))?;
+    let out = cmd.output().map_err(|e| format!("running {what}: {e}"))?;
     if !out.status.success() {
         return Err(format!(
             "{what} failed ({}):\n{}",
