@@ -1,4 +1,4 @@
-//! Units and tick labels of the command's plots (issue 30 §5): plotters'
+//! Units and tick labels of the command's plots: plotters'
 //! default labels of an `f64` axis carry a fixed handful of decimals, so an
 //! axis of energies near 1e-7 J read "0.0" at every tick. Every chart of the
 //! command scales its dimensional quantities to an SI prefix ([`si_prefix`],

@@ -8,7 +8,7 @@
 //! Everything the command prints to stdout goes through [`outln!`]: when the
 //! reader goes away (`asperity lj … | head -1`) the command exits quietly
 //! with status 0 instead of panicking on the broken pipe, as `println!`
-//! does (issue 30 §5). Plots label their axes through `axis.rs`.
+//! does. Plots label their axes through `axis.rs`.
 
 use asperity::contact::{Dmt, Jkr, LjSphere, MaugisDugdale, NormalContact};
 use asperity::{ContactState, Control};

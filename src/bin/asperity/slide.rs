@@ -1,10 +1,10 @@
 //! `asperity slide SCENE.json [--json] [--out DIR]`: runs a sliding scene
-//! (issue 6 §5), writes the per-step CSV and SVG plots, prints a summary or,
-//! with `--json`, exactly one JSON object (issue 6 §9).
+//! (the scene format: `asperity::scene`), writes the per-step CSV and SVG
+//! plots, prints a summary or, with `--json`, exactly one JSON object.
 //!
 //! Where the files go: into `--out DIR`; without `--out`, into the current
 //! directory, except with `--json`, which then writes nothing but the JSON
-//! object to stdout (its `files` is empty; issue 30 §5).
+//! object to stdout (its `files` is empty).
 //!
 //! With `--out DIR` (and SVG outputs on) it also plots the true contact area
 //! against the load (thesis 6.5.3, Figure 6-60) with its least-squares line
