@@ -662,9 +662,9 @@ void PairAsperity::write_restart(FILE *fp)
       int n = (int) words.size();
       fwrite(&n, sizeof(int), 1, fp);
       for (const auto &w : words) {
-        int len = (int) w.size() + 1;
-        fwrite(&len, sizeof(int), 1, fp);
-        fwrite(w.c_str(), 1, len, fp);
+        int bytes = (int) w.size() + 1;
+        fwrite(&bytes, sizeof(int), 1, fp);
+        fwrite(w.c_str(), 1, bytes, fp);
       }
     }
 }
@@ -686,12 +686,12 @@ void PairAsperity::read_restart(FILE *fp)
       MPI_Bcast(&n, 1, MPI_INT, 0, world);
       std::vector<std::string> words(n);
       for (int k = 0; k < n; k++) {
-        int len = 0;
-        if (me == 0) utils::sfread(FLERR, &len, sizeof(int), 1, fp, nullptr, error);
-        MPI_Bcast(&len, 1, MPI_INT, 0, world);
-        std::vector<char> buf(len);
-        if (me == 0) utils::sfread(FLERR, buf.data(), 1, len, fp, nullptr, error);
-        MPI_Bcast(buf.data(), len, MPI_CHAR, 0, world);
+        int bytes = 0;
+        if (me == 0) utils::sfread(FLERR, &bytes, sizeof(int), 1, fp, nullptr, error);
+        MPI_Bcast(&bytes, 1, MPI_INT, 0, world);
+        std::vector<char> buf(bytes);
+        if (me == 0) utils::sfread(FLERR, buf.data(), 1, bytes, fp, nullptr, error);
+        MPI_Bcast(buf.data(), bytes, MPI_CHAR, 0, world);
         words[k] = std::string(buf.data());
       }
       std::string si = std::to_string(i), sj = std::to_string(j);
