@@ -53,7 +53,11 @@ fn main() -> asperity::Result<()> {
     let mut t = 0.0;
     for i in 0..=n {
         let h = h_max * i as f64 / n as f64;
-        let _ = writeln!(csv, "{t:.3},{h:.6e},{:.6e},loading", P_MAX * (h / h_max).powi(2));
+        let _ = writeln!(
+            csv,
+            "{t:.3},{h:.6e},{:.6e},loading",
+            P_MAX * (h / h_max).powi(2)
+        );
         t += 0.1;
     }
     for _ in 0..20 {

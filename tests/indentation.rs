@@ -131,6 +131,20 @@ fn synthetic_curve_recovers_kappa_d_modulus() {
     }
 }
 
+/// The README's example curve (`examples/data/synthetic_berkovich.csv`,
+/// written by `examples/example_data.rs` for E_r = 69.6 GPa and H = 9 GPa
+/// with the ideal Berkovich area and β = 1.05) reads back as it was made:
+/// the shipped file and the analysis stay in step.
+#[test]
+fn shipped_example_curve_reads_back() {
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/data/synthetic_berkovich.csv");
+    let curve = Curve::read(&p).unwrap();
+    let r = analyze(&curve, &IndentationOptions::default()).unwrap();
+    // Six significant digits in the file: 1e-4 covers their rounding.
+    assert_relative_eq!(r.reduced_modulus.unwrap(), 69.6e9, max_relative = 1e-4);
+    assert_relative_eq!(r.hardness.unwrap(), 9e9, max_relative = 1e-4);
+}
+
 #[test]
 fn noisy_curve_gives_honest_uncertainty() {
     let (kappa, d) = (0.5, 2.0);
