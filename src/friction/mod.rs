@@ -66,10 +66,10 @@ pub use mechanisms::{
     FrictionMaterial, LjNanoAsperity, NanoAsperityBonds, RodIncrement,
 };
 pub use rods::{
-    square_influence, CoupledRodBed, PlasticUpdate, RodBed, RodOptions, RodReport, RodSolution,
-    RodSolver, RodState,
+    square_influence, CoupledRodBed, Loading, PlasticUpdate, RodBed, RodOptions, RodReport,
+    RodSolution, RodSolver, RodState,
 };
 pub use slider::{
-    summarize, Loading, SlideRun, SlideStep, SlideSummary, Slider, SliderIncrement, SliderOptions,
+    summarize, SlideRun, SlideStep, SlideSummary, Slider, SliderIncrement, SliderOptions,
     SliderResponse, SliderState, SliderStates, SliderTangents, SliderWork, TrackEnd,
 };

@@ -126,6 +126,9 @@ use super::geometry::{SliderGeometry, MAX_NANO_PER_ROD};
 use super::homogenised::{FrictionRegime, HomogenisedFriction, HomogenisedSample};
 use super::ledger::{coefficient_of_friction, ledger_step, CofForm, Dissipation, Mechanisms};
 use super::mechanisms::{FrictionMaterial, NanoAsperityBonds};
+/// How the slider is loaded: a rod-bed boundary condition, defined with the
+/// rods (thesis 6.3, 6.4).
+pub use super::rods::Loading;
 use super::rods::{RodBed, RodOptions, RodReport, RodSolution, RodState};
 use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
@@ -136,24 +139,6 @@ use serde::{Deserialize, Serialize};
 const COUNT_SLACK: f64 = 1e-9;
 /// Largest number of steps [`Slider::slide`] accepts.
 pub const MAX_STEPS: usize = 10_000_000;
-
-/// How the slider is loaded (thesis 6.3 and 6.4).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "snake_case")]
-pub enum Loading {
-    /// Fixed gap (6-9)..(6-12): the slider's mean line is held at `position`
-    /// b₀ (m) above the counter-surface's mean line (see [`super::rods`]).
-    FixedGap {
-        /// Prescribed position b₀ (m), finite.
-        position: f64,
-    },
-    /// Fixed load (6-13)..(6-16): the rods carry `load` P (N), finite, ≥ 0
-    /// and ≤ the bed's capacity n·σ_y·A.
-    FixedLoad {
-        /// Normal load P (N).
-        load: f64,
-    },
-}
 
 /// What the counter-surface is past the end of its profile.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
