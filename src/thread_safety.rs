@@ -18,13 +18,14 @@ use crate::contact::{
 };
 use crate::ffi::contact::AsperityNormalLaw;
 use crate::ffi::friction::AsperitySliderGeometry;
+use crate::ffi::friction_law::{AsperityFriction, AsperityFrictionWork};
 use crate::ffi::homogenised::AsperityHomogenisedFriction;
-use crate::ffi::slider::{AsperitySlider, AsperitySliderWork};
+use crate::ffi::slider::AsperitySlider;
 use crate::ffi::statistics::AsperityGwEmpirical;
 use crate::ffi::tabulated::AsperityTable;
 use crate::friction::{
-    CoupledRodBed, FrictionMaterial, FrictionPointState, HomogenisedFriction, RodBed, RodSolution,
-    RodState, Slider, SliderGeometry, SliderState, SliderWork,
+    CoupledRodBed, FrictionMaterial, HomogenisedFriction, RodBed, RodSolution, RodState, Slider,
+    SliderGeometry, SliderWork,
 };
 use crate::material::Material;
 use crate::rescaling::{KnownSolution, Rescaling};
@@ -75,7 +76,7 @@ const _: () = {
     shared::<crate::friction::dynamic::BurridgeKnopoff>();
     shared::<crate::friction::dynamic::Bristles>();
     shared::<crate::friction::dynamic::DynamicModel>();
-    shared::<crate::ffi::dynamic::AsperityDynamicFriction>();
+    shared::<AsperityFriction>();
     shared::<AsperityHomogenisedFriction>();
     shared::<SliderGeometry>();
     shared::<AsperitySliderGeometry>();
@@ -90,11 +91,10 @@ const _: () = {
 const _: () = {
     const fn per_thread<T: Send>() {}
     per_thread::<SliderWork>();
-    per_thread::<AsperitySliderWork>();
-    per_thread::<SliderState>();
+    per_thread::<AsperityFrictionWork>();
+    per_thread::<crate::friction::FrictionWork>();
     per_thread::<RodState>();
     per_thread::<RodSolution>();
     per_thread::<ContactState>();
     per_thread::<NormalResponse>();
-    per_thread::<FrictionPointState>();
 };

@@ -48,7 +48,6 @@ const TYPES: &[TypeLayout] = layouts![
     "AsperityDissipation" => crate::friction::Dissipation,
     "AsperityHomogenisedSample" => crate::friction::HomogenisedSample,
     "AsperityFrictionIncrement" => crate::friction::FrictionIncrement,
-    "AsperityFrictionPointState" => crate::friction::FrictionPointState,
     "AsperityFrictionResponse" => crate::friction::FrictionResponse,
     "AsperityIndentationOptions" => super::indentation::AsperityIndentationOptions,
     "AsperityIndentationResult" => super::indentation::AsperityIndentationResult,
@@ -61,16 +60,13 @@ const TYPES: &[TypeLayout] = layouts![
     "AsperityRoughness" => super::surface::AsperityRoughness,
     "AsperityHurstFit" => super::surface::AsperityHurstFit,
     "AsperityPeakStatistics" => super::surface::AsperityPeakStatistics,
-    "AsperitySliderIncrement" => super::slider::AsperitySliderIncrement,
     "AsperitySliderInfo" => super::slider::AsperitySliderInfo,
+    "AsperitySliderRecord" => super::slider::AsperitySliderRecord,
     "AsperitySliderOptions" => super::slider::AsperitySliderOptions,
     "AsperityFrictionMaterial" => crate::friction::FrictionMaterial,
     "AsperityLugreParams" => super::dynamic::AsperityLugreParams,
     "AsperityPrandtlTomlinsonTwoSpringParams" => super::dynamic::AsperityPrandtlTomlinsonTwoSpringParams,
     "AsperityBurridgeKnopoffParams" => super::dynamic::AsperityBurridgeKnopoffParams,
-    "AsperityDynamicIncrement" => crate::friction::dynamic::DynamicIncrement,
-    "AsperityDynamicResponse" => crate::friction::dynamic::DynamicResponse,
-    "AsperitySliderResponse" => crate::friction::SliderResponse,
 ];
 
 /// The size `*size` and alignment `*align` in bytes of the `repr(C)` type
