@@ -62,7 +62,8 @@ pub mod maugis_dugdale;
 pub mod power_punch;
 pub mod tabulated;
 
-pub use batch::{eval_batch, BatchError, RawBatch};
+pub(crate) use batch::RawBatch;
+pub use batch::{eval_batch, BatchError};
 pub use derjaguin::{Derjaguin, SurfaceLaw};
 pub use dmt::Dmt;
 pub use flat_punch::FlatPunch;
@@ -140,12 +141,18 @@ pub trait NormalContact {
     /// without adhesion) under the given control.
     fn pull_off_force(&self, control: Control) -> Result<f64>;
 
-    /// Evaluate a batch of contacts (see [`batch`]). The default runs
-    /// [`NormalContact::eval`] element by element; laws with a vectorised
-    /// kernel override it. Results agree with `eval` to rounding.
+    /// The crate's batch-kernel hook behind [`eval_batch`] and the C ABI's
+    /// batch calls (see [`batch`]); not an API. Its argument type cannot be
+    /// named outside the crate, so the hook can be neither called nor
+    /// overridden there: a law of another crate gets the default, which runs
+    /// [`NormalContact::eval`] element by element. Laws of the crate with a
+    /// vectorised kernel override it; results agree with `eval` to rounding.
     ///
     /// # Safety
-    /// The pointers of `b` must satisfy the contract of [`RawBatch`].
+    /// The pointers of `b` must satisfy the contract of `RawBatch`: `delta`
+    /// and `force` valid for `n` elements, the other arrays NULL or valid for
+    /// `n` elements, aliasing allowed element by element.
+    #[doc(hidden)]
     #[inline]
     unsafe fn eval_batch_raw(&self, b: &RawBatch) -> core::result::Result<(), BatchError> {
         batch::eval_elementwise(self, b)
