@@ -358,6 +358,7 @@ fn check_param(c_type: &str, decl: &str, handles: &BTreeSet<String>) -> Result<(
     let t = c_type
         .trim_start_matches("const ")
         .replace("struct ", "")
+        .replace("union ", "")
         .trim()
         .to_string();
     let scalar = |kind: &str| -> Result<(), String> {
@@ -1128,17 +1129,17 @@ fn check_jkr_hysteresis(linkage: Linkage) {
     let piwr = PI * W * R;
     let delta_c = -0.75 * (PI * PI * W * W * R / (E_STAR * E_STAR)).cbrt();
     c.exit_ok(JKR);
-    // The law's parameters read through the Fortran mirror of the union.
+    // The law's inputs read through the Fortran mirror of the union, as given.
     c.close(FFI, "law_kind_is_jkr", 1.0, 0.0);
     c.close(FFI, "jkr_params_radius", R, 0.0);
+    c.close(FFI, "jkr_params_e_star", E_STAR, 0.0);
     c.close(FFI, "jkr_params_work_of_adhesion", W, 0.0);
     c.close(
         FFI,
-        "jkr_params_critical_delta",
+        "jkr_reach_displacement",
         delta_c,
         1e-12 * delta_c.abs(),
     );
-    c.close(FFI, "jkr_params_force_scale", 2.0 * piwr, 1e-12 * piwr);
     c.close(FFI, "jkr_delta_c_m", delta_c, 1e-12 * delta_c.abs());
     c.close(JKR, "jkr_pull_off_load_over_piwR", -1.5, 1e-6);
     c.close(JKR, "jkr_pull_off_displacement_over_piwR", -5.0 / 6.0, 1e-6);

@@ -58,7 +58,7 @@ fn overlaps(law: &Jkr, rng: &mut Rng) -> Vec<f64> {
         d.push(x);
         d.push(-x);
     }
-    let dc = law.critical_delta;
+    let dc = law.critical_delta();
     for c in [dc, 0.0, -scale] {
         d.push(c);
         d.push(f64::from_bits(c.to_bits() + 1));
@@ -73,10 +73,10 @@ fn overlaps(law: &Jkr, rng: &mut Rng) -> Vec<f64> {
     d.push(-0.0);
     d.push(f64::MIN_POSITIVE);
     d.push(-f64::MIN_POSITIVE);
-    if law.delta_scale > 0.0 {
+    if law.delta_scale() > 0.0 {
         // Reduced overlap Δ around and beyond HERTZ_SWITCH = 1e60.
         for big in [1e59, 9.99e59, 1e60, 1.0001e60, 1e61, 1e80] {
-            d.push(big * law.delta_scale);
+            d.push(big * law.delta_scale());
         }
     }
     for _ in 0..300 {
@@ -197,7 +197,14 @@ fn reference(law: &Jkr, d: &[f64], old: Option<&[ContactState]>) -> (Outs, Resul
 
 fn c_law(l: &Jkr) -> AsperityNormalLaw {
     let mut out = std::mem::MaybeUninit::<AsperityNormalLaw>::zeroed();
-    let s = unsafe { asperity_law_jkr(l.radius, l.e_star, l.work_of_adhesion, out.as_mut_ptr()) };
+    let s = unsafe {
+        asperity_law_jkr(
+            l.params().radius,
+            l.params().e_star,
+            l.params().work_of_adhesion,
+            out.as_mut_ptr(),
+        )
+    };
     assert_eq!(s, ASPERITY_OK);
     unsafe { out.assume_init() }
 }
@@ -237,7 +244,7 @@ fn batch_equals_scalar_bit_for_bit() {
 #[test]
 fn hysteresis_and_branch_fields() {
     let law = Jkr::new(1e-5, 1e9, 0.05).unwrap();
-    let dc = law.critical_delta;
+    let dc = law.critical_delta();
     // (δ, old in contact) → in contact after the step?
     let cases = [
         (0.5 * dc, 1, true),

@@ -667,22 +667,50 @@ fn c_abi_handles_null_and_errors() {
     unsafe {
         let mut t: *mut AsperityTable = null_mut();
         assert_eq!(
-            asperity_table_new_maugis_dugdale(R, E_STAR, W, m.cohesive_stress, 1e-4, null_mut()),
+            asperity_table_new_maugis_dugdale(
+                R,
+                E_STAR,
+                W,
+                m.params().cohesive_stress,
+                1e-4,
+                null_mut()
+            ),
             ASPERITY_ERR_NULL_POINTER
         );
         assert!(msg().contains("out"));
         assert_eq!(
-            asperity_table_new_maugis_dugdale(-R, E_STAR, W, m.cohesive_stress, 1e-4, &mut t),
+            asperity_table_new_maugis_dugdale(
+                -R,
+                E_STAR,
+                W,
+                m.params().cohesive_stress,
+                1e-4,
+                &mut t
+            ),
             ASPERITY_ERR_INVALID_ARGUMENT
         );
         assert!(t.is_null() && msg().contains("radius"), "{}", msg());
         assert_eq!(
-            asperity_table_new_maugis_dugdale(R, E_STAR, W, m.cohesive_stress, 0.0, &mut t),
+            asperity_table_new_maugis_dugdale(
+                R,
+                E_STAR,
+                W,
+                m.params().cohesive_stress,
+                0.0,
+                &mut t
+            ),
             ASPERITY_ERR_INVALID_ARGUMENT
         );
         assert!(msg().contains("tolerance"));
         assert_eq!(
-            asperity_table_new_maugis_dugdale(R, E_STAR, W, m.cohesive_stress, 1e-4, &mut t),
+            asperity_table_new_maugis_dugdale(
+                R,
+                E_STAR,
+                W,
+                m.params().cohesive_stress,
+                1e-4,
+                &mut t
+            ),
             ASPERITY_OK
         );
         assert!(!t.is_null());

@@ -47,6 +47,32 @@
 
 use crate::error::{check, Error, Result};
 
+/// The inputs of a law. `$params` is the plain `repr(C)` struct of what a
+/// caller gives (SI units; in the C header `Asperity<Law>Params`), and the
+/// `repr(C)` law `$law` starts with the same fields in the same order,
+/// followed by the values it derives from them (private, so caching can
+/// change without touching the API or the C ABI). Generates `$law::params`
+/// and checks at compile time that the fields sit at the same offsets, which
+/// lets the C ABI hand out a law's storage whose leading bytes read as its
+/// inputs.
+macro_rules! law_inputs {
+    ($law:ident, $params:ident { $($field:ident),+ $(,)? }) => {
+        impl $law {
+            /// The inputs the law was built from, as given (see
+            #[doc = concat!("[`", stringify!($params), "`]).")]
+            #[inline]
+            pub fn params(&self) -> $params {
+                $params { $($field: self.$field),+ }
+            }
+        }
+        const _: () = {
+            $(assert!(
+                core::mem::offset_of!($law, $field) == core::mem::offset_of!($params, $field)
+            );)+
+        };
+    };
+}
+
 pub mod batch;
 pub mod curve;
 pub mod derjaguin;
@@ -64,16 +90,16 @@ pub mod tabulated;
 
 pub(crate) use batch::RawBatch;
 pub use batch::{eval_batch, BatchError};
-pub use derjaguin::{Derjaguin, SurfaceLaw};
-pub use dmt::Dmt;
-pub use flat_punch::FlatPunch;
-pub use hertz::Hertz;
-pub use jkr::Jkr;
-pub use jkr_power_punch::JkrPowerPunch;
-pub use kendall::Kendall;
+pub use derjaguin::{Derjaguin, DerjaguinParams, SurfaceLaw};
+pub use dmt::{Dmt, DmtParams};
+pub use flat_punch::{FlatPunch, FlatPunchParams};
+pub use hertz::{Hertz, HertzParams};
+pub use jkr::{Jkr, JkrParams};
+pub use jkr_power_punch::{JkrPowerPunch, JkrPowerPunchParams};
+pub use kendall::{Kendall, KendallParams};
 pub use lj_sphere::{LjCurve, LjOptions, LjPoint, LjPullOff, LjSolution, LjSolver, LjSphere};
-pub use maugis_dugdale::MaugisDugdale;
-pub use power_punch::PowerPunch;
+pub use maugis_dugdale::{MaugisDugdale, MaugisDugdaleParams};
+pub use power_punch::{PowerPunch, PowerPunchParams};
 pub use tabulated::TabulatedLaw;
 
 /// How the contact is driven, which decides where an adhesive contact
@@ -407,6 +433,19 @@ impl NormalContact for NormalLaw {
     fn energy(&self, delta: f64, old: &ContactState) -> Result<f64> {
         let u = dispatch!(self, l => l.energy(delta, old))?;
         check::finite_result(u, "delta", delta, "the energy overflows f64")
+    }
+}
+
+/// The `no_slip` selector of the punch laws' inputs: 0 frictionless, 1
+/// bonded; anything else is [`Error::UnknownSelector`] naming `no_slip`.
+pub(crate) fn no_slip_flag(no_slip: i32) -> Result<bool> {
+    match no_slip {
+        0 => Ok(false),
+        1 => Ok(true),
+        v => Err(Error::UnknownSelector {
+            name: "no_slip",
+            value: v as i64,
+        }),
     }
 }
 
