@@ -246,7 +246,9 @@ fn unknown_law_kind_and_control_are_invalid_arguments() {
     let mut r = NormalResponse::default();
     let mut f = 0.0;
     unsafe {
-        for kind in [ASPERITY_LAW_NONE, 99, -1, i32::MAX] {
+        // The first kind past the last law, and far-off values.
+        let next = asperity::NormalLaw::NAMES.len() as i32 + 1;
+        for kind in [ASPERITY_LAW_NONE, next, 99, -1, i32::MAX] {
             zeroed.kind = kind;
             expect_error(
                 asperity_normal_eval(&zeroed, 1e-9, null(), null_mut(), &mut r),
@@ -849,6 +851,9 @@ fn law_from_params_rebuilds_every_constructor() {
     for l in laws {
         let again = law(|o| unsafe { asperity_law_from_params(l.kind, &l.params, o) });
         assert_eq!(again.kind, l.kind);
+        // Kind k is the law NormalLaw::NAMES[k - 1].
+        let name = l.to_law().unwrap().name();
+        assert_eq!(asperity::NormalLaw::NAMES[l.kind as usize - 1], name);
         let bits = |l: &AsperityNormalLaw| unsafe { l.params.raw }.map(f64::to_bits);
         assert_eq!(bits(&again), bits(&l), "kind {}", l.kind);
     }
@@ -864,11 +869,12 @@ fn law_from_params_rebuilds_every_constructor() {
 
 #[test]
 fn law_from_params_errors_name_the_input() {
+    let next = asperity::NormalLaw::NAMES.len() as i32 + 1;
     let mut out = hertz();
     let before = unsafe { out.params.raw };
     let mut p = AsperityLawParams { raw: [0.0; 16] };
     unsafe {
-        for kind in [ASPERITY_LAW_NONE, 10, -1] {
+        for kind in [ASPERITY_LAW_NONE, next, -1] {
             expect_error(
                 asperity_law_from_params(kind, &p, &mut out),
                 ASPERITY_ERR_INVALID_ARGUMENT,

@@ -47,28 +47,14 @@ const RELAXED: &[(&str, &[&str], &str)] = &[(
     "VFRIC's argument list is Abaqus's: the friction law reads only some of its 40 arguments",
 )];
 
-/// The law kinds `ASPERITY_LAW_<KIND>` of the header are
-/// `ASPERITY_LAW_KIND_<KIND>` in the module: Fortran names ignore case, and
-/// `ASPERITY_LAW_JKR` would be the constructor `asperity_law_jkr` (all ten
-/// kinds are renamed alike).
-const LAW_KINDS: &[&str] = &[
-    "NONE",
-    "HERTZ",
-    "POWER_PUNCH",
-    "FLAT_PUNCH",
-    "DMT",
-    "JKR",
-    "JKR_POWER_PUNCH",
-    "KENDALL",
-    "MAUGIS_DUGDALE",
-    "DERJAGUIN",
-];
-
-/// The Fortran name of the C constant `c_name`.
+/// The law kinds `ASPERITY_LAW_<KIND>` of the header (every constant with
+/// that prefix) are `ASPERITY_LAW_KIND_<KIND>` in the module: Fortran names
+/// ignore case, and `ASPERITY_LAW_JKR` would be the constructor
+/// `asperity_law_jkr` (all kinds are renamed alike).
 fn fortran_constant(c_name: &str) -> String {
     match c_name.strip_prefix("ASPERITY_LAW_") {
-        Some(kind) if LAW_KINDS.contains(&kind) => format!("ASPERITY_LAW_KIND_{kind}"),
-        _ => c_name.to_string(),
+        Some(kind) => format!("ASPERITY_LAW_KIND_{kind}"),
+        None => c_name.to_string(),
     }
 }
 

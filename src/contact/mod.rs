@@ -313,64 +313,99 @@ pub(crate) fn hertz_energy(radius: f64, e_star: f64, delta: f64) -> f64 {
     }
 }
 
-/// Any of the library's normal laws, by value. This is what scenes and the C
-/// ABI carry; it dispatches to the law's own implementation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum NormalLaw {
-    /// [`Hertz`] sphere.
-    Hertz(Hertz),
-    /// [`PowerPunch`] (Galin), including cones.
-    PowerPunch(PowerPunch),
-    /// [`FlatPunch`] (Boussinesq).
-    FlatPunch(FlatPunch),
-    /// [`Dmt`] sphere.
-    Dmt(Dmt),
-    /// [`Jkr`] sphere.
-    Jkr(Jkr),
-    /// [`JkrPowerPunch`], frictionless or no-slip.
-    JkrPowerPunch(JkrPowerPunch),
-    /// [`Kendall`] adhesive flat punch.
-    Kendall(Kendall),
-    /// [`MaugisDugdale`] sphere.
-    MaugisDugdale(MaugisDugdale),
-    /// [`Derjaguin`] rigid sphere with a surface-force law.
-    Derjaguin(Derjaguin),
+/// The library's normal laws, one entry each, in the order of their C kind
+/// values: the one list that [`NormalLaw`] (variants, `From`, names,
+/// dispatch), the C ABI's kind mapping, storage and construction from inputs
+/// (`src/ffi/contact.rs`) and the ABI's list of types (`src/ffi/abi.rs`) are
+/// generated from. `normal_laws!(callback!(args))` expands to
+/// `callback! { (args) entries }`, each entry being
+///
+/// ```text
+/// /// the doc line of the `NormalLaw` variant
+/// Law(LawParams) name = ASPERITY_LAW_NAME,
+/// ```
+///
+/// with `Law` the law type, `LawParams` its input struct, `name` its name
+/// (the member of the C union `AsperityLawParams`, the suffix of the C
+/// constructor `asperity_law_<name>`, [`NormalLaw::name`]) and
+/// `ASPERITY_LAW_NAME` its C kind constant, a bare name resolved where a
+/// callback in `src/ffi/` expands (the contact laws themselves know nothing
+/// of the C ABI).
+macro_rules! normal_laws {
+    ($callback:ident!($($args:tt)*)) => {
+        $callback! {
+            ($($args)*)
+            /// [`Hertz`] sphere.
+            Hertz(HertzParams) hertz = ASPERITY_LAW_HERTZ,
+            /// [`PowerPunch`] (Galin), including cones.
+            PowerPunch(PowerPunchParams) power_punch = ASPERITY_LAW_POWER_PUNCH,
+            /// [`FlatPunch`] (Boussinesq).
+            FlatPunch(FlatPunchParams) flat_punch = ASPERITY_LAW_FLAT_PUNCH,
+            /// [`Dmt`] sphere.
+            Dmt(DmtParams) dmt = ASPERITY_LAW_DMT,
+            /// [`Jkr`] sphere.
+            Jkr(JkrParams) jkr = ASPERITY_LAW_JKR,
+            /// [`JkrPowerPunch`], frictionless or no-slip.
+            JkrPowerPunch(JkrPowerPunchParams) jkr_power_punch = ASPERITY_LAW_JKR_POWER_PUNCH,
+            /// [`Kendall`] adhesive flat punch.
+            Kendall(KendallParams) kendall = ASPERITY_LAW_KENDALL,
+            /// [`MaugisDugdale`] sphere.
+            MaugisDugdale(MaugisDugdaleParams) maugis_dugdale = ASPERITY_LAW_MAUGIS_DUGDALE,
+            /// [`Derjaguin`] rigid sphere with a surface-force law.
+            Derjaguin(DerjaguinParams) derjaguin = ASPERITY_LAW_DERJAGUIN,
+        }
+    };
 }
+pub(crate) use normal_laws;
 
-macro_rules! law_from {
-    ($($t:ident),*) => {$(
-        impl From<$t> for NormalLaw {
+/// [`NormalLaw`] and what goes with it, from the list of [`normal_laws!`].
+macro_rules! define_normal_law {
+    (() $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
+        /// Any of the library's normal laws, by value: what the C ABI's
+        /// `AsperityNormalLaw` converts to. It dispatches to the law's own
+        /// implementation.
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub enum NormalLaw {
+            $($(#[$doc])* $law($law),)*
+        }
+
+        $(impl From<$law> for NormalLaw {
             #[inline]
-            fn from(l: $t) -> Self {
-                NormalLaw::$t(l)
+            fn from(l: $law) -> Self {
+                NormalLaw::$law(l)
+            }
+        })*
+
+        impl NormalLaw {
+            /// The laws' names in the order of their C kinds
+            /// (`ASPERITY_LAW_<NAME>` is the index plus one): the C
+            /// constructor of a law is `asperity_law_<name>`.
+            pub const NAMES: &'static [&'static str] = &[$(stringify!($name)),*];
+
+            /// The name of this law (one of [`NormalLaw::NAMES`]).
+            pub fn name(&self) -> &'static str {
+                match self {
+                    $(NormalLaw::$law(_) => stringify!($name),)*
+                }
             }
         }
-    )*};
+    };
 }
-law_from!(
-    Hertz,
-    PowerPunch,
-    FlatPunch,
-    Dmt,
-    Jkr,
-    JkrPowerPunch,
-    Kendall,
-    MaugisDugdale,
-    Derjaguin
-);
+normal_laws!(define_normal_law!());
 
+/// `match` on a [`NormalLaw`] with one arm per law, each binding the law to
+/// `$law` and evaluating `$e`.
 macro_rules! dispatch {
     ($self:ident, $law:ident => $e:expr) => {
+        normal_laws!(dispatch_arms!($self, $law, $e))
+    };
+}
+
+/// The arms of [`dispatch!`], from the list of [`normal_laws!`].
+macro_rules! dispatch_arms {
+    (($self:ident, $l:ident, $e:expr) $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
         match $self {
-            NormalLaw::Hertz($law) => $e,
-            NormalLaw::PowerPunch($law) => $e,
-            NormalLaw::FlatPunch($law) => $e,
-            NormalLaw::Dmt($law) => $e,
-            NormalLaw::Jkr($law) => $e,
-            NormalLaw::JkrPowerPunch($law) => $e,
-            NormalLaw::Kendall($law) => $e,
-            NormalLaw::MaugisDugdale($law) => $e,
-            NormalLaw::Derjaguin($law) => $e,
+            $(NormalLaw::$law($l) => $e,)*
         }
     };
 }

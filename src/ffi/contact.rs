@@ -3,10 +3,10 @@
 
 use super::{guard, input, output, Failure};
 use crate::contact::{
-    ContactState, Control, Derjaguin, DerjaguinParams, Dmt, DmtParams, FlatPunch, FlatPunchParams,
-    Hertz, HertzParams, Jkr, JkrParams, JkrPowerPunch, JkrPowerPunchParams, Kendall, KendallParams,
-    MaugisDugdale, MaugisDugdaleParams, NormalContact, NormalLaw, NormalResponse, PowerPunch,
-    PowerPunchParams, RawBatch,
+    normal_laws, ContactState, Control, Derjaguin, DerjaguinParams, Dmt, DmtParams, FlatPunch,
+    FlatPunchParams, Hertz, HertzParams, Jkr, JkrParams, JkrPowerPunch, JkrPowerPunchParams,
+    Kendall, KendallParams, MaugisDugdale, MaugisDugdaleParams, NormalContact, NormalLaw,
+    NormalResponse, PowerPunch, PowerPunchParams, RawBatch,
 };
 use crate::error::{Error, Result};
 
@@ -111,27 +111,30 @@ const _: () = assert!(core::mem::size_of::<AsperityLawParams>() == 16 * 8);
 /// (which `law_inputs!` checks).
 unsafe trait Stored: Copy {}
 
-macro_rules! stored {
-    ($($t:ty),*) => {$(
-        // SAFETY: see the law's definition; size and alignment checked here.
-        unsafe impl Stored for $t {}
-        const _: () = assert!(
-            core::mem::size_of::<$t>() <= core::mem::size_of::<AsperityLawParams>()
-                && core::mem::align_of::<$t>() <= 8
-        );
-    )*};
+/// Per law of [`normal_laws!`]: it lives in the storage (size and alignment
+/// checked here), and the kind constants count 1, 2, … in the list's order,
+/// so `ASPERITY_LAW_NONE` (0) stays "not a law" and a new law takes the next
+/// value.
+macro_rules! c_laws {
+    (() $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
+        $(
+            // SAFETY: see the law's definition; size and alignment checked here.
+            unsafe impl Stored for $law {}
+            const _: () = assert!(
+                core::mem::size_of::<$law>() <= core::mem::size_of::<AsperityLawParams>()
+                    && core::mem::align_of::<$law>() <= 8
+            );
+        )*
+        const _: () = {
+            let mut next = ASPERITY_LAW_NONE;
+            $(
+                next += 1;
+                assert!($kind == next, "kinds count 1, 2, ... in the order of normal_laws!");
+            )*
+        };
+    };
 }
-stored!(
-    Hertz,
-    PowerPunch,
-    FlatPunch,
-    Dmt,
-    Jkr,
-    JkrPowerPunch,
-    Kendall,
-    MaugisDugdale,
-    Derjaguin
-);
+normal_laws!(c_laws!());
 
 /// The storage of `law`: zeros, then the law (inputs first).
 #[inline]
@@ -154,26 +157,41 @@ unsafe fn stored<L: Stored>(p: &AsperityLawParams) -> &L {
     unsafe { &*p.raw.as_ptr().cast::<L>() }
 }
 
-impl From<NormalLaw> for AsperityNormalLaw {
-    fn from(law: NormalLaw) -> Self {
-        let (kind, params) = match law {
-            NormalLaw::Hertz(l) => (ASPERITY_LAW_HERTZ, store(l)),
-            NormalLaw::PowerPunch(l) => (ASPERITY_LAW_POWER_PUNCH, store(l)),
-            NormalLaw::FlatPunch(l) => (ASPERITY_LAW_FLAT_PUNCH, store(l)),
-            NormalLaw::Dmt(l) => (ASPERITY_LAW_DMT, store(l)),
-            NormalLaw::Jkr(l) => (ASPERITY_LAW_JKR, store(l)),
-            NormalLaw::JkrPowerPunch(l) => (ASPERITY_LAW_JKR_POWER_PUNCH, store(l)),
-            NormalLaw::Kendall(l) => (ASPERITY_LAW_KENDALL, store(l)),
-            NormalLaw::MaugisDugdale(l) => (ASPERITY_LAW_MAUGIS_DUGDALE, store(l)),
-            NormalLaw::Derjaguin(l) => (ASPERITY_LAW_DERJAGUIN, store(l)),
-        };
-        AsperityNormalLaw {
-            kind,
-            reserved: 0,
-            params,
+/// The C value of a [`NormalLaw`], and a law from its inputs: one arm per
+/// law of [`normal_laws!`].
+macro_rules! c_law_conversions {
+    (() $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
+        impl From<NormalLaw> for AsperityNormalLaw {
+            fn from(law: NormalLaw) -> Self {
+                let (kind, params) = match law {
+                    $(NormalLaw::$law(l) => ($kind, store(l)),)*
+                };
+                AsperityNormalLaw {
+                    kind,
+                    reserved: 0,
+                    params,
+                }
+            }
         }
-    }
+
+        /// The law of kind `kind` from the inputs `params`, validated by the
+        /// law's `from_params`.
+        fn law_from_params(kind: i32, params: &AsperityLawParams) -> Result<NormalLaw> {
+            // SAFETY: every member is plain old data (f64/i32 fields), valid
+            // for any bit pattern; `kind` selects the member the caller filled.
+            unsafe {
+                match kind {
+                    $($kind => $law::from_params(&params.$name).map(NormalLaw::$law),)*
+                    k => Err(Error::UnknownSelector {
+                        name: "kind",
+                        value: k as i64,
+                    }),
+                }
+            }
+        }
+    };
 }
+normal_laws!(c_law_conversions!());
 
 /// Run `$e` with `$l` bound to a reference to the concrete law stored in the
 /// C value `$c`, after validating the kind (never transmuted). `$e` must
@@ -181,46 +199,21 @@ impl From<NormalLaw> for AsperityNormalLaw {
 macro_rules! with_law {
     ($c:expr, $l:ident => $e:expr) => {{
         let c: &AsperityNormalLaw = $c;
+        normal_laws!(with_law_arms!(c, $l, $e))
+    }};
+}
+
+/// The `match` of [`with_law!`]: one arm per law of [`normal_laws!`].
+macro_rules! with_law_arms {
+    (($c:ident, $l:ident, $e:expr) $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
         // SAFETY: `stored` is sound for any bits; `kind` selects the type the
         // constructor stored.
         unsafe {
-            match c.kind {
-                ASPERITY_LAW_HERTZ => {
-                    let $l = stored::<Hertz>(&c.params);
+            match $c.kind {
+                $($kind => {
+                    let $l = stored::<$law>(&$c.params);
                     $e
-                }
-                ASPERITY_LAW_POWER_PUNCH => {
-                    let $l = stored::<PowerPunch>(&c.params);
-                    $e
-                }
-                ASPERITY_LAW_FLAT_PUNCH => {
-                    let $l = stored::<FlatPunch>(&c.params);
-                    $e
-                }
-                ASPERITY_LAW_DMT => {
-                    let $l = stored::<Dmt>(&c.params);
-                    $e
-                }
-                ASPERITY_LAW_JKR => {
-                    let $l = stored::<Jkr>(&c.params);
-                    $e
-                }
-                ASPERITY_LAW_JKR_POWER_PUNCH => {
-                    let $l = stored::<JkrPowerPunch>(&c.params);
-                    $e
-                }
-                ASPERITY_LAW_KENDALL => {
-                    let $l = stored::<Kendall>(&c.params);
-                    $e
-                }
-                ASPERITY_LAW_MAUGIS_DUGDALE => {
-                    let $l = stored::<MaugisDugdale>(&c.params);
-                    $e
-                }
-                ASPERITY_LAW_DERJAGUIN => {
-                    let $l = stored::<Derjaguin>(&c.params);
-                    $e
-                }
+                })*
                 k => Err(Error::UnknownSelector {
                     name: "law.kind",
                     value: k as i64,
@@ -228,7 +221,7 @@ macro_rules! with_law {
                 .into()),
             }
         }
-    }};
+    };
 }
 
 impl AsperityNormalLaw {
@@ -236,40 +229,6 @@ impl AsperityNormalLaw {
     #[inline]
     pub fn to_law(&self) -> Result<NormalLaw> {
         with_law!(self, l => Ok(NormalLaw::from(*l)))
-    }
-}
-
-/// The law of kind `kind` from the inputs `params`, validated by the law's
-/// `from_params`.
-fn law_from_params(kind: i32, params: &AsperityLawParams) -> Result<NormalLaw> {
-    // SAFETY: every member is plain old data (f64/i32 fields), valid for any
-    // bit pattern; `kind` selects the member the caller filled.
-    unsafe {
-        match kind {
-            ASPERITY_LAW_HERTZ => Hertz::from_params(&params.hertz).map(NormalLaw::Hertz),
-            ASPERITY_LAW_POWER_PUNCH => {
-                PowerPunch::from_params(&params.power_punch).map(NormalLaw::PowerPunch)
-            }
-            ASPERITY_LAW_FLAT_PUNCH => {
-                FlatPunch::from_params(&params.flat_punch).map(NormalLaw::FlatPunch)
-            }
-            ASPERITY_LAW_DMT => Dmt::from_params(&params.dmt).map(NormalLaw::Dmt),
-            ASPERITY_LAW_JKR => Jkr::from_params(&params.jkr).map(NormalLaw::Jkr),
-            ASPERITY_LAW_JKR_POWER_PUNCH => {
-                JkrPowerPunch::from_params(&params.jkr_power_punch).map(NormalLaw::JkrPowerPunch)
-            }
-            ASPERITY_LAW_KENDALL => Kendall::from_params(&params.kendall).map(NormalLaw::Kendall),
-            ASPERITY_LAW_MAUGIS_DUGDALE => {
-                MaugisDugdale::from_params(&params.maugis_dugdale).map(NormalLaw::MaugisDugdale)
-            }
-            ASPERITY_LAW_DERJAGUIN => {
-                Derjaguin::from_params(&params.derjaguin).map(NormalLaw::Derjaguin)
-            }
-            k => Err(Error::UnknownSelector {
-                name: "kind",
-                value: k as i64,
-            }),
-        }
     }
 }
 
