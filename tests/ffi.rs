@@ -869,16 +869,54 @@ fn law_from_params_rebuilds_every_constructor() {
 
 #[test]
 fn law_from_params_errors_name_the_input() {
+    use asperity::contact::{DerjaguinParams, KendallParams, MaugisDugdaleParams};
     let next = asperity::NormalLaw::NAMES.len() as i32 + 1;
     let mut out = hertz();
     let before = unsafe { out.params.raw };
-    let mut p = AsperityLawParams { raw: [0.0; 16] };
+    let zero = AsperityLawParams { raw: [0.0; 16] };
+    let kendall = |nu, no_slip| AsperityLawParams {
+        kendall: KendallParams {
+            radius: R,
+            e_star: E,
+            work_of_adhesion: W,
+            nu,
+            no_slip,
+            reserved: 0,
+        },
+    };
+    let derjaguin = AsperityLawParams {
+        derjaguin: DerjaguinParams {
+            radius: R,
+            work_of_adhesion: W,
+            parameter: -1.0,
+            surface_law: ASPERITY_SURFACE_LAW_EXPONENTIAL,
+            reserved: 0,
+        },
+    };
+    let md = AsperityLawParams {
+        maugis_dugdale: MaugisDugdaleParams {
+            radius: R,
+            e_star: E,
+            work_of_adhesion: W,
+            cohesive_stress: 0.0,
+        },
+    };
+    // (kind, inputs, the name the message gives)
+    let cases = [
+        (ASPERITY_LAW_NONE, zero, "`kind`"),
+        (next, zero, "`kind`"),
+        (-1, zero, "`kind`"),
+        (ASPERITY_LAW_KENDALL, kendall(0.3, 2), "`no_slip`"),
+        (ASPERITY_LAW_KENDALL, kendall(0.7, 0), "`nu`"),
+        (ASPERITY_LAW_DERJAGUIN, derjaguin, "`parameter`"),
+        (ASPERITY_LAW_MAUGIS_DUGDALE, md, "`cohesive_stress`"),
+    ];
     unsafe {
-        for kind in [ASPERITY_LAW_NONE, next, -1] {
+        for (kind, p, name) in cases {
             expect_error(
                 asperity_law_from_params(kind, &p, &mut out),
                 ASPERITY_ERR_INVALID_ARGUMENT,
-                "`kind`",
+                name,
             );
         }
         expect_error(
@@ -887,52 +925,9 @@ fn law_from_params_errors_name_the_input() {
             "`params`",
         );
         expect_error(
-            asperity_law_from_params(ASPERITY_LAW_HERTZ, &p, null_mut()),
+            asperity_law_from_params(ASPERITY_LAW_HERTZ, &zero, null_mut()),
             ASPERITY_ERR_NULL_POINTER,
             "`out`",
-        );
-        p.kendall = asperity::contact::KendallParams {
-            radius: R,
-            e_star: E,
-            work_of_adhesion: W,
-            nu: 0.3,
-            no_slip: 2,
-            reserved: 0,
-        };
-        expect_error(
-            asperity_law_from_params(ASPERITY_LAW_KENDALL, &p, &mut out),
-            ASPERITY_ERR_INVALID_ARGUMENT,
-            "`no_slip`",
-        );
-        p.kendall.no_slip = 0;
-        p.kendall.nu = 0.7;
-        expect_error(
-            asperity_law_from_params(ASPERITY_LAW_KENDALL, &p, &mut out),
-            ASPERITY_ERR_INVALID_ARGUMENT,
-            "`nu`",
-        );
-        p.derjaguin = asperity::contact::DerjaguinParams {
-            radius: R,
-            work_of_adhesion: W,
-            parameter: -1.0,
-            surface_law: ASPERITY_SURFACE_LAW_EXPONENTIAL,
-            reserved: 0,
-        };
-        expect_error(
-            asperity_law_from_params(ASPERITY_LAW_DERJAGUIN, &p, &mut out),
-            ASPERITY_ERR_INVALID_ARGUMENT,
-            "`parameter`",
-        );
-        p.maugis_dugdale = asperity::contact::MaugisDugdaleParams {
-            radius: R,
-            e_star: E,
-            work_of_adhesion: W,
-            cohesive_stress: 0.0,
-        };
-        expect_error(
-            asperity_law_from_params(ASPERITY_LAW_MAUGIS_DUGDALE, &p, &mut out),
-            ASPERITY_ERR_INVALID_ARGUMENT,
-            "`cohesive_stress`",
         );
     }
     // A failed constructor leaves its output as it was.
