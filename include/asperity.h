@@ -79,13 +79,14 @@
 // Control mode: prescribed approach (rigid machine, fixed grips).
 #define ASPERITY_CONTROL_DISPLACEMENT 1
 
-// Surface law of `asperity_law_derjaguin`: Lennard-Jones 3-9, `range` = z₀.
+// Surface law of `asperity_law_derjaguin`: Lennard-Jones 3-9, `parameter` =
+// equilibrium separation z₀ (m).
 #define ASPERITY_SURFACE_LAW_LENNARD_JONES 1
 
-// Surface law: Dugdale step, `range` = σ₀ (Pa), the cohesive stress.
+// Surface law: Dugdale step, `parameter` = σ₀ (Pa), the cohesive stress.
 #define ASPERITY_SURFACE_LAW_DUGDALE 2
 
-// Surface law: exponential, `range` = decay length ℓ (m).
+// Surface law: exponential, `parameter` = decay length ℓ (m).
 #define ASPERITY_SURFACE_LAW_EXPONENTIAL 3
 
 // The largest Burridge-Knopoff chain (blocks).
@@ -451,218 +452,175 @@ typedef struct AsperitySliderGeometry AsperitySliderGeometry;
 // `asperity_table_free`. Safe to share between threads.
 typedef struct AsperityTable AsperityTable;
 
-// Hertz sphere.
-typedef struct AsperityHertz {
+// Inputs of a Hertz sphere, as [`Hertz::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityHertzParams {
     // Radius of curvature R of the sphere, or the effective radius
-    // `1/R = 1/R₁ + 1/R₂` of two spheres (m).
+    // `1/R = 1/R₁ + 1/R₂` of two spheres (m, > 0).
     double radius;
-    // Contact modulus E* (Pa).
+    // Contact modulus E* (Pa, > 0).
     double e_star;
-} AsperityHertz;
+} AsperityHertzParams;
 
-// A power-law punch `f(r) = B r^d`.
-typedef struct AsperityPowerPunch {
-    // Shape coefficient B (m^{1−d}).
+// Inputs of a power-law punch, as [`PowerPunch::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityPowerPunchParams {
+    // Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
     double b;
     // Shape exponent d (1 ≤ d ≤ 100).
     double d;
-    // Contact modulus E* (Pa).
+    // Contact modulus E* (Pa, > 0).
     double e_star;
-    // Cached `C(d) B E*` (Pa·m^{1−d}).
-    double force_coefficient;
-    // Cached `D(d) B` (m^{1−d}).
-    double depth_coefficient;
-    // Cached `1/(D(d) B)` (m^{d−1}).
-    double inverse_depth_coefficient;
-    // Cached `1/d`.
-    double inverse_d;
-    // Cached `(C(d)/D(d)) E* = 2d E*/(d+1)` (Pa), so that `P = this · a δ`.
-    double force_per_area;
-} AsperityPowerPunch;
+} AsperityPowerPunchParams;
 
-// Flat punch.
-typedef struct AsperityFlatPunch {
-    // Punch radius a (m).
+// Inputs of a flat punch, as [`FlatPunch::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityFlatPunchParams {
+    // Punch radius a (m, > 0).
     double radius;
-    // Contact modulus E* (Pa).
+    // Contact modulus E* (Pa, > 0).
     double e_star;
-    // Stiffness `2 E* a` times the no-slip factor (1 when frictionless) (N/m).
-    double stiffness;
-} AsperityFlatPunch;
-
-// DMT sphere.
-typedef struct AsperityDmt {
-    // Sphere radius R (m).
-    double radius;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-} AsperityDmt;
-
-// JKR sphere.
-typedef struct AsperityJkr {
-    // Sphere radius R (m).
-    double radius;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-    // Cached `k = √(2πw/E*)` (m^{1/2}); 0 without adhesion.
-    double adhesion_coefficient;
-    // Cached overlap scale `L = (4π²w²R/E*²)^{1/3}` (m) of the reduced quartic
-    // `η⁴ − η − δ/L = 0`; 0 without adhesion.
-    double delta_scale;
-    // Cached `1/L` (1/m); 0 without adhesion.
-    double inv_delta_scale;
-    // Cached radius scale `(kR)^{2/3} = (2πwR²/E*)^{1/3}` (m), `a = scale·η²`
-    // (the jump-in radius); 0 without adhesion.
-    double radius_scale;
-    // Cached force scale `2πwR` (N), `P = scale·((4/3)η⁶ − 2η³)`.
-    double force_scale;
-    // Cached displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}`
-    // (m, ≤ 0).
-    double critical_delta;
-} AsperityJkr;
-
-// JKR power-law punch, frictionless or no-slip.
-typedef struct AsperityJkrPowerPunch {
-    // Shape coefficient B (m^{1−d}).
-    double b;
-    // Shape exponent d (1 ≤ d ≤ 100).
-    double d;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-    // No-slip factor C_NS (1 when frictionless).
-    double no_slip_factor;
-    // Shape factor k*(d) of the bonded punch (1 when frictionless).
-    double k_star;
-    // Cached `α = C_NS C(d) B E*/k*` (Pa·m^{1−d}), `P_shape = α a^{d+1}`.
-    double force_coefficient;
-    // Cached `γ = D(d) B/k*` (m^{1−d}), `δ_shape = γ a^d`.
-    double depth_coefficient;
-    // Cached radius scale `A₀ = (κ/γ)^{1/(d−1/2)}` (m), `κ = √(2πw/(E*C_NS))`;
-    // 0 without adhesion.
-    double radius_scale;
-    // Cached overlap scale `L = κ A₀^{1/2}` (m); 0 without adhesion.
-    double delta_scale;
-    // Cached force scale `F = √(8πwE*C_NS) A₀^{3/2}` (N); 0 without adhesion.
-    double force_scale;
-    // Cached displacement-controlled instability δ_c (m, ≤ 0), the minimum of
-    // δ(a).
-    double critical_delta;
-    // Cached reduced radius `t_c = (2d)^{−1/(2d−1)}` at δ_c.
-    double critical_t;
-} AsperityJkrPowerPunch;
-
-// Kendall adhesive flat punch.
-typedef struct AsperityKendall {
-    // Punch radius a (m).
-    double radius;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-    // No-slip factor C_NS (1 when frictionless).
-    double no_slip_factor;
-    // Cached contact stiffness `2E* C_NS a` (N/m).
-    double stiffness;
-    // Cached pull-off force `P_c = −√(8πwE* C_NS a³)` (N, ≤ 0).
-    double pull_off;
-    // Cached separation overlap `δ_c = P_c/(2E* C_NS a)` (m, ≤ 0).
-    double critical_delta;
-} AsperityKendall;
-
-// Maugis–Dugdale sphere. Build it with [`MaugisDugdale::new`] (or
-// [`MaugisDugdale::from_tabor`], [`MaugisDugdale::from_maugis_parameter`]),
-// which validates the parameters and caches the derived constants and the
-// turning points; treat the fields as read-only.
-typedef struct AsperityMaugisDugdale {
-    // Sphere radius R (m).
-    double radius;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-    // Dugdale cohesive stress σ₀ (Pa).
-    double cohesive_stress;
-    // Cached: Maugis parameter λ (dimensionless).
-    double lambda;
-    // Cached: radius unit `(πwR²/K)^{1/3}` (m).
-    double radius_scale;
-    // Cached: overlap unit `(π²w²R/K²)^{1/3}` (m).
-    double delta_scale;
-    // Cached: `C̄₀`, where the non-contact branch closes onto the contact one.
-    double c0_bar;
-    // Cached: jump-out point: `C̄` (turn_kind 0) or `s` (turn_kind 1).
-    double turn_param;
-    // Cached: `Δ̄ + 2/(πλ)` at the jump-out point (≤ 0).
-    double turn_dh;
-    // Cached: load-controlled pull-off `P̄_c` (≤ 0, dimensionless).
-    double pull_off_load_bar;
-    // Cached: `s` at the load-controlled pull-off.
-    double pull_off_load_s;
-    // Cached: displacement-controlled pull-off (dimensionless).
-    double pull_off_disp_bar;
-    // Cached: 0 when the jump-out point is on the non-contact branch
-    // (λ ≤ λ_c), 1 when it is on the contact branch.
-    int32_t turn_kind;
+    // Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip
+    // factor when `no_slip` = 1; range-checked only when 0.
+    double nu;
+    // 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    int32_t no_slip;
     // Reserved, 0.
     int32_t reserved;
-} AsperityMaugisDugdale;
+} AsperityFlatPunchParams;
 
-// Rigid sphere with a surface-force law.
-typedef struct AsperityDerjaguin {
-    // Sphere radius R (m).
+// Inputs of a DMT sphere, as [`Dmt::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityDmtParams {
+    // Sphere radius R (m, > 0).
     double radius;
-    // Work of adhesion w (J/m²).
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², ≥ 0).
     double work_of_adhesion;
-    // The law's length (m): z₀, h₀ = w/σ₀ or ℓ.
-    double range;
-    // Surface law selector (`ASPERITY_SURFACE_LAW_*`).
+} AsperityDmtParams;
+
+// Inputs of a JKR sphere, as [`Jkr::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityJkrParams {
+    // Sphere radius R (m, > 0).
+    double radius;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², ≥ 0).
+    double work_of_adhesion;
+} AsperityJkrParams;
+
+// Inputs of a JKR power-law punch, as [`JkrPowerPunch::from_params`] and
+// C's `asperity_law_from_params` take them.
+typedef struct AsperityJkrPowerPunchParams {
+    // Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
+    double b;
+    // Shape exponent d (1 ≤ d ≤ 100).
+    double d;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², ≥ 0).
+    double work_of_adhesion;
+    // Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives C_NS and
+    // k*(d) when `no_slip` = 1; range-checked only when 0.
+    double nu;
+    // 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    int32_t no_slip;
+    // Reserved, 0.
+    int32_t reserved;
+} AsperityJkrPowerPunchParams;
+
+// Inputs of a Kendall punch, as [`Kendall::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityKendallParams {
+    // Punch radius a (m, > 0).
+    double radius;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², ≥ 0).
+    double work_of_adhesion;
+    // Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip
+    // factor when `no_slip` = 1; range-checked only when 0.
+    double nu;
+    // 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    int32_t no_slip;
+    // Reserved, 0.
+    int32_t reserved;
+} AsperityKendallParams;
+
+// Inputs of a Maugis–Dugdale sphere, as [`MaugisDugdale::from_params`] and
+// C's `asperity_law_from_params` take them.
+typedef struct AsperityMaugisDugdaleParams {
+    // Sphere radius R (m, > 0).
+    double radius;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², > 0).
+    double work_of_adhesion;
+    // Dugdale cohesive stress σ₀ (Pa, > 0).
+    double cohesive_stress;
+} AsperityMaugisDugdaleParams;
+
+// Inputs of a rigid sphere with a surface-force law, as
+// [`Derjaguin::from_params`] and C's `asperity_law_from_params` take them.
+typedef struct AsperityDerjaguinParams {
+    // Sphere radius R (m, > 0).
+    double radius;
+    // Work of adhesion w (J/m², > 0).
+    double work_of_adhesion;
+    // The surface law's second parameter: the equilibrium separation z₀ (m)
+    // for Lennard-Jones, the cohesive stress σ₀ (Pa) for Dugdale, the decay
+    // length ℓ (m) for the exponential law (> 0).
+    double parameter;
+    // Surface law selector: 1 Lennard-Jones, 2 Dugdale, 3 exponential
+    // (`ASPERITY_SURFACE_LAW_*`).
     int32_t surface_law;
     // Reserved, 0.
     int32_t reserved;
-} AsperityDerjaguin;
+} AsperityDerjaguinParams;
 
-// Parameters of a law; which member is meaningful is given by
-// `AsperityNormalLaw::kind`. Sized for 16 doubles so laws can grow without
-// changing the layout.
+// The parameters of a law: the inputs of `AsperityNormalLaw::kind`, as
+// given, in the member of that kind. In an `AsperityNormalLaw` built by a
+// constructor, `raw` holds the library's own form of the law: those inputs
+// first, then values it derives from them, whose layout is private and may
+// change between releases. As input of `asperity_law_from_params` only the
+// member of `kind` is read.
 typedef union AsperityLawParams {
     // `ASPERITY_LAW_HERTZ`.
-    struct AsperityHertz hertz;
+    struct AsperityHertzParams hertz;
     // `ASPERITY_LAW_POWER_PUNCH`.
-    struct AsperityPowerPunch power_punch;
+    struct AsperityPowerPunchParams power_punch;
     // `ASPERITY_LAW_FLAT_PUNCH`.
-    struct AsperityFlatPunch flat_punch;
+    struct AsperityFlatPunchParams flat_punch;
     // `ASPERITY_LAW_DMT`.
-    struct AsperityDmt dmt;
+    struct AsperityDmtParams dmt;
     // `ASPERITY_LAW_JKR`.
-    struct AsperityJkr jkr;
+    struct AsperityJkrParams jkr;
     // `ASPERITY_LAW_JKR_POWER_PUNCH`.
-    struct AsperityJkrPowerPunch jkr_power_punch;
+    struct AsperityJkrPowerPunchParams jkr_power_punch;
     // `ASPERITY_LAW_KENDALL`.
-    struct AsperityKendall kendall;
+    struct AsperityKendallParams kendall;
     // `ASPERITY_LAW_MAUGIS_DUGDALE`.
-    struct AsperityMaugisDugdale maugis_dugdale;
+    struct AsperityMaugisDugdaleParams maugis_dugdale;
     // `ASPERITY_LAW_DERJAGUIN`.
-    struct AsperityDerjaguin derjaguin;
-    // Storage.
+    struct AsperityDerjaguinParams derjaguin;
+    // Storage: the inputs, then the library's private derived values.
     double raw[16];
 } AsperityLawParams;
 
 // A single-asperity normal law, by value: copy it freely, share it between
 // threads, keep it in your own arrays. Build it with an `asperity_law_*`
-// constructor, which validates the parameters and fills derived constants;
-// treat the fields as read-only.
+// constructor (or `asperity_law_from_params`), which validates the inputs
+// and stores derived values after them; read the inputs from the member of
+// `params` that `kind` names, and build a new law to change them (a write
+// to a member leaves the derived values stale).
 typedef struct AsperityNormalLaw {
     // One of `ASPERITY_LAW_*`.
     int32_t kind;
     // Reserved, 0.
     int32_t reserved;
-    // The parameters of `kind`.
+    // The inputs of `kind` (and the library's derived values).
     union AsperityLawParams params;
 } AsperityNormalLaw;
 
@@ -1410,6 +1368,15 @@ int32_t asperity_type_name(size_t index,
                            char *buf,
                            size_t len,
                            size_t *needed);
+
+// The law of kind `kind` (`ASPERITY_LAW_*`) from its inputs: the member of
+// `params` that `kind` names (`params->jkr` for `ASPERITY_LAW_JKR`, ...;
+// `params` must point to a whole `AsperityLawParams`), validated as by the
+// kind's `asperity_law_*` constructor; errors name the member's field
+// (`radius`, `no_slip`, `parameter`, ...), or `kind` for an unknown kind.
+int32_t asperity_law_from_params(int32_t kind,
+                                 const union AsperityLawParams *params,
+                                 struct AsperityNormalLaw *out);
 
 // Hertz sphere: radius R (m), contact modulus E* (Pa).
 int32_t asperity_law_hertz(double radius,

@@ -867,6 +867,16 @@ fn every_function_laws(c: &mut Report) {
     );
     c.rel(
         LAWS,
+        "from_params_kendall_no_slip_pull_off",
+        kendall * cns.sqrt(),
+        1e-12,
+    );
+    c.close(CPP, "from_params_inputs_read_back", 1.0, 0.0);
+    c.close(CPP, "from_params_bad_no_slip_threw", 1.0, 0.0);
+    c.close(FFI, "from_params_bad_no_slip_status", -2.0, 0.0);
+    c.close(FFI, "from_params_bad_no_slip_names_argument", 1.0, 0.0);
+    c.rel(
+        LAWS,
         "md_pull_off_load",
         md_pull_off(asperity::Control::Load),
         1e-12,

@@ -47,28 +47,14 @@ const RELAXED: &[(&str, &[&str], &str)] = &[(
     "VFRIC's argument list is Abaqus's: the friction law reads only some of its 40 arguments",
 )];
 
-/// The law kinds `ASPERITY_LAW_<KIND>` of the header are
-/// `ASPERITY_LAW_KIND_<KIND>` in the module: Fortran names ignore case, and
-/// `ASPERITY_LAW_JKR` would be the constructor `asperity_law_jkr` (all ten
-/// kinds are renamed alike).
-const LAW_KINDS: &[&str] = &[
-    "NONE",
-    "HERTZ",
-    "POWER_PUNCH",
-    "FLAT_PUNCH",
-    "DMT",
-    "JKR",
-    "JKR_POWER_PUNCH",
-    "KENDALL",
-    "MAUGIS_DUGDALE",
-    "DERJAGUIN",
-];
-
-/// The Fortran name of the C constant `c_name`.
+/// The law kinds `ASPERITY_LAW_<KIND>` of the header (every constant with
+/// that prefix) are `ASPERITY_LAW_KIND_<KIND>` in the module: Fortran names
+/// ignore case, and `ASPERITY_LAW_JKR` would be the constructor
+/// `asperity_law_jkr` (all kinds are renamed alike).
 fn fortran_constant(c_name: &str) -> String {
     match c_name.strip_prefix("ASPERITY_LAW_") {
-        Some(kind) if LAW_KINDS.contains(&kind) => format!("ASPERITY_LAW_KIND_{kind}"),
-        _ => c_name.to_string(),
+        Some(kind) => format!("ASPERITY_LAW_KIND_{kind}"),
+        None => c_name.to_string(),
     }
 }
 
@@ -366,6 +352,7 @@ fn check_param(c_type: &str, decl: &str, handles: &BTreeSet<String>) -> Result<(
     let t = c_type
         .trim_start_matches("const ")
         .replace("struct ", "")
+        .replace("union ", "")
         .trim()
         .to_string();
     let scalar = |kind: &str| -> Result<(), String> {
@@ -1137,17 +1124,17 @@ fn check_jkr_hysteresis(linkage: Linkage) {
     let piwr = PI * W * R;
     let delta_c = -0.75 * (PI * PI * W * W * R / (E_STAR * E_STAR)).cbrt();
     c.exit_ok(JKR);
-    // The law's parameters read through the Fortran mirror of the union.
+    // The law's inputs read through the Fortran mirror of the union, as given.
     c.close(FFI, "law_kind_is_jkr", 1.0, 0.0);
     c.close(FFI, "jkr_params_radius", R, 0.0);
+    c.close(FFI, "jkr_params_e_star", E_STAR, 0.0);
     c.close(FFI, "jkr_params_work_of_adhesion", W, 0.0);
     c.close(
         FFI,
-        "jkr_params_critical_delta",
+        "jkr_reach_displacement",
         delta_c,
         1e-12 * delta_c.abs(),
     );
-    c.close(FFI, "jkr_params_force_scale", 2.0 * piwr, 1e-12 * piwr);
     c.close(FFI, "jkr_delta_c_m", delta_c, 1e-12 * delta_c.abs());
     c.close(JKR, "jkr_pull_off_load_over_piwR", -1.5, 1e-6);
     c.close(JKR, "jkr_pull_off_displacement_over_piwR", -5.0 / 6.0, 1e-6);

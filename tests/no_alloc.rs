@@ -57,6 +57,17 @@ fn laws() -> Vec<(&'static str, Law)> {
 }
 
 #[test]
+fn every_kind_of_law_is_counted() {
+    let names: Vec<&str> = laws().iter().map(|(n, _)| *n).collect();
+    for kind in asperity::NormalLaw::NAMES {
+        assert!(
+            names.contains(kind),
+            "tests/no_alloc.rs: laws() has no `{kind}` (add its asperity_law_{kind})"
+        );
+    }
+}
+
+#[test]
 fn laws_and_table_lookups_allocate_nothing() {
     let laws = laws();
     let deltas: Vec<f64> = (0..64).map(|i| -4e-9 + 0.25e-9 * i as f64).collect();

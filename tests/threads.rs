@@ -119,6 +119,17 @@ fn laws() -> Vec<NormalLaw> {
     ]
 }
 
+#[test]
+fn laws_cover_every_kind() {
+    let names: Vec<&str> = laws().iter().map(NormalLaw::name).collect();
+    for kind in NormalLaw::NAMES {
+        assert!(
+            names.contains(kind),
+            "tests/threads.rs: laws() has no `{kind}` law"
+        );
+    }
+}
+
 /// The i-th overlap of a deterministic approach–retraction path over ±4
 /// length scales (a cycle of 64 points), with a few repeats.
 fn delta_at(law: &impl NormalContact, i: usize) -> f64 {

@@ -377,6 +377,16 @@ struct density_callback {
 // ---------------------------------------------------------------------------
 // Single-asperity normal laws (AsperityNormalLaw by value)
 
+/// `asperity_law_from_params`: the law of kind `kind` (`ASPERITY_LAW_*`) from
+/// its inputs, the member of `params` that `kind` names (`params.jkr`, ...).
+[[nodiscard]] inline AsperityNormalLaw law_from_params(std::int32_t kind,
+                                                       const AsperityLawParams& params)
+{
+    AsperityNormalLaw law{};
+    check(asperity_law_from_params(kind, &params, &law));
+    return law;
+}
+
 /// `asperity_law_hertz`: Hertz sphere, radius R (m), contact modulus E* (Pa).
 [[nodiscard]] inline AsperityNormalLaw law_hertz(double radius, double e_star)
 {

@@ -45,8 +45,8 @@
 !> `(0:5)` by `ASPERITY_FIDELITY_*` and
 !> `AsperityIndentationOptions.area_coefficients` `(0:7)` by the NanoSuite
 !> coefficient number. The C union `AsperityLawParams` is its storage
-!> `raw(16)`; view it as one law with `transfer`, e.g.
-!> `jkr = transfer(law%params, jkr)` for a `type(asperity_jkr) :: jkr`.
+!> `raw(16)`; read a law's inputs with `transfer`, e.g.
+!> `jkr = transfer(law%params, jkr)` for a `type(asperity_jkr_params) :: jkr`.
 !> `asperity_type_layout` gives the size the library has for each C type;
 !> tests/fortran_bindings.rs checks `c_sizeof` of every mirror against it.
 !>
@@ -327,180 +327,128 @@ module asperity
   ! ------------------------------------------------------------------------
   ! Mirrors of the C structs (`type, bind(c)`), in header order.
 
-  !> `AsperityHertz`
-  type, bind(c), public :: asperity_hertz
+  !> `AsperityHertzParams`
+  type, bind(c), public :: asperity_hertz_params
     !> Radius of curvature R of the sphere, or the effective radius `1/R = 1/R₁ + 1/R₂` of two
-    !  spheres (m).
+    !  spheres (m, > 0).
     real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
+    !> Contact modulus E* (Pa, > 0).
     real(c_double) :: e_star = 0.0_c_double
-  end type asperity_hertz
+  end type asperity_hertz_params
 
-  !> `AsperityPowerPunch`
-  type, bind(c), public :: asperity_power_punch
-    !> Shape coefficient B (m^{1−d}).
+  !> `AsperityPowerPunchParams`
+  type, bind(c), public :: asperity_power_punch_params
+    !> Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
     real(c_double) :: b = 0.0_c_double
     !> Shape exponent d (1 ≤ d ≤ 100).
     real(c_double) :: d = 0.0_c_double
-    !> Contact modulus E* (Pa).
+    !> Contact modulus E* (Pa, > 0).
     real(c_double) :: e_star = 0.0_c_double
-    !> Cached `C(d) B E*` (Pa·m^{1−d}).
-    real(c_double) :: force_coefficient = 0.0_c_double
-    !> Cached `D(d) B` (m^{1−d}).
-    real(c_double) :: depth_coefficient = 0.0_c_double
-    !> Cached `1/(D(d) B)` (m^{d−1}).
-    real(c_double) :: inverse_depth_coefficient = 0.0_c_double
-    !> Cached `1/d`.
-    real(c_double) :: inverse_d = 0.0_c_double
-    !> Cached `(C(d)/D(d)) E* = 2d E*/(d+1)` (Pa), so that `P = this · a δ`.
-    real(c_double) :: force_per_area = 0.0_c_double
-  end type asperity_power_punch
+  end type asperity_power_punch_params
 
-  !> `AsperityFlatPunch`
-  type, bind(c), public :: asperity_flat_punch
-    !> Punch radius a (m).
+  !> `AsperityFlatPunchParams`
+  type, bind(c), public :: asperity_flat_punch_params
+    !> Punch radius a (m, > 0).
     real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
+    !> Contact modulus E* (Pa, > 0).
     real(c_double) :: e_star = 0.0_c_double
-    !> Stiffness `2 E* a` times the no-slip factor (1 when frictionless) (N/m).
-    real(c_double) :: stiffness = 0.0_c_double
-  end type asperity_flat_punch
-
-  !> `AsperityDmt`
-  type, bind(c), public :: asperity_dmt
-    !> Sphere radius R (m).
-    real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-  end type asperity_dmt
-
-  !> `AsperityJkr`
-  type, bind(c), public :: asperity_jkr
-    !> Sphere radius R (m).
-    real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> Cached `k = √(2πw/E*)` (m^{1/2}); 0 without adhesion.
-    real(c_double) :: adhesion_coefficient = 0.0_c_double
-    !> Cached overlap scale `L = (4π²w²R/E*²)^{1/3}` (m) of the reduced quartic `η⁴ − η − δ/L =
-    !  0`; 0 without adhesion.
-    real(c_double) :: delta_scale = 0.0_c_double
-    !> Cached `1/L` (1/m); 0 without adhesion.
-    real(c_double) :: inv_delta_scale = 0.0_c_double
-    !> Cached radius scale `(kR)^{2/3} = (2πwR²/E*)^{1/3}` (m), `a = scale·η²` (the jump-in
-    !  radius); 0 without adhesion.
-    real(c_double) :: radius_scale = 0.0_c_double
-    !> Cached force scale `2πwR` (N), `P = scale·((4/3)η⁶ − 2η³)`.
-    real(c_double) :: force_scale = 0.0_c_double
-    !> Cached displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}` (m, ≤ 0).
-    real(c_double) :: critical_delta = 0.0_c_double
-  end type asperity_jkr
-
-  !> `AsperityJkrPowerPunch`
-  type, bind(c), public :: asperity_jkr_power_punch
-    !> Shape coefficient B (m^{1−d}).
-    real(c_double) :: b = 0.0_c_double
-    !> Shape exponent d (1 ≤ d ≤ 100).
-    real(c_double) :: d = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> No-slip factor C_NS (1 when frictionless).
-    real(c_double) :: no_slip_factor = 0.0_c_double
-    !> Shape factor k*(d) of the bonded punch (1 when frictionless).
-    real(c_double) :: k_star = 0.0_c_double
-    !> Cached `α = C_NS C(d) B E*/k*` (Pa·m^{1−d}), `P_shape = α a^{d+1}`.
-    real(c_double) :: force_coefficient = 0.0_c_double
-    !> Cached `γ = D(d) B/k*` (m^{1−d}), `δ_shape = γ a^d`.
-    real(c_double) :: depth_coefficient = 0.0_c_double
-    !> Cached radius scale `A₀ = (κ/γ)^{1/(d−1/2)}` (m), `κ = √(2πw/(E*C_NS))`; 0 without
-    !  adhesion.
-    real(c_double) :: radius_scale = 0.0_c_double
-    !> Cached overlap scale `L = κ A₀^{1/2}` (m); 0 without adhesion.
-    real(c_double) :: delta_scale = 0.0_c_double
-    !> Cached force scale `F = √(8πwE*C_NS) A₀^{3/2}` (N); 0 without adhesion.
-    real(c_double) :: force_scale = 0.0_c_double
-    !> Cached displacement-controlled instability δ_c (m, ≤ 0), the minimum of δ(a).
-    real(c_double) :: critical_delta = 0.0_c_double
-    !> Cached reduced radius `t_c = (2d)^{−1/(2d−1)}` at δ_c.
-    real(c_double) :: critical_t = 0.0_c_double
-  end type asperity_jkr_power_punch
-
-  !> `AsperityKendall`
-  type, bind(c), public :: asperity_kendall
-    !> Punch radius a (m).
-    real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> No-slip factor C_NS (1 when frictionless).
-    real(c_double) :: no_slip_factor = 0.0_c_double
-    !> Cached contact stiffness `2E* C_NS a` (N/m).
-    real(c_double) :: stiffness = 0.0_c_double
-    !> Cached pull-off force `P_c = −√(8πwE* C_NS a³)` (N, ≤ 0).
-    real(c_double) :: pull_off = 0.0_c_double
-    !> Cached separation overlap `δ_c = P_c/(2E* C_NS a)` (m, ≤ 0).
-    real(c_double) :: critical_delta = 0.0_c_double
-  end type asperity_kendall
-
-  !> `AsperityMaugisDugdale`
-  type, bind(c), public :: asperity_maugis_dugdale
-    !> Sphere radius R (m).
-    real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> Dugdale cohesive stress σ₀ (Pa).
-    real(c_double) :: cohesive_stress = 0.0_c_double
-    !> Cached: Maugis parameter λ (dimensionless).
-    real(c_double) :: lambda = 0.0_c_double
-    !> Cached: radius unit `(πwR²/K)^{1/3}` (m).
-    real(c_double) :: radius_scale = 0.0_c_double
-    !> Cached: overlap unit `(π²w²R/K²)^{1/3}` (m).
-    real(c_double) :: delta_scale = 0.0_c_double
-    !> Cached: `C̄₀`, where the non-contact branch closes onto the contact one.
-    real(c_double) :: c0_bar = 0.0_c_double
-    !> Cached: jump-out point: `C̄` (turn_kind 0) or `s` (turn_kind 1).
-    real(c_double) :: turn_param = 0.0_c_double
-    !> Cached: `Δ̄ + 2/(πλ)` at the jump-out point (≤ 0).
-    real(c_double) :: turn_dh = 0.0_c_double
-    !> Cached: load-controlled pull-off `P̄_c` (≤ 0, dimensionless).
-    real(c_double) :: pull_off_load_bar = 0.0_c_double
-    !> Cached: `s` at the load-controlled pull-off.
-    real(c_double) :: pull_off_load_s = 0.0_c_double
-    !> Cached: displacement-controlled pull-off (dimensionless).
-    real(c_double) :: pull_off_disp_bar = 0.0_c_double
-    !> Cached: 0 when the jump-out point is on the non-contact branch (λ ≤ λ_c), 1 when it is on
-    !  the contact branch.
-    integer(c_int32_t) :: turn_kind = 0_c_int32_t
+    !> Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip factor when `no_slip` =
+    !  1; range-checked only when 0.
+    real(c_double) :: nu = 0.0_c_double
+    !> 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    integer(c_int32_t) :: no_slip = 0_c_int32_t
     !> Reserved, 0.
     integer(c_int32_t) :: reserved = 0_c_int32_t
-  end type asperity_maugis_dugdale
+  end type asperity_flat_punch_params
 
-  !> `AsperityDerjaguin`
-  type, bind(c), public :: asperity_derjaguin
-    !> Sphere radius R (m).
+  !> `AsperityDmtParams`
+  type, bind(c), public :: asperity_dmt_params
+    !> Sphere radius R (m, > 0).
     real(c_double) :: radius = 0.0_c_double
-    !> Work of adhesion w (J/m²).
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², ≥ 0).
     real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> The law's length (m): z₀, h₀ = w/σ₀ or ℓ.
-    real(c_double) :: range = 0.0_c_double
-    !> Surface law selector (`ASPERITY_SURFACE_LAW_*`).
+  end type asperity_dmt_params
+
+  !> `AsperityJkrParams`
+  type, bind(c), public :: asperity_jkr_params
+    !> Sphere radius R (m, > 0).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², ≥ 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+  end type asperity_jkr_params
+
+  !> `AsperityJkrPowerPunchParams`
+  type, bind(c), public :: asperity_jkr_power_punch_params
+    !> Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
+    real(c_double) :: b = 0.0_c_double
+    !> Shape exponent d (1 ≤ d ≤ 100).
+    real(c_double) :: d = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², ≥ 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives C_NS and k*(d) when `no_slip` = 1;
+    !  range-checked only when 0.
+    real(c_double) :: nu = 0.0_c_double
+    !> 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    integer(c_int32_t) :: no_slip = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_jkr_power_punch_params
+
+  !> `AsperityKendallParams`
+  type, bind(c), public :: asperity_kendall_params
+    !> Punch radius a (m, > 0).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², ≥ 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip factor when `no_slip` =
+    !  1; range-checked only when 0.
+    real(c_double) :: nu = 0.0_c_double
+    !> 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    integer(c_int32_t) :: no_slip = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_kendall_params
+
+  !> `AsperityMaugisDugdaleParams`
+  type, bind(c), public :: asperity_maugis_dugdale_params
+    !> Sphere radius R (m, > 0).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², > 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Dugdale cohesive stress σ₀ (Pa, > 0).
+    real(c_double) :: cohesive_stress = 0.0_c_double
+  end type asperity_maugis_dugdale_params
+
+  !> `AsperityDerjaguinParams`
+  type, bind(c), public :: asperity_derjaguin_params
+    !> Sphere radius R (m, > 0).
+    real(c_double) :: radius = 0.0_c_double
+    !> Work of adhesion w (J/m², > 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> The surface law's second parameter: the equilibrium separation z₀ (m) for Lennard-Jones, the
+    !  cohesive stress σ₀ (Pa) for Dugdale, the decay length ℓ (m) for the exponential law (> 0).
+    real(c_double) :: parameter = 0.0_c_double
+    !> Surface law selector: 1 Lennard-Jones, 2 Dugdale, 3 exponential (`ASPERITY_SURFACE_LAW_*`).
     integer(c_int32_t) :: surface_law = 0_c_int32_t
     !> Reserved, 0.
     integer(c_int32_t) :: reserved = 0_c_int32_t
-  end type asperity_derjaguin
+  end type asperity_derjaguin_params
 
-  !> `AsperityLawParams`
+  !> `AsperityLawParams`: Fortran has no unions; view a member with `transfer`, e.g.
+  !  `jkr = transfer(law%params, jkr)` for a `type(asperity_jkr_params) :: jkr`, and fill one with
+  !  `params%raw(1:3) = transfer(jkr, params%raw(1:3))`.
   type, bind(c), public :: asperity_law_params
-    !> Storage.
+    !> Storage: the inputs, then the library's private derived values.
     real(c_double) :: raw(16) = 0.0_c_double
   end type asperity_law_params
 
@@ -510,7 +458,7 @@ module asperity
     integer(c_int32_t) :: kind = 0_c_int32_t
     !> Reserved, 0.
     integer(c_int32_t) :: reserved = 0_c_int32_t
-    !> The parameters of `kind`.
+    !> The inputs of `kind` (and the library's derived values).
     type(asperity_law_params) :: params
   end type asperity_normal_law
 
@@ -1310,6 +1258,18 @@ module asperity
       integer(c_size_t), intent(out) :: needed
       integer(c_int32_t) :: r
     end function c_asperity_type_name
+
+    !> The law of kind `kind` (`ASPERITY_LAW_*`) from its inputs: the member of `params` that
+    !  `kind` names, validated as by the kind's `asperity_law_*` constructor.
+    function c_asperity_law_from_params(kind, params, out) result(r) bind(c, &
+        name="asperity_law_from_params")
+      import
+      implicit none
+      integer(c_int32_t), value :: kind
+      type(asperity_law_params), intent(in) :: params
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_from_params
 
     !> Hertz sphere: radius R (m), contact modulus E* (Pa).
     function c_asperity_law_hertz(radius, e_star, out) result(r) bind(c, &
@@ -3001,6 +2961,7 @@ module asperity
   public :: c_asperity_type_layout
   public :: c_asperity_type_count
   public :: c_asperity_type_name
+  public :: c_asperity_law_from_params
   public :: c_asperity_law_hertz
   public :: c_asperity_law_sphere_in_crater
   public :: c_asperity_law_power_punch
@@ -3130,6 +3091,7 @@ module asperity
   public :: asperity_type_layout
   public :: asperity_type_count
   public :: asperity_type_name
+  public :: asperity_law_from_params
   public :: asperity_law_hertz
   public :: asperity_law_sphere_in_crater
   public :: asperity_law_power_punch
@@ -3685,6 +3647,16 @@ contains
 
   ! ------------------------------------------------------------------------
   ! Friendly layer: single-asperity normal laws (contact.rs).
+
+  !> The law of kind `kind` (`ASPERITY_LAW_KIND_*`) from its inputs `params` (the member of
+  !  the C union that `kind` names, filled with `transfer`).
+  subroutine asperity_law_from_params(kind, params, law, status)
+    integer(c_int32_t), intent(in) :: kind
+    type(asperity_law_params), intent(in) :: params
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_from_params(kind, params, law), 'asperity_law_from_params', status)
+  end subroutine asperity_law_from_params
 
   !> Hertz sphere: radius R (m), contact modulus E* (Pa).
   subroutine asperity_law_hertz(radius, e_star, law, status)

@@ -124,6 +124,23 @@ void laws()
           asperity::pull_off_force(asperity::law_kendall(1e-6, e_star, w, 0.355, true),
                                    ASPERITY_CONTROL_LOAD));
 
+    // From inputs: the member of the union that the kind names; the law
+    // keeps them as given.
+    AsperityLawParams inputs{};
+    inputs.kendall = AsperityKendallParams{1e-6, e_star, w, 0.355, 1, 0};
+    const AsperityNormalLaw kendall_in = asperity::law_from_params(ASPERITY_LAW_KENDALL, inputs);
+    check("from_params_kendall_no_slip_pull_off",
+          asperity::pull_off_force(kendall_in, ASPERITY_CONTROL_LOAD));
+    check_bool("from_params_inputs_read_back",
+               kendall_in.kind == ASPERITY_LAW_KENDALL && kendall_in.params.kendall.nu == 0.355 &&
+                   kendall_in.params.kendall.no_slip == 1 &&
+                   kendall_in.params.kendall.radius == 1e-6);
+    expect_error("from_params_bad_no_slip", "`no_slip`", [] {
+        AsperityLawParams bad{};
+        bad.kendall = AsperityKendallParams{1e-6, e_star, w, 0.3, 2, 0};
+        (void)asperity::law_from_params(ASPERITY_LAW_KENDALL, bad);
+    });
+
     const AsperityNormalLaw md = asperity::law_maugis_dugdale(radius, e_star, w, 3.27e7);
     check("md_pull_off_load", asperity::pull_off_force(md, ASPERITY_CONTROL_LOAD));
     check("md_length_scale", asperity::law_length_scale(md));

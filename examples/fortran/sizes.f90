@@ -19,15 +19,15 @@ program sizes
   integer :: k, state_size
   type(asperity_homogenised_friction) :: table
   type(asperity_friction) :: law
-  type(asperity_hertz) :: hertz
-  type(asperity_power_punch) :: power_punch
-  type(asperity_flat_punch) :: flat_punch
-  type(asperity_dmt) :: dmt
-  type(asperity_jkr) :: jkr
-  type(asperity_jkr_power_punch) :: jkr_power_punch
-  type(asperity_kendall) :: kendall
-  type(asperity_maugis_dugdale) :: maugis_dugdale
-  type(asperity_derjaguin) :: derjaguin
+  type(asperity_hertz_params) :: hertz
+  type(asperity_power_punch_params) :: power_punch
+  type(asperity_flat_punch_params) :: flat_punch
+  type(asperity_dmt_params) :: dmt
+  type(asperity_jkr_params) :: jkr
+  type(asperity_jkr_power_punch_params) :: jkr_power_punch
+  type(asperity_kendall_params) :: kendall
+  type(asperity_maugis_dugdale_params) :: maugis_dugdale
+  type(asperity_derjaguin_params) :: derjaguin
   type(asperity_law_params) :: law_params
   type(asperity_normal_law) :: normal_law
   type(asperity_contact_state) :: contact_state
@@ -58,15 +58,15 @@ program sizes
   type(asperity_hurst_fit) :: hurst_fit
   type(asperity_peak_statistics) :: peak_statistics
 
-  call row('AsperityHertz', c_sizeof(hertz))
-  call row('AsperityPowerPunch', c_sizeof(power_punch))
-  call row('AsperityFlatPunch', c_sizeof(flat_punch))
-  call row('AsperityDmt', c_sizeof(dmt))
-  call row('AsperityJkr', c_sizeof(jkr))
-  call row('AsperityJkrPowerPunch', c_sizeof(jkr_power_punch))
-  call row('AsperityKendall', c_sizeof(kendall))
-  call row('AsperityMaugisDugdale', c_sizeof(maugis_dugdale))
-  call row('AsperityDerjaguin', c_sizeof(derjaguin))
+  call row('AsperityHertzParams', c_sizeof(hertz))
+  call row('AsperityPowerPunchParams', c_sizeof(power_punch))
+  call row('AsperityFlatPunchParams', c_sizeof(flat_punch))
+  call row('AsperityDmtParams', c_sizeof(dmt))
+  call row('AsperityJkrParams', c_sizeof(jkr))
+  call row('AsperityJkrPowerPunchParams', c_sizeof(jkr_power_punch))
+  call row('AsperityKendallParams', c_sizeof(kendall))
+  call row('AsperityMaugisDugdaleParams', c_sizeof(maugis_dugdale))
+  call row('AsperityDerjaguinParams', c_sizeof(derjaguin))
   call row('AsperityLawParams', c_sizeof(law_params))
   call row('AsperityNormalLaw', c_sizeof(normal_law))
   call row('AsperityContactState', c_sizeof(contact_state))

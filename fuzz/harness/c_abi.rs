@@ -575,6 +575,13 @@ pub enum Op {
         rel_force: F,
         null: bool,
     },
+    // A law from its inputs (added last: the existing corpus keeps its
+    // meaning).
+    LawFromParams {
+        kind: Sel,
+        raw: [F; 16],
+        nulls: Nulls,
+    },
 }
 
 /// The handles and carried states of one input; all freed on drop.
@@ -674,7 +681,8 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
         | Op::PullOff { .. }
         | Op::LengthScale { .. }
         | Op::Reach { .. }
-        | Op::Energy { .. } => contact::call(ctx, op),
+        | Op::Energy { .. }
+        | Op::LawFromParams { .. } => contact::call(ctx, op),
         Op::TableMd { .. }
         | Op::TableLj { .. }
         | Op::TableEval { .. }
