@@ -260,3 +260,66 @@ macro_rules! scalar_fn {
         }
     };
 }
+
+/// `f` on a float (-> float) or element by element on a 1-D array
+/// (-> array; the GIL released; a failing element's error starts with
+/// `element i:`).
+pub fn vectorize<F>(py: Python<'_>, x: &Bound<'_, PyAny>, name: &str, f: F) -> PyResult<Py<PyAny>>
+where
+    F: Fn(f64) -> asperity::Result<f64> + Send + Sync,
+{
+    use pyo3::IntoPyObjectExt;
+    match real_or_array(x, name)? {
+        RealOrArray::Scalar(v) => f(v).map_err(rs)?.into_py_any(py),
+        RealOrArray::Array(a) => {
+            let xs = a.as_slice()?;
+            let out = py
+                .detach(|| {
+                    xs.iter()
+                        .enumerate()
+                        .map(|(i, &v)| f(v).map_err(|e| (i, e)))
+                        .collect::<Result<Vec<f64>, _>>()
+                })
+                .map_err(|(i, e)| Error::new_err(format!("element {i}: {e}")))?;
+            Ok(PyArray1::from_vec(py, out).into_any().unbind())
+        }
+    }
+}
+
+/// `f` returning several named numbers, on a float (-> dict of floats) or
+/// an array (-> dict of arrays).
+pub fn vectorize_record<F, const K: usize>(
+    py: Python<'_>,
+    x: &Bound<'_, PyAny>,
+    name: &str,
+    keys: [&str; K],
+    f: F,
+) -> PyResult<Py<PyAny>>
+where
+    F: Fn(f64) -> asperity::Result<[f64; K]> + Send + Sync,
+{
+    let d = pyo3::types::PyDict::new(py);
+    match real_or_array(x, name)? {
+        RealOrArray::Scalar(v) => {
+            let r = f(v).map_err(rs)?;
+            for (k, v) in keys.iter().zip(r) {
+                d.set_item(k, v)?;
+            }
+        }
+        RealOrArray::Array(a) => {
+            let xs = a.as_slice()?;
+            let rows = py
+                .detach(|| {
+                    xs.iter()
+                        .enumerate()
+                        .map(|(i, &v)| f(v).map_err(|e| (i, e)))
+                        .collect::<Result<Vec<[f64; K]>, _>>()
+                })
+                .map_err(|(i, e)| Error::new_err(format!("element {i}: {e}")))?;
+            for (j, k) in keys.iter().enumerate() {
+                d.set_item(k, PyArray1::from_vec(py, rows.iter().map(|r| r[j]).collect()))?;
+            }
+        }
+    }
+    Ok(d.into_any().unbind())
+}

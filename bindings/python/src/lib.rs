@@ -7,9 +7,11 @@ use pyo3::prelude::*;
 mod bench;
 mod common;
 mod contact;
+mod friction;
 mod lj_sphere;
 mod materials;
 mod rescaling;
+mod statistics;
 mod surface;
 mod tabulated;
 
@@ -24,5 +26,7 @@ fn _asperity(m: &Bound<'_, PyModule>) -> PyResult<()> {
     tabulated::register(m)?;
     rescaling::register(m)?;
     surface::register(m)?;
+    statistics::register(m)?;
+    friction::register(m)?;
     Ok(())
 }
