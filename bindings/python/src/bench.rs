@@ -13,6 +13,7 @@ use std::time::Instant;
 fn time_batch<L: NormalContact + Sync>(
     law: &L,
     d: &[f64],
+    old: Option<&[asperity::ContactState]>,
     repeats: usize,
     states: bool,
 ) -> PyResult<f64> {
@@ -27,7 +28,7 @@ fn time_batch<L: NormalContact + Sync>(
         c::eval_batch(
             law,
             std::hint::black_box(d),
-            None,
+            old,
             if states { Some(&mut s[..]) } else { None },
             &mut f,
             Some(&mut a),
@@ -40,29 +41,38 @@ fn time_batch<L: NormalContact + Sync>(
     Ok(best)
 }
 
-/// _rust_eval_batch_seconds(law, delta, repeats, states=True) -> float
+/// _rust_eval_batch_seconds(law, delta, repeats, states=True, state=None) -> float
 ///
 /// Fastest of ``repeats`` calls (s) of the Rust batch `eval_batch` over the
-/// overlaps ``delta`` (m) into preallocated force, contact-radius, stiffness
-/// (and, with ``states``, new-state) buffers: the Rust figure the Python
+/// overlaps ``delta`` (m) from the histories ``state`` (fresh when None)
+/// into preallocated force, contact-radius, stiffness (and, with
+/// ``states``, new-state) buffers: the Rust figure the Python
 /// ``law.eval(array)`` is compared with in benches/python/bench.py.
 #[pyfunction]
-#[pyo3(signature = (law, delta, repeats, states=true))]
+#[pyo3(signature = (law, delta, repeats, states=true, state=None))]
 fn _rust_eval_batch_seconds(
     py: Python<'_>,
     law: &Bound<'_, PyAny>,
     delta: &Bound<'_, PyAny>,
     repeats: &Bound<'_, PyAny>,
     states: bool,
+    state: Option<&Bound<'_, ContactState>>,
 ) -> PyResult<f64> {
     let d = array(delta, "delta")?;
     let d = d.as_slice()?;
     let r = count(repeats, "repeats")?;
+    let old_ref = state.map(|s| s.borrow());
+    if let Some(s) = &old_ref {
+        if s.states.len() != d.len() {
+            return Err(arg_error("state", "must have the length of delta"));
+        }
+    }
+    let old = old_ref.as_ref().map(|s| &s.states[..]);
     macro_rules! try_law {
         ($($t:ty),*) => {$(
             if let Ok(l) = law.cast::<$t>() {
                 let inner = l.get().inner.clone();
-                return py.detach(|| time_batch(&inner, d, r, states));
+                return py.detach(|| time_batch(&inner, d, old, r, states));
             }
         )*};
     }

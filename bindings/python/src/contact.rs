@@ -874,19 +874,38 @@ macro_rules! normal_law {
     };
 }
 
-fn point_dict<'py>(
-    py: Python<'py>,
-    p: c::maugis_dugdale::CurvePoint,
-) -> PyResult<Bound<'py, PyDict>> {
+fn point_dict<'py>(py: Python<'py>, md: &c::MaugisDugdale, p: c::maugis_dugdale::CurvePoint) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    d.set_item("a_bar", p.a_bar)?;
-    d.set_item("c_bar", p.c_bar)?;
-    d.set_item("p_bar", p.p_bar)?;
-    d.set_item("delta_bar", p.delta_bar)?;
-    d.set_item("dp_bar", p.dp_bar)?;
-    d.set_item("ddelta_bar", p.ddelta_bar)?;
-    d.set_item("stiffness_bar", p.stiffness_bar())?;
+    for (k, v) in point_values(md, &p).iter().zip(POINT_KEYS) {
+        d.set_item(v, *k)?;
+    }
     Ok(d)
+}
+
+/// Keys of a Maugis–Dugdale curve point: SI, then reduced.
+const POINT_KEYS: [&str; 12] = [
+    "contact_radius", "cohesive_radius", "force", "delta", "stiffness",
+    "a_bar", "c_bar", "p_bar", "delta_bar", "dp_bar", "ddelta_bar", "stiffness_bar",
+];
+
+fn point_values(md: &c::MaugisDugdale, p: &c::maugis_dugdale::CurvePoint) -> [f64; 12] {
+    let (rs_, fs, ds) = (md.radius_scale(), md.force_scale(), asperity::NormalContact::length_scale(md));
+    [
+        p.a_bar * rs_, p.c_bar * rs_, p.p_bar * fs, p.delta_bar * ds, p.stiffness_bar() * fs / ds,
+        p.a_bar, p.c_bar, p.p_bar, p.delta_bar, p.dp_bar, p.ddelta_bar, p.stiffness_bar(),
+    ]
+}
+
+/// A Maugis–Dugdale curve point per parameter, on a float (dict of floats)
+/// or an array (dict of arrays, the GIL released).
+fn points_any(
+    py: Python<'_>,
+    md: &c::MaugisDugdale,
+    x: &Bound<'_, PyAny>,
+    name: &str,
+    f: impl Fn(f64) -> asperity::Result<c::maugis_dugdale::CurvePoint> + Send + Sync,
+) -> PyResult<Py<PyAny>> {
+    crate::common::vectorize_record(py, x, name, POINT_KEYS, |v| f(v).map(|p| point_values(md, &p)))
 }
 
 normal_law!(
@@ -1102,30 +1121,38 @@ normal_law!(
         }
         /// jump_out_point() -> dict
         ///
-        /// The displacement-controlled separation point in reduced variables
-        /// (a_bar, c_bar, p_bar, delta_bar, dp_bar, ddelta_bar, stiffness_bar).
+        /// The displacement-controlled separation point, keys as
+        /// ``contact_point`` (SI and reduced).
         fn jump_out_point<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-            point_dict(py, self.inner.jump_out_point())
+            point_dict(py, &self.inner, self.inner.jump_out_point())
         }
         /// load_pull_off_point() -> dict
         ///
-        /// The load-controlled pull-off point in reduced variables.
+        /// The load-controlled pull-off point, keys as ``contact_point``.
         fn load_pull_off_point<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-            point_dict(py, self.inner.load_pull_off_point())
+            point_dict(py, &self.inner, self.inner.load_pull_off_point())
         }
         /// contact_point(s) -> dict
         ///
-        /// The point of the contact branch at parameter s (dimensionless), in
-        /// reduced variables.
-        fn contact_point<'py>(&self, py: Python<'py>, s: &Bound<'_, PyAny>) -> PyResult<Bound<'py, PyDict>> {
-            point_dict(py, self.inner.contact_point(real(s, "s")?).map_err(rs)?)
+        /// The point of the contact branch at parameter s = √(m² - 1) > 0
+        /// (m = c/a), in closed form (Maugis' equation is quadratic in Ā for
+        /// a given m): a float, or an array of them for a whole
+        /// load–approach curve (arrays out, the GIL released). Keys, SI:
+        /// ``contact_radius`` a (m), ``cohesive_radius`` c (m), ``force`` P
+        /// (N), ``delta`` δ (m), ``stiffness`` dP/dδ (N/m); reduced: ``a_bar``,
+        /// ``c_bar``, ``p_bar``, ``delta_bar``, ``dp_bar``, ``ddelta_bar``
+        /// (derivatives with respect to s), ``stiffness_bar``.
+        fn contact_point(&self, py: Python<'_>, s: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+            let md = self.inner;
+            points_any(py, &md, s, "s", |v| md.contact_point(v))
         }
         /// non_contact_point(c_bar) -> dict
         ///
         /// The point of the non-contact branch with reduced cohesive radius
-        /// c_bar.
-        fn non_contact_point<'py>(&self, py: Python<'py>, c_bar: &Bound<'_, PyAny>) -> PyResult<Bound<'py, PyDict>> {
-            point_dict(py, self.inner.non_contact_point(real(c_bar, "c_bar")?).map_err(rs)?)
+        /// c_bar in [0, C̄0] (a float or an array); keys as ``contact_point``.
+        fn non_contact_point(&self, py: Python<'_>, c_bar: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+            let md = self.inner;
+            points_any(py, &md, c_bar, "c_bar", |v| md.non_contact_point(v))
         }
         fn __repr__(&self) -> String {
             format!("MaugisDugdale(radius={:e}, e_star={:e}, work_of_adhesion={:e}, sigma0={:e})", self.inner.radius, self.inner.e_star, self.inner.work_of_adhesion, self.inner.cohesive_stress)
