@@ -13,8 +13,7 @@
 //! 40).
 
 use asperity::friction::dynamic::{
-    Bristles, BurridgeKnopoff, DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip,
-    PrandtlTomlinson,
+    Bristles, BurridgeKnopoff, FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip, PrandtlTomlinson,
 };
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -36,10 +35,10 @@ fn lugre(vd: f64) -> LuGre {
 }
 
 /// The increments turned by 30° in the tangent plane (a 2-D slip).
-fn turned(incs: &[DynamicIncrement]) -> Vec<DynamicIncrement> {
+fn turned(incs: &[FrictionIncrement]) -> Vec<FrictionIncrement> {
     let (c, s) = (30f64.to_radians().cos(), 30f64.to_radians().sin());
     incs.iter()
-        .map(|i| DynamicIncrement {
+        .map(|i| FrictionIncrement {
             slip: [c * i.slip[0], s * i.slip[0]],
             ..*i
         })
@@ -48,12 +47,12 @@ fn turned(incs: &[DynamicIncrement]) -> Vec<DynamicIncrement> {
 
 /// Increments of an explicit dynamics host: dt = 1 µs, speeds 0.1–10 mm/s
 /// with reversals, N around 10 N.
-fn increments() -> Vec<DynamicIncrement> {
+fn increments() -> Vec<FrictionIncrement> {
     (0..N)
         .map(|i| {
             let t = i as f64;
             let v = 1e-3 * (0.1 + 9.9 * (0.5 + 0.5 * (0.37 * t).sin())) * (0.05 * t).cos().signum();
-            DynamicIncrement {
+            FrictionIncrement {
                 normal_force: 10.0 + (0.11 * t).cos(),
                 slip: [v * 1e-6, 0.0],
                 dt: 1e-6,
@@ -111,10 +110,11 @@ fn main() {
     // Exact reference forces along the sequence.
     let mut state = vec![0.0; len];
     let mut next = state.clone();
+    let mut w = m.work();
     let exact: Vec<f64> = incs
         .iter()
         .map(|i| {
-            let r = m.step(&state, &mut next, i).unwrap();
+            let r = m.step(&state, &mut next, i, &mut w).unwrap();
             state.copy_from_slice(&next);
             -r.force[0]
         })
@@ -131,12 +131,13 @@ fn main() {
     println!("# Dynamic friction steps, time per call (median of {rounds} rounds)\n");
     println!("| path | sub-steps | max relative force error | ns per call |");
     println!("|---|---:|---:|---:|");
-    let lugre_time = |m: &LuGre, incs: &[DynamicIncrement]| {
+    let lugre_time = |m: &LuGre, incs: &[FrictionIncrement]| {
         time(rounds, run_ms, || {
             let mut s = [0.0; 4];
             let mut n = [0.0; 4];
+            let mut w = m.work();
             for i in incs {
-                black_box(m.step(&s, &mut n, black_box(i)).unwrap());
+                black_box(m.step(&s, &mut n, black_box(i), &mut w).unwrap());
                 s = n;
             }
         })
@@ -179,12 +180,13 @@ fn main() {
         let mu: Vec<f64> = (0..elements).map(|_| 0.5 / elements as f64).collect();
         let ms = MaxwellSlip::new(&k, &mu, 0.0).unwrap();
         let len = ms.state_len();
-        let maxwell_time = |incs: &[DynamicIncrement]| {
+        let maxwell_time = |incs: &[FrictionIncrement]| {
             time(rounds, run_ms, || {
                 let mut s = vec![0.0; len];
                 let mut n = vec![0.0; len];
+                let mut w = ms.work();
                 for i in incs {
-                    black_box(ms.step(&s, &mut n, black_box(i)).unwrap());
+                    black_box(ms.step(&s, &mut n, black_box(i), &mut w).unwrap());
                     std::mem::swap(&mut s, &mut n);
                 }
             })
@@ -214,8 +216,9 @@ fn main() {
     let tb = time(rounds, run_ms, || {
         let mut s = vec![0.0; brush.state_len()];
         let mut n = s.clone();
+        let mut w = brush.work();
         for i in &incs {
-            black_box(brush.step(&s, &mut n, black_box(i)).unwrap());
+            black_box(brush.step(&s, &mut n, black_box(i), &mut w).unwrap());
             std::mem::swap(&mut s, &mut n);
         }
     });
@@ -223,26 +226,29 @@ fn main() {
 
     // The integrated models over N increments of a stick-slip run (from the
     // state after a first stretch of the run), mean time per increment.
-    let run = |m: &dyn DynamicFriction, inc: DynamicIncrement, start: &[f64]| {
+    let run = |m: &dyn FrictionLaw, inc: FrictionIncrement, start: &[f64]| {
         let mut s = start.to_vec();
         let t = time(rounds.min(5), run_ms, || {
             s.copy_from_slice(start);
+            let mut w = m.work();
             for _ in 0..N {
-                black_box(m.step_in_place(&mut s, black_box(&inc)).unwrap());
+                black_box(m.step_in_place(&mut s, black_box(&inc), &mut w).unwrap());
             }
         });
         s.copy_from_slice(start);
         let (mut events, mut d) = (0, 0.0);
+        let mut w = m.work();
         for _ in 0..N {
-            let r = m.step_in_place(&mut s, &inc).unwrap();
+            let r = m.step_in_place(&mut s, &inc, &mut w).unwrap();
             events += usize::from(r.regime != 0);
             d += r.dissipated;
         }
         (t, events, d)
     };
-    let warm = |m: &dyn DynamicFriction, inc: &DynamicIncrement, s: &mut [f64]| {
+    let warm = |m: &dyn FrictionLaw, inc: &FrictionIncrement, s: &mut [f64]| {
+        let mut w = m.work();
         for _ in 0..N {
-            m.step_in_place(s, inc).unwrap();
+            m.step_in_place(s, inc, &mut w).unwrap();
         }
     };
     println!("\n| integrated model, stick-slip run | increment | ns per increment |");
@@ -255,7 +261,7 @@ fn main() {
     let pt = PrandtlTomlinson::new(u0, a, k, mass, g, 1e-9).unwrap();
     let pt2 =
         PrandtlTomlinson::two_spring(u0, a, 2.0 * k, mass, g, 2.0 * k, mass, g, 1e-9).unwrap();
-    let inc = DynamicIncrement {
+    let inc = FrictionIncrement {
         normal_force: 1.0,
         slip: [1e-12, 0.0],
         dt: 1e-6,
@@ -275,7 +281,7 @@ fn main() {
     // block displaced by 1 µm at the start.
     for blocks in [1usize, 10, 100] {
         let m = BurridgeKnopoff::new(blocks, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-9).unwrap();
-        let inc = DynamicIncrement {
+        let inc = FrictionIncrement {
             normal_force: blocks as f64,
             slip: [1e-6, 0.0],
             dt: 1e-4,

@@ -9,12 +9,15 @@
 //! hits them alike). Tunables: `ASPERITY_BENCH_ROUNDS` (default 11),
 //! `ASPERITY_BENCH_RUN_MS` (target length of one timed run, default 40).
 
+use asperity::ffi::friction_law::{
+    asperity_friction_free, asperity_friction_from_homogenised, asperity_friction_step_block,
+    asperity_friction_work_free, asperity_friction_work_new,
+};
 use asperity::ffi::homogenised::{
     asperity_homogenised_friction_free, asperity_homogenised_friction_new,
-    asperity_homogenised_friction_step_block,
 };
 use asperity::friction::{
-    CofForm, Dissipation, FrictionIncrement, FrictionPointState, FrictionResponse,
+    BlockStates, CofForm, Dissipation, FrictionBlock, FrictionIncrement, FrictionLaw,
     HomogenisedFriction, HomogenisedSample,
 };
 use std::hint::black_box;
@@ -25,6 +28,8 @@ const N: usize = 1024;
 const AREA: f64 = 1e-6;
 const K: f64 = 1e8;
 const DT: f64 = 1e-6;
+/// Doubles of a point's state.
+const M: usize = HomogenisedFriction::STATE_LEN;
 
 fn env(name: &str, default: u64) -> u64 {
     std::env::var(name)
@@ -60,7 +65,8 @@ struct Inputs {
     normal: Vec<f64>,
     area: Vec<f64>,
     slip: Vec<f64>,
-    old: Vec<FrictionPointState>,
+    /// The points' states, M doubles each.
+    old: Vec<f64>,
 }
 
 fn inputs(law: &HomogenisedFriction) -> Inputs {
@@ -81,12 +87,24 @@ fn inputs(law: &HomogenisedFriction) -> Inputs {
         slip.push(m * a.sin());
     }
     let area = vec![AREA; N];
-    let fresh = vec![FrictionPointState::default(); N];
+    let fresh = vec![0.0; N * M];
     let mut old = fresh.clone();
     let mut f = vec![0.0; 2 * N];
     let mut d = vec![0.0; N];
     law.step_block(
-        &normal, &area, &slip, DT, K, &fresh, &mut old, &mut f, &mut d,
+        FrictionBlock {
+            normal_force: &normal,
+            area: Some(&area),
+            slip: &slip,
+            dt: DT,
+            states: BlockStates::Separate {
+                old: &fresh,
+                new: &mut old,
+            },
+            tangential_force: &mut f,
+            dissipation: Some(&mut d),
+        },
+        &mut law.work(),
     )
     .unwrap();
     Inputs {
@@ -163,12 +181,27 @@ fn main() {
     });
 
     let s = samples();
-    let law = HomogenisedFriction::from_samples(&s, CofForm::Derjaguin).unwrap();
-    let mut handle = std::ptr::null_mut();
+    let law = HomogenisedFriction::from_samples(&s, CofForm::Derjaguin)
+        .unwrap()
+        .with_stick_stiffness(K)
+        .unwrap();
+    let mut table = std::ptr::null_mut();
     assert_eq!(
-        unsafe { asperity_homogenised_friction_new(s.as_ptr(), s.len(), &mut handle) },
+        unsafe { asperity_homogenised_friction_new(s.as_ptr(), s.len(), &mut table) },
         0
     );
+    let mut handle = std::ptr::null_mut();
+    assert_eq!(
+        unsafe { asperity_friction_from_homogenised(table, K, &mut handle) },
+        0
+    );
+    let mut c_work = std::ptr::null_mut();
+    assert_eq!(
+        unsafe { asperity_friction_work_new(handle, &mut c_work) },
+        0
+    );
+    let mut work = law.work();
+    let mut block_work = law.work();
     let inp = inputs(&law);
     let mut new = inp.old.clone();
     let mut f = vec![0.0; 2 * N];
@@ -180,50 +213,55 @@ fn main() {
 
     let mut single = || {
         let mut acc = 0.0;
-        let mut st = FrictionPointState::default();
-        let mut r = FrictionResponse::default();
+        let mut st = [0.0; M];
         for i in 0..N {
             let inc = FrictionIncrement {
                 normal_force: black_box(inp.normal[i]),
                 area: inp.area[i],
                 slip: [inp.slip[2 * i], inp.slip[2 * i + 1]],
                 dt: DT,
-                stick_stiffness: K,
+                ..Default::default()
             };
-            law.step(&inp.old[i], &inc, &mut st, &mut r).unwrap();
-            acc += r.dissipated + st.force[0];
+            let r = law
+                .step(&inp.old[i * M..(i + 1) * M], &mut st, &inc, &mut work)
+                .unwrap();
+            acc += r.dissipated + st[HomogenisedFriction::STATE_FORCE];
         }
         acc
     };
     let mut block = || {
         law.step_block(
-            black_box(&inp.normal),
-            &inp.area,
-            &inp.slip,
-            DT,
-            K,
-            &inp.old,
-            &mut new,
-            &mut f,
-            &mut d,
+            FrictionBlock {
+                normal_force: black_box(&inp.normal),
+                area: Some(&inp.area),
+                slip: &inp.slip,
+                dt: DT,
+                states: BlockStates::Separate {
+                    old: &inp.old,
+                    new: &mut new,
+                },
+                tangential_force: &mut f,
+                dissipation: Some(&mut d),
+            },
+            &mut block_work,
         )
         .unwrap();
         d[N - 1]
     };
     let mut c_block = || {
         let st = unsafe {
-            asperity_homogenised_friction_step_block(
+            asperity_friction_step_block(
                 handle,
                 N,
                 black_box(inp.normal.as_ptr()),
                 inp.area.as_ptr(),
                 inp.slip.as_ptr(),
                 DT,
-                K,
                 inp.old.as_ptr(),
                 cnew.as_mut_ptr(),
                 cf.as_mut_ptr(),
                 cd.as_mut_ptr(),
+                c_work,
             )
         };
         assert_eq!(st, 0);
@@ -235,7 +273,10 @@ fn main() {
             let (fo, di) = coulomb_inline(
                 black_box(1.0),
                 inp.normal[i],
-                inp.old[i].force,
+                [
+                    inp.old[i * M + HomogenisedFriction::STATE_FORCE],
+                    inp.old[i * M + HomogenisedFriction::STATE_FORCE + 1],
+                ],
                 [inp.slip[2 * i], inp.slip[2 * i + 1]],
                 K,
             );
@@ -248,10 +289,7 @@ fn main() {
     let mut paths: Vec<(&str, &mut dyn FnMut() -> f64)> = vec![
         ("step (Rust, one point per call)", &mut single),
         ("step_block (Rust)", &mut block),
-        (
-            "asperity_homogenised_friction_step_block (C ABI)",
-            &mut c_block,
-        ),
+        ("asperity_friction_step_block (C ABI)", &mut c_block),
         ("inline Coulomb return mapping, constant μ", &mut inline),
     ];
     let ns = time(rounds, run, &mut paths);
@@ -273,5 +311,9 @@ fn main() {
         "bar: <= 1000 ns per point: {} (worst path {worst:.1} ns)",
         if worst <= 1000.0 { "PASS" } else { "FAIL" }
     );
-    unsafe { asperity_homogenised_friction_free(handle) };
+    unsafe {
+        asperity_friction_work_free(c_work);
+        asperity_friction_free(handle);
+        asperity_homogenised_friction_free(table);
+    }
 }

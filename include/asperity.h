@@ -10,7 +10,7 @@
  * Failure: a call that returns an error leaves its outputs as they were
  * (scalars, structs, states, buffers), except that constructors set the
  * handle they return to NULL, and batch and block calls (*_batch,
- * *_step_block) write the elements before the failing one, leave those
+ * *_step_block*) write the elements before the failing one, leave those
  * from it on untouched, and start the message with "element i: ".
  *
  * Thread safety: every function is reentrant and may be called concurrently;
@@ -19,14 +19,15 @@
  * all-zero state means "never touched".
  *
  * Threads: the opaque handles AsperityTable, AsperityHomogenisedFriction,
- * AsperitySliderGeometry, AsperitySlider and AsperityGwEmpirical are immutable
- * once built: one handle may be used by any number of threads at once
- * (results are bit-identical to single-threaded calls; only *_free must not
- * race with other use). Per caller, never shared while in use: an
- * AsperitySliderWork (one per thread), and every state a call writes
- * (AsperityContactState, AsperityFrictionPointState, slider flat states,
- * output arrays). asperity_last_error_message() reports the last failure of
- * the calling thread only.
+ * AsperitySliderGeometry, AsperitySlider, AsperityFriction and
+ * AsperityGwEmpirical are immutable once built: one handle may be used by
+ * any number of threads at once (results are bit-identical to
+ * single-threaded calls; only *_free must not race with other use). Per
+ * caller, never shared while in use: an AsperityFrictionWork (one per
+ * thread), and every state a call writes (AsperityContactState, friction
+ * states of asperity_friction_state_size doubles, output arrays).
+ * asperity_last_error_message() reports the last failure of the calling
+ * thread only.
  */
 
 #ifndef ASPERITY_H
@@ -78,34 +79,15 @@
 // Control mode: prescribed approach (rigid machine, fixed grips).
 #define ASPERITY_CONTROL_DISPLACEMENT 1
 
-// Surface law of `asperity_law_derjaguin`: Lennard-Jones 3-9, `range` = z₀.
+// Surface law of `asperity_law_derjaguin`: Lennard-Jones 3-9, `parameter` =
+// equilibrium separation z₀ (m).
 #define ASPERITY_SURFACE_LAW_LENNARD_JONES 1
 
-// Surface law: Dugdale step, `range` = σ₀ (Pa), the cohesive stress.
+// Surface law: Dugdale step, `parameter` = σ₀ (Pa), the cohesive stress.
 #define ASPERITY_SURFACE_LAW_DUGDALE 2
 
-// Surface law: exponential, `range` = decay length ℓ (m).
+// Surface law: exponential, `parameter` = decay length ℓ (m).
 #define ASPERITY_SURFACE_LAW_EXPONENTIAL 3
-
-// `AsperityDynamicIncrement.tangents` bit: compute dF/dN.
-#define ASPERITY_DYNAMIC_TANGENT_NORMAL 1
-
-// `AsperityDynamicIncrement.tangents` bit: compute dF/d(slip).
-#define ASPERITY_DYNAMIC_TANGENT_SLIP 2
-
-// Index in a dynamic-friction state of the accumulated dissipation (J).
-#define ASPERITY_DYNAMIC_STATE_DISSIPATION 0
-
-// Index in a dynamic-friction state of the accumulated slip path (m).
-#define ASPERITY_DYNAMIC_STATE_SLIP_PATH 1
-
-// Index in a dynamic-friction state of the model's first variable: LuGre's
-// bristle deflection z (x, y; m); Maxwell-slip's element deflections
-// (x, y per element; m); Prandtl-Tomlinson's x - x_s (m), tip velocity
-// (m/s), support position x_s (m), then with two springs the cantilever
-// body's x_c - x_s (m) and velocity (m/s); Burridge-Knopoff's x_i - x_d (m)
-// and v_i (m/s) per block, then the driver position x_d (m).
-#define ASPERITY_DYNAMIC_STATE_MODEL 2
 
 // The largest Burridge-Knopoff chain (blocks).
 #define ASPERITY_DYNAMIC_MAX_BLOCKS 256
@@ -128,17 +110,46 @@
 // Fidelity: the full numerical Lennard-Jones sphere.
 #define ASPERITY_FIDELITY_LENNARD_JONES 5
 
-// `AsperityFrictionResponse.regime`: the trial force is inside the cone, no
-// plastic slip.
+// `AsperityFrictionIncrement.tangents` bit: compute dF/dN.
+#define ASPERITY_FRICTION_TANGENT_NORMAL 1
+
+// `AsperityFrictionIncrement.tangents` bit: compute dF/d(slip).
+#define ASPERITY_FRICTION_TANGENT_SLIP 2
+
+// Index in a friction state of the accumulated dissipation (J).
+#define ASPERITY_FRICTION_STATE_DISSIPATION 0
+
+// Index in a friction state of the accumulated slip path sum |ds| (m).
+#define ASPERITY_FRICTION_STATE_SLIP_PATH 1
+
+// Index in a friction state of the law's first own variable. Homogenised
+// law: the stick force (x, y; N), the plastic slip path (m), the
+// dissipation by mechanism (chemical, van der Waals, elastic, plastic; J).
+// Slider: a flag (0 fresh, 1 stepped), the position X (m), the rod-bed
+// position b (m, NaN: none), the dissipation by mechanism (J), the n rod
+// heights (m), the n rods' stored energies (J). LuGre: the bristle
+// deflection z (x, y; m). Maxwell-slip: the element deflections (x, y per
+// element; m). Bristles: the bristle deflections (m). Prandtl-Tomlinson:
+// x - x_s (m), tip velocity (m/s), support position x_s (m), then with two
+// springs the cantilever body's x_c - x_s (m) and velocity (m/s).
+// Burridge-Knopoff: x_i - x_d (m) and v_i (m/s) per block, then the driver
+// position x_d (m).
+#define ASPERITY_FRICTION_STATE_MODEL 2
+
+// `AsperityFrictionResponse.regime`: no slip (inside the slip cone, zero
+// slip, every element stuck).
 #define ASPERITY_FRICTION_STICK 0
 
-// `AsperityFrictionResponse.regime`: the force is on the cone, plastic slip
-// and dissipation.
-#define ASPERITY_FRICTION_SLIP 1
+// `AsperityFrictionResponse.regime`: partial slip (pre-sliding: some
+// elements or bristles slipping).
+#define ASPERITY_FRICTION_PARTIAL_SLIP 1
+
+// `AsperityFrictionResponse.regime`: gross sliding.
+#define ASPERITY_FRICTION_SLIP 2
 
 // `AsperityFrictionResponse.regime`: no normal force and no adhesion; no
-// friction (force 0).
-#define ASPERITY_FRICTION_NO_CONTACT 2
+// friction.
+#define ASPERITY_FRICTION_NO_CONTACT 3
 
 // Segment label: not assigned.
 #define ASPERITY_SEGMENT_UNKNOWN 0
@@ -242,22 +253,14 @@
 // Pair rule of seed 001: `Δγ = (√γ₁ − √γ₂)²`.
 #define ASPERITY_PAIR_SEED001_DIFFERENCE 1
 
-// `AsperitySliderIncrement.control`: the slider's own loading (the
-// scene's); `normal_force` and `gap` are ignored.
-#define ASPERITY_SLIDER_CONTROL_SCENE 0
-
-// `AsperitySliderIncrement.control`: fixed load `normal_force` (N).
+// `AsperitySliderInfo.scene_control`: the scene's loading is a fixed load
+// (N).
 #define ASPERITY_SLIDER_CONTROL_LOAD 1
 
-// `AsperitySliderIncrement.control`: fixed gap, the slider's mean line at
-// `gap` (m) above the counter-surface's mean line.
+// `AsperitySliderInfo.scene_control`: the scene's loading is a fixed gap,
+// the slider's mean line at `scene_loading` (m) above the counter-surface's
+// mean line.
 #define ASPERITY_SLIDER_CONTROL_GAP 2
-
-// `AsperitySliderIncrement.tangents` bit: compute dF/dN.
-#define ASPERITY_SLIDER_TANGENT_NORMAL 1
-
-// `AsperitySliderIncrement.tangents` bit: compute dF/d(slip).
-#define ASPERITY_SLIDER_TANGENT_SLIP 2
 
 // `AsperitySliderOptions.mechanisms` bit: breaking of chemical bonds (4.1).
 #define ASPERITY_MECHANISM_CHEMICAL 1
@@ -309,28 +312,36 @@
 // (6-12)/(6-16), iterated over active sets (reference; allocates).
 #define ASPERITY_ROD_SOLVER_DENSE 1
 
-// Index in a slider state of its flag: 0 fresh, 1 stepped.
-#define ASPERITY_SLIDER_STATE_FLAG 0
+// Index in a slider's friction state of its flag: 0 fresh, 1 stepped.
+#define ASPERITY_SLIDER_STATE_FLAG 2
 
-// Index in a slider state of the slider position X along its track (m).
-// A fresh state (flag 0) starts there: set it to place patches at
-// different points of the counter-surface.
-#define ASPERITY_SLIDER_STATE_POSITION 1
+// Index in a slider's friction state of the slider position X along its
+// track (m). A fresh state (flag 0) starts there: set it to place patches
+// at different points of the counter-surface.
+#define ASPERITY_SLIDER_STATE_POSITION 3
 
-// Index in a slider state of the rod-bed position b of the last
-// equilibrium (m; NaN: none).
-#define ASPERITY_SLIDER_STATE_ROD_POSITION 2
+// Index in a slider's friction state of the rod-bed position b of the
+// last equilibrium (m; NaN: none).
+#define ASPERITY_SLIDER_STATE_ROD_POSITION 4
 
-// Index in a slider state of the accumulated slip path (m).
-#define ASPERITY_SLIDER_STATE_SLIP_PATH 3
+// Index in a slider's friction state of the accumulated dissipation by
+// mechanism (J), 4 values: chemical, van der Waals, elastic, plastic.
+#define ASPERITY_SLIDER_STATE_MECHANISMS 5
 
-// Index in a slider state of the accumulated dissipation (J), 4 values:
-// chemical, van der Waals, elastic, plastic.
-#define ASPERITY_SLIDER_STATE_DISSIPATION 4
+// Index in a slider's friction state of the rod heights (m, one per rod),
+// followed by the rods' stored elastic energies (J, one per rod).
+#define ASPERITY_SLIDER_STATE_HEIGHTS 9
 
-// Index in a slider state of the rod heights (m, one per rod), followed by
-// the rods' stored elastic energies (J, one per rod).
-#define ASPERITY_SLIDER_STATE_HEIGHTS 8
+// Index in a homogenised friction state of the stick force (N, x and y).
+#define ASPERITY_HOMOGENISED_STATE_FORCE 2
+
+// Index in a homogenised friction state of the accumulated plastic slip
+// path (m).
+#define ASPERITY_HOMOGENISED_STATE_PLASTIC_SLIP_PATH 4
+
+// Index in a homogenised friction state of the accumulated dissipation by
+// mechanism (J), 4 values: chemical, van der Waals, elastic, plastic.
+#define ASPERITY_HOMOGENISED_STATE_MECHANISMS 5
 
 // Summit heights: Gaussian of zero mean and standard deviation σ.
 #define ASPERITY_HEIGHTS_GAUSSIAN 1
@@ -401,12 +412,14 @@
 // PSD data window: periodic Hann, normalised by its mean square.
 #define ASPERITY_WINDOW_HANN 1
 
-// A dynamic friction model (opaque): LuGre, Maxwell-slip,
-// Prandtl-Tomlinson (one or two springs) or Burridge-Knopoff. Create it
-// with `asperity_dynamic_*_new`, release it with
-// `asperity_dynamic_friction_free`. Immutable; safe to share between
-// threads.
-typedef struct AsperityDynamicFriction AsperityDynamicFriction;
+// A friction law stepped once per increment (opaque): the homogenised
+// law, the slider as a patch law, or a chapter-5 dynamic model. Release it
+// with `asperity_friction_free`. Immutable; safe to share between threads.
+typedef struct AsperityFriction AsperityFriction;
+
+// The scratch of a friction step (opaque): one per thread. Release it with
+// `asperity_friction_work_free`.
+typedef struct AsperityFrictionWork AsperityFrictionWork;
 
 // A Greenwood–Williamson surface over a measured or generated list of
 // summits (opaque). Create it with `asperity_gw_empirical_new`, release it
@@ -434,228 +447,180 @@ typedef struct AsperitySlider AsperitySlider;
 // `asperity_slider_geometry_free`. Immutable; safe to share between threads.
 typedef struct AsperitySliderGeometry AsperitySliderGeometry;
 
-// Scratch buffers of the slider step (opaque): one per thread. Create it
-// with `asperity_slider_work_new`, release it with
-// `asperity_slider_work_free`.
-typedef struct AsperitySliderWork AsperitySliderWork;
-
 // An immutable tabulated contact law (opaque). Create it with
 // `asperity_table_new_*` or `asperity_table_from_json`, release it with
 // `asperity_table_free`. Safe to share between threads.
 typedef struct AsperityTable AsperityTable;
 
-// Hertz sphere.
-typedef struct AsperityHertz {
+// Inputs of a Hertz sphere, as [`Hertz::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityHertzParams {
     // Radius of curvature R of the sphere, or the effective radius
-    // `1/R = 1/R₁ + 1/R₂` of two spheres (m).
+    // `1/R = 1/R₁ + 1/R₂` of two spheres (m, > 0).
     double radius;
-    // Contact modulus E* (Pa).
+    // Contact modulus E* (Pa, > 0).
     double e_star;
-} AsperityHertz;
+} AsperityHertzParams;
 
-// A power-law punch `f(r) = B r^d`.
-typedef struct AsperityPowerPunch {
-    // Shape coefficient B (m^{1−d}).
+// Inputs of a power-law punch, as [`PowerPunch::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityPowerPunchParams {
+    // Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
     double b;
     // Shape exponent d (1 ≤ d ≤ 100).
     double d;
-    // Contact modulus E* (Pa).
+    // Contact modulus E* (Pa, > 0).
     double e_star;
-    // Cached `C(d) B E*` (Pa·m^{1−d}).
-    double force_coefficient;
-    // Cached `D(d) B` (m^{1−d}).
-    double depth_coefficient;
-    // Cached `1/(D(d) B)` (m^{d−1}).
-    double inverse_depth_coefficient;
-    // Cached `1/d`.
-    double inverse_d;
-    // Cached `(C(d)/D(d)) E* = 2d E*/(d+1)` (Pa), so that `P = this · a δ`.
-    double force_per_area;
-} AsperityPowerPunch;
+} AsperityPowerPunchParams;
 
-// Flat punch.
-typedef struct AsperityFlatPunch {
-    // Punch radius a (m).
+// Inputs of a flat punch, as [`FlatPunch::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityFlatPunchParams {
+    // Punch radius a (m, > 0).
     double radius;
-    // Contact modulus E* (Pa).
+    // Contact modulus E* (Pa, > 0).
     double e_star;
-    // Stiffness `2 E* a` times the no-slip factor (1 when frictionless) (N/m).
-    double stiffness;
-} AsperityFlatPunch;
-
-// DMT sphere.
-typedef struct AsperityDmt {
-    // Sphere radius R (m).
-    double radius;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-} AsperityDmt;
-
-// JKR sphere.
-typedef struct AsperityJkr {
-    // Sphere radius R (m).
-    double radius;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-    // Cached `k = √(2πw/E*)` (m^{1/2}); 0 without adhesion.
-    double adhesion_coefficient;
-    // Cached overlap scale `L = (4π²w²R/E*²)^{1/3}` (m) of the reduced quartic
-    // `η⁴ − η − δ/L = 0`; 0 without adhesion.
-    double delta_scale;
-    // Cached `1/L` (1/m); 0 without adhesion.
-    double inv_delta_scale;
-    // Cached radius scale `(kR)^{2/3} = (2πwR²/E*)^{1/3}` (m), `a = scale·η²`
-    // (the jump-in radius); 0 without adhesion.
-    double radius_scale;
-    // Cached force scale `2πwR` (N), `P = scale·((4/3)η⁶ − 2η³)`.
-    double force_scale;
-    // Cached displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}`
-    // (m, ≤ 0).
-    double critical_delta;
-} AsperityJkr;
-
-// JKR power-law punch, frictionless or no-slip.
-typedef struct AsperityJkrPowerPunch {
-    // Shape coefficient B (m^{1−d}).
-    double b;
-    // Shape exponent d (1 ≤ d ≤ 100).
-    double d;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-    // No-slip factor C_NS (1 when frictionless).
-    double no_slip_factor;
-    // Shape factor k*(d) of the bonded punch (1 when frictionless).
-    double k_star;
-    // Cached `α = C_NS C(d) B E*/k*` (Pa·m^{1−d}), `P_shape = α a^{d+1}`.
-    double force_coefficient;
-    // Cached `γ = D(d) B/k*` (m^{1−d}), `δ_shape = γ a^d`.
-    double depth_coefficient;
-    // Cached radius scale `A₀ = (κ/γ)^{1/(d−1/2)}` (m), `κ = √(2πw/(E*C_NS))`;
-    // 0 without adhesion.
-    double radius_scale;
-    // Cached overlap scale `L = κ A₀^{1/2}` (m); 0 without adhesion.
-    double delta_scale;
-    // Cached force scale `F = √(8πwE*C_NS) A₀^{3/2}` (N); 0 without adhesion.
-    double force_scale;
-    // Cached displacement-controlled instability δ_c (m, ≤ 0), the minimum of
-    // δ(a).
-    double critical_delta;
-    // Cached reduced radius `t_c = (2d)^{−1/(2d−1)}` at δ_c.
-    double critical_t;
-} AsperityJkrPowerPunch;
-
-// Kendall adhesive flat punch.
-typedef struct AsperityKendall {
-    // Punch radius a (m).
-    double radius;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-    // No-slip factor C_NS (1 when frictionless).
-    double no_slip_factor;
-    // Cached contact stiffness `2E* C_NS a` (N/m).
-    double stiffness;
-    // Cached pull-off force `P_c = −√(8πwE* C_NS a³)` (N, ≤ 0).
-    double pull_off;
-    // Cached separation overlap `δ_c = P_c/(2E* C_NS a)` (m, ≤ 0).
-    double critical_delta;
-} AsperityKendall;
-
-// Maugis–Dugdale sphere. Build it with [`MaugisDugdale::new`] (or
-// [`MaugisDugdale::from_tabor`], [`MaugisDugdale::from_maugis_parameter`]),
-// which validates the parameters and caches the derived constants and the
-// turning points; treat the fields as read-only.
-typedef struct AsperityMaugisDugdale {
-    // Sphere radius R (m).
-    double radius;
-    // Contact modulus E* (Pa).
-    double e_star;
-    // Work of adhesion w (J/m²).
-    double work_of_adhesion;
-    // Dugdale cohesive stress σ₀ (Pa).
-    double cohesive_stress;
-    // Cached: Maugis parameter λ (dimensionless).
-    double lambda;
-    // Cached: radius unit `(πwR²/K)^{1/3}` (m).
-    double radius_scale;
-    // Cached: overlap unit `(π²w²R/K²)^{1/3}` (m).
-    double delta_scale;
-    // Cached: `C̄₀`, where the non-contact branch closes onto the contact one.
-    double c0_bar;
-    // Cached: jump-out point: `C̄` (turn_kind 0) or `s` (turn_kind 1).
-    double turn_param;
-    // Cached: `Δ̄ + 2/(πλ)` at the jump-out point (≤ 0).
-    double turn_dh;
-    // Cached: load-controlled pull-off `P̄_c` (≤ 0, dimensionless).
-    double pull_off_load_bar;
-    // Cached: `s` at the load-controlled pull-off.
-    double pull_off_load_s;
-    // Cached: displacement-controlled pull-off (dimensionless).
-    double pull_off_disp_bar;
-    // Cached: 0 when the jump-out point is on the non-contact branch
-    // (λ ≤ λ_c), 1 when it is on the contact branch.
-    int32_t turn_kind;
+    // Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip
+    // factor when `no_slip` = 1; range-checked only when 0.
+    double nu;
+    // 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    int32_t no_slip;
     // Reserved, 0.
     int32_t reserved;
-} AsperityMaugisDugdale;
+} AsperityFlatPunchParams;
 
-// Rigid sphere with a surface-force law.
-typedef struct AsperityDerjaguin {
-    // Sphere radius R (m).
+// Inputs of a DMT sphere, as [`Dmt::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityDmtParams {
+    // Sphere radius R (m, > 0).
     double radius;
-    // Work of adhesion w (J/m²).
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², ≥ 0).
     double work_of_adhesion;
-    // The law's length (m): z₀, h₀ = w/σ₀ or ℓ.
-    double range;
-    // Surface law selector (`ASPERITY_SURFACE_LAW_*`).
+} AsperityDmtParams;
+
+// Inputs of a JKR sphere, as [`Jkr::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityJkrParams {
+    // Sphere radius R (m, > 0).
+    double radius;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², ≥ 0).
+    double work_of_adhesion;
+} AsperityJkrParams;
+
+// Inputs of a JKR power-law punch, as [`JkrPowerPunch::from_params`] and
+// C's `asperity_law_from_params` take them.
+typedef struct AsperityJkrPowerPunchParams {
+    // Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
+    double b;
+    // Shape exponent d (1 ≤ d ≤ 100).
+    double d;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², ≥ 0).
+    double work_of_adhesion;
+    // Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives C_NS and
+    // k*(d) when `no_slip` = 1; range-checked only when 0.
+    double nu;
+    // 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    int32_t no_slip;
+    // Reserved, 0.
+    int32_t reserved;
+} AsperityJkrPowerPunchParams;
+
+// Inputs of a Kendall punch, as [`Kendall::from_params`] and C's
+// `asperity_law_from_params` take them.
+typedef struct AsperityKendallParams {
+    // Punch radius a (m, > 0).
+    double radius;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², ≥ 0).
+    double work_of_adhesion;
+    // Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip
+    // factor when `no_slip` = 1; range-checked only when 0.
+    double nu;
+    // 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    int32_t no_slip;
+    // Reserved, 0.
+    int32_t reserved;
+} AsperityKendallParams;
+
+// Inputs of a Maugis–Dugdale sphere, as [`MaugisDugdale::from_params`] and
+// C's `asperity_law_from_params` take them.
+typedef struct AsperityMaugisDugdaleParams {
+    // Sphere radius R (m, > 0).
+    double radius;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Work of adhesion w (J/m², > 0).
+    double work_of_adhesion;
+    // Dugdale cohesive stress σ₀ (Pa, > 0).
+    double cohesive_stress;
+} AsperityMaugisDugdaleParams;
+
+// Inputs of a rigid sphere with a surface-force law, as
+// [`Derjaguin::from_params`] and C's `asperity_law_from_params` take them.
+typedef struct AsperityDerjaguinParams {
+    // Sphere radius R (m, > 0).
+    double radius;
+    // Work of adhesion w (J/m², > 0).
+    double work_of_adhesion;
+    // The surface law's second parameter: the equilibrium separation z₀ (m)
+    // for Lennard-Jones, the cohesive stress σ₀ (Pa) for Dugdale, the decay
+    // length ℓ (m) for the exponential law (> 0).
+    double parameter;
+    // Surface law selector: 1 Lennard-Jones, 2 Dugdale, 3 exponential
+    // (`ASPERITY_SURFACE_LAW_*`).
     int32_t surface_law;
     // Reserved, 0.
     int32_t reserved;
-} AsperityDerjaguin;
+} AsperityDerjaguinParams;
 
-// Parameters of a law; which member is meaningful is given by
-// `AsperityNormalLaw::kind`. Sized for 16 doubles so laws can grow without
-// changing the layout.
+// The parameters of a law: the inputs of `AsperityNormalLaw::kind`, as
+// given, in the member of that kind. In an `AsperityNormalLaw` built by a
+// constructor, `raw` holds the library's own form of the law: those inputs
+// first, then values it derives from them, whose layout is private and may
+// change between releases. As input of `asperity_law_from_params` only the
+// member of `kind` is read.
 typedef union AsperityLawParams {
     // `ASPERITY_LAW_HERTZ`.
-    struct AsperityHertz hertz;
+    struct AsperityHertzParams hertz;
     // `ASPERITY_LAW_POWER_PUNCH`.
-    struct AsperityPowerPunch power_punch;
+    struct AsperityPowerPunchParams power_punch;
     // `ASPERITY_LAW_FLAT_PUNCH`.
-    struct AsperityFlatPunch flat_punch;
+    struct AsperityFlatPunchParams flat_punch;
     // `ASPERITY_LAW_DMT`.
-    struct AsperityDmt dmt;
+    struct AsperityDmtParams dmt;
     // `ASPERITY_LAW_JKR`.
-    struct AsperityJkr jkr;
+    struct AsperityJkrParams jkr;
     // `ASPERITY_LAW_JKR_POWER_PUNCH`.
-    struct AsperityJkrPowerPunch jkr_power_punch;
+    struct AsperityJkrPowerPunchParams jkr_power_punch;
     // `ASPERITY_LAW_KENDALL`.
-    struct AsperityKendall kendall;
+    struct AsperityKendallParams kendall;
     // `ASPERITY_LAW_MAUGIS_DUGDALE`.
-    struct AsperityMaugisDugdale maugis_dugdale;
+    struct AsperityMaugisDugdaleParams maugis_dugdale;
     // `ASPERITY_LAW_DERJAGUIN`.
-    struct AsperityDerjaguin derjaguin;
-    // Storage.
+    struct AsperityDerjaguinParams derjaguin;
+    // Storage: the inputs, then the library's private derived values.
     double raw[16];
 } AsperityLawParams;
 
 // A single-asperity normal law, by value: copy it freely, share it between
 // threads, keep it in your own arrays. Build it with an `asperity_law_*`
-// constructor, which validates the parameters and fills derived constants;
-// treat the fields as read-only.
+// constructor (or `asperity_law_from_params`), which validates the inputs
+// and stores derived values after them; read the inputs from the member of
+// `params` that `kind` names, and build a new law to change them (a write
+// to a member leaves the derived values stale).
 typedef struct AsperityNormalLaw {
     // One of `ASPERITY_LAW_*`.
     int32_t kind;
     // Reserved, 0.
     int32_t reserved;
-    // The parameters of `kind`.
+    // The inputs of `kind` (and the library's derived values).
     union AsperityLawParams params;
 } AsperityNormalLaw;
 
@@ -765,51 +730,6 @@ typedef struct AsperityBurridgeKnopoffParams {
     double tolerance;
 } AsperityBurridgeKnopoffParams;
 
-// One increment of a contact point (SI units).
-typedef struct AsperityDynamicIncrement {
-    // Normal force N (N), finite and ≥ 0 (compressive), constant over the
-    // increment.
-    double normal_force;
-    // Slip increment Δs of the point relative to the counter-surface (m),
-    // two finite components.
-    double slip[2];
-    // Time increment Δt (s), finite and ≥ 0; > 0 when the slip is not zero
-    // and the model is rate dependent.
-    double dt;
-    // Tangents wanted: 0, or [`TANGENT_NORMAL`] | [`TANGENT_SLIP`].
-    int32_t tangents;
-    // Reserved, 0.
-    int32_t reserved;
-} AsperityDynamicIncrement;
-
-// The response of one increment (SI units).
-typedef struct AsperityDynamicResponse {
-    // Tangential force on the point from the counter-surface at the end of
-    // the increment (N), in the basis of the slip.
-    double force[2];
-    // |F| (N).
-    double force_magnitude;
-    // Normal force N (N), as given.
-    double normal_force;
-    // |F|/N; 0 when N = 0.
-    double cof;
-    // Energy dissipated in the increment (J), ≥ 0.
-    double dissipated;
-    // Elastic energy stored in the model at the end of the increment (J).
-    double stored_energy;
-    // dF/dN at fixed slip increment and old state (dimensionless), when
-    // asked for.
-    double dforce_dnormal[2];
-    // dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, at fixed N, Δt and old state,
-    // when asked for.
-    double dforce_dslip[2][2];
-    // What the increment did (each model documents its values): 0 stick,
-    // 1 partial slip (pre-sliding), 2 gross sliding.
-    int32_t regime;
-    // The tangents computed, as [`TANGENT_NORMAL`] | [`TANGENT_SLIP`] bits.
-    int32_t tangents;
-} AsperityDynamicResponse;
-
 // One model measured against the converged Lennard-Jones sphere.
 typedef struct AsperityFidelityAssessment {
     // One of `ASPERITY_FIDELITY_*`.
@@ -859,6 +779,29 @@ typedef struct AsperityNanoAsperities {
     size_t per_rod;
 } AsperityNanoAsperities;
 
+// One increment of a contact point (the C ABI's
+// `AsperityFrictionIncrement`). SI units.
+typedef struct AsperityFrictionIncrement {
+    // Normal force N on the point (N), finite and ≥ 0 (compressive),
+    // constant over the increment.
+    double normal_force;
+    // Nominal area A_n the point represents (m²), finite and ≥ 0; > 0 for
+    // laws that depend on the nominal pressure N/A_n (the homogenised law),
+    // unused by the others.
+    double area;
+    // Slip increment Δs of the point relative to the counter-surface (m),
+    // two finite components in the caller's tangent basis; a track uses
+    // `slip[1] = 0`.
+    double slip[2];
+    // Time increment Δt (s), finite and ≥ 0; > 0 when the slip is not zero
+    // and the law is rate dependent.
+    double dt;
+    // Tangents wanted: 0, or [`TANGENT_NORMAL`] | [`TANGENT_SLIP`].
+    int32_t tangents;
+    // Reserved, 0.
+    int32_t reserved;
+} AsperityFrictionIncrement;
+
 // Energy dissipated by each mechanism (J, each finite and ≥ 0), thesis
 // (4-2) restricted to the three mechanisms of friction in vacuum: breaking
 // of chemical (metallic) bonds, of van der Waals bonds, and mechanical
@@ -879,6 +822,43 @@ typedef struct AsperityDissipation {
     // Plastic work of yielding rods (J), (4-16).
     double plastic;
 } AsperityDissipation;
+
+// The response of one increment (the C ABI's `AsperityFrictionResponse`).
+// SI units.
+typedef struct AsperityFrictionResponse {
+    // Tangential force F on the point from the counter-surface at the end
+    // of the increment (N), in the basis of the slip; opposes slip.
+    double force[2];
+    // |F| (N).
+    double force_magnitude;
+    // Normal force N (N): as given, or what the law carries.
+    double normal_force;
+    // Coefficient of friction of the increment in the law's form; 0 when
+    // undefined (no contact).
+    double cof;
+    // Adhesive holding force A (N) of laws that model adhesion, else 0.
+    double adhesion;
+    // True contact area (m²) of laws that model it, else 0.
+    double true_contact_area;
+    // Energy dissipated in the increment ΔD (J), ≥ 0.
+    double dissipated;
+    // ΔD by mechanism (J) for laws built on the mechanisms of thesis
+    // chapter 4 (homogenised, slider); all 0 for the others.
+    struct AsperityDissipation dissipation;
+    // Elastic energy stored in the law at the end of the increment (J).
+    double stored_energy;
+    // ∂F/∂N (dimensionless) at fixed slip increment and old state, when
+    // asked for.
+    double dforce_dnormal[2];
+    // ∂F_i/∂Δs_j (N/m), `dforce_dslip[i][j]`, at fixed N, Δt and old
+    // state, when asked for.
+    double dforce_dslip[2][2];
+    // [`FrictionRegime`] as an integer.
+    int32_t regime;
+    // The tangents computed, as [`TANGENT_NORMAL`] | [`TANGENT_SLIP`] bits
+    // (a law may compute more than was asked for).
+    int32_t tangents;
+} AsperityFrictionResponse;
 
 // The slider model's response at one nominal pressure: one row of the
 // homogenised table. A plain `repr(C)` value (the C ABI's
@@ -901,78 +881,6 @@ typedef struct AsperityHomogenisedSample {
     // value: a step's dissipation ΔD is split as ΔD·shares.
     struct AsperityDissipation shares;
 } AsperityHomogenisedSample;
-
-// One time increment of one contact point (the C ABI's
-// `AsperityFrictionIncrement`). SI units.
-typedef struct AsperityFrictionIncrement {
-    // Normal force N on the point (N), finite and ≥ 0 (compressive).
-    double normal_force;
-    // Nominal area A_n the point represents (m²), finite and > 0.
-    double area;
-    // Slip increment Δs of the point relative to the counter-surface (m),
-    // two components in the caller's tangent basis; a one-dimensional track
-    // uses `slip[1] = 0`.
-    double slip[2];
-    // Time increment (s), finite and ≥ 0 (unused by this rate-independent
-    // law).
-    double dt;
-    // Stick stiffness k of the regularised stick (N/m), finite and ≥ 0;
-    // 0 is rigid–plastic (no elastic slip).
-    double stick_stiffness;
-} AsperityFrictionIncrement;
-
-// Per-point history of the friction step (the C ABI's
-// `AsperityFrictionPointState`), owned by the caller. All-zero is a fresh
-// point. SI units.
-typedef struct AsperityFrictionPointState {
-    // Tangential force on the point at the end of the increment (N), the
-    // elastic (stick) force carried into the next increment; the elastic
-    // slip is `−force/k`.
-    double force[2];
-    // Accumulated plastic slip path length Σ|Δs_p| (m).
-    double slip_path;
-    // Accumulated dissipated energy by mechanism (J).
-    struct AsperityDissipation dissipation;
-    // Number of steps taken (wraps at 2⁶⁴).
-    uint64_t steps;
-} AsperityFrictionPointState;
-
-// The response of one friction step (the C ABI's
-// `AsperityFrictionResponse`). SI units.
-typedef struct AsperityFrictionResponse {
-    // Tangential force F on the point from the counter-surface (N), in the
-    // basis of the slip increment; opposes slip (see the module's sign
-    // convention).
-    double force[2];
-    // |F| (N).
-    double force_magnitude;
-    // Normal force N (N), as given.
-    double normal_force;
-    // Coefficient of friction μ(p) (in the table's [`CofForm`]).
-    double cof;
-    // Slip limit F_lim, the radius of the friction cone (N).
-    double slip_limit;
-    // Adhesive holding force A = p_adh(p)·A_n (N).
-    double adhesion;
-    // True contact area, contact fraction × A_n (m²).
-    double true_contact_area;
-    // Plastic slip increment Δs_p (m); 0 in stick.
-    double plastic_slip[2];
-    // Energy dissipated in the increment ΔD = −F·Δs_p (J), ≥ 0.
-    double dissipated;
-    // ΔD split between the mechanisms by the interpolated shares (J).
-    struct AsperityDissipation dissipation;
-    // dF/dN (dimensionless), at fixed slip increment and old state.
-    double dforce_dnormal[2];
-    // dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, at fixed N and old state
-    // (the consistent tangent of the return mapping; 0 for a rigid stick,
-    // k = 0 and Δs = 0, where it is unbounded).
-    double dforce_dslip[2][2];
-    // [`FrictionRegime`] as an integer: 0 stick, 1 slip, 2 no contact.
-    int32_t regime;
-    // Reserved, always 0.
-    int32_t reserved;
-} AsperityFrictionResponse;
 
 // Options of `asperity_indentation_fit`. Fill with
 // `asperity_indentation_default_options` and change what you need.
@@ -1182,7 +1090,7 @@ typedef struct AsperityFrictionMaterial {
 
 // What a slider is: sizes and capacities (SI).
 typedef struct AsperitySliderInfo {
-    // Doubles per patch state (8 + 2 x rods).
+    // Doubles per patch state of its friction law (9 + 2 x rods).
     size_t state_size;
     // Number of rods (micro-asperities of the finest level).
     size_t rods;
@@ -1210,69 +1118,17 @@ typedef struct AsperitySliderInfo {
     int32_t periodic;
 } AsperitySliderInfo;
 
-// One time increment of a slider patch. SI units. An all-zero increment
-// seats a fresh patch under the scene's loading without sliding.
-typedef struct AsperitySliderIncrement {
-    // Normal force on the patch (N), finite, >= 0 and <= the capacity
-    // (`AsperitySliderInfo.capacity`); read when `control` is
-    // `ASPERITY_SLIDER_CONTROL_LOAD`.
-    double normal_force;
-    // Position of the slider's mean line above the counter-surface's mean
-    // line (m), finite; read when `control` is `ASPERITY_SLIDER_CONTROL_GAP`.
-    double gap;
-    // Slip increment of the patch relative to the counter-surface (m), two
-    // finite components in the caller's tangent basis; a track uses
-    // `slip[1] = 0`. The slider advances along its track by |slip|.
-    double slip[2];
-    // Time increment (s), finite and >= 0 (unused: rate independent).
-    double dt;
-    // `ASPERITY_SLIDER_CONTROL_SCENE` (0), `_LOAD` (1) or `_GAP` (2).
-    int32_t control;
-    // Tangents wanted: 0, or `ASPERITY_SLIDER_TANGENT_NORMAL` |
-    // `ASPERITY_SLIDER_TANGENT_SLIP` (each costs two more evaluations).
-    int32_t tangents;
-} AsperitySliderIncrement;
-
-// The response of one [`Slider::step_flat`] (SI; the C ABI's
-// `AsperitySliderResponse`). A plain `repr(C)` value.
-typedef struct AsperitySliderResponse {
-    // Tangential force on the patch from the counter-surface (N), in the
-    // basis of the slip increment: F = −F_t Δs/|Δs|, opposing slip; 0 for
-    // a zero slip increment.
-    double force[2];
-    // Its magnitude, the friction force F_t = ΔU/|Δs| (N), thesis (4-1);
-    // 0 for a zero slip increment.
-    double friction_force;
-    // Normal load N carried by the rods (N): the given load, or at a fixed
-    // gap the rods' total force.
-    double normal_force;
-    // Coefficient of friction in the slider's COF form; 0 when undefined
-    // (`regime` no contact) and for a zero slip increment.
-    double cof;
-    // Adhesive holding force A = N_c F_adh,1 (N), 4.4.
-    double adhesion;
-    // Energy dissipated in the increment ΔU (J), ≥ 0.
-    double dissipated;
-    // ΔU by mechanism (J), each ≥ 0.
-    struct AsperityDissipation dissipation;
-    // True contact area N_c·w_vdW² (m²), thesis 6.5.3.
-    double true_contact_area;
+// The full record of a slider patch's last step (SI), beyond the friction
+// response: positions and the counts of contacts.
+typedef struct AsperitySliderRecord {
+    // Slider position X along the track after the increment (m).
+    double position;
+    // Rod-bed position b: height of the slider's mean line above the
+    // counter-surface's mean line (m).
+    double rod_position;
     // Fraction of the nano-asperities in contact touching only thanks to
     // adhesion, in [0, 1].
     double adhesion_area_share;
-    // Slider position X along its track after the increment (m).
-    double position;
-    // Rod-bed position b after the increment (m).
-    double rod_position;
-    // Slip path length of the increment |Δs| (m): the distance the slider
-    // advanced along its track.
-    double slip_length;
-    // dF/dN (dimensionless), a finite-difference secant (see
-    // [`Slider::step_flat`]); 0 unless asked for.
-    double dforce_dnormal[2];
-    // dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`; 0 unless asked for, and for
-    // a zero slip increment (rigid stick: unbounded).
-    double dforce_dslip[2][2];
     // Nano-asperities in contact N_c.
     uint64_t nano_contacts;
     // Of those, in contact only thanks to adhesion.
@@ -1281,18 +1137,11 @@ typedef struct AsperitySliderResponse {
     uint64_t rods_in_contact;
     // Rods at the yield force.
     uint64_t yielded_rods;
-    // [`FrictionRegime`] as an integer: 0 stick (zero slip increment), 1
-    // slip, 2 no contact (μ undefined: N + A ≤ 0 for Derjaguin, N ≤ 0
-    // otherwise; friction 0 unless rods leaving contact release energy).
-    int32_t regime;
-    // 1 when this call seated a fresh state first, else 0.
+    // 1 when the step seated a fresh state first, else 0.
     int32_t seated;
-    // The tangents computed, as bits: 1 dF/dN (`ASPERITY_SLIDER_TANGENT_NORMAL`),
-    // 2 dF/dΔs (`ASPERITY_SLIDER_TANGENT_SLIP`); [`SliderTangents::bits`].
-    int32_t tangents;
-    // Reserved, always 0.
+    // Reserved, 0.
     int32_t reserved;
-} AsperitySliderResponse;
+} AsperitySliderRecord;
 
 // A Greenwood–Williamson rough surface with parametric summit heights
 // (thesis (1-29), (1-30)), by value: N summits of radius R, heights of
@@ -1520,6 +1369,15 @@ int32_t asperity_type_name(size_t index,
                            size_t len,
                            size_t *needed);
 
+// The law of kind `kind` (`ASPERITY_LAW_*`) from its inputs: the member of
+// `params` that `kind` names (`params->jkr` for `ASPERITY_LAW_JKR`, ...;
+// `params` must point to a whole `AsperityLawParams`), validated as by the
+// kind's `asperity_law_*` constructor; errors name the member's field
+// (`radius`, `no_slip`, `parameter`, ...), or `kind` for an unknown kind.
+int32_t asperity_law_from_params(int32_t kind,
+                                 const union AsperityLawParams *params,
+                                 struct AsperityNormalLaw *out);
+
 // Hertz sphere: radius R (m), contact modulus E* (Pa).
 int32_t asperity_law_hertz(double radius,
                            double e_star,
@@ -1695,18 +1553,18 @@ int32_t asperity_law_length_scale(const struct AsperityNormalLaw *law,
 // by the normal force, integrated exactly per increment). Writes a new
 // handle to `*out` (NULL on failure). Errors name the field and its bound
 // (`params.sigma1` for the passivity bound).
-int32_t asperity_dynamic_lugre_new(const struct AsperityLugreParams *params,
-                                   struct AsperityDynamicFriction **out);
+int32_t asperity_friction_lugre_new(const struct AsperityLugreParams *params,
+                                    struct AsperityFriction **out);
 
 // Build `n` >= 1 Maxwell-slip elements in parallel: stiffnesses
 // `stiffness[i]` (1/m per unit normal force, > 0), break-away
 // coefficients `capacity[i]` (>= 0), viscous coefficient `sigma2`
 // (N s/m, >= 0). Writes a new handle to `*out` (NULL on failure).
-int32_t asperity_dynamic_maxwell_slip_new(const double *stiffness,
-                                          const double *capacity,
-                                          size_t n,
-                                          double sigma2,
-                                          struct AsperityDynamicFriction **out);
+int32_t asperity_friction_maxwell_slip_new(const double *stiffness,
+                                           const double *capacity,
+                                           size_t n,
+                                           double sigma2,
+                                           struct AsperityFriction **out);
 
 // Build `n` >= 1 bristles (Haessig and Friedland 1991): stiffnesses
 // `stiffness[i]` (1/m per unit normal force, > 0) and break deflections
@@ -1714,11 +1572,11 @@ int32_t asperity_dynamic_maxwell_slip_new(const double *stiffness,
 // (N s/m, >= 0). A bristle that reaches its break deflection snaps and
 // bonds again undeflected. One-dimensional: increments need `slip[1]` = 0.
 // Writes a new handle to `*out` (NULL on failure).
-int32_t asperity_dynamic_bristles_new(const double *stiffness,
-                                      const double *break_deflection,
-                                      size_t n,
-                                      double sigma2,
-                                      struct AsperityDynamicFriction **out);
+int32_t asperity_friction_bristles_new(const double *stiffness,
+                                       const double *break_deflection,
+                                       size_t n,
+                                       double sigma2,
+                                       struct AsperityFriction **out);
 
 // Build a Prandtl–Tomlinson tip: lattice potential amplitude `amplitude`
 // U0 (J, > 0) and period `period` a (m, > 0), spring stiffness `stiffness`
@@ -1726,13 +1584,13 @@ int32_t asperity_dynamic_bristles_new(const double *stiffness,
 // relative tolerance `tolerance` of the integration (in [1e-13, 1e-2]).
 // One-dimensional: increments need `slip[1]` = 0. Stick-slip when
 // 4 pi^2 U0/(k a^2) > 1. Writes a new handle to `*out` (NULL on failure).
-int32_t asperity_dynamic_prandtl_tomlinson_new(double amplitude,
-                                               double period,
-                                               double stiffness,
-                                               double mass,
-                                               double damping,
-                                               double tolerance,
-                                               struct AsperityDynamicFriction **out);
+int32_t asperity_friction_prandtl_tomlinson_new(double amplitude,
+                                                double period,
+                                                double stiffness,
+                                                double mass,
+                                                double damping,
+                                                double tolerance,
+                                                struct AsperityFriction **out);
 
 // Build a two-spring (tip-cantilever) Prandtl-Tomlinson model from
 // `*params`: the tip in the lattice potential joined by the tip spring to
@@ -1741,8 +1599,8 @@ int32_t asperity_dynamic_prandtl_tomlinson_new(double amplitude,
 // `slip[1]` = 0. Stick-slip when 4 pi^2 U0/(k_eff a^2) > 1 with
 // 1/k_eff = 1/k_t + 1/k_c. Writes a new handle to `*out` (NULL on
 // failure); errors name the field (`params.tip_mass`, ...).
-int32_t asperity_dynamic_prandtl_tomlinson_two_spring_new(const struct AsperityPrandtlTomlinsonTwoSpringParams *params,
-                                                          struct AsperityDynamicFriction **out);
+int32_t asperity_friction_prandtl_tomlinson_two_spring_new(const struct AsperityPrandtlTomlinsonTwoSpringParams *params,
+                                                           struct AsperityFriction **out);
 
 // Build a Burridge-Knopoff chain from `*params`: M blocks coupled by
 // springs, pulled by leaf springs from a driver that moves by the
@@ -1752,47 +1610,8 @@ int32_t asperity_dynamic_prandtl_tomlinson_two_spring_new(const struct AsperityP
 // need `slip[1]` = 0. The force is the leaf springs' pull on the driver.
 // Writes a new handle to `*out` (NULL on failure); errors name the field
 // (`params.blocks`, ...).
-int32_t asperity_dynamic_burridge_knopoff_new(const struct AsperityBurridgeKnopoffParams *params,
-                                              struct AsperityDynamicFriction **out);
-
-// Release a model; NULL is accepted and ignored.
-void asperity_dynamic_friction_free(struct AsperityDynamicFriction *model);
-
-// Write the number of doubles of one point's state to `*n` (LuGre: 4;
-// Maxwell-slip: 2 + 2 x elements; Prandtl-Tomlinson: 5, with two springs
-// 7; Burridge-Knopoff: 3 + 2 x blocks).
-int32_t asperity_dynamic_friction_state_size(const struct AsperityDynamicFriction *model,
-                                             size_t *n);
-
-// One increment of one point: `*increment` from the state `old_state`
-// (`asperity_dynamic_friction_state_size` doubles; all-zero = fresh) into
-// `new_state` (same size; may equal `old_state` to step in place, must not
-// partially overlap it) and the response into `*out`. The same old state
-// and increment give bit-identical results (cut-backs). No allocation. On
-// failure `new_state` and `*out` are untouched; the message names the
-// argument and its bound.
-int32_t asperity_dynamic_friction_step(const struct AsperityDynamicFriction *model,
-                                       const struct AsperityDynamicIncrement *increment,
-                                       const double *old_state,
-                                       double *new_state,
-                                       struct AsperityDynamicResponse *out);
-
-// Step `n` points at once, in the shape of Abaqus/Explicit VFRIC: normal
-// forces `normal_forces[i]` (N), slip increments `slip_increments[2i]`,
-// `[2i+1]` (m, interleaved), one `dt` (s), the states
-// `states[i*m .. (i+1)*m]` (m = `asperity_dynamic_friction_state_size`)
-// stepped in place, tangential forces out in `tangential_forces[2i]`,
-// `[2i+1]` (N) and the dissipated energy of the increment in
-// `dissipation[i]` (J; may be NULL). No tangents. On an error at point i,
-// the points before i are written and the message names i.
-int32_t asperity_dynamic_friction_step_block(const struct AsperityDynamicFriction *model,
-                                             size_t n,
-                                             const double *normal_forces,
-                                             const double *slip_increments,
-                                             double dt,
-                                             double *states,
-                                             double *tangential_forces,
-                                             double *dissipation);
+int32_t asperity_friction_burridge_knopoff_new(const struct AsperityBurridgeKnopoffParams *params,
+                                               struct AsperityFriction **out);
 
 // The cheapest adhesive-sphere model whose pull-off and force–approach
 // errors against the converged Lennard-Jones sphere are within
@@ -1871,6 +1690,98 @@ int32_t asperity_slider_geometry_rod_heights(const struct AsperitySliderGeometry
                                              double *heights,
                                              size_t len);
 
+// The homogenised law of `table` with the stick stiffness
+// `stick_stiffness` (N/m, finite and >= 0; 0: rigid-plastic) of its
+// regularised stick. The law copies the table. Writes a new handle to
+// `*out` (NULL on failure).
+int32_t asperity_friction_from_homogenised(const struct AsperityHomogenisedFriction *table,
+                                           double stick_stiffness,
+                                           struct AsperityFriction **out);
+
+// The hierarchical slider as the friction law of a surface patch (the
+// increment's normal force is the fixed load, at most the slider's
+// capacity; its area is unused). The law copies the slider. Writes a new
+// handle to `*out` (NULL on failure).
+int32_t asperity_friction_from_slider(const struct AsperitySlider *slider,
+                                      struct AsperityFriction **out);
+
+// Release a law; NULL is accepted and ignored.
+void asperity_friction_free(struct AsperityFriction *law);
+
+// Write the number of doubles of one point's state to `*n` (homogenised:
+// 9; slider: 9 + 2 x rods; LuGre: 4; Maxwell-slip: 2 + 2 x elements;
+// bristles: 2 + bristles; Prandtl-Tomlinson: 5, with two springs 7;
+// Burridge-Knopoff: 3 + 2 x blocks).
+int32_t asperity_friction_state_size(const struct AsperityFriction *law,
+                                     size_t *n);
+
+// Build the scratch of a step with `law` and write the handle to `*out`
+// (NULL on failure). Use one per thread; a scratch made for another law is
+// rebuilt on first use.
+int32_t asperity_friction_work_new(const struct AsperityFriction *law,
+                                   struct AsperityFrictionWork **out);
+
+// Release a scratch; NULL is accepted and ignored.
+void asperity_friction_work_free(struct AsperityFrictionWork *work);
+
+// One increment of one point: `*increment` from the state `old_state`
+// (`asperity_friction_state_size` doubles; all-zero = fresh) into
+// `new_state` (same size; may equal `old_state`, must not partially
+// overlap it) and the response into `*out`. The same old state and
+// increment give bit-identical results (cut-backs). `work` may be NULL.
+// No allocation with a `work`. On failure `new_state` and `*out` are
+// untouched; the message names the argument and its bound.
+int32_t asperity_friction_step(const struct AsperityFriction *law,
+                               const struct AsperityFrictionIncrement *increment,
+                               const double *old_state,
+                               double *new_state,
+                               struct AsperityFrictionWork *work,
+                               struct AsperityFrictionResponse *out);
+
+// `asperity_friction_step` with the state `state` updated in place (on
+// failure it is untouched).
+int32_t asperity_friction_step_in_place(const struct AsperityFriction *law,
+                                        const struct AsperityFrictionIncrement *increment,
+                                        double *state,
+                                        struct AsperityFrictionWork *work,
+                                        struct AsperityFrictionResponse *out);
+
+// Step `n` points at once, in the shape of Abaqus/Explicit VFRIC: normal
+// forces `normal_forces[i]` (N), nominal areas `areas[i]` (m^2; NULL: 0
+// for every point, refused by laws that need them), slip increments
+// `slip_increments[2i]`, `[2i+1]` (m, interleaved), one `dt` (s), the
+// states `old_states[i*m .. (i+1)*m]` -> `new_states[...]` (m =
+// `asperity_friction_state_size`; `new_states` may equal `old_states`,
+// must not partially overlap it), tangential forces out in
+// `tangential_forces[2i]`, `[2i+1]` (N) and the dissipated energy of the
+// increment in `dissipation[i]` (J; may be NULL). No tangents. `work` may
+// be NULL. On an error at point i, the points before i are written, those
+// from i on untouched, and the message names i.
+int32_t asperity_friction_step_block(const struct AsperityFriction *law,
+                                     size_t n,
+                                     const double *normal_forces,
+                                     const double *areas,
+                                     const double *slip_increments,
+                                     double dt,
+                                     const double *old_states,
+                                     double *new_states,
+                                     double *tangential_forces,
+                                     double *dissipation,
+                                     struct AsperityFrictionWork *work);
+
+// `asperity_friction_step_block` with the states `states` stepped in
+// place.
+int32_t asperity_friction_step_block_in_place(const struct AsperityFriction *law,
+                                              size_t n,
+                                              const double *normal_forces,
+                                              const double *areas,
+                                              const double *slip_increments,
+                                              double dt,
+                                              double *states,
+                                              double *tangential_forces,
+                                              double *dissipation,
+                                              struct AsperityFrictionWork *work);
+
 // Build the law from `n` >= 1 samples at strictly increasing nominal
 // pressures (Pa), their `cof` read as the Derjaguin coefficient
 // F/(N + A) (thesis (4-3); other forms through JSON). Writes a new handle
@@ -1901,43 +1812,6 @@ int32_t asperity_homogenised_friction_to_json(const struct AsperityHomogenisedFr
 
 // Release a law; NULL is accepted and ignored.
 void asperity_homogenised_friction_free(struct AsperityHomogenisedFriction *friction);
-
-// Size in bytes of `AsperityFrictionPointState`, for hosts that allocate
-// per-point state arrays generically (an all-zero state is a fresh point).
-size_t asperity_homogenised_friction_state_size(void);
-
-// One friction step at one point: the increment `*increment` from the
-// history `*old_state` (NULL: fresh), the history after the step into
-// `*new_state` (may be NULL, may equal `old_state`) and the response into
-// `*out`. On failure `*new_state` and `*out` are untouched.
-int32_t asperity_homogenised_friction_step(const struct AsperityHomogenisedFriction *friction,
-                                           const struct AsperityFrictionIncrement *increment,
-                                           const struct AsperityFrictionPointState *old_state,
-                                           struct AsperityFrictionPointState *new_state,
-                                           struct AsperityFrictionResponse *out);
-
-// Step `n` points at once, in the shape of Abaqus/Explicit VFRIC:
-// `normal_forces[i]` (N), `areas[i]` (m²), slip increments
-// `slip_increments[2i]`, `[2i+1]` (m, x and y interleaved), one `dt` (s) and
-// `stick_stiffness` (N/m) for all, `old_state[i]` → `new_state[i]`,
-// tangential forces out in `tangential_forces[2i]`, `[2i+1]` (N,
-// interleaved) and the dissipated energy of the increment in
-// `dissipation[i]` (J). `normal_forces`, `areas`, `slip_increments` and
-// `tangential_forces` are required; `old_state` may be NULL (all fresh),
-// `new_state` and `dissipation` may be NULL (not wanted); `old_state` may
-// equal `new_state`. On an error at element i, elements before i are written,
-// those from i on are untouched, and the message names i.
-int32_t asperity_homogenised_friction_step_block(const struct AsperityHomogenisedFriction *friction,
-                                                 size_t n,
-                                                 const double *normal_forces,
-                                                 const double *areas,
-                                                 const double *slip_increments,
-                                                 double dt,
-                                                 double stick_stiffness,
-                                                 const struct AsperityFrictionPointState *old_state,
-                                                 struct AsperityFrictionPointState *new_state,
-                                                 double *tangential_forces,
-                                                 double *dissipation);
 
 // Fill `options` with the defaults: Berkovich, ideal area, anchor at the
 // maximum point, labels used, diamond indenter (1141 GPa, 0.07), sample
@@ -2187,62 +2061,16 @@ int32_t asperity_slider_from_scene_json(const char *json,
 // Release a slider; NULL is accepted and ignored.
 void asperity_slider_free(struct AsperitySlider *slider);
 
-// Write the number of doubles of one patch state (8 + 2 x rods) to `*n`.
-int32_t asperity_slider_state_size(const struct AsperitySlider *slider,
-                                   size_t *n);
-
 // Write the sizes and capacities of `slider` to `*info`.
 int32_t asperity_slider_info(const struct AsperitySlider *slider,
                              struct AsperitySliderInfo *info);
 
-// Build the scratch buffers of a step with `slider` and write the handle to
-// `*out` (NULL on failure). Use one per thread; it may serve any slider
-// with the same number of rods.
-int32_t asperity_slider_work_new(const struct AsperitySlider *slider,
-                                 struct AsperitySliderWork **out);
-
-// Release work buffers; NULL is accepted and ignored.
-void asperity_slider_work_free(struct AsperitySliderWork *work);
-
-// One friction step of one patch: the increment `*increment` from the
-// state `old_state` (`asperity_slider_state_size` doubles; all-zero =
-// fresh: seated first under the increment's loading) into `new_state`
-// (same size; may equal `old_state` to step in place, must not partially
-// overlap it) and the response into `*out`. The same old state and
-// increment give bit-identical results, so a host can re-evaluate or cut
-// back an increment. See `Slider::step_flat` for the zero-slip rule (stick:
-// force 0, nothing dissipated) and the finite-difference tangents. No
-// allocation. On failure `new_state` and `*out` are untouched; the message
-// names the argument and its bound.
-int32_t asperity_slider_step(const struct AsperitySlider *slider,
-                             struct AsperitySliderWork *work,
-                             const struct AsperitySliderIncrement *increment,
-                             const double *old_state,
-                             double *new_state,
-                             struct AsperitySliderResponse *out);
-
-// Step `n` patches at once, in the shape of Abaqus/Explicit VFRIC (as
-// `asperity_homogenised_friction_step_block`): the normal force on patch i
-// `normal_force[i]` (N, a fixed load, <= the capacity), its slip increment
-// `slip[2i]`, `[2i+1]` (m, x and y interleaved), one `dt` (s) for all,
-// states `old_states[i*m .. (i+1)*m]` -> `new_states[...]` with m =
-// `asperity_slider_state_size`, tangential forces out in
-// `tangential_force[2i]`, `[2i+1]` (N, interleaved, opposing slip) and the
-// dissipated energy of the increment in `dissipation[i]` (J). `dissipation`
-// may be NULL (not wanted); `new_states` may equal `old_states` (in place)
-// but must not partially overlap it. No tangents (use
-// `asperity_slider_step`). On an error at element i, elements before i are
-// written, those from i on are untouched, and the message names i.
-int32_t asperity_slider_step_block(const struct AsperitySlider *slider,
-                                   struct AsperitySliderWork *work,
-                                   size_t n,
-                                   const double *normal_force,
-                                   const double *slip,
-                                   double dt,
-                                   const double *old_states,
-                                   double *new_states,
-                                   double *tangential_force,
-                                   double *dissipation);
+// Write the record of the last step taken with `work` by a slider law
+// (`asperity_friction_from_slider`) to `*out`; all zero for a work made
+// for a slider law that has not stepped yet. Errors: NULL, or a work of
+// another law (`work`).
+int32_t asperity_slider_record(const struct AsperityFrictionWork *work,
+                               struct AsperitySliderRecord *out);
 
 // Greenwood–Williamson load, real area, number of contacts and stiffness at
 // `separation` d (m, finite) (thesis (1-29), (1-30)).

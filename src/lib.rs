@@ -67,6 +67,7 @@ pub mod material;
 pub mod rescaling;
 pub mod scene;
 mod serde_exact;
+mod simd;
 pub mod statistics;
 pub mod surface;
 mod thread_safety;

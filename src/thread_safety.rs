@@ -13,18 +13,18 @@
 //! asserted here.
 
 use crate::contact::{
-    ContactState, Derjaguin, Dmt, FlatPunch, Hertz, Jkr, JkrPowerPunch, Kendall, LjSolver,
-    LjSphere, MaugisDugdale, NormalLaw, NormalResponse, PowerPunch, SurfaceLaw, TabulatedLaw,
+    ContactState, LjSolver, LjSphere, NormalLaw, NormalResponse, SurfaceLaw, TabulatedLaw,
 };
 use crate::ffi::contact::AsperityNormalLaw;
 use crate::ffi::friction::AsperitySliderGeometry;
+use crate::ffi::friction_law::{AsperityFriction, AsperityFrictionWork};
 use crate::ffi::homogenised::AsperityHomogenisedFriction;
-use crate::ffi::slider::{AsperitySlider, AsperitySliderWork};
+use crate::ffi::slider::AsperitySlider;
 use crate::ffi::statistics::AsperityGwEmpirical;
 use crate::ffi::tabulated::AsperityTable;
 use crate::friction::{
-    CoupledRodBed, FrictionMaterial, FrictionPointState, HomogenisedFriction, RodBed, RodSolution,
-    RodState, Slider, SliderGeometry, SliderState, SliderWork,
+    CoupledRodBed, FrictionMaterial, HomogenisedFriction, RodBed, RodSolution, RodState, Slider,
+    SliderGeometry, SliderWork,
 };
 use crate::material::Material;
 use crate::rescaling::{KnownSolution, Rescaling};
@@ -36,17 +36,9 @@ use crate::statistics::{
 /// Shared, immutable handles: `Send + Sync`.
 const _: () = {
     const fn shared<T: Send + Sync>() {}
-    // Closed-form laws, the enum that carries them, and the C value.
+    // Closed-form laws: the enum is Send + Sync only if every law it
+    // carries is, so this one line covers each of them; and the C value.
     shared::<NormalLaw>();
-    shared::<Hertz>();
-    shared::<PowerPunch>();
-    shared::<FlatPunch>();
-    shared::<Dmt>();
-    shared::<Jkr>();
-    shared::<JkrPowerPunch>();
-    shared::<Kendall>();
-    shared::<MaugisDugdale>();
-    shared::<Derjaguin>();
     shared::<SurfaceLaw>();
     shared::<AsperityNormalLaw>();
     // Tabulated laws and the Lennard-Jones sphere.
@@ -75,7 +67,7 @@ const _: () = {
     shared::<crate::friction::dynamic::BurridgeKnopoff>();
     shared::<crate::friction::dynamic::Bristles>();
     shared::<crate::friction::dynamic::DynamicModel>();
-    shared::<crate::ffi::dynamic::AsperityDynamicFriction>();
+    shared::<AsperityFriction>();
     shared::<AsperityHomogenisedFriction>();
     shared::<SliderGeometry>();
     shared::<AsperitySliderGeometry>();
@@ -90,11 +82,10 @@ const _: () = {
 const _: () = {
     const fn per_thread<T: Send>() {}
     per_thread::<SliderWork>();
-    per_thread::<AsperitySliderWork>();
-    per_thread::<SliderState>();
+    per_thread::<AsperityFrictionWork>();
+    per_thread::<crate::friction::FrictionWork>();
     per_thread::<RodState>();
     per_thread::<RodSolution>();
     per_thread::<ContactState>();
     per_thread::<NormalResponse>();
-    per_thread::<FrictionPointState>();
 };

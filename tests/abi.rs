@@ -12,6 +12,12 @@
 //! always lists what a later change must keep. After a major version bump
 //! (which also changes the soname, `libasperity.so.MAJOR`), the same command
 //! rewrites the record from scratch.
+//!
+//! Before 1.0 (major version 0) an intended break can be acknowledged
+//! instead: `ASPERITY_BLESS=1 ASPERITY_ABI_BREAK=1 cargo test --test abi`
+//! prints what breaks and rewrites the record, so the removal shows in the
+//! record's diff and its commit says why (issue 30 §1 replaced the three
+//! friction step contracts by one `AsperityFriction` handle this way).
 
 use asperity::ffi::abi::{asperity_type_count, asperity_type_layout, asperity_type_name};
 use std::collections::BTreeMap;
@@ -215,16 +221,28 @@ fn the_abi_only_grows_within_a_major_version() {
             path.display()
         ),
     };
+    // Before 1.0 an intended break may be acknowledged and recorded.
+    let acknowledged =
+        bless && now.major == 0 && std::env::var_os("ASPERITY_ABI_BREAK").is_some_and(|v| v == "1");
     if let Some(rec) = &recorded {
         if rec.major == now.major {
             let b = breaks(rec, &now);
-            assert!(
-                b.is_empty(),
-                "the C ABI of major version {} changed incompatibly; keep it, or bump the \
-                 major version in Cargo.toml (soname libasperity.so.MAJOR) and re-record:\n  {}",
-                now.major,
-                b.join("\n  ")
-            );
+            if acknowledged && !b.is_empty() {
+                eprintln!(
+                    "recording an acknowledged break of the pre-1.0 C ABI:\n  {}",
+                    b.join("\n  ")
+                );
+            } else {
+                assert!(
+                    b.is_empty(),
+                    "the C ABI of major version {} changed incompatibly; keep it, or bump the \
+                     major version in Cargo.toml (soname libasperity.so.MAJOR) and re-record \
+                     (before 1.0, an intended break: ASPERITY_BLESS=1 ASPERITY_ABI_BREAK=1 \
+                     cargo test --test abi):\n  {}",
+                    now.major,
+                    b.join("\n  ")
+                );
+            }
         } else if !bless {
             panic!(
                 "abi/asperity.abi records major version {}, Cargo.toml says {}: record the new \

@@ -577,7 +577,9 @@ fn check_fe_strip_friction(linkage: Linkage) {
     c.within(HOMOGENISED, "dissipation_states_rel_diff", 0.0, 1e-10);
     c.within(HOMOGENISED, "dissipation_limit_path_rel_diff", 0.0, 1e-10);
     c.within(HOMOGENISED, "chemical_share", 0.90, 0.93);
-    c.close(HOMOGENISED, "steps_counted", 30_000.0, 0.0);
+    // Every increment is booked into the state: point 0's slip path is the
+    // program's own Σ|Δx|.
+    c.within(HOMOGENISED, "slip_path_booked_rel_diff", 0.0, 1e-12);
     c.close(HOMOGENISED, "json_roundtrip_identical", 1.0, 0.0);
     c.close(FFI, "bad_area_status", -2.0, 0.0);
     c.close(FFI, "bad_area_names_element", 1.0, 0.0);
@@ -604,14 +606,17 @@ fn fe_strip_friction_shared() {
     check_fe_strip_friction(Linkage::Shared);
 }
 
-const SLIDER: &str = "the slider step (src/friction/slider.rs, src/ffi/slider.rs)";
+const SLIDER: &str = "the slider step (src/friction/slider/, src/ffi/friction_law.rs)";
 
 /// `slider_patch`: four surface patches, each the chapter-6 slider, stepped
 /// with the VFRIC-shaped block call; the mean friction forces against
 /// separate `Slider::slide` runs at each load (and, for the oblique,
-/// staggered patch, the struct API stepping from its start position).
+/// staggered patch, the Rust friction step from its start position); the
+/// record of a step (`asperity_slider_record`) against the state and the
+/// Rust step's `SliderWork::record()`.
 fn check_slider_patch(linkage: Linkage) {
-    use asperity::friction::{Loading, Slider, SliderIncrement, SliderTangents};
+    use asperity::friction::law::{TANGENT_NORMAL, TANGENT_SLIP};
+    use asperity::friction::{FrictionIncrement, FrictionLaw, Loading, Slider, SliderWork};
     use asperity::scene::Scene;
     let r = run("slider_patch", linkage);
     let mut c = Report::new(&r);
@@ -648,27 +653,31 @@ fn check_slider_patch(linkage: Linkage) {
         let share = run.summary.dissipation.chemical / d;
         c.close(SLIDER, &format!("patch{i}_chemical_share"), share, 1e-10);
     }
-    // Patch 1: 30 degrees, starting 45 um along the track; the struct API.
+    // Patch 1: 30 degrees, starting 45 um along the track; the Rust step
+    // along the track by the same path length, old and new states apart.
     {
         let s = (3f64.sqrt() / 2.0 * step).hypot(0.5 * step);
-        let load = Loading::FixedLoad { load: loads[1] };
         let mut w = slider.work();
-        let mut fresh = slider.fresh_state();
-        fresh.position = 45e-6;
-        let mut a = fresh.clone();
-        slider.seat_loaded(&fresh, &mut a, load, &mut w).unwrap();
+        let mut a = vec![0.0; slider.state_len()];
+        a[Slider::STATE_POSITION] = 45e-6;
         let mut b = a.clone();
+        let inc = FrictionIncrement {
+            normal_force: loads[1],
+            slip: [s, 0.0],
+            dt: 1e-5,
+            ..FrictionIncrement::default()
+        };
         let (mut fsum, mut dsum) = (0.0, 0.0);
         for _ in 0..steps {
-            let r = slider.step_loaded(&a, &mut b, s, load, &mut w).unwrap();
-            fsum += r.friction_force;
+            let r = slider.step(&a, &mut b, &inc, &mut w).unwrap();
+            fsum += r.force_magnitude;
             dsum += r.dissipation.total();
             core::mem::swap(&mut a, &mut b);
         }
         let f = fsum / steps as f64;
         c.close(SLIDER, "patch1_mean_friction_force", f, 1e-10 * f);
         c.close(SLIDER, "patch1_dissipation", dsum, 1e-10 * dsum);
-        c.close(SLIDER, "patch1_position", a.position, 1e-15);
+        c.close(SLIDER, "patch1_position", a[Slider::STATE_POSITION], 1e-15);
     }
     for i in 0..4 {
         // Work of the friction force = dissipation, per increment summed;
@@ -682,6 +691,12 @@ fn check_slider_patch(linkage: Linkage) {
         c.within(
             SLIDER,
             &format!("patch{i}_state_dissipation_rel_diff"),
+            0.0,
+            1e-12,
+        );
+        c.within(
+            SLIDER,
+            &format!("patch{i}_state_total_dissipation_rel_diff"),
             0.0,
             1e-12,
         );
@@ -705,52 +720,98 @@ fn check_slider_patch(linkage: Linkage) {
     c.close(SLIDER, "min_increment_dissipation", 0.0, 0.0);
     c.within(SLIDER, "max_misalignment", 0.0, 1e-15);
     c.close(SLIDER, "opposes_slip", 1.0, 0.0);
-    // The tangents of patch 0's next increment, as the Rust flat step gives
-    // them from the same history.
+    // The record of the block's last point (patch 3, from 0 along -x): the
+    // first block seats its fresh state, then the slider advances by |slip|
+    // per block, to the state's position; the counts nest.
+    c.close(SLIDER, "record_first_seated", 1.0, 0.0);
+    c.close(SLIDER, "record_first_position", step, 0.0);
+    c.close(SLIDER, "record_second_seated", 0.0, 0.0);
+    c.close(SLIDER, "record_second_position", 2.0 * step, 0.0);
+    c.close(SLIDER, "record_seated_ok", 1.0, 0.0);
+    c.close(FFI, "record_position_matches_state", 1.0, 0.0);
+    c.within(SLIDER, "record_max_advance_diff", 0.0, 1e-18);
+    c.close(SLIDER, "record_counts_consistent", 1.0, 0.0);
+    // The tangents of patch 0's next increment, and that step's record, as
+    // the Rust step gives them from the same history.
     {
         let m = slider.state_len();
         let mut w = slider.work();
         let mut st = vec![0.0; m];
-        for _ in 0..steps {
-            let inc = SliderIncrement {
-                loading: Some(Loading::FixedLoad { load: loads[0] }),
-                slip: [step, 0.0],
-                dt: 1e-5,
-                tangents: SliderTangents::default(),
-            };
-            slider.step_flat_in_place(&mut st, &inc, &mut w).unwrap();
-        }
-        let inc = SliderIncrement {
-            loading: Some(Loading::FixedLoad { load: loads[0] }),
+        let mut inc = FrictionIncrement {
+            normal_force: loads[0],
             slip: [step, 0.0],
             dt: 1e-5,
-            tangents: SliderTangents::all(),
+            ..FrictionIncrement::default()
         };
+        for _ in 0..steps {
+            slider.step_in_place(&mut st, &inc, &mut w).unwrap();
+        }
+        inc.tangents = TANGENT_NORMAL | TANGENT_SLIP;
         let mut new = vec![0.0; m];
-        let t = slider.step_flat(&st, &mut new, &inc, &mut w).unwrap();
+        let t = slider.step(&st, &mut new, &inc, &mut w).unwrap();
         c.close(
             SLIDER,
             "tangent_friction_force",
-            t.friction_force,
-            1e-10 * t.friction_force,
+            t.force_magnitude,
+            1e-10 * t.force_magnitude,
         );
         let dn = t.dforce_dnormal[0];
         c.close(SLIDER, "tangent_dfdn", dn, 1e-9 * dn.abs());
         let ds = t.dforce_dslip[0][0];
         c.close(SLIDER, "tangent_dfds_along", ds, 1e-9 * ds.abs());
+        let sw = w.get::<SliderWork>().unwrap();
+        let rec = sw.record();
+        c.close(SLIDER, "tangent_record_position", rec.position, 1e-15);
+        c.close(SLIDER, "tangent_record_advance", step, 1e-18);
+        c.close(
+            SLIDER,
+            "tangent_record_rod_position",
+            rec.rod_position,
+            1e-10 * rec.rod_position.abs(),
+        );
+        c.close(
+            SLIDER,
+            "tangent_record_adhesion_area_share",
+            rec.adhesion_area_share,
+            1e-10,
+        );
+        for (name, n) in [
+            ("nano_contacts", rec.nano_contacts),
+            ("adhesive_contacts", rec.adhesive_contacts),
+            ("rods_in_contact", rec.rods_in_contact),
+            ("yielded_rods", rec.yielded_rods),
+        ] {
+            c.close(SLIDER, &format!("tangent_record_{name}"), n as f64, 0.0);
+        }
+        assert!(
+            rec.nano_contacts > 0 && rec.rods_in_contact > 0,
+            "the check must see a contact"
+        );
+        c.close(
+            SLIDER,
+            "tangent_record_seated",
+            sw.seated() as i32 as f64,
+            0.0,
+        );
     }
+    c.close(FFI, "tangent_record_position_matches_state", 1.0, 0.0);
     c.within(SLIDER, "tangent_transverse_rel_diff", 0.0, 1e-12);
     c.close(SLIDER, "tangents_flag", 3.0, 0.0);
     c.close(SLIDER, "reevaluation_identical", 1.0, 0.0);
     c.close(SLIDER, "zero_slip_force", 0.0, 0.0);
     c.close(SLIDER, "zero_slip_dissipated", 0.0, 0.0);
     c.close(SLIDER, "zero_slip_regime", 0.0, 0.0);
+    c.close(FFI, "record_reevaluation_identical", 1.0, 0.0);
+    c.close(SLIDER, "zero_slip_record_advance", 0.0, 0.0);
+    c.close(SLIDER, "zero_slip_record_seated", 0.0, 0.0);
     c.close(FFI, "bad_load_status", -4.0, 0.0);
     c.close(FFI, "bad_load_names_element", 1.0, 0.0);
     c.close(FFI, "bad_load_names_normal_force", 1.0, 0.0);
     c.close(FFI, "bad_load_before_written", 1.0, 0.0);
     c.close(FFI, "bad_load_rest_untouched", 1.0, 0.0);
     c.close(FFI, "null_handle_status", -1.0, 0.0);
+    c.close(FFI, "record_null_work_status", -1.0, 0.0);
+    c.close(FFI, "record_null_work_names_work", 1.0, 0.0);
     let rows = r.stdout.lines().filter(|l| l.starts_with("patch ")).count();
     c.ok(SLIDER, rows == 4, || {
         format!("{rows} patch rows, expected 4")
@@ -774,12 +835,9 @@ fn slider_patch_shared() {
 /// physics holds where it is known in closed form.
 fn check_friction_models(linkage: Linkage) {
     use asperity::friction::dynamic::{
-        BurridgeKnopoff, DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip, PrandtlTomlinson,
+        BurridgeKnopoff, FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip, PrandtlTomlinson,
     };
-    use asperity::friction::{
-        CofForm, Dissipation, FrictionIncrement, FrictionPointState, HomogenisedFriction,
-        HomogenisedSample,
-    };
+    use asperity::friction::{CofForm, Dissipation, HomogenisedFriction, HomogenisedSample};
     const DYN: &str = "the dynamic friction models (src/friction/dynamic)";
     let r = run("friction_models", linkage);
     let mut c = Report::new(&r);
@@ -801,6 +859,8 @@ fn check_friction_models(linkage: Linkage) {
         }],
         CofForm::Derjaguin,
     )
+    .unwrap()
+    .with_stick_stiffness(2e5 * n)
     .unwrap();
     let pi = std::f64::consts::PI;
     let (a, m_pt) = (5e-6, 1e-3);
@@ -833,20 +893,22 @@ fn check_friction_models(linkage: Linkage) {
     );
     sb[asperity::friction::dynamic::burridge_knopoff::state_block(3)] = -1e-6;
     // Burridge–Knopoff increments with every block stuck (regime 0).
+    let mut w = bk.work();
     let (mut stuck, mut before) = (
         vec![],
         bk.step(
             &sb.clone(),
             &mut sb,
-            &DynamicIncrement {
+            &FrictionIncrement {
                 normal_force: n,
                 ..Default::default()
             },
+            &mut w,
         )
         .unwrap()
         .force[0],
     );
-    let mut sh = FrictionPointState::default();
+    let mut sh = vec![0.0; homog.state_len()];
     let mut rows = r.stdout.lines().filter_map(|l| l.strip_prefix("row "));
     let (mut x, mut dh) = (0.0, 0.0);
     let mut forces = vec![];
@@ -858,36 +920,25 @@ fn check_friction_models(linkage: Linkage) {
         } else {
             h
         };
-        let inc = DynamicIncrement {
+        let inc = FrictionIncrement {
             normal_force: n,
+            area,
             slip: [dx, 0.0],
             dt,
             ..Default::default()
         };
-        let fl = lugre.step_in_place(&mut sl, &inc).unwrap().force[0];
-        let fm = maxwell.step_in_place(&mut sm, &inc).unwrap().force[0];
-        let fp = pt.step_in_place(&mut sp, &inc).unwrap().force[0];
-        let f2 = two.step_in_place(&mut s2, &inc).unwrap().force[0];
-        let rb = bk.step_in_place(&mut sb, &inc).unwrap();
+        let fl = lugre.step_in_place(&mut sl, &inc, &mut w).unwrap().force[0];
+        let fm = maxwell.step_in_place(&mut sm, &inc, &mut w).unwrap().force[0];
+        let fp = pt.step_in_place(&mut sp, &inc, &mut w).unwrap().force[0];
+        let f2 = two.step_in_place(&mut s2, &inc, &mut w).unwrap().force[0];
+        let rb = bk.step_in_place(&mut sb, &inc, &mut w).unwrap();
         let fb = rb.force[0];
-        let fr = brush.step_in_place(&mut sr, &inc).unwrap().force[0];
+        let fr = brush.step_in_place(&mut sr, &inc, &mut w).unwrap().force[0];
         if rb.regime == 0 {
             stuck.push((i, fb - before, dx));
         }
         before = fb;
-        let (next, rh) = homog
-            .step_value(
-                &sh,
-                &FrictionIncrement {
-                    normal_force: n,
-                    area,
-                    slip: [dx, 0.0],
-                    dt,
-                    stick_stiffness: 2e5 * n,
-                },
-            )
-            .unwrap();
-        sh = next;
+        let rh = homog.step_in_place(&mut sh, &inc, &mut w).unwrap();
         dh += rh.dissipated;
         x += dx;
         let want = [x * 1e6, fl, fm, rh.force[0], fp, f2, fb, fr];

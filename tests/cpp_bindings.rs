@@ -344,7 +344,13 @@ fn run(name: &str, linkage: Linkage) -> Option<Run> {
 fn every_example_compiles_and_links_both_ways() {
     let Some(b) = built() else { return };
     let errors = native::build_errors(b);
-    for expected in ["tour", "two_units", "fe_block", "every_function"] {
+    for expected in [
+        "tour",
+        "two_units",
+        "fe_block",
+        "every_function",
+        "slider_patch",
+    ] {
         assert!(b.contains_key(expected), "examples/cpp has no {expected}");
     }
     assert!(errors.is_empty(), "{errors}");
@@ -354,7 +360,13 @@ fn every_example_compiles_and_links_both_ways() {
 #[test]
 fn every_other_example_runs() {
     let Some(b) = built() else { return };
-    let known = ["tour", "two_units", "fe_block", "every_function"];
+    let known = [
+        "tour",
+        "two_units",
+        "fe_block",
+        "every_function",
+        "slider_patch",
+    ];
     for name in b.keys().filter(|n| !known.contains(&n.as_str())) {
         for k in Linkage::BOTH {
             let r = run(name, k).unwrap();
@@ -639,7 +651,13 @@ fn check_fe_block(linkage: Linkage) {
     c.rel(HOMOGENISED, "total_dissipation", dissipation, 1e-9);
     c.rel(HOMOGENISED, "ledger_total", dissipation, 1e-9);
     c.close(HOMOGENISED, "min_increment_dissipation", 0.0, 0.0);
-    c.close(HOMOGENISED, "steps_counted", 16.0 * 2.0 * forward, 0.0);
+    // Every increment of every point is booked: Σ slip path = 16·2D.
+    c.rel(
+        HOMOGENISED,
+        "slip_path_total",
+        16.0 * 2.0 * forward * ds,
+        1e-12,
+    );
     c.close(HOMOGENISED, "slip_increment", ds, 0.0);
     c.close(HOMOGENISED, "stick_stiffness", k, 0.0);
     c.close(HOMOGENISED, "forward_increments", forward, 0.0);
@@ -661,6 +679,111 @@ fn check_fe_block(linkage: Linkage) {
 #[test]
 fn fe_block() {
     each_linkage(check_fe_block);
+}
+
+// ---------------------------------------------------------------------------
+// slider_patch: self-checking; here its slider record against the Rust API
+
+const SLIDER_STEP: &str = "the slider step (src/friction/slider/, src/ffi/slider.rs)";
+
+/// `slider_patch` checks itself (exit status); its record of patch 0's
+/// tangent step (`FrictionWork::slider_record`) is compared here with the
+/// Rust step's `SliderWork::record()` from the same history, and the record
+/// of the first two blocks (patch 3, from 0) with the track positions.
+fn check_slider_patch(linkage: Linkage) {
+    use asperity::friction::law::{TANGENT_NORMAL, TANGENT_SLIP};
+    use asperity::friction::{FrictionIncrement, FrictionLaw, Slider, SliderWork};
+    use asperity::scene::Scene;
+    let Some(r) = run("slider_patch", linkage) else {
+        return;
+    };
+    let mut c = Report::new(&r);
+    c.exit_ok(SLIDER_STEP);
+    let slider: Slider =
+        Scene::from_file(common::manifest().join("examples/scenes/chapter6_copper.json"))
+            .unwrap()
+            .build()
+            .unwrap();
+    let step = 1.5e-6;
+    c.close(SLIDER_STEP, "record_block0_seated", 1.0, 0.0);
+    c.close(SLIDER_STEP, "record_block0_position", step, 0.0);
+    c.close(SLIDER_STEP, "record_block1_seated", 0.0, 0.0);
+    c.close(SLIDER_STEP, "record_block1_position", 2.0 * step, 0.0);
+    c.close(SLIDER_STEP, "record_seated_ok", 1.0, 0.0);
+    c.close(FFI, "record_position_matches_state", 1.0, 0.0);
+    c.within(SLIDER_STEP, "record_max_advance_diff", 0.0, 1e-18);
+    c.close(SLIDER_STEP, "record_counts_consistent", 1.0, 0.0);
+    // Patch 0: 60 increments of 1.5 um along +x at 5 % of the capacity,
+    // then one with both tangents from that state.
+    let mut w = slider.work();
+    let mut st = vec![0.0; slider.state_len()];
+    let mut inc = FrictionIncrement {
+        normal_force: 0.05 * slider.capacity(),
+        slip: [step, 0.0],
+        dt: 1e-5,
+        ..FrictionIncrement::default()
+    };
+    for _ in 0..60 {
+        slider.step_in_place(&mut st, &inc, &mut w).unwrap();
+    }
+    inc.tangents = TANGENT_NORMAL | TANGENT_SLIP;
+    let mut new = vec![0.0; slider.state_len()];
+    slider.step(&st, &mut new, &inc, &mut w).unwrap();
+    let sw = w.get::<SliderWork>().unwrap();
+    let rec = sw.record();
+    assert!(
+        rec.nano_contacts > 0 && rec.rods_in_contact > 0,
+        "the check must see a contact"
+    );
+    c.close(SLIDER_STEP, "tangent_record_position", rec.position, 1e-15);
+    c.close(
+        SLIDER_STEP,
+        "tangent_record_position",
+        st[Slider::STATE_POSITION] + step,
+        1e-15,
+    );
+    c.close(CPP, "tangent_record_matches_state", 1.0, 0.0);
+    c.close(
+        SLIDER_STEP,
+        "tangent_record_rod_position",
+        rec.rod_position,
+        1e-10 * rec.rod_position.abs(),
+    );
+    c.close(
+        SLIDER_STEP,
+        "tangent_record_adhesion_area_share",
+        rec.adhesion_area_share,
+        1e-10,
+    );
+    for (name, n) in [
+        ("nano_contacts", rec.nano_contacts),
+        ("adhesive_contacts", rec.adhesive_contacts),
+        ("rods_in_contact", rec.rods_in_contact),
+        ("yielded_rods", rec.yielded_rods),
+    ] {
+        c.close(
+            SLIDER_STEP,
+            &format!("tangent_record_{name}"),
+            n as f64,
+            0.0,
+        );
+    }
+    c.close(
+        SLIDER_STEP,
+        "tangent_record_seated",
+        sw.seated() as i32 as f64,
+        0.0,
+    );
+    c.close(SLIDER_STEP, "zero_slip_record_advance", 0.0, 0.0);
+    c.close(SLIDER_STEP, "zero_slip_record_seated", 0.0, 0.0);
+    c.close(CPP, "reevaluation_identical", 1.0, 0.0);
+    c.close(FFI, "record_null_work_status", -1.0, 0.0);
+    c.finish();
+}
+
+#[test]
+fn slider_patch() {
+    each_linkage(check_slider_patch);
 }
 
 // ---------------------------------------------------------------------------
@@ -742,6 +865,16 @@ fn every_function_laws(c: &mut Report) {
         kendall * cns.sqrt(),
         1e-12,
     );
+    c.rel(
+        LAWS,
+        "from_params_kendall_no_slip_pull_off",
+        kendall * cns.sqrt(),
+        1e-12,
+    );
+    c.close(CPP, "from_params_inputs_read_back", 1.0, 0.0);
+    c.close(CPP, "from_params_bad_no_slip_threw", 1.0, 0.0);
+    c.close(FFI, "from_params_bad_no_slip_status", -2.0, 0.0);
+    c.close(FFI, "from_params_bad_no_slip_names_argument", 1.0, 0.0);
     c.rel(
         LAWS,
         "md_pull_off_load",
@@ -855,7 +988,8 @@ fn every_function_slider(c: &mut Report) {
 
     // asperity_slider_new: the same slider through Slider::new.
     use asperity::friction::{
-        FrictionMaterial, Loading, NanoAsperities, Slider, SliderIncrement, SliderOptions,
+        FrictionIncrement, FrictionLaw, FrictionMaterial, Loading, NanoAsperities, Slider,
+        SliderOptions, SliderWork,
     };
     let copper = FrictionMaterial::copper();
     c.close(FFI, "copper_yield_stress", copper.yield_stress, 0.0);
@@ -879,27 +1013,72 @@ fn every_function_slider(c: &mut Report) {
     )
     .unwrap();
     let mut state = vec![0.0; slider.state_len()];
-    let increment = SliderIncrement {
+    let increment = FrictionIncrement {
+        normal_force: 0.01,
         slip: [um, 0.0],
-        ..SliderIncrement::default()
+        ..FrictionIncrement::default()
     };
+    let mut work = slider.work();
     let r = slider
-        .step_flat_in_place(&mut state, &increment, &mut slider.work())
+        .step_in_place(&mut state, &increment, &mut work)
         .unwrap();
     assert!(
-        r.friction_force > 0.0,
+        r.force_magnitude > 0.0,
         "the check must see a sliding contact"
     );
-    c.close(SLIDER, "structs_friction_force", r.friction_force, 0.0);
+    c.close(SLIDER, "structs_friction_force", r.force_magnitude, 0.0);
     c.close(SLIDER, "structs_cof", r.cof, 0.0);
-    c.close(SLIDER, "structs_nano_contacts", r.nano_contacts as f64, 0.0);
+    // The program reads the step's full record (`FrictionWork::slider_record`).
+    let sw = work.get::<SliderWork>().unwrap();
+    let record = *sw.record();
+    assert!(record.nano_contacts > 0, "the check must see nano contacts");
+    for (name, n) in [
+        ("nano_contacts", record.nano_contacts),
+        ("adhesive_contacts", record.adhesive_contacts),
+        ("rods_in_contact", record.rods_in_contact),
+        ("yielded_rods", record.yielded_rods),
+    ] {
+        c.close(SLIDER, &format!("structs_{name}"), n as f64, 0.0);
+    }
+    c.close(
+        SLIDER,
+        "structs_adhesion_area_share",
+        record.adhesion_area_share,
+        0.0,
+    );
+    c.close(SLIDER, "structs_position", record.position, 0.0);
+    c.close(SLIDER, "structs_position", um, 0.0);
+    c.close(SLIDER, "structs_rod_position", record.rod_position, 0.0);
+    c.close(SLIDER, "structs_seated", 1.0, 0.0);
+    c.close(SLIDER, "structs_seated", sw.seated() as i32 as f64, 0.0);
+    c.close(CPP, "structs_position_matches_state", 1.0, 0.0);
+    c.within(SLIDER, "structs_true_contact_area_rel_diff", 0.0, 1e-12);
+    slider
+        .step_in_place(&mut state, &increment, &mut work)
+        .unwrap();
+    let sw = work.get::<SliderWork>().unwrap();
+    c.close(SLIDER, "structs_second_seated", 0.0, 0.0);
+    c.close(
+        SLIDER,
+        "structs_second_seated",
+        sw.seated() as i32 as f64,
+        0.0,
+    );
+    c.close(SLIDER, "structs_second_position", sw.record().position, 0.0);
+    c.close(SLIDER, "structs_second_position", 2.0 * um, 0.0);
+    c.close(CPP, "record_null_work_threw", 1.0, 0.0);
+    c.close(FFI, "record_null_work_status", -1.0, 0.0);
+    c.close(FFI, "record_null_work_names_argument", 1.0, 0.0);
+    c.close(CPP, "record_lugre_work_threw", 1.0, 0.0);
+    c.close(FFI, "record_lugre_work_status", -2.0, 0.0);
+    c.close(FFI, "record_lugre_work_names_argument", 1.0, 0.0);
     c.close(CPP, "structs_bad_plastic_threw", 1.0, 0.0);
     c.close(FFI, "structs_bad_plastic_status", -2.0, 0.0);
     c.close(FFI, "structs_bad_plastic_names_argument", 1.0, 0.0);
 }
 
 fn every_function_dynamic(c: &mut Report) {
-    use asperity::friction::dynamic::{DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip};
+    use asperity::friction::dynamic::{FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip};
     const DYN: &str = "the dynamic friction models (src/friction/dynamic)";
     let lugre = LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4).unwrap();
     c.close(DYN, "lugre_state_size", 4.0, 0.0);
@@ -911,13 +1090,15 @@ fn every_function_dynamic(c: &mut Report) {
         1e-12,
     );
     let mut s = [0.0; 4];
-    let inc = DynamicIncrement {
+    let inc = FrictionIncrement {
         normal_force: 3.0,
         slip: [2e-3, 0.0],
         dt: 1.0,
         ..Default::default()
     };
-    let r = lugre.step_in_place(&mut s, &inc).unwrap();
+    let r = lugre
+        .step_in_place(&mut s, &inc, &mut lugre.work())
+        .unwrap();
     c.close(DYN, "lugre_dissipation", r.dissipated, 0.0);
     // Maxwell-slip, two elements of reach 2 and 15 µm: loaded 3 µm, back
     // 2 µm: Masing F = F_v(3) − 2 F_v(1) on the point (the force on the
@@ -939,13 +1120,16 @@ fn every_function_dynamic(c: &mut Report) {
     .unwrap();
     c.close(DYN, "two_spring_state_size", 7.0, 0.0);
     let mut s = [0.0; 7];
-    let inc = DynamicIncrement {
+    let inc = FrictionIncrement {
         normal_force: 1.0,
         slip: [1e-11, 0.0],
         dt: 1e-6,
         ..Default::default()
     };
-    let f = pt.step_in_place(&mut s, &inc).unwrap().force[0];
+    let f = pt
+        .step_in_place(&mut s, &inc, &mut pt.work())
+        .unwrap()
+        .force[0];
     c.close(DYN, "two_spring_force", f, 1e-12 * f.abs());
     // Burridge-Knopoff: four stuck blocks, F = −4 k_p Δs.
     c.close(DYN, "burridge_knopoff_state_size", 11.0, 0.0);
@@ -958,6 +1142,20 @@ fn every_function_dynamic(c: &mut Report) {
     c.close(CPP, "burridge_knopoff_bad_threw", 1.0, 0.0);
     c.close(FFI, "burridge_knopoff_bad_status", -2.0, 0.0);
     c.close(FFI, "burridge_knopoff_bad_names_argument", 1.0, 0.0);
+    // The homogenised law (μ 0.5, k = 1e6 N/m): a 1 mm slip at 1 N slides
+    // at −μN after the elastic slip μN/k, dissipating μN (Δs − μN/k).
+    c.close(HOMOGENISED, "homogenised_state_size", 9.0, 0.0);
+    c.close(HOMOGENISED, "homogenised_force", -0.5, 1e-15);
+    c.close(HOMOGENISED, "homogenised_regime", 2.0, 0.0);
+    c.rel(
+        HOMOGENISED,
+        "homogenised_dissipated",
+        0.5 * (1e-3 - 0.5 / 1e6),
+        1e-12,
+    );
+    c.close(CPP, "homogenised_no_area_threw", 1.0, 0.0);
+    c.close(FFI, "homogenised_no_area_status", -2.0, 0.0);
+    c.close(FFI, "homogenised_no_area_names_argument", 1.0, 0.0);
 }
 
 fn every_function_indentation(c: &mut Report) {

@@ -2,7 +2,8 @@
 //! exponential surface laws (REFERENCE §1, §6).
 
 use approx::assert_relative_eq;
-use asperity::contact::{Derjaguin, SurfaceLaw};
+use asperity::contact::{Derjaguin, DerjaguinParams, SurfaceLaw};
+use asperity::ffi::contact::AsperityNormalLaw;
 use asperity::{ContactState, Control, Error, NormalContact, NormalLaw};
 use core::f64::consts::PI;
 
@@ -497,8 +498,7 @@ fn bad_inputs_name_the_argument() {
 
     // A selector written directly (as C may) is validated, never trusted.
     for bad in [0, 4, -1, i32::MAX] {
-        let mut d = l;
-        d.surface_law = bad;
+        let d = written_from_c(l, |p| p.surface_law = bad);
         let sel = |e: Error| matches!(e, Error::UnknownSelector { name: "surface_law", value } if value == bad as i64);
         assert!(sel(d.eval(0.0, &fresh()).unwrap_err()));
         assert!(sel(d.eval_at_load(0.0).unwrap_err()));
@@ -507,9 +507,20 @@ fn bad_inputs_name_the_argument() {
         assert!(sel(d.try_surface_law().unwrap_err()));
         assert!(d.surface_law().validate().is_err());
     }
-    let mut d = l;
-    d.radius = -1.0;
+    let d = written_from_c(l, |p| p.radius = -1.0);
     assert_eq!(name(d.eval(0.0, &fresh()).unwrap_err()), "radius");
+}
+
+/// `d` after C wrote its inputs in place: the member of the storage of an
+/// `AsperityNormalLaw`, changed by `write`, read back as the Rust law.
+fn written_from_c(d: Derjaguin, write: impl FnOnce(&mut DerjaguinParams)) -> Derjaguin {
+    let mut c = AsperityNormalLaw::from(NormalLaw::Derjaguin(d));
+    // SAFETY: the member of the kind the value holds.
+    write(unsafe { &mut c.params.derjaguin });
+    match c.to_law().unwrap() {
+        NormalLaw::Derjaguin(d) => d,
+        other => panic!("{other:?}"),
+    }
 }
 
 #[test]
@@ -517,8 +528,8 @@ fn layout_and_law_round_trip() {
     assert!(core::mem::size_of::<Derjaguin>() <= 16 * 8);
     for (law, sel) in laws().into_iter().zip([1, 2, 3]) {
         let d = Derjaguin::new(R, law).unwrap();
-        assert_eq!(d.surface_law, sel);
-        assert_eq!(d.reserved, 0);
+        assert_eq!(d.params().surface_law, sel);
+        assert_eq!(d.params().reserved, 0);
         let back = d.surface_law();
         assert_eq!(back.work_of_adhesion(), W);
         assert_relative_eq!(back.range(), law.range(), max_relative = 1e-15);
@@ -528,9 +539,10 @@ fn layout_and_law_round_trip() {
         {
             assert_relative_eq!(cohesive_stress, SIGMA0, max_relative = 1e-15);
         }
-        assert_eq!(Derjaguin::new(R, back).unwrap().range, d.range);
+        assert_eq!(Derjaguin::new(R, back).unwrap(), d);
     }
-    // The C constructor passes σ₀ for Dugdale; the struct keeps h₀.
+    // The C constructor passes σ₀ for Dugdale; the law keeps it as its input
+    // and h₀ = w/σ₀ as its length.
     let mut out = core::mem::MaybeUninit::<asperity::ffi::contact::AsperityNormalLaw>::uninit();
     let st = unsafe {
         asperity::ffi::contact::asperity_law_derjaguin(
@@ -546,10 +558,11 @@ fn layout_and_law_round_trip() {
     match law {
         NormalLaw::Derjaguin(d) => {
             assert_eq!(
-                d.surface_law,
+                d.params().surface_law,
                 asperity::ffi::contact::ASPERITY_SURFACE_LAW_DUGDALE
             );
-            assert_relative_eq!(d.range, W / SIGMA0, max_relative = 1e-15);
+            assert_eq!(d.params().parameter, SIGMA0);
+            assert_relative_eq!(d.length_scale(), W / SIGMA0, max_relative = 1e-15);
         }
         other => panic!("{other:?}"),
     }

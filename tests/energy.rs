@@ -98,8 +98,8 @@ fn punches_and_kendall_integrate_their_force() {
     let k = Kendall::new(R, E, W).unwrap();
     let pc = k.pull_off_force(Control::Load).unwrap().abs();
     let st = in_contact();
-    for x in lin(k.critical_delta * 0.99, 1e-8, 50) {
-        check_derivative(&k, x, &st, 1e-7 * k.critical_delta.abs(), pc);
+    for x in lin(k.critical_delta() * 0.99, 1e-8, 50) {
+        check_derivative(&k, x, &st, 1e-7 * k.critical_delta().abs(), pc);
     }
     assert_eq!(k.energy(-1e-12, &fresh).unwrap(), 0.0);
     assert!(k.energy(-1e-12, &st).unwrap() < 0.0);
@@ -114,7 +114,7 @@ fn lin(a: f64, b: f64, n: usize) -> Vec<f64> {
 #[test]
 fn jkr_energy_along_both_branches() {
     let j = Jkr::new(R, E, W).unwrap();
-    let dc = j.critical_delta;
+    let dc = j.critical_delta();
     let l = -dc;
     let pc = 1.5 * PI * W * R;
     let st = in_contact();
@@ -218,7 +218,7 @@ fn c_abi_energy() {
     let j = Jkr::new(R, E, W).unwrap();
     let st = in_contact();
     let mut u = 0.0;
-    let x = j.critical_delta * 0.5;
+    let x = j.critical_delta() * 0.5;
     assert_eq!(
         unsafe { asperity_normal_energy(&law, x, &st, &mut u) },
         ASPERITY_OK

@@ -2,7 +2,8 @@
 //! message buffer protocol, status strings, the version, batch evaluation and
 //! caller-owned state. Only laws that do not depend on the adhesive solvers
 //! (Hertz, DMT, power punch, flat punch) are used where a working law is
-//! needed.
+//! needed, except in the round trip of every constructor through
+//! `asperity_law_from_params`.
 
 mod common;
 use common::c_errors::{expect_error, last_message};
@@ -245,7 +246,9 @@ fn unknown_law_kind_and_control_are_invalid_arguments() {
     let mut r = NormalResponse::default();
     let mut f = 0.0;
     unsafe {
-        for kind in [ASPERITY_LAW_NONE, 99, -1, i32::MAX] {
+        // The first kind past the last law, and far-off values.
+        let next = asperity::NormalLaw::NAMES.len() as i32 + 1;
+        for kind in [ASPERITY_LAW_NONE, next, 99, -1, i32::MAX] {
             zeroed.kind = kind;
             expect_error(
                 asperity_normal_eval(&zeroed, 1e-9, null(), null_mut(), &mut r),
@@ -817,4 +820,120 @@ fn law_storage_past_the_active_member_is_zero() {
     let raw = unsafe { law.params.raw };
     assert_eq!((raw[0], raw[1]), (1e-6, 1e9));
     assert!(raw[2..].iter().all(|&x| x.to_bits() == 0));
+}
+
+// --- Laws from their inputs --------------------------------------------------
+
+/// A law built from the inputs a constructor stored (the member of its kind)
+/// is the constructor's law, bit for bit: the inputs read back as given and
+/// the derived values follow from them alone.
+#[test]
+fn law_from_params_rebuilds_every_constructor() {
+    let s = ASPERITY_SURFACE_LAW_DUGDALE;
+    let laws = [
+        hertz(),
+        law(|o| unsafe { asperity_law_sphere_in_crater(R, 4.0 * R, E, o) }),
+        power_punch(),
+        law(|o| unsafe { asperity_law_cone(1.2, E, o) }),
+        law(|o| unsafe { asperity_law_flat_punch(R, E, o) }),
+        flat_punch(),
+        dmt(),
+        law(|o| unsafe { asperity_law_jkr(R, E, W, o) }),
+        law(|o| unsafe { asperity_law_jkr_power_punch(1e3, 1.5, E, W, 0.3, 0, o) }),
+        law(|o| unsafe { asperity_law_jkr_power_punch(1e3, 1.5, E, W, 0.3, 1, o) }),
+        law(|o| unsafe { asperity_law_kendall(R, E, W, 0.2, 0, o) }),
+        law(|o| unsafe { asperity_law_kendall(R, E, W, 0.2, 1, o) }),
+        law(|o| unsafe { asperity_law_maugis_dugdale(R, E, W, 3e7, o) }),
+        law(|o| unsafe { asperity_law_derjaguin(R, W, 1, 0.3e-9, o) }),
+        law(|o| unsafe { asperity_law_derjaguin(R, W, s, 3e7, o) }),
+        law(|o| unsafe { asperity_law_derjaguin(R, W, 3, 1e-9, o) }),
+    ];
+    for l in laws {
+        let again = law(|o| unsafe { asperity_law_from_params(l.kind, &l.params, o) });
+        assert_eq!(again.kind, l.kind);
+        // Kind k is the law NormalLaw::NAMES[k - 1].
+        let name = l.to_law().unwrap().name();
+        assert_eq!(asperity::NormalLaw::NAMES[l.kind as usize - 1], name);
+        let bits = |l: &AsperityNormalLaw| unsafe { l.params.raw }.map(f64::to_bits);
+        assert_eq!(bits(&again), bits(&l), "kind {}", l.kind);
+    }
+    // Inputs as given, for a law with a selector and a renamed argument.
+    let d = law(|o| unsafe { asperity_law_derjaguin(R, W, s, 3e7, o) });
+    let p = unsafe { d.params.derjaguin };
+    assert_eq!((p.radius, p.work_of_adhesion, p.parameter), (R, W, 3e7));
+    assert_eq!((p.surface_law, p.reserved), (s, 0));
+    let k = law(|o| unsafe { asperity_law_kendall(R, E, W, 0.2, 0, o) });
+    let p = unsafe { k.params.kendall };
+    assert_eq!((p.nu, p.no_slip), (0.2, 0));
+}
+
+#[test]
+fn law_from_params_errors_name_the_input() {
+    use asperity::contact::{DerjaguinParams, KendallParams, MaugisDugdaleParams};
+    let next = asperity::NormalLaw::NAMES.len() as i32 + 1;
+    let mut out = hertz();
+    let before = unsafe { out.params.raw };
+    let zero = AsperityLawParams { raw: [0.0; 16] };
+    let kendall = |nu, no_slip| AsperityLawParams {
+        kendall: KendallParams {
+            radius: R,
+            e_star: E,
+            work_of_adhesion: W,
+            nu,
+            no_slip,
+            reserved: 0,
+        },
+    };
+    let derjaguin = AsperityLawParams {
+        derjaguin: DerjaguinParams {
+            radius: R,
+            work_of_adhesion: W,
+            parameter: -1.0,
+            surface_law: ASPERITY_SURFACE_LAW_EXPONENTIAL,
+            reserved: 0,
+        },
+    };
+    let md = AsperityLawParams {
+        maugis_dugdale: MaugisDugdaleParams {
+            radius: R,
+            e_star: E,
+            work_of_adhesion: W,
+            cohesive_stress: 0.0,
+        },
+    };
+    // (kind, inputs, the name the message gives)
+    let cases = [
+        (ASPERITY_LAW_NONE, zero, "`kind`"),
+        (next, zero, "`kind`"),
+        (-1, zero, "`kind`"),
+        (ASPERITY_LAW_KENDALL, kendall(0.3, 2), "`no_slip`"),
+        (ASPERITY_LAW_KENDALL, kendall(0.7, 0), "`nu`"),
+        (ASPERITY_LAW_DERJAGUIN, derjaguin, "`parameter`"),
+        (ASPERITY_LAW_MAUGIS_DUGDALE, md, "`cohesive_stress`"),
+    ];
+    unsafe {
+        for (kind, p, name) in cases {
+            expect_error(
+                asperity_law_from_params(kind, &p, &mut out),
+                ASPERITY_ERR_INVALID_ARGUMENT,
+                name,
+            );
+        }
+        expect_error(
+            asperity_law_from_params(ASPERITY_LAW_HERTZ, null(), &mut out),
+            ASPERITY_ERR_NULL_POINTER,
+            "`params`",
+        );
+        expect_error(
+            asperity_law_from_params(ASPERITY_LAW_HERTZ, &zero, null_mut()),
+            ASPERITY_ERR_NULL_POINTER,
+            "`out`",
+        );
+    }
+    // A failed constructor leaves its output as it was.
+    assert_eq!(out.kind, ASPERITY_LAW_HERTZ);
+    assert_eq!(
+        unsafe { out.params.raw }.map(f64::to_bits),
+        before.map(f64::to_bits)
+    );
 }

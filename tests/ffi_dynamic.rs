@@ -1,15 +1,22 @@
-//! The C ABI of the dynamic friction models, called from Rust: equality
-//! with the Rust API bit for bit (scalar, in place, block), errors naming
-//! the argument with outputs untouched, NULL pointers.
+//! The C ABI of the dynamic friction models (constructors of the one
+//! friction handle `AsperityFriction`), called from Rust: equality with the
+//! Rust API bit for bit (scalar, in place, block, old == new, NULL work),
+//! the handle's contract for each model (overlapping and overflowing
+//! blocks), errors naming the argument with outputs untouched, NULL
+//! pointers.
 
 mod common;
+#[path = "common/laws.rs"]
+mod laws;
 use common::c_errors::{expect_error, last_message};
 
 use asperity::ffi::dynamic::*;
+use asperity::ffi::friction_law::*;
 use asperity::ffi::*;
 use asperity::friction::dynamic::{
-    DynamicFriction, DynamicIncrement, DynamicResponse, LuGre, MaxwellSlip,
+    FrictionIncrement, FrictionLaw, FrictionResponse, LuGre, MaxwellSlip,
 };
+use asperity::friction::{BlockStates, FrictionBlock};
 use std::ptr::{null, null_mut};
 
 fn params() -> AsperityLugreParams {
@@ -29,16 +36,16 @@ const K: [f64; 3] = [2e5, 5e4, 1e4];
 const MU: [f64; 3] = [0.2, 0.2, 0.1];
 
 /// The two models through C, and the same through Rust.
-fn models() -> Vec<(*mut AsperityDynamicFriction, Box<dyn DynamicFriction>)> {
+fn models() -> Vec<(*mut AsperityFriction, Box<dyn FrictionLaw>)> {
     let p = params();
     let mut a = null_mut();
     assert_eq!(
-        unsafe { asperity_dynamic_lugre_new(&p, &mut a) },
+        unsafe { asperity_friction_lugre_new(&p, &mut a) },
         ASPERITY_OK
     );
     let mut b = null_mut();
     assert_eq!(
-        unsafe { asperity_dynamic_maxwell_slip_new(K.as_ptr(), MU.as_ptr(), 3, 0.1, &mut b) },
+        unsafe { asperity_friction_maxwell_slip_new(K.as_ptr(), MU.as_ptr(), 3, 0.1, &mut b) },
         ASPERITY_OK
     );
     vec![
@@ -50,14 +57,14 @@ fn models() -> Vec<(*mut AsperityDynamicFriction, Box<dyn DynamicFriction>)> {
     ]
 }
 
-fn increment(k: usize) -> DynamicIncrement {
+fn increment(k: usize) -> FrictionIncrement {
     let th = 0.7 * k as f64;
-    DynamicIncrement {
+    FrictionIncrement {
         normal_force: 2.0 + (0.3 * k as f64).sin(),
         slip: [2e-6 * th.cos(), 1e-6 * th.sin()],
         dt: 1e-3,
         tangents: (k % 4) as i32,
-        reserved: 0,
+        ..Default::default()
     }
 }
 
@@ -66,25 +73,30 @@ fn steps_equal_the_rust_api_bit_for_bit() {
     for (h, rust) in models() {
         let mut n = 0usize;
         assert_eq!(
-            unsafe { asperity_dynamic_friction_state_size(h, &mut n) },
+            unsafe { asperity_friction_state_size(h, &mut n) },
             ASPERITY_OK
         );
         assert_eq!(n, rust.state_len());
+        let mut work = null_mut();
+        assert_eq!(
+            unsafe { asperity_friction_work_new(h, &mut work) },
+            ASPERITY_OK
+        );
         let (mut c, mut c_new, mut r) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
         for k in 0..30 {
             let inc = increment(k);
-            let mut out = DynamicResponse::default();
+            let mut out = FrictionResponse::default();
             let st = unsafe {
-                asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c_new.as_mut_ptr(), &mut out)
+                asperity_friction_step(h, &inc, c.as_ptr(), c_new.as_mut_ptr(), work, &mut out)
             };
             assert_eq!(st, ASPERITY_OK, "{}", last_message());
-            let want = rust.step_in_place(&mut r, &inc).unwrap();
+            let want = rust.step_in_place(&mut r, &inc, &mut rust.work()).unwrap();
             assert_eq!(format!("{out:?}"), format!("{want:?}"));
             assert_eq!(c_new, r);
             // In place gives the same.
-            let mut out2 = DynamicResponse::default();
+            let mut out2 = FrictionResponse::default();
             let st = unsafe {
-                asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), &mut out2)
+                asperity_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), null_mut(), &mut out2)
             };
             assert_eq!(st, ASPERITY_OK, "{}", last_message());
             assert_eq!(out, out2);
@@ -99,23 +111,36 @@ fn steps_equal_the_rust_api_bit_for_bit() {
         let (mut cd, mut rd) = (vec![0.0; pts], vec![0.0; pts]);
         for _ in 0..3 {
             let st = unsafe {
-                asperity_dynamic_friction_step_block(
+                asperity_friction_step_block_in_place(
                     h,
                     pts,
                     normal.as_ptr(),
+                    null(),
                     slip.as_ptr(),
                     1e-3,
                     cs.as_mut_ptr(),
                     cf.as_mut_ptr(),
                     cd.as_mut_ptr(),
+                    work,
                 )
             };
             assert_eq!(st, ASPERITY_OK, "{}", last_message());
-            rust.step_block(&normal, &slip, 1e-3, &mut rs, &mut rf, Some(&mut rd))
-                .unwrap();
+            let block = FrictionBlock {
+                normal_force: &normal,
+                area: None,
+                slip: &slip,
+                dt: 1e-3,
+                states: BlockStates::InPlace(&mut rs),
+                tangential_force: &mut rf,
+                dissipation: Some(&mut rd),
+            };
+            rust.step_block(block, &mut rust.work()).unwrap();
             assert_eq!((&cs, &cf, &cd), (&rs, &rf, &rd));
         }
-        unsafe { asperity_dynamic_friction_free(h) };
+        unsafe {
+            asperity_friction_work_free(work);
+            asperity_friction_free(h);
+        }
     }
 }
 
@@ -123,34 +148,34 @@ fn steps_equal_the_rust_api_bit_for_bit() {
 fn errors_name_the_argument_and_leave_outputs_untouched() {
     let mut p = params();
     p.sigma1 = 1e6;
-    let mut h = 1usize as *mut AsperityDynamicFriction;
+    let mut h = 1usize as *mut AsperityFriction;
     expect_error(
-        unsafe { asperity_dynamic_lugre_new(&p, &mut h) },
+        unsafe { asperity_friction_lugre_new(&p, &mut h) },
         ASPERITY_ERR_INVALID_ARGUMENT,
         "params.sigma1",
     );
     assert!(h.is_null());
     expect_error(
-        unsafe { asperity_dynamic_lugre_new(null(), &mut h) },
+        unsafe { asperity_friction_lugre_new(null(), &mut h) },
         ASPERITY_ERR_NULL_POINTER,
         "params",
     );
     expect_error(
-        unsafe { asperity_dynamic_maxwell_slip_new(K.as_ptr(), MU.as_ptr(), 0, 0.0, &mut h) },
+        unsafe { asperity_friction_maxwell_slip_new(K.as_ptr(), MU.as_ptr(), 0, 0.0, &mut h) },
         ASPERITY_ERR_INVALID_ARGUMENT,
         "capacity.len()",
     );
     expect_error(
-        unsafe { asperity_dynamic_maxwell_slip_new(null(), MU.as_ptr(), 3, 0.0, &mut h) },
+        unsafe { asperity_friction_maxwell_slip_new(null(), MU.as_ptr(), 3, 0.0, &mut h) },
         ASPERITY_ERR_NULL_POINTER,
         "stiffness",
     );
     for (h, _) in models() {
         let mut n = 0usize;
-        unsafe { asperity_dynamic_friction_state_size(h, &mut n) };
+        unsafe { asperity_friction_state_size(h, &mut n) };
         let old = vec![0.0; 2 * n];
         let mut new = vec![7.0; n];
-        let mut out = DynamicResponse {
+        let mut out = FrictionResponse {
             cof: 9.0,
             ..Default::default()
         };
@@ -158,7 +183,14 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
         bad.dt = -1.0;
         expect_error(
             unsafe {
-                asperity_dynamic_friction_step(h, &bad, old.as_ptr(), new.as_mut_ptr(), &mut out)
+                asperity_friction_step(
+                    h,
+                    &bad,
+                    old.as_ptr(),
+                    new.as_mut_ptr(),
+                    null_mut(),
+                    &mut out,
+                )
             },
             ASPERITY_ERR_INVALID_ARGUMENT,
             "dt",
@@ -168,13 +200,20 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
         let mut both = vec![0.0; 2 * n];
         let p = both.as_mut_ptr();
         expect_error(
-            unsafe { asperity_dynamic_friction_step(h, &increment(1), p, p.add(1), &mut out) },
+            unsafe { asperity_friction_step(h, &increment(1), p, p.add(1), null_mut(), &mut out) },
             ASPERITY_ERR_INVALID_ARGUMENT,
             "new_state",
         );
         expect_error(
             unsafe {
-                asperity_dynamic_friction_step(h, null(), old.as_ptr(), new.as_mut_ptr(), &mut out)
+                asperity_friction_step(
+                    h,
+                    null(),
+                    old.as_ptr(),
+                    new.as_mut_ptr(),
+                    null_mut(),
+                    &mut out,
+                )
             },
             ASPERITY_ERR_NULL_POINTER,
             "increment",
@@ -186,14 +225,16 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
         let mut forces = [0.0; 6];
         expect_error(
             unsafe {
-                asperity_dynamic_friction_step_block(
+                asperity_friction_step_block_in_place(
                     h,
                     3,
                     normal.as_ptr(),
+                    null(),
                     slip.as_ptr(),
                     1e-3,
                     states.as_mut_ptr(),
                     forces.as_mut_ptr(),
+                    null_mut(),
                     null_mut(),
                 )
             },
@@ -202,7 +243,7 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
         );
         assert!(last_message().contains("normal_force"));
         assert!(forces[..4].iter().all(|&f| f != 0.0) && forces[4..] == [0.0, 0.0]);
-        unsafe { asperity_dynamic_friction_free(h) };
+        unsafe { asperity_friction_free(h) };
     }
 }
 
@@ -210,24 +251,24 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
 /// states: every response and state equal bit for bit (compared through
 /// `Debug`, so -0.0 and NaN count). Returns the state size.
 fn in_place_equals_rust(
-    h: *mut AsperityDynamicFriction,
-    rust: &dyn DynamicFriction,
-    incs: impl Iterator<Item = DynamicIncrement>,
+    h: *mut AsperityFriction,
+    rust: &dyn FrictionLaw,
+    incs: impl Iterator<Item = FrictionIncrement>,
 ) -> usize {
     let mut n = 0usize;
     assert_eq!(
-        unsafe { asperity_dynamic_friction_state_size(h, &mut n) },
+        unsafe { asperity_friction_state_size(h, &mut n) },
         ASPERITY_OK
     );
     assert_eq!(n, rust.state_len());
     let (mut c, mut r) = (vec![0.0; n], vec![0.0; n]);
     for (k, inc) in incs.enumerate() {
-        let mut out = DynamicResponse::default();
+        let mut out = FrictionResponse::default();
         let st = unsafe {
-            asperity_dynamic_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), &mut out)
+            asperity_friction_step(h, &inc, c.as_ptr(), c.as_mut_ptr(), null_mut(), &mut out)
         };
         assert_eq!(st, ASPERITY_OK, "increment {k}: {}", last_message());
-        let want = rust.step_in_place(&mut r, &inc).unwrap();
+        let want = rust.step_in_place(&mut r, &inc, &mut rust.work()).unwrap();
         assert_eq!(format!("{out:?}"), format!("{want:?}"), "increment {k}");
         assert_eq!(c, r, "increment {k}");
     }
@@ -240,39 +281,41 @@ fn prandtl_tomlinson_through_c_equals_rust() {
     let (u0, a, k, m, g) = (2e-21, 3e-10, 1.0, 1e-12, 1e-6);
     let mut h = null_mut();
     assert_eq!(
-        unsafe { asperity_dynamic_prandtl_tomlinson_new(u0, a, k, m, g, 1e-9, &mut h) },
+        unsafe { asperity_friction_prandtl_tomlinson_new(u0, a, k, m, g, 1e-9, &mut h) },
         ASPERITY_OK
     );
     let rust = PrandtlTomlinson::new(u0, a, k, m, g, 1e-9).unwrap();
-    let incs = (0..50).map(|k| DynamicIncrement {
+    let incs = (0..50).map(|k| FrictionIncrement {
         normal_force: 1.0,
         slip: [1e-11 * (1.0 + (0.3 * k as f64).sin()), 0.0],
         dt: 1e-6,
         tangents: k % 4,
-        reserved: 0,
+        ..Default::default()
     });
     assert_eq!(in_place_equals_rust(h, &rust, incs), 5);
     let mut c = vec![0.0; 5];
-    let mut out = DynamicResponse::default();
-    let bad = DynamicIncrement {
+    let mut out = FrictionResponse::default();
+    let bad = FrictionIncrement {
         normal_force: 1.0,
         slip: [1e-11, 1e-11],
         dt: 1e-6,
         ..Default::default()
     };
     expect_error(
-        unsafe { asperity_dynamic_friction_step(h, &bad, c.as_ptr(), c.as_mut_ptr(), &mut out) },
+        unsafe {
+            asperity_friction_step(h, &bad, c.as_ptr(), c.as_mut_ptr(), null_mut(), &mut out)
+        },
         ASPERITY_ERR_INVALID_ARGUMENT,
         "slip",
     );
-    let mut bad_h = 1usize as *mut AsperityDynamicFriction;
+    let mut bad_h = 1usize as *mut AsperityFriction;
     expect_error(
-        unsafe { asperity_dynamic_prandtl_tomlinson_new(u0, a, k, 0.0, g, 1e-9, &mut bad_h) },
+        unsafe { asperity_friction_prandtl_tomlinson_new(u0, a, k, 0.0, g, 1e-9, &mut bad_h) },
         ASPERITY_ERR_INVALID_ARGUMENT,
         "mass",
     );
     assert!(bad_h.is_null());
-    unsafe { asperity_dynamic_friction_free(h) };
+    unsafe { asperity_friction_free(h) };
 }
 
 #[test]
@@ -302,36 +345,36 @@ fn two_spring_and_burridge_knopoff_through_c_equal_rust() {
     };
     let (mut ht, mut hb) = (null_mut(), null_mut());
     assert_eq!(
-        unsafe { asperity_dynamic_prandtl_tomlinson_two_spring_new(&t, &mut ht) },
+        unsafe { asperity_friction_prandtl_tomlinson_two_spring_new(&t, &mut ht) },
         ASPERITY_OK
     );
     assert_eq!(
-        unsafe { asperity_dynamic_burridge_knopoff_new(&b, &mut hb) },
+        unsafe { asperity_friction_burridge_knopoff_new(&b, &mut hb) },
         ASPERITY_OK
     );
     let rust_t =
         PrandtlTomlinson::two_spring(2e-21, 3e-10, 2.0, 1e-12, 1e-6, 3.0, 2e-12, 2e-6, 1e-9)
             .unwrap();
     let rust_b = BurridgeKnopoff::new(6, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-9).unwrap();
-    let cases: [(_, &dyn DynamicFriction, usize, f64); 2] =
+    let cases: [(_, &dyn FrictionLaw, usize, f64); 2] =
         [(ht, &rust_t, 7, 1e-11), (hb, &rust_b, 15, 2e-5)];
     for (h, rust, len, scale) in cases {
-        let incs = (0..40).map(|k| DynamicIncrement {
+        let incs = (0..40).map(|k| FrictionIncrement {
             normal_force: 6.0,
             slip: [scale * (1.0 + (0.3 * k as f64).sin()), 0.0],
             dt: 1e-6,
             tangents: k % 4,
-            reserved: 0,
+            ..Default::default()
         });
         assert_eq!(in_place_equals_rust(h, rust, incs), len);
-        unsafe { asperity_dynamic_friction_free(h) };
+        unsafe { asperity_friction_free(h) };
     }
     // Errors name the field of the parameters, the handle is NULL.
-    let mut bad_h = 1usize as *mut AsperityDynamicFriction;
+    let mut bad_h = 1usize as *mut AsperityFriction;
     let mut bad = t;
     bad.cantilever_mass = -1.0;
     expect_error(
-        unsafe { asperity_dynamic_prandtl_tomlinson_two_spring_new(&bad, &mut bad_h) },
+        unsafe { asperity_friction_prandtl_tomlinson_two_spring_new(&bad, &mut bad_h) },
         ASPERITY_ERR_INVALID_ARGUMENT,
         "`params.cantilever_mass`",
     );
@@ -350,21 +393,21 @@ fn two_spring_and_burridge_knopoff_through_c_equal_rust() {
     ] {
         let mut bad = b;
         edit(&mut bad);
-        bad_h = 1usize as *mut AsperityDynamicFriction;
+        bad_h = 1usize as *mut AsperityFriction;
         expect_error(
-            unsafe { asperity_dynamic_burridge_knopoff_new(&bad, &mut bad_h) },
+            unsafe { asperity_friction_burridge_knopoff_new(&bad, &mut bad_h) },
             ASPERITY_ERR_INVALID_ARGUMENT,
             field,
         );
         assert!(bad_h.is_null());
     }
     expect_error(
-        unsafe { asperity_dynamic_burridge_knopoff_new(null(), &mut bad_h) },
+        unsafe { asperity_friction_burridge_knopoff_new(null(), &mut bad_h) },
         ASPERITY_ERR_NULL_POINTER,
         "params",
     );
     expect_error(
-        unsafe { asperity_dynamic_prandtl_tomlinson_two_spring_new(&t, null_mut()) },
+        unsafe { asperity_friction_prandtl_tomlinson_two_spring_new(&t, null_mut()) },
         ASPERITY_ERR_NULL_POINTER,
         "out",
     );
@@ -375,26 +418,28 @@ fn two_spring_and_burridge_knopoff_through_c_equal_rust() {
     stiff.coupling_stiffness = 1e9;
     let mut h = null_mut();
     assert_eq!(
-        unsafe { asperity_dynamic_burridge_knopoff_new(&stiff, &mut h) },
+        unsafe { asperity_friction_burridge_knopoff_new(&stiff, &mut h) },
         ASPERITY_OK
     );
     let mut s = vec![0.0; 2 + 2 * 256 + 1];
     s[2 + 2 * 100] = -1e-6;
     let before = s.clone();
-    let inc = DynamicIncrement {
+    let inc = FrictionIncrement {
         normal_force: 256.0,
         slip: [0.1, 0.0],
         dt: 10.0,
         ..Default::default()
     };
-    let mut out = DynamicResponse::default();
+    let mut out = FrictionResponse::default();
     expect_error(
-        unsafe { asperity_dynamic_friction_step(h, &inc, s.as_ptr(), s.as_mut_ptr(), &mut out) },
+        unsafe {
+            asperity_friction_step(h, &inc, s.as_ptr(), s.as_mut_ptr(), null_mut(), &mut out)
+        },
         ASPERITY_ERR_NOT_CONVERGED,
         "dt",
     );
     assert_eq!(s, before);
-    unsafe { asperity_dynamic_friction_free(h) };
+    unsafe { asperity_friction_free(h) };
 }
 
 /// The bristle model from C equals the Rust model bit for bit; a length
@@ -405,11 +450,11 @@ fn bristles_from_c_equal_rust() {
     let (k, d) = ([1e5, 2e5, 5e4], [1e-6, 2.5e-6, 4e-6]);
     let mut h = null_mut();
     assert_eq!(
-        unsafe { asperity_dynamic_bristles_new(k.as_ptr(), d.as_ptr(), 3, 0.1, &mut h) },
+        unsafe { asperity_friction_bristles_new(k.as_ptr(), d.as_ptr(), 3, 0.1, &mut h) },
         ASPERITY_OK
     );
     let rust = Bristles::new(&k, &d, 0.1).unwrap();
-    let incs = (0..200).map(|i| DynamicIncrement {
+    let incs = (0..200).map(|i| FrictionIncrement {
         normal_force: 1.0 + 0.01 * i as f64,
         slip: [1e-7 * ((i as f64) * 0.3).sin(), 0.0],
         dt: 1e-3,
@@ -417,17 +462,95 @@ fn bristles_from_c_equal_rust() {
         ..Default::default()
     });
     assert_eq!(in_place_equals_rust(h, &rust, incs), 5);
-    unsafe { asperity_dynamic_friction_free(h) };
+    unsafe { asperity_friction_free(h) };
     let bad = [1e-6, -1.0, 4e-6];
     expect_error(
-        unsafe { asperity_dynamic_bristles_new(k.as_ptr(), bad.as_ptr(), 3, 0.0, &mut h) },
+        unsafe { asperity_friction_bristles_new(k.as_ptr(), bad.as_ptr(), 3, 0.0, &mut h) },
         ASPERITY_ERR_INVALID_ARGUMENT,
         "break_deflection",
     );
     assert!(h.is_null());
     expect_error(
-        unsafe { asperity_dynamic_bristles_new(k.as_ptr(), d.as_ptr(), 0, 0.0, &mut h) },
+        unsafe { asperity_friction_bristles_new(k.as_ptr(), d.as_ptr(), 0, 0.0, &mut h) },
         ASPERITY_ERR_INVALID_ARGUMENT,
         "n",
     );
+}
+
+/// The C handle of the dynamic model of `case` (the fixtures of
+/// `tests/common/laws.rs`, built through C).
+fn c_model(case: &laws::Case) -> *mut AsperityFriction {
+    let mut h = null_mut();
+    let st = unsafe {
+        match case.name {
+            "lugre" => asperity_friction_lugre_new(&params(), &mut h),
+            "maxwell_slip" => asperity_friction_maxwell_slip_new(
+                laws::MAXWELL_K.as_ptr(),
+                laws::MAXWELL_MU.as_ptr(),
+                3,
+                0.1,
+                &mut h,
+            ),
+            "bristles" => asperity_friction_bristles_new(
+                laws::BRISTLE_K.as_ptr(),
+                laws::BRISTLE_BREAK.as_ptr(),
+                3,
+                0.1,
+                &mut h,
+            ),
+            "prandtl_tomlinson" => asperity_friction_prandtl_tomlinson_new(
+                2e-21, 3e-10, 1.0, 1e-12, 1e-6, 1e-9, &mut h,
+            ),
+            "prandtl_tomlinson_two_spring" => {
+                let t = AsperityPrandtlTomlinsonTwoSpringParams {
+                    amplitude: 2e-21,
+                    period: 3e-10,
+                    tip_stiffness: 2.0,
+                    tip_mass: 1e-12,
+                    tip_damping: 1e-6,
+                    cantilever_stiffness: 3.0,
+                    cantilever_mass: 2e-12,
+                    cantilever_damping: 2e-6,
+                    tolerance: 1e-9,
+                };
+                asperity_friction_prandtl_tomlinson_two_spring_new(&t, &mut h)
+            }
+            "burridge_knopoff" => {
+                let b = AsperityBurridgeKnopoffParams {
+                    blocks: 6,
+                    mass: 1e-5,
+                    coupling_stiffness: 1e4,
+                    pulling_stiffness: 1e3,
+                    mu_static: 0.5,
+                    mu_kinetic: 0.3,
+                    weakening_velocity: 0.05,
+                    damping: 0.01,
+                    tolerance: 1e-9,
+                };
+                asperity_friction_burridge_knopoff_new(&b, &mut h)
+            }
+            other => panic!("no C constructor for {other}"),
+        }
+    };
+    assert_eq!(st, ASPERITY_OK, "{}: {}", case.name, last_message());
+    h
+}
+
+/// The contract of the one friction handle (issue 30 §1) for each of the
+/// five models (Prandtl–Tomlinson with one and two springs): old == new,
+/// NULL work, `asperity_friction_step_in_place`, the blocks separate, old
+/// == new and in place, a partially overlapping block (`new_states`) and a
+/// point count whose states overflow `size_t` (`n`), bit for bit against
+/// the Rust model.
+#[test]
+fn the_friction_handle_keeps_the_contract_for_every_model() {
+    let cases = laws::dynamic_cases();
+    assert_eq!(cases.len(), 6);
+    for case in &cases {
+        let h = c_model(case);
+        unsafe {
+            laws::c_contract(h, case, 16);
+            asperity_friction_free(h);
+        }
+    }
 }

@@ -1,16 +1,23 @@
-//! The C ABI of the slider step, called from Rust: a slider built from scene
-//! JSON (with `base_dir` for the files a scene names), sizes, equality of
-//! the scalar and block steps with the Rust API (bit for bit, in place and
-//! separate), NULL pointers, bad input (status and the message of
+//! The C ABI of the slider as the friction law of a patch, called from
+//! Rust: a slider built from scene JSON (with `base_dir` for the files a
+//! scene names) or from structs, its friction handle
+//! (`asperity_friction_from_slider`) and work, sizes, equality of the scalar
+//! and block steps with the Rust API (bit for bit, in place and separate,
+//! with and without a work), the handle's contract (overlapping and
+//! overflowing blocks), NULL pointers, bad input (status and the message of
 //! `asperity_last_error_message`), and outputs untouched on failure.
 
 mod common;
+#[path = "common/laws.rs"]
+mod laws;
 use common::c_errors::{expect_error, last_message};
 
+use asperity::ffi::dynamic::AsperityLugreParams;
+use asperity::ffi::friction_law::*;
 use asperity::ffi::slider::*;
 use asperity::ffi::*;
 use asperity::friction::{
-    Loading, Slider, SliderIncrement, SliderResponse, SliderStates, SliderTangents,
+    BlockStates, FrictionBlock, FrictionIncrement, FrictionLaw, FrictionResponse, Loading, Slider,
 };
 use asperity::scene::Scene;
 use std::ffi::CString;
@@ -25,18 +32,33 @@ fn scene_text() -> String {
     std::fs::read_to_string(scene_path()).unwrap()
 }
 
+/// A slider, its friction law and a work for the law.
 struct Handles {
     slider: *mut AsperitySlider,
-    work: *mut AsperitySliderWork,
+    law: *mut AsperityFriction,
+    work: *mut AsperityFrictionWork,
 }
 
 impl Drop for Handles {
     fn drop(&mut self) {
         unsafe {
-            asperity_slider_work_free(self.work);
+            asperity_friction_work_free(self.work);
+            asperity_friction_free(self.law);
             asperity_slider_free(self.slider);
         }
     }
+}
+
+/// The friction law of `slider` and a work for it.
+fn law_of(slider: *const AsperitySlider) -> (*mut AsperityFriction, *mut AsperityFrictionWork) {
+    let mut law = null_mut();
+    let st = unsafe { asperity_friction_from_slider(slider, &mut law) };
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    assert!(!law.is_null());
+    let mut work = null_mut();
+    let st = unsafe { asperity_friction_work_new(law, &mut work) };
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    (law, work)
 }
 
 fn from_json(text: &str, base: Option<&Path>) -> (i32, *mut AsperitySlider) {
@@ -57,17 +79,15 @@ fn handles() -> Handles {
     let (st, slider) = from_json(&scene_text(), None);
     assert_eq!(st, ASPERITY_OK, "{}", last_message());
     assert!(!slider.is_null());
-    let mut work = null_mut();
-    let st = unsafe { asperity_slider_work_new(slider, &mut work) };
-    assert_eq!(st, ASPERITY_OK, "{}", last_message());
-    Handles { slider, work }
+    let (law, work) = law_of(slider);
+    Handles { slider, law, work }
 }
 
 fn rust_slider() -> Slider {
     Scene::from_file(scene_path()).unwrap().build().unwrap()
 }
 
-fn same(a: &SliderResponse, b: &SliderResponse) -> bool {
+fn same(a: &FrictionResponse, b: &FrictionResponse) -> bool {
     format!("{a:?}") == format!("{b:?}")
 }
 
@@ -81,10 +101,10 @@ fn sizes_and_info_match_the_rust_slider() {
     let rs = rust_slider();
     let mut n = 0usize;
     assert_eq!(
-        unsafe { asperity_slider_state_size(h.slider, &mut n) },
+        unsafe { asperity_friction_state_size(h.law, &mut n) },
         ASPERITY_OK
     );
-    assert_eq!(n, 8 + 2 * 90);
+    assert_eq!(n, 9 + 2 * 90);
     assert_eq!(n, rs.state_len());
     let mut info = AsperitySliderInfo::default();
     assert_eq!(
@@ -103,6 +123,23 @@ fn sizes_and_info_match_the_rust_slider() {
     assert_eq!(info.scene_loading, 0.18);
     assert_eq!(info.periodic, 0);
     assert_eq!(info.counter_dx, 1.5e-6);
+    // The layout of the state.
+    assert_eq!(
+        (
+            ASPERITY_SLIDER_STATE_FLAG,
+            ASPERITY_SLIDER_STATE_POSITION,
+            ASPERITY_SLIDER_STATE_ROD_POSITION,
+            ASPERITY_SLIDER_STATE_MECHANISMS,
+            ASPERITY_SLIDER_STATE_HEIGHTS
+        ),
+        (
+            Slider::STATE_FLAG,
+            Slider::STATE_POSITION,
+            Slider::STATE_ROD_POSITION,
+            Slider::STATE_MECHANISMS,
+            Slider::STATE_HEIGHTS
+        )
+    );
 }
 
 #[test]
@@ -116,63 +153,171 @@ fn scalar_step_equals_the_rust_api_bit_for_bit() {
     let mut r_state = vec![0.0; m];
     for k in 0..12 {
         let th = 0.4 * k as f64;
-        let control = [
-            ASPERITY_SLIDER_CONTROL_SCENE,
-            ASPERITY_SLIDER_CONTROL_LOAD,
-            ASPERITY_SLIDER_CONTROL_GAP,
-        ][k % 3];
-        let inc = AsperitySliderIncrement {
+        let inc = FrictionIncrement {
             normal_force: 0.05 + 0.01 * k as f64,
-            gap: -2e-7,
             slip: [1.5e-6 * th.cos(), 1.5e-6 * th.sin()],
             dt: 1e-4,
-            control,
-            tangents: (k % 4) as i32,
+            tangents: k % 4,
+            ..Default::default()
         };
-        let rinc = SliderIncrement {
-            loading: match control {
-                ASPERITY_SLIDER_CONTROL_SCENE => None,
-                ASPERITY_SLIDER_CONTROL_LOAD => Some(Loading::FixedLoad {
-                    load: inc.normal_force,
-                }),
-                _ => Some(Loading::FixedGap { position: inc.gap }),
-            },
-            slip: inc.slip,
-            dt: inc.dt,
-            tangents: SliderTangents::from_bits(inc.tangents).unwrap(),
-        };
-        let mut out = SliderResponse::default();
+        let mut out = FrictionResponse::default();
         let st = unsafe {
-            asperity_slider_step(
-                h.slider,
-                h.work,
+            asperity_friction_step(
+                h.law,
                 &inc,
                 c_state.as_ptr(),
                 c_new.as_mut_ptr(),
+                h.work,
                 &mut out,
             )
         };
         assert_eq!(st, ASPERITY_OK, "{}", last_message());
-        let want = rs.step_flat_in_place(&mut r_state, &rinc, &mut w).unwrap();
+        let want = rs.step_in_place(&mut r_state, &inc, &mut w).unwrap();
         assert!(same(&out, &want), "{k}: {out:?}\n{want:?}");
         assert_eq!(bits(&c_new), bits(&r_state), "{k}");
         assert_eq!(out.tangents, inc.tangents);
         assert!(out.dissipated >= 0.0);
-        // In place gives the same.
-        let mut out2 = SliderResponse::default();
+        // NULL work: a fresh one inside the call, the same result.
+        let mut out3 = FrictionResponse::default();
+        let mut c_new3 = vec![0.0; m];
         let st = unsafe {
-            asperity_slider_step(
-                h.slider,
-                h.work,
+            asperity_friction_step(
+                h.law,
+                &inc,
+                c_state.as_ptr(),
+                c_new3.as_mut_ptr(),
+                null_mut(),
+                &mut out3,
+            )
+        };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        assert!(same(&out, &out3));
+        assert_eq!(bits(&c_new3), bits(&c_new));
+        // In place gives the same.
+        let mut out2 = FrictionResponse::default();
+        let st = unsafe {
+            asperity_friction_step(
+                h.law,
                 &inc,
                 c_state.as_ptr(),
                 c_state.as_mut_ptr(),
+                h.work,
                 &mut out2,
             )
         };
         assert_eq!(st, ASPERITY_OK, "{}", last_message());
         assert!(same(&out, &out2));
         assert_eq!(bits(&c_state), bits(&c_new));
+    }
+}
+
+/// The contract of the one friction handle (issue 30 §1) for the slider:
+/// old == new, NULL work, `asperity_friction_step_in_place`, the blocks
+/// separate, old == new and in place, a partially overlapping block
+/// (`new_states`) and a point count whose states overflow `size_t` (`n`),
+/// bit for bit against the Rust slider.
+#[test]
+fn the_friction_handle_keeps_the_contract() {
+    let h = handles();
+    let case = laws::slider_case();
+    unsafe { laws::c_contract(h.law, &case, 10) };
+}
+
+/// `asperity_slider_record` gives the record of the work's last step, as
+/// the Rust `SliderWork::record` does, whatever the form of the step.
+#[test]
+fn record_of_the_last_step_equals_the_rust_record() {
+    let h = handles();
+    let rs = rust_slider();
+    let m = rs.state_len();
+    let mut w = rs.work();
+    let (mut c_state, mut r_state) = (vec![0.0; m], vec![0.0; m]);
+    c_state[ASPERITY_SLIDER_STATE_POSITION] = 6e-6;
+    r_state[Slider::STATE_POSITION] = 6e-6;
+    for k in 0..6 {
+        let inc = FrictionIncrement {
+            normal_force: 0.04 + 0.02 * k as f64,
+            slip: if k == 3 { [0.0; 2] } else { [1.2e-6, 0.4e-6] },
+            dt: 1e-4,
+            tangents: k % 4,
+            ..Default::default()
+        };
+        let mut out = FrictionResponse::default();
+        let st = unsafe {
+            asperity_friction_step_in_place(h.law, &inc, c_state.as_mut_ptr(), h.work, &mut out)
+        };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        rs.step_in_place(&mut r_state, &inc, &mut w).unwrap();
+        let want = w.get::<asperity::friction::SliderWork>().unwrap();
+        let r = want.record();
+        let mut rec = AsperitySliderRecord {
+            reserved: 7,
+            ..Default::default()
+        };
+        let st = unsafe { asperity_slider_record(h.work, &mut rec) };
+        assert_eq!(st, ASPERITY_OK, "{}", last_message());
+        assert_eq!(
+            rec,
+            AsperitySliderRecord {
+                position: r.position,
+                rod_position: r.rod_position,
+                adhesion_area_share: r.adhesion_area_share,
+                nano_contacts: r.nano_contacts as u64,
+                adhesive_contacts: r.adhesive_contacts as u64,
+                rods_in_contact: r.rods_in_contact as u64,
+                yielded_rods: r.yielded_rods as u64,
+                seated: (k == 0) as i32,
+                reserved: 0,
+            },
+            "{k}"
+        );
+        assert_eq!(want.seated(), k == 0);
+        assert_eq!(rec.position, c_state[ASPERITY_SLIDER_STATE_POSITION]);
+        assert_eq!(
+            rec.rod_position,
+            c_state[ASPERITY_SLIDER_STATE_ROD_POSITION]
+        );
+    }
+    // A work that belongs to no slider, NULL pointers: named.
+    let mut lugre = null_mut();
+    let p = AsperityLugreParams {
+        mu_coulomb: 0.3,
+        mu_static: 0.5,
+        stribeck_velocity: 1e-3,
+        stribeck_exponent: 2.0,
+        sigma0: 1e5,
+        sigma1: 1000.0,
+        damping_velocity: 1e-3,
+        sigma2: 0.4,
+    };
+    assert_eq!(
+        unsafe { asperity::ffi::dynamic::asperity_friction_lugre_new(&p, &mut lugre) },
+        ASPERITY_OK
+    );
+    let mut other = null_mut();
+    assert_eq!(
+        unsafe { asperity_friction_work_new(lugre, &mut other) },
+        ASPERITY_OK
+    );
+    let mut rec = AsperitySliderRecord::default();
+    expect_error(
+        unsafe { asperity_slider_record(other, &mut rec) },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`work`",
+    );
+    expect_error(
+        unsafe { asperity_slider_record(null(), &mut rec) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`work`",
+    );
+    expect_error(
+        unsafe { asperity_slider_record(h.work, null_mut()) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`out`",
+    );
+    unsafe {
+        asperity_friction_work_free(other);
+        asperity_friction_free(lugre);
     }
 }
 
@@ -194,45 +339,47 @@ fn block_step_equals_the_rust_block_and_steps_in_place() {
         let (mut cf, mut cd, mut rf, mut rd) = ([0.0; 6], [0.0; 3], [0.0; 6], [0.0; 3]);
         let mut cf2 = [0.0; 6];
         let st = unsafe {
-            asperity_slider_step_block(
-                h.slider,
-                h.work,
+            asperity_friction_step_block(
+                h.law,
                 n,
                 normal.as_ptr(),
+                null(),
                 slip.as_ptr(),
                 1e-4,
                 c_states.as_ptr(),
                 c_sep.as_mut_ptr(),
                 cf2.as_mut_ptr(),
                 null_mut(),
+                h.work,
             )
         };
         assert_eq!(st, ASPERITY_OK, "{}", last_message());
         let st = unsafe {
-            asperity_slider_step_block(
-                h.slider,
-                h.work,
+            asperity_friction_step_block(
+                h.law,
                 n,
                 normal.as_ptr(),
+                null(),
                 slip.as_ptr(),
                 1e-4,
                 c_states.as_ptr(),
                 c_states.as_mut_ptr(),
                 cf.as_mut_ptr(),
                 cd.as_mut_ptr(),
+                h.work,
             )
         };
         assert_eq!(st, ASPERITY_OK, "{}", last_message());
-        rs.step_flat_block(
-            &normal,
-            &slip,
-            1e-4,
-            SliderStates::InPlace(&mut r_states),
-            &mut rf,
-            Some(&mut rd),
-            &mut w,
-        )
-        .unwrap();
+        let block = FrictionBlock {
+            normal_force: &normal,
+            area: None,
+            slip: &slip,
+            dt: 1e-4,
+            states: BlockStates::InPlace(&mut r_states),
+            tangential_force: &mut rf,
+            dissipation: Some(&mut rd),
+        };
+        rs.step_block(block, &mut w).unwrap();
         assert_eq!(bits(&cf), bits(&rf));
         assert_eq!(bits(&cf2), bits(&rf));
         assert_eq!(bits(&cd), bits(&rd));
@@ -241,10 +388,10 @@ fn block_step_equals_the_rust_block_and_steps_in_place() {
     }
     // n = 0 does nothing, even with NULL arrays.
     let st = unsafe {
-        asperity_slider_step_block(
-            h.slider,
-            h.work,
+        asperity_friction_step_block(
+            h.law,
             0,
+            null(),
             null(),
             null(),
             0.0,
@@ -252,6 +399,7 @@ fn block_step_equals_the_rust_block_and_steps_in_place() {
             null_mut(),
             null_mut(),
             null_mut(),
+            h.work,
         )
     };
     assert_eq!(st, ASPERITY_OK);
@@ -263,31 +411,26 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
     let m = rust_slider().state_len();
     let old = vec![0.0; m];
     let mut new = vec![-3.0; m];
-    let mut out = SliderResponse {
+    let mut out = FrictionResponse {
         cof: -5.0,
-        ..SliderResponse::default()
+        ..FrictionResponse::default()
     };
-    let inc = AsperitySliderIncrement {
+    let inc = FrictionIncrement {
         slip: [1e-6, 0.0],
-        ..AsperitySliderIncrement::default()
+        ..FrictionIncrement::default()
     };
-    let step = |inc: &AsperitySliderIncrement,
+    let step = |inc: &FrictionIncrement,
                 old: *const f64,
                 new: *mut f64,
-                out: *mut SliderResponse| unsafe {
-        asperity_slider_step(h.slider, h.work, inc, old, new, out)
+                out: *mut FrictionResponse| unsafe {
+        asperity_friction_step(h.law, inc, old, new, h.work, out)
     };
     // NULL pointers.
     let p_new = new.as_mut_ptr();
     expect_error(
-        unsafe { asperity_slider_step(null(), h.work, &inc, old.as_ptr(), p_new, &mut out) },
+        unsafe { asperity_friction_step(null(), &inc, old.as_ptr(), p_new, h.work, &mut out) },
         ASPERITY_ERR_NULL_POINTER,
-        "`slider`",
-    );
-    expect_error(
-        unsafe { asperity_slider_step(h.slider, null_mut(), &inc, old.as_ptr(), p_new, &mut out) },
-        ASPERITY_ERR_NULL_POINTER,
-        "`work`",
+        "`law`",
     );
     expect_error(
         step(&inc, null(), p_new, &mut out),
@@ -305,22 +448,22 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
         "`out`",
     );
     expect_error(
-        unsafe { asperity_slider_step(h.slider, h.work, null(), old.as_ptr(), p_new, &mut out) },
+        unsafe { asperity_friction_step(h.law, null(), old.as_ptr(), p_new, h.work, &mut out) },
         ASPERITY_ERR_NULL_POINTER,
         "`increment`",
     );
+    expect_error(
+        unsafe { asperity_friction_step_in_place(h.law, &inc, null_mut(), h.work, &mut out) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`state`",
+    );
     // Selectors and values.
-    let bad = |f: &dyn Fn(&mut AsperitySliderIncrement)| {
+    let bad = |f: &dyn Fn(&mut FrictionIncrement)| {
         let mut i = inc;
         f(&mut i);
         i
     };
     let p_new = new.as_mut_ptr();
-    expect_error(
-        step(&bad(&|i| i.control = 7), old.as_ptr(), p_new, &mut out),
-        ASPERITY_ERR_INVALID_ARGUMENT,
-        "`control`",
-    );
     expect_error(
         step(&bad(&|i| i.tangents = 4), old.as_ptr(), p_new, &mut out),
         ASPERITY_ERR_INVALID_ARGUMENT,
@@ -342,11 +485,13 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
         "`dt`",
     );
     expect_error(
+        step(&bad(&|i| i.area = f64::NAN), old.as_ptr(), p_new, &mut out),
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`area`",
+    );
+    expect_error(
         step(
-            &bad(&|i| {
-                i.control = ASPERITY_SLIDER_CONTROL_LOAD;
-                i.normal_force = 1e3;
-            }),
+            &bad(&|i| i.normal_force = 1e3),
             old.as_ptr(),
             p_new,
             &mut out,
@@ -354,25 +499,19 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
         ASPERITY_ERR_OUT_OF_DOMAIN,
         "`normal_force`",
     );
-    expect_error(
-        step(
-            &bad(&|i| {
-                i.control = ASPERITY_SLIDER_CONTROL_GAP;
-                i.gap = f64::INFINITY;
-            }),
-            old.as_ptr(),
-            p_new,
-            &mut out,
-        ),
-        ASPERITY_ERR_INVALID_ARGUMENT,
-        "`gap`",
-    );
     let mut flagged = old.clone();
     flagged[ASPERITY_SLIDER_STATE_FLAG] = 3.0;
     expect_error(
         step(&inc, flagged.as_ptr(), p_new, &mut out),
         ASPERITY_ERR_INVALID_ARGUMENT,
-        "`old_state.flag`",
+        "`old.flag`",
+    );
+    expect_error(
+        unsafe {
+            asperity_friction_step_in_place(h.law, &inc, flagged.as_mut_ptr(), h.work, &mut out)
+        },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`state.flag`",
     );
     // Past the end of the counter-surface.
     expect_error(
@@ -403,17 +542,18 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
     let mut states = vec![0.0; 3 * m];
     let mut f = [7.0; 6];
     let st = unsafe {
-        asperity_slider_step_block(
-            h.slider,
-            h.work,
+        asperity_friction_step_block(
+            h.law,
             3,
             normal.as_ptr(),
+            null(),
             slip.as_ptr(),
             0.0,
             states.as_ptr(),
             states.as_mut_ptr(),
             f.as_mut_ptr(),
             null_mut(),
+            h.work,
         )
     };
     expect_error(st, ASPERITY_ERR_OUT_OF_DOMAIN, "element 1");
@@ -424,25 +564,26 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
     assert_eq!(f[2..], [7.0; 4]);
     let p = states.as_mut_ptr();
     let st = unsafe {
-        asperity_slider_step_block(
-            h.slider,
-            h.work,
+        asperity_friction_step_block(
+            h.law,
             2,
             normal.as_ptr(),
+            null(),
             slip.as_ptr(),
             0.0,
             p,
             p.add(m),
             f.as_mut_ptr(),
             null_mut(),
+            h.work,
         )
     };
     expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "`new_states`");
     let st = unsafe {
-        asperity_slider_step_block(
-            h.slider,
-            h.work,
+        asperity_friction_step_block(
+            h.law,
             1,
+            null(),
             null(),
             slip.as_ptr(),
             0.0,
@@ -450,31 +591,60 @@ fn errors_name_the_argument_and_leave_outputs_untouched() {
             p,
             f.as_mut_ptr(),
             null_mut(),
+            h.work,
         )
     };
-    expect_error(st, ASPERITY_ERR_NULL_POINTER, "`normal_force`");
+    expect_error(st, ASPERITY_ERR_NULL_POINTER, "`normal_forces`");
+    let st = unsafe {
+        asperity_friction_step_block_in_place(
+            h.law,
+            1,
+            normal.as_ptr(),
+            null(),
+            slip.as_ptr(),
+            0.0,
+            null_mut(),
+            f.as_mut_ptr(),
+            null_mut(),
+            h.work,
+        )
+    };
+    expect_error(st, ASPERITY_ERR_NULL_POINTER, "`states`");
     // Sizes and handles.
     let mut n = 0usize;
     expect_error(
-        unsafe { asperity_slider_state_size(null(), &mut n) },
+        unsafe { asperity_friction_state_size(null(), &mut n) },
         ASPERITY_ERR_NULL_POINTER,
-        "`slider`",
+        "`law`",
     );
     expect_error(
-        unsafe { asperity_slider_state_size(h.slider, null_mut()) },
+        unsafe { asperity_friction_state_size(h.law, null_mut()) },
         ASPERITY_ERR_NULL_POINTER,
         "`n`",
     );
-    let mut w = null_mut();
+    let mut w = 1usize as *mut AsperityFrictionWork;
     expect_error(
-        unsafe { asperity_slider_work_new(null(), &mut w) },
+        unsafe { asperity_friction_work_new(null(), &mut w) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`law`",
+    );
+    assert!(w.is_null());
+    let mut l = 1usize as *mut AsperityFriction;
+    expect_error(
+        unsafe { asperity_friction_from_slider(null(), &mut l) },
         ASPERITY_ERR_NULL_POINTER,
         "`slider`",
     );
-    assert!(w.is_null());
+    assert!(l.is_null());
+    expect_error(
+        unsafe { asperity_friction_from_slider(h.slider, null_mut()) },
+        ASPERITY_ERR_NULL_POINTER,
+        "`out`",
+    );
     unsafe {
         asperity_slider_free(null_mut());
-        asperity_slider_work_free(null_mut());
+        asperity_friction_free(null_mut());
+        asperity_friction_work_free(null_mut());
     }
 }
 
@@ -691,41 +861,48 @@ fn slider_from_structs_equals_the_rust_slider() {
         assert_eq!(st, ASPERITY_OK, "{}", last_message());
         let want =
             Slider::new(geometry.clone(), want_material, counter.clone(), dx, r_opts).unwrap();
-        let mut work = null_mut();
+        // The loading is the scene's (Slider::slide); the friction law
+        // steps at the load of each increment.
+        let mut info = AsperitySliderInfo::default();
+        assert_eq!(unsafe { asperity_slider_info(h, &mut info) }, ASPERITY_OK);
+        match r_opts.loading {
+            Loading::FixedLoad { load } => {
+                assert_eq!(info.scene_control, ASPERITY_SLIDER_CONTROL_LOAD);
+                assert_eq!(info.scene_loading, load);
+            }
+            Loading::FixedGap { position } => {
+                assert_eq!(info.scene_control, ASPERITY_SLIDER_CONTROL_GAP);
+                assert_eq!(info.scene_loading, position);
+            }
+        }
         assert_eq!(
-            unsafe { asperity_slider_work_new(h, &mut work) },
-            ASPERITY_OK
+            info.periodic,
+            (r_opts.track_end == TrackEnd::Periodic) as i32
         );
+        let (law, work) = law_of(h);
         let m = want.state_len();
         let (mut c_state, mut r_state) = (vec![0.0; m], vec![0.0; m]);
         let mut w = want.work();
         let mut dissipated = 0.0;
         for k in 0..40 {
-            let inc = AsperitySliderIncrement {
+            let inc = FrictionIncrement {
+                normal_force: 0.04,
                 slip: [1.5e-6, 0.0],
                 ..Default::default()
             };
-            let rinc = SliderIncrement {
-                loading: None,
-                slip: inc.slip,
-                dt: 0.0,
-                tangents: SliderTangents::default(),
-            };
-            let mut out = SliderResponse::default();
+            let mut out = FrictionResponse::default();
             let st = unsafe {
-                asperity_slider_step(
-                    h,
-                    work,
+                asperity_friction_step(
+                    law,
                     &inc,
                     c_state.as_ptr(),
                     c_state.as_mut_ptr(),
+                    work,
                     &mut out,
                 )
             };
             assert_eq!(st, ASPERITY_OK, "{k}: {}", last_message());
-            let r = want
-                .step_flat_in_place(&mut r_state, &rinc, &mut w)
-                .unwrap();
+            let r = want.step_in_place(&mut r_state, &inc, &mut w).unwrap();
             assert!(same(&out, &r), "{k}: {out:?}\n{r:?}");
             assert_eq!(bits(&c_state), bits(&r_state), "{k}");
             dissipated += out.dissipated;
@@ -733,13 +910,14 @@ fn slider_from_structs_equals_the_rust_slider() {
         // The options took effect: the run dissipates, and with only the
         // chemical and plastic mechanisms nothing else is booked.
         assert!(dissipated > 0.0);
-        let d = &r_state[Slider::STATE_DISSIPATION..Slider::STATE_DISSIPATION + 4];
+        let d = &r_state[Slider::STATE_MECHANISMS..Slider::STATE_MECHANISMS + 4];
         if c_opts.mechanisms != ASPERITY_MECHANISM_ALL {
             assert_eq!((d[1], d[2]), (0.0, 0.0));
             assert!(d[0] > 0.0);
         }
         unsafe {
-            asperity_slider_work_free(work);
+            asperity_friction_work_free(work);
+            asperity_friction_free(law);
             asperity_slider_free(h);
         }
     }
@@ -805,7 +983,7 @@ fn slider_from_structs_errors_name_the_argument() {
     };
     for (o, code, name) in [
         (
-            with(&|o| o.control = ASPERITY_SLIDER_CONTROL_SCENE),
+            with(&|o| o.control = 0),
             ASPERITY_ERR_INVALID_ARGUMENT,
             "options.control",
         ),

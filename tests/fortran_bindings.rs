@@ -47,28 +47,14 @@ const RELAXED: &[(&str, &[&str], &str)] = &[(
     "VFRIC's argument list is Abaqus's: the friction law reads only some of its 40 arguments",
 )];
 
-/// The law kinds `ASPERITY_LAW_<KIND>` of the header are
-/// `ASPERITY_LAW_KIND_<KIND>` in the module: Fortran names ignore case, and
-/// `ASPERITY_LAW_JKR` would be the constructor `asperity_law_jkr` (all ten
-/// kinds are renamed alike).
-const LAW_KINDS: &[&str] = &[
-    "NONE",
-    "HERTZ",
-    "POWER_PUNCH",
-    "FLAT_PUNCH",
-    "DMT",
-    "JKR",
-    "JKR_POWER_PUNCH",
-    "KENDALL",
-    "MAUGIS_DUGDALE",
-    "DERJAGUIN",
-];
-
-/// The Fortran name of the C constant `c_name`.
+/// The law kinds `ASPERITY_LAW_<KIND>` of the header (every constant with
+/// that prefix) are `ASPERITY_LAW_KIND_<KIND>` in the module: Fortran names
+/// ignore case, and `ASPERITY_LAW_JKR` would be the constructor
+/// `asperity_law_jkr` (all kinds are renamed alike).
 fn fortran_constant(c_name: &str) -> String {
     match c_name.strip_prefix("ASPERITY_LAW_") {
-        Some(kind) if LAW_KINDS.contains(&kind) => format!("ASPERITY_LAW_KIND_{kind}"),
-        _ => c_name.to_string(),
+        Some(kind) => format!("ASPERITY_LAW_KIND_{kind}"),
+        None => c_name.to_string(),
     }
 }
 
@@ -78,12 +64,20 @@ const NO_FRIENDLY: &[(&str, &str)] = &[];
 
 /// C functions whose friendly procedure has another name: (C name, Fortran
 /// name, why).
-const RENAMED_FRIENDLY: &[(&str, &str, &str)] = &[(
-    "asperity_slider_info",
-    "asperity_slider_get_info",
-    "`asperity_slider_info` is the mirror type of `AsperitySliderInfo`, and a Fortran \
-     scope cannot give a type and a procedure one name",
-)];
+const RENAMED_FRIENDLY: &[(&str, &str, &str)] = &[
+    (
+        "asperity_slider_info",
+        "asperity_slider_get_info",
+        "`asperity_slider_info` is the mirror type of `AsperitySliderInfo`, and a Fortran \
+         scope cannot give a type and a procedure one name",
+    ),
+    (
+        "asperity_slider_record",
+        "asperity_slider_get_record",
+        "`asperity_slider_record` is the mirror type of `AsperitySliderRecord`, and a Fortran \
+         scope cannot give a type and a procedure one name",
+    ),
+];
 
 /// The name of the friendly procedure of the C function `c_name`.
 fn friendly_name(c_name: &str) -> &str {
@@ -358,6 +352,7 @@ fn check_param(c_type: &str, decl: &str, handles: &BTreeSet<String>) -> Result<(
     let t = c_type
         .trim_start_matches("const ")
         .replace("struct ", "")
+        .replace("union ", "")
         .trim()
         .to_string();
     let scalar = |kind: &str| -> Result<(), String> {
@@ -947,6 +942,7 @@ fn every_other_example_runs() {
         "profile_characterise",
         "pull_off_table",
         "sizes",
+        "slider_patch",
         "stops_on_error",
         "tabulated",
         "vfric",
@@ -1128,17 +1124,17 @@ fn check_jkr_hysteresis(linkage: Linkage) {
     let piwr = PI * W * R;
     let delta_c = -0.75 * (PI * PI * W * W * R / (E_STAR * E_STAR)).cbrt();
     c.exit_ok(JKR);
-    // The law's parameters read through the Fortran mirror of the union.
+    // The law's inputs read through the Fortran mirror of the union, as given.
     c.close(FFI, "law_kind_is_jkr", 1.0, 0.0);
     c.close(FFI, "jkr_params_radius", R, 0.0);
+    c.close(FFI, "jkr_params_e_star", E_STAR, 0.0);
     c.close(FFI, "jkr_params_work_of_adhesion", W, 0.0);
     c.close(
         FFI,
-        "jkr_params_critical_delta",
+        "jkr_reach_displacement",
         delta_c,
         1e-12 * delta_c.abs(),
     );
-    c.close(FFI, "jkr_params_force_scale", 2.0 * piwr, 1e-12 * piwr);
     c.close(FFI, "jkr_delta_c_m", delta_c, 1e-12 * delta_c.abs());
     c.close(JKR, "jkr_pull_off_load_over_piwR", -1.5, 1e-6);
     c.close(JKR, "jkr_pull_off_displacement_over_piwR", -5.0 / 6.0, 1e-6);
@@ -1330,6 +1326,7 @@ fn check_fe_strip_friction(linkage: Linkage) {
     };
     let mut c = Report::new(&r);
     c.exit_ok(HOMOGENISED);
+    c.close(FFI, "state_size_matches", 1.0, 0.0);
     c.close(HOMOGENISED, "points", 64.0, 0.0);
     let law = native::fe_strip_law();
     let expected = native::fe_strip_steady_force();
@@ -1350,7 +1347,9 @@ fn check_fe_strip_friction(linkage: Linkage) {
     c.within(HOMOGENISED, "dissipation_states_rel_diff", 0.0, 1e-10);
     c.within(HOMOGENISED, "dissipation_limit_path_rel_diff", 0.0, 1e-10);
     c.within(HOMOGENISED, "chemical_share", 0.90, 0.93);
-    c.close(HOMOGENISED, "steps_counted", 30_000.0, 0.0);
+    // Every increment is booked into the state: point 1's slip path is the
+    // program's own Σ|Δx|.
+    c.within(HOMOGENISED, "slip_path_booked_rel_diff", 0.0, 1e-12);
     c.close(HOMOGENISED, "json_bytes", law.to_json().len() as f64, 0.0);
     c.close(HOMOGENISED, "json_roundtrip_identical", 1.0, 0.0);
     c.close(FFI, "bad_area_status", -2.0, 0.0);
@@ -1449,7 +1448,13 @@ fn check_vfric(linkage: Linkage) {
             1e-9 * lim * plastic,
         );
         c.close(HOMOGENISED, &format!("chemical_share_{n}"), 0.9, 1e-12);
-        c.close(HOMOGENISED, &format!("steps_{n}"), 100.0, 0.0);
+        // Every increment booked: the slip path is 100 Δs.
+        c.close(
+            HOMOGENISED,
+            &format!("total_slip_path_{n}"),
+            total_slip,
+            1e-12 * total_slip,
+        );
         // The law's own force stays at the limit (Abaqus gets the clamped one).
         c.close(HOMOGENISED, &format!("state_force_{n}"), -lim, 1e-12 * lim);
     }
@@ -1465,6 +1470,116 @@ fn vfric_static() {
 #[test]
 fn vfric_shared() {
     check_vfric(Linkage::Shared);
+}
+
+// ---------------------------------------------------------------------------
+// slider_patch: self-checking; here its slider record against the Rust API.
+
+const SLIDER_STEP: &str = "the slider step (src/friction/slider/, src/ffi/slider.rs)";
+
+/// `slider_patch` checks itself (exit status); its record of patch 1's
+/// tangent step (`asperity_slider_get_record`) is compared here with the
+/// Rust step's `SliderWork::record()` from the same history, and the record
+/// of the first two blocks (patch 4, from 0) with the track positions.
+fn check_slider_patch(linkage: Linkage) {
+    use asperity::friction::law::{TANGENT_NORMAL, TANGENT_SLIP};
+    use asperity::friction::{FrictionIncrement, FrictionLaw, Slider, SliderWork};
+    use asperity::scene::Scene;
+    let Some(r) = run("slider_patch", linkage, &[]) else {
+        return;
+    };
+    let mut c = Report::new(&r);
+    c.exit_ok(SLIDER_STEP);
+    let slider: Slider = Scene::from_file(manifest().join("examples/scenes/chapter6_copper.json"))
+        .unwrap()
+        .build()
+        .unwrap();
+    let step = 1.5e-6;
+    c.close(SLIDER_STEP, "record_block0_seated", 1.0, 0.0);
+    c.close(SLIDER_STEP, "record_block0_position", step, 0.0);
+    c.close(SLIDER_STEP, "record_block1_seated", 0.0, 0.0);
+    c.close(SLIDER_STEP, "record_block1_position", 2.0 * step, 0.0);
+    c.close(SLIDER_STEP, "record_seated_ok", 1.0, 0.0);
+    c.close(FFI, "record_position_matches_state", 1.0, 0.0);
+    c.within(SLIDER_STEP, "record_max_advance_diff", 0.0, 1e-18);
+    c.close(SLIDER_STEP, "record_counts_consistent", 1.0, 0.0);
+    // Patch 1: 60 increments of 1.5 um along +x at 5 % of the capacity, then
+    // one with both tangents from that state.
+    let mut w = slider.work();
+    let mut st = vec![0.0; slider.state_len()];
+    let mut inc = FrictionIncrement {
+        normal_force: 0.05 * slider.capacity(),
+        slip: [step, 0.0],
+        dt: 1e-5,
+        ..FrictionIncrement::default()
+    };
+    for _ in 0..60 {
+        slider.step_in_place(&mut st, &inc, &mut w).unwrap();
+    }
+    inc.tangents = TANGENT_NORMAL | TANGENT_SLIP;
+    let mut new = vec![0.0; slider.state_len()];
+    slider.step(&st, &mut new, &inc, &mut w).unwrap();
+    let sw = w.get::<SliderWork>().unwrap();
+    let rec = sw.record();
+    assert!(
+        rec.nano_contacts > 0 && rec.rods_in_contact > 0,
+        "the check must see a contact"
+    );
+    c.close(SLIDER_STEP, "tangent_record_position", rec.position, 1e-15);
+    c.close(
+        SLIDER_STEP,
+        "tangent_record_position",
+        st[Slider::STATE_POSITION] + step,
+        1e-15,
+    );
+    c.close(FFI, "tangent_record_matches_state", 1.0, 0.0);
+    c.close(
+        SLIDER_STEP,
+        "tangent_record_rod_position",
+        rec.rod_position,
+        1e-10 * rec.rod_position.abs(),
+    );
+    c.close(
+        SLIDER_STEP,
+        "tangent_record_adhesion_area_share",
+        rec.adhesion_area_share,
+        1e-10,
+    );
+    for (name, n) in [
+        ("nano_contacts", rec.nano_contacts),
+        ("adhesive_contacts", rec.adhesive_contacts),
+        ("rods_in_contact", rec.rods_in_contact),
+        ("yielded_rods", rec.yielded_rods),
+    ] {
+        c.close(
+            SLIDER_STEP,
+            &format!("tangent_record_{name}"),
+            n as f64,
+            0.0,
+        );
+    }
+    c.close(
+        SLIDER_STEP,
+        "tangent_record_seated",
+        sw.seated() as i32 as f64,
+        0.0,
+    );
+    c.close(SLIDER_STEP, "zero_slip_record_advance", 0.0, 0.0);
+    c.close(SLIDER_STEP, "zero_slip_record_seated", 0.0, 0.0);
+    c.close(FFI, "reevaluation_identical", 1.0, 0.0);
+    c.close(FFI, "record_null_work_status", -1.0, 0.0);
+    c.close(FFI, "record_lugre_work_status", -2.0, 0.0);
+    c.finish();
+}
+
+#[test]
+fn slider_patch_static() {
+    check_slider_patch(Linkage::Static);
+}
+
+#[test]
+fn slider_patch_shared() {
+    check_slider_patch(Linkage::Shared);
 }
 
 // ---------------------------------------------------------------------------

@@ -8,9 +8,10 @@
 //! against finite differences, cut-backs, extremes, bad input.
 
 use asperity::friction::dynamic::{
-    Bristles, DynamicFriction, DynamicIncrement, LuGre, MaxwellSlip, STATE_DISSIPATION,
-    STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
+    Bristles, FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip, STATE_DISSIPATION, STATE_MODEL,
+    STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
 };
+use asperity::friction::{BlockStates, FrictionBlock};
 use asperity::Error;
 
 fn name(e: Error) -> &'static str {
@@ -30,8 +31,8 @@ fn lugre() -> LuGre {
     LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, s1, vd, 0.4).unwrap()
 }
 
-fn inc(n: f64, slip: [f64; 2], dt: f64) -> DynamicIncrement {
-    DynamicIncrement {
+fn inc(n: f64, slip: [f64; 2], dt: f64) -> FrictionIncrement {
+    FrictionIncrement {
         normal_force: n,
         slip,
         dt,
@@ -52,7 +53,9 @@ fn lugre_steady_state_is_its_stribeck_curve() {
             let dt = 1e3 / v * 1e-3;
             let mut s = vec![0.0; m.state_len()];
             let mut t = s.clone();
-            let r = m.step(&s, &mut t, &inc(n, [v * dt, 0.0], dt)).unwrap();
+            let r = m
+                .step(&s, &mut t, &inc(n, [v * dt, 0.0], dt), &mut m.work())
+                .unwrap();
             let want = m.steady_force(n, v);
             assert!(
                 (r.force_magnitude - want).abs() <= 1e-12 * want,
@@ -66,7 +69,9 @@ fn lugre_steady_state_is_its_stribeck_curve() {
             let h = 2.0 * dt / steps as f64;
             let mut last = 0.0;
             for _ in 0..steps {
-                let r = m.step(&s, &mut t, &inc(n, [0.0, -v * h], h)).unwrap();
+                let r = m
+                    .step(&s, &mut t, &inc(n, [0.0, -v * h], h), &mut m.work())
+                    .unwrap();
                 s.copy_from_slice(&t);
                 last = r.force[1];
             }
@@ -151,7 +156,9 @@ fn lugre_increment_is_exact_against_runge_kutta() {
             let mut old = vec![0.0; m.state_len()];
             old[asperity::friction::dynamic::lugre::STATE_Z] = z0;
             let mut new = old.clone();
-            let r = m.step(&old, &mut new, &inc(n, [ds, 0.0], dt)).unwrap();
+            let r = m
+                .step(&old, &mut new, &inc(n, [ds, 0.0], dt), &mut m.work())
+                .unwrap();
             let (z, d) = rk4(&p, z0, n, ds, dt, 200_000);
             let z1 = new[asperity::friction::dynamic::lugre::STATE_Z];
             assert!((z1 - z).abs() <= 1e-9 * z.abs().max(1e-9), "{z1} vs {z}");
@@ -180,7 +187,9 @@ fn lugre_without_coulomb_friction_lets_go_far_above_the_stribeck_speed() {
         let mut old = vec![0.0; m.state_len()];
         old[asperity::friction::dynamic::lugre::STATE_Z] = z0;
         let mut new = old.clone();
-        let r = m.step(&old, &mut new, &inc(n, slip, dt)).unwrap();
+        let r = m
+            .step(&old, &mut new, &inc(n, slip, dt), &mut m.work())
+            .unwrap();
         let z = asperity::friction::dynamic::lugre::STATE_Z;
         assert_eq!(&new[z..z + 2], &[0.0, 0.0]);
         // Only the viscous force σ₂v remains.
@@ -211,12 +220,12 @@ fn rng(seed: &mut u64) -> f64 {
 /// reversals and zeros, time steps over 4 decades; dissipation ≥ 0, the
 /// accumulators grow by it, a re-evaluation from the same old state is
 /// bit-identical.
-fn random_increments(m: &dyn DynamicFriction, seed: u64, rate_dependent: bool) {
+fn random_increments(m: &dyn FrictionLaw, seed: u64, rate_dependent: bool) {
     random_path(m, seed, rate_dependent, false)
 }
 
 /// [`random_increments`], along x only when `track`.
-fn random_path(m: &dyn DynamicFriction, seed: u64, rate_dependent: bool, track: bool) {
+fn random_path(m: &dyn FrictionLaw, seed: u64, rate_dependent: bool, track: bool) {
     let mut seed = seed;
     let mut old = vec![0.0; m.state_len()];
     let mut new = old.clone();
@@ -241,7 +250,7 @@ fn random_path(m: &dyn DynamicFriction, seed: u64, rate_dependent: bool, track: 
         } else {
             10f64.powf(4.0 * rng(&mut seed) - 5.0)
         };
-        let i = DynamicIncrement {
+        let i = FrictionIncrement {
             normal_force: n,
             slip: if track {
                 [len * ang.cos(), 0.0]
@@ -250,16 +259,16 @@ fn random_path(m: &dyn DynamicFriction, seed: u64, rate_dependent: bool, track: 
             },
             dt,
             tangents: k % 4,
-            reserved: 0,
+            ..Default::default()
         };
-        let r = m.step(&old, &mut new, &i).unwrap();
+        let r = m.step(&old, &mut new, &i, &mut m.work()).unwrap();
         assert!(r.dissipated >= 0.0, "{k}: {r:?}");
         assert!(r.force.iter().all(|f| f.is_finite()) && r.stored_energy >= 0.0);
         assert_eq!(
             new[STATE_DISSIPATION],
             old[STATE_DISSIPATION] + r.dissipated
         );
-        let r2 = m.step(&old, &mut again, &i).unwrap();
+        let r2 = m.step(&old, &mut again, &i, &mut m.work()).unwrap();
         assert_eq!(format!("{r:?}"), format!("{r2:?}"));
         assert_eq!(
             new.iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
@@ -287,7 +296,9 @@ fn lugre_sticks_at_zero_slip_and_pre_slides_elastically() {
     let mut s = vec![0.0; m.state_len()];
     s[asperity::friction::dynamic::lugre::STATE_Z] = 2e-6;
     let mut t = s.clone();
-    let r = m.step(&s, &mut t, &inc(3.0, [0.0, 0.0], 0.0)).unwrap();
+    let r = m
+        .step(&s, &mut t, &inc(3.0, [0.0, 0.0], 0.0), &mut m.work())
+        .unwrap();
     assert_eq!(t, s);
     assert_eq!(r.dissipated, 0.0);
     assert_eq!(r.regime, 0);
@@ -296,7 +307,9 @@ fn lugre_sticks_at_zero_slip_and_pre_slides_elastically() {
     // stiffness N σ₀ (pre-sliding), force ≈ N σ₀ x.
     let s = vec![0.0; m.state_len()];
     let x = 1e-9;
-    let r = m.step(&s, &mut t, &inc(2.0, [x, 0.0], 100.0)).unwrap();
+    let r = m
+        .step(&s, &mut t, &inc(2.0, [x, 0.0], 100.0), &mut m.work())
+        .unwrap();
     assert!(
         (r.force_magnitude / (2.0 * 1e5 * x) - 1.0).abs() < 1e-3,
         "{r:?}"
@@ -310,18 +323,20 @@ fn lugre_tangents_match_finite_differences() {
     s[asperity::friction::dynamic::lugre::STATE_Z] = 1e-6;
     s[asperity::friction::dynamic::lugre::STATE_Z + 1] = -2e-6;
     let mut t = s.clone();
-    let i = DynamicIncrement {
+    let i = FrictionIncrement {
         normal_force: 5.0,
         slip: [3e-7, 1e-7],
         dt: 2e-4,
         tangents: TANGENT_NORMAL | TANGENT_SLIP,
-        reserved: 0,
+        ..Default::default()
     };
-    let r = m.step(&s, &mut t, &i).unwrap();
+    let r = m.step(&s, &mut t, &i, &mut m.work()).unwrap();
     assert_eq!(r.tangents, TANGENT_NORMAL | TANGENT_SLIP);
     let f = |n: f64, ds: [f64; 2]| {
         let mut t = s.clone();
-        m.step(&s, &mut t, &inc(n, ds, 2e-4)).unwrap().force
+        m.step(&s, &mut t, &inc(n, ds, 2e-4), &mut m.work())
+            .unwrap()
+            .force
     };
     let (fp, fm) = (f(5.0 + 1e-3, i.slip), f(5.0 - 1e-3, i.slip));
     for c in 0..2 {
@@ -382,32 +397,41 @@ fn lugre_bad_input_names_the_argument() {
         (inc(1.0, [1e-6, 0.0], 0.0), "dt"),
         (inc(1.0, [1e-6, 0.0], -1.0), "dt"),
         (
-            DynamicIncrement {
+            FrictionIncrement {
                 tangents: 4,
                 ..inc(1.0, [0.0; 2], 1.0)
             },
             "tangents",
         ),
     ] {
-        assert_eq!(name(m.step(&s, &mut t, &i).unwrap_err()), want);
+        assert_eq!(
+            name(m.step(&s, &mut t, &i, &mut m.work()).unwrap_err()),
+            want
+        );
         assert!(t.iter().all(|&x| x == 7.0), "new untouched on failure");
     }
     let mut bad = s.clone();
     bad[STATE_DISSIPATION] = -1.0;
     assert_eq!(
-        name(m.step(&bad, &mut t, &inc(1.0, [0.0; 2], 1.0)).unwrap_err()),
+        name(
+            m.step(&bad, &mut t, &inc(1.0, [0.0; 2], 1.0), &mut m.work())
+                .unwrap_err()
+        ),
         "old.dissipation"
     );
     bad[STATE_DISSIPATION] = 0.0;
     bad[asperity::friction::dynamic::lugre::STATE_Z] = f64::NAN;
     assert_eq!(
-        name(m.step(&bad, &mut t, &inc(1.0, [0.0; 2], 1.0)).unwrap_err()),
+        name(
+            m.step(&bad, &mut t, &inc(1.0, [0.0; 2], 1.0), &mut m.work())
+                .unwrap_err()
+        ),
         "old"
     );
     let mut short = vec![0.0; 3];
     assert_eq!(
         name(
-            m.step(&s, &mut short, &inc(1.0, [0.0; 2], 1.0))
+            m.step(&s, &mut short, &inc(1.0, [0.0; 2], 1.0), &mut m.work())
                 .unwrap_err()
         ),
         "new.len()"
@@ -436,7 +460,9 @@ fn walk(m: &MaxwellSlip, n: f64, path: &[f64], h: f64) -> Vec<f64> {
         let d = (target - x) / steps as f64;
         let mut f = 0.0;
         for _ in 0..steps {
-            let r = m.step(&s, &mut t, &inc(n, [d, 0.0], 1.0)).unwrap();
+            let r = m
+                .step(&s, &mut t, &inc(n, [d, 0.0], 1.0), &mut m.work())
+                .unwrap();
             s.copy_from_slice(&t);
             f = -r.force[0];
         }
@@ -511,7 +537,9 @@ fn maxwell_slip_work_equals_dissipation_plus_stored_energy() {
         let target = 30e-6 * (rng(&mut seed) - 0.5);
         for _ in 0..100 {
             let d = target / 100.0 * (0.5 + rng(&mut seed));
-            let r = m.step(&s, &mut t, &inc(n, [d, 0.0], 1.0)).unwrap();
+            let r = m
+                .step(&s, &mut t, &inc(n, [d, 0.0], 1.0), &mut m.work())
+                .unwrap();
             let f_new = -r.force[0];
             work += 0.5 * (f_old + f_new) * d;
             dissipated += r.dissipated;
@@ -538,20 +566,23 @@ fn maxwell_slip_random_increments_and_tangents() {
     let m = maxwell();
     let mut s = vec![0.0; m.state_len()];
     let mut t = s.clone();
-    m.step(&s, &mut t, &inc(1.0, [5e-6, 1e-6], 1.0)).unwrap();
+    m.step(&s, &mut t, &inc(1.0, [5e-6, 1e-6], 1.0), &mut m.work())
+        .unwrap();
     s.copy_from_slice(&t);
-    let i = DynamicIncrement {
+    let i = FrictionIncrement {
         normal_force: 4.0,
         slip: [1.5e-6, -2e-6],
         dt: 0.5,
         tangents: TANGENT_NORMAL | TANGENT_SLIP,
-        reserved: 0,
+        ..Default::default()
     };
-    let r = m.step(&s, &mut t, &i).unwrap();
+    let r = m.step(&s, &mut t, &i, &mut m.work()).unwrap();
     assert_eq!(r.regime, 1, "partial slip");
     let f = |n: f64, ds: [f64; 2]| {
         let mut t = s.clone();
-        m.step(&s, &mut t, &inc(n, ds, 0.5)).unwrap().force
+        m.step(&s, &mut t, &inc(n, ds, 0.5), &mut m.work())
+            .unwrap()
+            .force
     };
     let (fp, fm) = (f(4.001, i.slip), f(3.999, i.slip));
     for c in 0..2 {
@@ -600,17 +631,42 @@ fn maxwell_slip_bad_input_names_the_argument() {
     let s = vec![0.0; m.state_len()];
     let mut t = vec![7.0; m.state_len()];
     assert_eq!(
-        name(m.step(&s, &mut t, &inc(-1.0, [0.0; 2], 1.0)).unwrap_err()),
+        name(
+            m.step(&s, &mut t, &inc(-1.0, [0.0; 2], 1.0), &mut m.work())
+                .unwrap_err()
+        ),
         "normal_force"
     );
     assert!(t.iter().all(|&x| x == 7.0), "new untouched on failure");
     // A rate-independent model accepts dt = 0 with a slip.
-    m.step(&s, &mut t, &inc(1.0, [1e-6, 0.0], 0.0)).unwrap();
+    m.step(&s, &mut t, &inc(1.0, [1e-6, 0.0], 0.0), &mut m.work())
+        .unwrap();
 }
 
 // ------------------------------------------- one interface, block calls
 
 use asperity::friction::dynamic::DynamicModel;
+
+/// A block of the points `normal`, `slip` at `dt` (no areas), the states
+/// stepped in place.
+fn in_place<'a>(
+    normal: &'a [f64],
+    slip: &'a [f64],
+    dt: f64,
+    states: &'a mut [f64],
+    forces: &'a mut [f64],
+    dissipation: Option<&'a mut [f64]>,
+) -> FrictionBlock<'a> {
+    FrictionBlock {
+        normal_force: normal,
+        area: None,
+        slip,
+        dt,
+        states: BlockStates::InPlace(states),
+        tangential_force: forces,
+        dissipation,
+    }
+}
 
 #[test]
 fn model_choice_in_place_and_block_equal_the_single_steps() {
@@ -622,7 +678,7 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
         DynamicModel::BurridgeKnopoff(chain(5, 1e4, 0.05)),
         DynamicModel::Bristles(brush()),
     ] {
-        let direct: &dyn DynamicFriction = match &model {
+        let direct: &dyn FrictionLaw = match &model {
             DynamicModel::LuGre(m) => m,
             DynamicModel::MaxwellSlip(m) => m,
             DynamicModel::PrandtlTomlinson(m) => m,
@@ -656,20 +712,27 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
         for round in 0..4 {
             model
                 .step_block(
-                    &normal,
-                    &slip,
-                    dt,
-                    &mut states,
-                    &mut forces,
-                    Some(&mut diss),
+                    in_place(
+                        &normal,
+                        &slip,
+                        dt,
+                        &mut states,
+                        &mut forces,
+                        Some(&mut diss),
+                    ),
+                    &mut model.work(),
                 )
                 .unwrap();
             for i in 0..points {
                 let inc = inc(normal[i], [slip[2 * i], slip[2 * i + 1]], dt);
                 let mut next = vec![0.0; m];
-                let r = direct.step(&single[i], &mut next, &inc).unwrap();
+                let r = direct
+                    .step(&single[i], &mut next, &inc, &mut direct.work())
+                    .unwrap();
                 let mut in_place = single[i].clone();
-                let q = model.step_in_place(&mut in_place, &inc).unwrap();
+                let q = model
+                    .step_in_place(&mut in_place, &inc, &mut model.work())
+                    .unwrap();
                 assert_eq!(format!("{r:?}"), format!("{q:?}"));
                 assert_eq!(in_place, next);
                 single[i] = next;
@@ -683,20 +746,26 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
         bad[3] = -1.0;
         let before = states.clone();
         let e = model
-            .step_block(&bad, &slip, dt, &mut states, &mut forces, None)
+            .step_block(
+                in_place(&bad, &slip, dt, &mut states, &mut forces, None),
+                &mut model.work(),
+            )
             .unwrap_err();
         assert_eq!((e.index, name(e.error)), (3, "normal_force"));
         assert_ne!(&states[..3 * m], &before[..3 * m]);
         assert_eq!(&states[3 * m..], &before[3 * m..]);
         let e = model
-            .step_block(&normal, &slip[1..], dt, &mut states, &mut forces, None)
+            .step_block(
+                in_place(&normal, &slip[1..], dt, &mut states, &mut forces, None),
+                &mut model.work(),
+            )
             .unwrap_err();
         assert_eq!((e.index, name(e.error)), (0, "slip.len()"));
         // In place: a bad state is refused and left untouched.
         let mut s = vec![0.0; m];
         s[STATE_SLIP_PATH] = -1.0;
         let e = model
-            .step_in_place(&mut s, &inc(1.0, [0.0; 2], 1.0))
+            .step_in_place(&mut s, &inc(1.0, [0.0; 2], 1.0), &mut model.work())
             .unwrap_err();
         assert_eq!(name(e), "state.slip_path");
         assert_eq!(s[STATE_SLIP_PATH], -1.0);
@@ -728,7 +797,7 @@ fn drive(m: &PrandtlTomlinson, v: f64, periods: f64, dt: f64) -> (f64, f64, f64,
     let mut d = 0.0;
     for k in 0..steps {
         let r = m
-            .step_in_place(&mut s, &inc(1.0, [v * dt, 0.0], dt))
+            .step_in_place(&mut s, &inc(1.0, [v * dt, 0.0], dt), &mut m.work())
             .unwrap();
         let f = -r.force[0]; // resisting force felt along the motion
         if k > steps / 4 {
@@ -785,7 +854,7 @@ fn prandtl_tomlinson_energy_balance_and_bad_input() {
     let mut t = vec![7.0; m.state_len()];
     assert_eq!(
         name(
-            m.step(&s, &mut t, &inc(1.0, [1e-9, 1e-9], 1e-3))
+            m.step(&s, &mut t, &inc(1.0, [1e-9, 1e-9], 1e-3), &mut m.work())
                 .unwrap_err()
         ),
         "slip"
@@ -821,7 +890,7 @@ fn history(m: &PrandtlTomlinson, v: f64, periods: f64, dt: f64) -> (Vec<f64>, Ve
     let (mut f, mut d) = (Vec::with_capacity(steps), 0.0);
     for _ in 0..steps {
         let r = m
-            .step_in_place(&mut s, &inc(1.0, [v * dt, 0.0], dt))
+            .step_in_place(&mut s, &inc(1.0, [v * dt, 0.0], dt), &mut m.work())
             .unwrap();
         assert!(r.dissipated >= 0.0 && r.force[0].is_finite());
         f.push(-r.force[0]);
@@ -988,7 +1057,7 @@ fn two_spring_prandtl_tomlinson_energy_balance_and_bad_input() {
     let mut stored = 0.0;
     for _ in 0..(6e-10 / (v * dt)) as usize {
         let r = m
-            .step_in_place(&mut s, &inc(1.0, [v * dt, 0.0], dt))
+            .step_in_place(&mut s, &inc(1.0, [v * dt, 0.0], dt), &mut m.work())
             .unwrap();
         let f = -r.force[0];
         work += 0.5 * (before + f) * v * dt;
@@ -1065,11 +1134,13 @@ fn pull(
 ) -> (Vec<f64>, f64, f64) {
     let (mut f, mut work, mut d) = (Vec::with_capacity(steps), 0.0, 0.0);
     let mut before = -m
-        .step_in_place(state, &inc(n, [0.0; 2], 0.0))
+        .step_in_place(state, &inc(n, [0.0; 2], 0.0), &mut m.work())
         .unwrap()
         .force[0];
     for k in 0..steps {
-        let r = m.step_in_place(state, &inc(n, [v * dt, 0.0], dt)).unwrap();
+        let r = m
+            .step_in_place(state, &inc(n, [v * dt, 0.0], dt), &mut m.work())
+            .unwrap();
         assert!(r.dissipated >= 0.0, "{k}: {r:?}");
         assert!(r.force[0].is_finite() && r.stored_energy.is_finite());
         let now = -r.force[0];
@@ -1145,14 +1216,14 @@ fn burridge_knopoff_perturbed_chain_has_events_of_many_sizes_and_balances_energy
     let mut s = vec![0.0; m.state_len()];
     s[state_block(5)] = -1e-6;
     let e0 = m
-        .step(&s.clone(), &mut s, &inc(16.0, [0.0; 2], 0.0))
+        .step(&s.clone(), &mut s, &inc(16.0, [0.0; 2], 0.0), &mut m.work())
         .unwrap()
         .stored_energy;
     assert!((e0 - 0.5 * (1e3 + 2.0 * 1e4) * 1e-12).abs() < 1e-20);
     let (v, dt) = (0.01, 2e-5);
     let (f, work, d) = pull(&m, &mut s, blocks as f64, v, dt, 16000);
     let end = m
-        .step(&s.clone(), &mut s, &inc(16.0, [0.0; 2], 0.0))
+        .step(&s.clone(), &mut s, &inc(16.0, [0.0; 2], 0.0), &mut m.work())
         .unwrap();
     // Energy: the driver's work (trapezoidal, second order in the
     // increment) = the change of stored energy + the dissipation.
@@ -1188,13 +1259,14 @@ fn burridge_knopoff_random_increments_tangents_and_bad_input() {
     let r = m
         .step_in_place(
             &mut s,
-            &DynamicIncrement {
+            &FrictionIncrement {
                 normal_force: 4.0,
                 slip: [1e-5, 0.0],
                 dt: 1e-3,
                 tangents: 3,
-                reserved: 0,
+                ..Default::default()
             },
+            &mut m.work(),
         )
         .unwrap();
     assert_eq!(r.regime, 0);
@@ -1203,19 +1275,26 @@ fn burridge_knopoff_random_increments_tangents_and_bad_input() {
     assert!(r.dforce_dnormal[0].abs() < 1e-9, "{r:?}");
     // Past the static reach (F_s/k_p = 0.5 mm) every block slides; the
     // tangents equal differences of separate increments.
-    let tangent = DynamicIncrement {
+    let tangent = FrictionIncrement {
         normal_force: 4.0,
         slip: [1e-3, 0.0],
         dt: 1e-2,
         tangents: 3,
-        reserved: 0,
+        ..Default::default()
     };
-    let r = m.step(&s, &mut vec![0.0; s.len()], &tangent).unwrap();
+    let r = m
+        .step(&s, &mut vec![0.0; s.len()], &tangent, &mut m.work())
+        .unwrap();
     assert_eq!(r.regime, 2, "{r:?}");
     let force = |n: f64, ds: f64| {
-        m.step(&s, &mut vec![0.0; s.len()], &inc(n, [ds, 0.0], 1e-2))
-            .unwrap()
-            .force[0]
+        m.step(
+            &s,
+            &mut vec![0.0; s.len()],
+            &inc(n, [ds, 0.0], 1e-2),
+            &mut m.work(),
+        )
+        .unwrap()
+        .force[0]
     };
     let h = 1e-7;
     let dn = (force(4.0 + h, 1e-3) - force(4.0 - h, 1e-3)) / (2.0 * h);
@@ -1228,14 +1307,14 @@ fn burridge_knopoff_random_increments_tangents_and_bad_input() {
     let mut t = vec![7.0; m.state_len()];
     assert_eq!(
         name(
-            m.step(&old, &mut t, &inc(1.0, [1e-6, 1e-9], 1e-3))
+            m.step(&old, &mut t, &inc(1.0, [1e-6, 1e-9], 1e-3), &mut m.work())
                 .unwrap_err()
         ),
         "slip"
     );
     assert_eq!(
         name(
-            m.step(&old, &mut t, &inc(1.0, [1e-6, 0.0], 0.0))
+            m.step(&old, &mut t, &inc(1.0, [1e-6, 0.0], 0.0), &mut m.work())
                 .unwrap_err()
         ),
         "dt"
@@ -1295,7 +1374,11 @@ fn burridge_knopoff_extremes_are_finite_or_name_dt() {
             let mut s = vec![0.0; m.state_len()];
             s[state_block(blocks / 2)] = -1e-6;
             let t = std::time::Instant::now();
-            match m.step_in_place(&mut s, &inc(blocks as f64, [0.01 * dt, 0.0], dt)) {
+            match m.step_in_place(
+                &mut s,
+                &inc(blocks as f64, [0.01 * dt, 0.0], dt),
+                &mut m.work(),
+            ) {
                 Ok(r) => {
                     assert!(r.force[0].is_finite() && r.dissipated >= 0.0, "{r:?}");
                     assert!(s.iter().all(|x| x.is_finite()));
@@ -1386,7 +1469,9 @@ fn a_bristle_snaps_at_its_break_deflection_and_bonds_again() {
     let h = 0.0613 * delta;
     let mut snaps = 0;
     for i in 1..=100 {
-        let r = b.step_in_place(&mut s, &inc(n, [h, 0.0], 1e-3)).unwrap();
+        let r = b
+            .step_in_place(&mut s, &inc(n, [h, 0.0], 1e-3), &mut b.work())
+            .unwrap();
         let x = i as f64 * h;
         let d = x % delta;
         assert!(
@@ -1403,18 +1488,18 @@ fn a_bristle_snaps_at_its_break_deflection_and_bonds_again() {
                           // One increment of 6.13 δ from rest: the same deflection and energy.
     let mut one = vec![0.0; b.state_len()];
     let r = b
-        .step_in_place(&mut one, &inc(n, [100.0 * h, 0.0], 1e-3))
+        .step_in_place(&mut one, &inc(n, [100.0 * h, 0.0], 1e-3), &mut b.work())
         .unwrap();
     assert!((one[STATE_MODEL] - s[STATE_MODEL]).abs() <= 1e-12 * delta);
     assert!((r.dissipated - s[STATE_DISSIPATION]).abs() <= 1e-12 * s[STATE_DISSIPATION]);
     // Reversal: the bristle unloads elastically, then snaps the other way.
     let r = b
-        .step_in_place(&mut one, &inc(n, [-0.13 * delta, 0.0], 1e-3))
+        .step_in_place(&mut one, &inc(n, [-0.13 * delta, 0.0], 1e-3), &mut b.work())
         .unwrap();
     assert_eq!(r.dissipated, 0.0);
     assert!(one[STATE_MODEL].abs() <= 1e-12 * delta);
     let r = b
-        .step_in_place(&mut one, &inc(n, [-1.5 * delta, 0.0], 1e-3))
+        .step_in_place(&mut one, &inc(n, [-1.5 * delta, 0.0], 1e-3), &mut b.work())
         .unwrap();
     assert!((r.dissipated - 0.5 * n * k * delta * delta).abs() <= 1e-12 * r.dissipated);
     assert!((one[STATE_MODEL] + 0.5 * delta).abs() <= 1e-12 * delta);
@@ -1432,7 +1517,9 @@ fn bristles_slide_at_half_their_static_coefficient_and_balance_energy() {
     let mut mean = 0.0;
     let steps = 20_000;
     for i in 0..steps {
-        let r = b.step_in_place(&mut s, &inc(n, [3e-8, 0.0], 1e-4)).unwrap();
+        let r = b
+            .step_in_place(&mut s, &inc(n, [3e-8, 0.0], 1e-4), &mut b.work())
+            .unwrap();
         assert!(r.cof <= b.static_coefficient() * (1.0 + 1e-12));
         if i >= steps / 2 {
             mean += r.cof / (steps / 2) as f64;
@@ -1452,10 +1539,10 @@ fn bristles_slide_at_half_their_static_coefficient_and_balance_energy() {
         let mut probe = s.clone();
         for _ in 0..pieces {
             let before = b
-                .step_in_place(&mut probe.clone(), &inc(n, [0.0, 0.0], 1e-4))
+                .step_in_place(&mut probe.clone(), &inc(n, [0.0, 0.0], 1e-4), &mut b.work())
                 .unwrap();
             let after = b
-                .step_in_place(&mut probe, &inc(n, [h, 0.0], 1e-4))
+                .step_in_place(&mut probe, &inc(n, [h, 0.0], 1e-4), &mut b.work())
                 .unwrap();
             // The resisting force's work: the trapezoid rule, exact
             // between snaps; across a snap the force before it (the snap
@@ -1466,7 +1553,9 @@ fn bristles_slide_at_half_their_static_coefficient_and_balance_energy() {
                 before.force[0] * h
             };
         }
-        let r = b.step_in_place(&mut s, &inc(n, [ds, 0.0], 1e-4)).unwrap();
+        let r = b
+            .step_in_place(&mut s, &inc(n, [ds, 0.0], 1e-4), &mut b.work())
+            .unwrap();
         stored0 = r.stored_energy;
     }
     let balance = stored0 + s[STATE_DISSIPATION];
@@ -1491,7 +1580,7 @@ fn bristles_bad_input_names_the_argument() {
     let mut s = vec![0.0; b.state_len()];
     assert_eq!(
         name(
-            b.step_in_place(&mut s, &inc(1.0, [1e-7, 1e-9], 1e-3))
+            b.step_in_place(&mut s, &inc(1.0, [1e-7, 1e-9], 1e-3), &mut b.work())
                 .unwrap_err()
         ),
         "slip"

@@ -3,8 +3,9 @@
 //! (Derjaguin) return mapping — stick, slip on the exact cone, force against
 //! slip, dissipation F·Δs_p ≥ 0 split by the mechanisms' shares, tangents
 //! against finite differences — zero load and no contact, 2-D direction
-//! changes, bit-identical re-evaluation, named errors, the JSON round trip
-//! and no allocation per step.
+//! changes, bit-identical re-evaluation (old and new separate, in place,
+//! blocks), named errors, the JSON round trip and no allocation per step,
+//! through the one friction contract (`FrictionLaw`, flat states).
 //!
 //! Expected values are closed forms of the return mapping written out here,
 //! never taken from the code.
@@ -14,6 +15,7 @@ mod common;
 use approx::assert_relative_eq;
 use asperity::contact::BatchError;
 use asperity::error::Error;
+use asperity::friction::law::{TANGENT_NORMAL, TANGENT_SLIP};
 use asperity::friction::*;
 
 // ------------------------------------------------- allocation counting
@@ -65,25 +67,91 @@ fn copper() -> HomogenisedFriction {
 const AREA: f64 = 1e-6; // 1 mm² per point
 const K: f64 = 1e8; // N/m
 
-fn inc(n: f64, sx: f64, sy: f64, k: f64) -> FrictionIncrement {
+/// The copper table with the stick stiffness `k` (N/m).
+fn law(k: f64) -> HomogenisedFriction {
+    copper().with_stick_stiffness(k).unwrap()
+}
+
+fn inc(n: f64, sx: f64, sy: f64) -> FrictionIncrement {
     FrictionIncrement {
         normal_force: n,
         area: AREA,
         slip: [sx, sy],
         dt: 1e-6,
-        stick_stiffness: k,
+        ..Default::default()
     }
 }
 
-fn step(
-    h: &HomogenisedFriction,
-    old: &FrictionPointState,
-    i: &FrictionIncrement,
-) -> (FrictionPointState, FrictionResponse) {
-    let mut s = FrictionPointState::default();
-    let mut r = FrictionResponse::default();
-    h.step(old, i, &mut s, &mut r).unwrap();
+/// A point's state: `[D, S, F_x, F_y, plastic slip path, dissipation by
+/// mechanism (4)]`.
+type State = [f64; HomogenisedFriction::STATE_LEN];
+
+const FORCE: usize = HomogenisedFriction::STATE_FORCE;
+const PLASTIC: usize = HomogenisedFriction::STATE_PLASTIC_SLIP_PATH;
+const MECHANISMS: usize = HomogenisedFriction::STATE_MECHANISMS;
+
+/// A fresh point.
+const FRESH: State = [0.0; HomogenisedFriction::STATE_LEN];
+
+/// A fresh point carrying the stick force `f` (N).
+fn with_force(f: [f64; 2]) -> State {
+    let mut s = FRESH;
+    s[FORCE] = f[0];
+    s[FORCE + 1] = f[1];
+    s
+}
+
+/// The stick force of a state (N).
+fn force(s: &State) -> [f64; 2] {
+    [s[FORCE], s[FORCE + 1]]
+}
+
+/// The dissipation by mechanism of a state (J).
+fn dissipation(s: &State) -> Dissipation {
+    let d = &s[MECHANISMS..];
+    Dissipation {
+        chemical: d[0],
+        van_der_waals: d[1],
+        elastic: d[2],
+        plastic: d[3],
+    }
+}
+
+fn step(h: &HomogenisedFriction, old: &State, i: &FrictionIncrement) -> (State, FrictionResponse) {
+    let mut s = FRESH;
+    let r = h.step(old, &mut s, i, &mut h.work()).unwrap();
     (s, r)
+}
+
+/// The plastic slip Δs_p of the step `i` from `old` (m): of the length Δλ
+/// the state's plastic slip path grows by, against the force while
+/// sliding, 0 otherwise. Δλ is read exactly from the same step from a
+/// plastic path of 0 (the path is only booked: the step is otherwise the
+/// same).
+fn plastic_slip(h: &HomogenisedFriction, old: &State, i: &FrictionIncrement) -> [f64; 2] {
+    let (new, r) = step(h, old, i);
+    let mut probe = *old;
+    probe[PLASTIC] = 0.0;
+    let (p, rp) = step(h, &probe, i);
+    assert_eq!(format!("{r:?}"), format!("{rp:?}"));
+    let lam = p[PLASTIC];
+    assert_eq!(new[PLASTIC], old[PLASTIC] + lam);
+    let f = norm(r.force);
+    if r.regime() == FrictionRegime::Slip && f > 0.0 {
+        [-lam * r.force[0] / f, -lam * r.force[1] / f]
+    } else {
+        [0.0, 0.0]
+    }
+}
+
+/// The slip limit of a response in the law's COF form (module
+/// documentation): μ(N + A), μN or A + μN.
+fn slip_limit(form: CofForm, r: &FrictionResponse) -> f64 {
+    match form {
+        CofForm::Derjaguin => r.cof * (r.normal_force + r.adhesion),
+        CofForm::Amontons => r.cof * r.normal_force,
+        CofForm::Coulomb => r.adhesion + r.cof * r.normal_force,
+    }
 }
 
 /// The slip limit μ(p)(N + p_adh(p)A_n) from the interpolated table.
@@ -219,54 +287,62 @@ fn zero_pressure_sample_and_from_fn() {
 
 #[test]
 fn stick_then_slip_on_the_exact_cone() {
-    let h = copper();
+    let h = law(K);
     let n = 100.0; // 100 MPa on 1 mm²
     let lim = limit(&h, n);
     // μ(100 MPa) = 0.97, A = 9 N: F_lim = 0.97·109 N exactly as sampled.
     assert_eq!(lim, 0.97 * (100.0 + 9.0 * MPA * AREA));
     let ds = 1e-7; // 10 N per increment at k = 1e8
-    let mut s = FrictionPointState::default();
+    let mut s = FRESH;
     let mut total = 0.0;
     let mut slipping_from = None;
     for i in 0..40 {
-        let (s1, r) = step(&h, &s, &inc(n, ds, 0.0, K));
+        let (s1, r) = step(&h, &s, &inc(n, ds, 0.0));
         total += ds;
         let trial = K * total;
         if trial <= lim {
             assert_eq!(r.regime(), FrictionRegime::Stick, "increment {i}");
             assert_relative_eq!(r.force[0], -trial, max_relative = 1e-12);
             assert_eq!(r.dissipated, 0.0);
-            assert_eq!(r.plastic_slip, [0.0, 0.0]);
+            assert_eq!(s1[PLASTIC], s[PLASTIC], "no plastic slip in stick");
         } else {
             slipping_from.get_or_insert(i);
             assert_eq!(r.regime(), FrictionRegime::Slip, "increment {i}");
             // On the cone exactly (1-D: the direction is exactly −1).
             assert_eq!(r.force, [-lim, 0.0]);
             assert_eq!(r.force_magnitude, lim);
-            assert_eq!(r.slip_limit, lim);
+            assert_eq!(slip_limit(h.form(), &r), lim);
         }
         assert_eq!(r.force[1], 0.0);
         assert_eq!(r.cof, 0.97);
         assert_eq!(r.normal_force, n);
         assert_eq!(r.adhesion, 9.0 * MPA * AREA);
         assert_relative_eq!(r.true_contact_area, 0.1 * AREA, max_relative = 1e-15);
-        assert_eq!(s1.steps, i as u64 + 1);
+        // The elastic energy of the stick spring, |F|²/(2k).
+        assert_relative_eq!(
+            r.stored_energy,
+            r.force_magnitude.powi(2) / (2.0 * K),
+            max_relative = 1e-15
+        );
+        assert_eq!(force(&s1), r.force);
         s = s1;
     }
     // 105.73 N / 10 N per increment: stick for 10 increments.
     assert_eq!(slipping_from, Some(10));
-    // Plastic slip = total slip − elastic slip lim/k.
-    assert_relative_eq!(s.slip_path, 40.0 * ds - lim / K, max_relative = 1e-12);
+    // Plastic slip = total slip − elastic slip lim/k; the slip path is the
+    // total slip.
+    assert_relative_eq!(s[PLASTIC], 40.0 * ds - lim / K, max_relative = 1e-12);
+    assert_relative_eq!(s[1], 40.0 * ds, max_relative = 1e-12);
     assert_relative_eq!(
-        s.dissipation.total(),
+        dissipation(&s).total(),
         lim * (40.0 * ds - lim / K),
         max_relative = 1e-12
     );
+    assert_relative_eq!(s[0], dissipation(&s).total(), max_relative = 1e-12);
 }
 
 #[test]
 fn force_opposes_slip_and_dissipation_is_f_times_plastic_slip() {
-    let h = copper();
     let mut x = 0x9E37_79B9_7F4A_7C15u64;
     let mut rnd = || {
         x ^= x << 13;
@@ -275,56 +351,59 @@ fn force_opposes_slip_and_dissipation_is_f_times_plastic_slip() {
         (x >> 11) as f64 / (1u64 << 53) as f64
     };
     for k in [0.0, K] {
-        let mut s = FrictionPointState::default();
+        let h = law(k);
+        let mut s = FRESH;
         let mut acc = Dissipation::default();
         let mut path = 0.0;
         for _ in 0..2000 {
             let n = 5.0 + 250.0 * rnd();
             let a = 2.0 * std::f64::consts::PI * rnd();
             let m = 3e-6 * rnd();
-            let i = inc(n, m * a.cos(), m * a.sin(), k);
+            let i = inc(n, m * a.cos(), m * a.sin());
             let (s1, r) = step(&h, &s, &i);
+            let dsp = plastic_slip(&h, &s, &i);
+            let lim = slip_limit(h.form(), &r);
             assert!(r.dissipated >= 0.0);
             let d = &r.dissipation;
             for v in [d.chemical, d.van_der_waals, d.elastic, d.plastic] {
                 assert!(v >= 0.0);
             }
             // Dissipation = −F·Δs_p = F_lim |Δs_p|.
-            let fdot = -(r.force[0] * r.plastic_slip[0] + r.force[1] * r.plastic_slip[1]);
+            let fdot = -(r.force[0] * dsp[0] + r.force[1] * dsp[1]);
             assert_relative_eq!(r.dissipated, fdot, max_relative = 1e-12, epsilon = 1e-300);
             assert_relative_eq!(
                 r.dissipated,
-                r.slip_limit * norm(r.plastic_slip),
+                lim * norm(dsp),
                 max_relative = 1e-12,
                 epsilon = 1e-300
             );
             assert_relative_eq!(r.dissipation.total(), r.dissipated, max_relative = 1e-14);
             // |F| ≤ F_lim; in slip the force is on the cone against slip.
-            assert!(norm(r.force) <= r.slip_limit * (1.0 + 1e-15));
+            assert!(norm(r.force) <= lim * (1.0 + 1e-15));
             if r.regime() == FrictionRegime::Slip {
-                assert_relative_eq!(norm(r.force), r.slip_limit, max_relative = 1e-14);
+                assert_relative_eq!(norm(r.force), lim, max_relative = 1e-14);
                 assert!(fdot > 0.0);
                 if k == 0.0 {
                     // Rigid–plastic: exactly against the increment.
                     let dot = r.force[0] * i.slip[0] + r.force[1] * i.slip[1];
-                    assert_relative_eq!(dot, -r.slip_limit * m, max_relative = 1e-12);
+                    assert_relative_eq!(dot, -lim * m, max_relative = 1e-12);
                 }
             }
             acc += r.dissipation;
-            path += norm(r.plastic_slip);
+            path += norm(dsp);
             s = s1;
         }
-        assert_relative_eq!(s.dissipation.total(), acc.total(), max_relative = 1e-12);
-        assert_relative_eq!(s.slip_path, path, max_relative = 1e-12);
+        assert_relative_eq!(dissipation(&s).total(), acc.total(), max_relative = 1e-12);
+        assert_relative_eq!(s[PLASTIC], path, max_relative = 1e-12);
     }
 }
 
 #[test]
 fn dissipation_shares_follow_the_table() {
-    let h = copper();
+    let h = law(0.0);
     for p in [10.0, 75.0, 120.0, 200.0, 300.0] {
         let n = p * MPA * AREA;
-        let (_, r) = step(&h, &FrictionPointState::default(), &inc(n, 1e-5, 0.0, 0.0));
+        let (_, r) = step(&h, &FRESH, &inc(n, 1e-5, 0.0));
         let sh = h.sample_at(n / AREA).unwrap().shares;
         let d = r.dissipated;
         assert_relative_eq!(d, limit(&h, n) * 1e-5, max_relative = 1e-14);
@@ -349,30 +428,33 @@ fn dissipation_shares_follow_the_table() {
 fn energy_balance_of_the_regularised_law() {
     // Backward Euler: −Σ F_new·Δs = ΔE_el + D + Σ|ΔF|²/(2k), exactly (to
     // rounding), with E_el = |F|²/(2k).
-    let h = copper();
-    let mut s = FrictionPointState::default();
+    let h = law(K);
+    let mut s = FRESH;
     let (mut work, mut num) = (0.0, 0.0);
     for i in 0..400 {
         let a = 0.02 * i as f64;
         let n = 60.0 + 40.0 * (0.05 * i as f64).sin();
-        let (s1, r) = step(&h, &s, &inc(n, 4e-7 * a.cos(), 4e-7 * a.sin(), K));
-        let df = [r.force[0] - s.force[0], r.force[1] - s.force[1]];
+        let (s1, r) = step(&h, &s, &inc(n, 4e-7 * a.cos(), 4e-7 * a.sin()));
+        let f0 = force(&s);
+        let df = [r.force[0] - f0[0], r.force[1] - f0[1]];
         work -= r.force[0] * 4e-7 * a.cos() + r.force[1] * 4e-7 * a.sin();
         num += (df[0] * df[0] + df[1] * df[1]) / (2.0 * K);
         s = s1;
     }
-    let e_el = norm(s.force).powi(2) / (2.0 * K);
-    assert!(s.dissipation.total() > 0.0);
+    let e_el = norm(force(&s)).powi(2) / (2.0 * K);
+    assert!(dissipation(&s).total() > 0.0);
     assert_relative_eq!(
         work,
-        e_el + s.dissipation.total() + num,
+        e_el + dissipation(&s).total() + num,
         max_relative = 1e-10
     );
 }
 
 /// Central differences of the force in N and in the slip components.
-fn fd_check(h: &HomogenisedFriction, old: &FrictionPointState, i: &FrictionIncrement) {
+fn fd_check(h: &HomogenisedFriction, old: &State, i: &FrictionIncrement) {
     let (_, r) = step(h, old, i);
+    // Tangents are always computed.
+    assert_eq!(r.tangents, TANGENT_NORMAL | TANGENT_SLIP);
     let en = 1e-6 * i.normal_force;
     let mut ip = *i;
     let mut im = *i;
@@ -413,13 +495,10 @@ fn fd_check(h: &HomogenisedFriction, old: &FrictionPointState, i: &FrictionIncre
 
 #[test]
 fn tangents_match_finite_differences() {
-    let h = copper();
-    let old = FrictionPointState {
-        force: [-30.0, 20.0],
-        ..Default::default()
-    };
+    let (h, rigid) = (law(K), law(0.0));
+    let old = with_force([-30.0, 20.0]);
     // Stick (k > 0): dF/dΔs = −k I, dF/dN = 0.
-    let i = inc(75.0, 1e-7, 2e-8, K);
+    let i = inc(75.0, 1e-7, 2e-8);
     let (_, r) = step(&h, &old, &i);
     assert_eq!(r.regime(), FrictionRegime::Stick);
     assert_eq!(r.dforce_dslip, [[-K, 0.0], [0.0, -K]]);
@@ -431,23 +510,27 @@ fn tangents_match_finite_differences() {
         (120.0, -3e-7, 2e-6),
         (33.0, 2e-6, -2e-6),
     ] {
-        let i = inc(n, sx, sy, K);
+        let i = inc(n, sx, sy);
         let (_, r) = step(&h, &old, &i);
         assert_eq!(r.regime(), FrictionRegime::Slip);
         fd_check(&h, &old, &i);
     }
     // Slip, rigid–plastic (k = 0).
     for (n, sx, sy) in [(75.0, 1e-6, 2e-7), (170.0, -1e-7, -3e-7)] {
-        let i = inc(n, sx, sy, 0.0);
-        let (_, r) = step(&h, &old, &i);
+        let i = inc(n, sx, sy);
+        let (_, r) = step(&rigid, &old, &i);
         assert_eq!(r.regime(), FrictionRegime::Slip);
-        fd_check(&h, &old, &i);
+        fd_check(&rigid, &old, &i);
     }
     // Amontons and Coulomb forms.
     for form in [CofForm::Amontons, CofForm::Coulomb] {
         let h = HomogenisedFriction::from_samples(&copper_samples(), form).unwrap();
-        fd_check(&h, &old, &inc(75.0, 1e-6, 2e-7, K));
-        fd_check(&h, &old, &inc(75.0, 1e-6, 2e-7, 0.0));
+        fd_check(
+            &h.clone().with_stick_stiffness(K).unwrap(),
+            &old,
+            &inc(75.0, 1e-6, 2e-7),
+        );
+        fd_check(&h, &old, &inc(75.0, 1e-6, 2e-7));
     }
 }
 
@@ -462,8 +545,10 @@ fn cof_forms_set_the_slip_limit() {
         (CofForm::Coulomb, a + 0.97 * n),
     ] {
         let h = HomogenisedFriction::from_samples(&s, form).unwrap();
-        let (_, r) = step(&h, &FrictionPointState::default(), &inc(n, 1e-3, 0.0, 0.0));
-        assert_eq!(r.slip_limit, expect, "{form:?}");
+        let (_, r) = step(&h, &FRESH, &inc(n, 1e-3, 0.0));
+        assert_eq!(r.regime(), FrictionRegime::Slip, "{form:?}");
+        assert_eq!(r.force_magnitude, expect, "{form:?}");
+        assert_eq!(slip_limit(form, &r), expect, "{form:?}");
         assert_eq!(r.force, [-expect, 0.0]);
     }
 }
@@ -471,88 +556,90 @@ fn cof_forms_set_the_slip_limit() {
 #[test]
 fn zero_load_and_no_contact() {
     // Zero load with adhesion: the cone is μ(0)·A (first sample held).
-    let h = copper();
-    let (s, r) = step(&h, &FrictionPointState::default(), &inc(0.0, 1e-5, 0.0, K));
+    let h = law(K);
+    let (s, r) = step(&h, &FRESH, &inc(0.0, 1e-5, 0.0));
     let a = 0.9 * MPA * AREA;
     assert_eq!(r.adhesion, a);
-    assert_eq!(r.slip_limit, 1.10 * a);
+    assert_eq!(slip_limit(h.form(), &r), 1.10 * a);
     assert_eq!(r.force, [-1.10 * a, 0.0]);
     assert_eq!(r.regime(), FrictionRegime::Slip);
     assert!(r.dissipated > 0.0);
-    assert_eq!(s.force, r.force);
+    assert_eq!(force(&s), r.force);
     // No load, no adhesion: no contact, no friction, nothing is NaN.
     let mut samples = copper_samples();
     samples[0].pressure = 0.0;
     samples[0].adhesion_pressure = 0.0;
     samples[0].contact_fraction = 0.0;
-    let h = HomogenisedFriction::from_samples(&samples, CofForm::Derjaguin).unwrap();
-    let old = FrictionPointState {
-        force: [-5.0, 1.0],
-        slip_path: 1e-3,
-        dissipation: Dissipation::new(1.0, 0.1, 0.0, 0.0).unwrap(),
-        steps: 7,
-    };
+    let table = HomogenisedFriction::from_samples(&samples, CofForm::Derjaguin).unwrap();
+    let mut old = with_force([-5.0, 1.0]);
+    old[0] = 1.1;
+    old[1] = 2e-3;
+    old[PLASTIC] = 1e-3;
+    old[MECHANISMS] = 1.0;
+    old[MECHANISMS + 1] = 0.1;
     for k in [0.0, K] {
-        let (s, r) = step(&h, &old, &inc(0.0, 1e-5, -2e-5, k));
+        let h = table.clone().with_stick_stiffness(k).unwrap();
+        let (s, r) = step(&h, &old, &inc(0.0, 1e-5, -2e-5));
         assert_eq!(r.regime(), FrictionRegime::NoContact);
-        assert_eq!(r.regime, 2);
+        assert_eq!(r.regime, 3);
         assert_eq!(r.force, [0.0, 0.0]);
         assert_eq!(r.force_magnitude, 0.0);
         assert_eq!(r.dissipated, 0.0);
+        assert_eq!(r.stored_energy, 0.0);
         assert_eq!(r.dforce_dslip, [[0.0; 2]; 2]);
         assert_eq!(r.true_contact_area, 0.0);
         assert_eq!(r.cof, 1.10);
-        assert_eq!(s.force, [0.0, 0.0]);
-        assert_eq!(s.slip_path, old.slip_path);
-        assert_eq!(s.dissipation, old.dissipation);
-        assert_eq!(s.steps, 8);
-        let (s2, r2) = step(&h, &s, &inc(0.0, 0.0, 0.0, k));
+        assert_eq!(force(&s), [0.0, 0.0]);
+        assert_eq!(s[PLASTIC], old[PLASTIC]);
+        assert_eq!(dissipation(&s), dissipation(&old));
+        assert_eq!(s[0], old[0]);
+        let (s2, r2) = step(&h, &s, &inc(0.0, 0.0, 0.0));
         assert_eq!(r2.regime(), FrictionRegime::NoContact);
-        assert!(s2.force.iter().all(|f| f.is_finite()));
+        assert!(s2.iter().all(|f| f.is_finite()));
     }
     // Frictionless contact (μ = 0): slips with zero force, no dissipation.
     for s in samples.iter_mut() {
         s.cof = 0.0;
     }
-    let h = HomogenisedFriction::from_samples(&samples, CofForm::Derjaguin).unwrap();
-    let (_, r) = step(&h, &old, &inc(50.0, 1e-6, 0.0, K));
+    let h = HomogenisedFriction::from_samples(&samples, CofForm::Derjaguin)
+        .unwrap()
+        .with_stick_stiffness(K)
+        .unwrap();
+    let (_, r) = step(&h, &old, &inc(50.0, 1e-6, 0.0));
     assert_eq!(r.regime(), FrictionRegime::Slip);
     assert_eq!(r.force, [0.0, 0.0]);
     assert_eq!(r.dissipated, 0.0);
     // Rigid stick with no slip keeps the old force inside the cone.
-    let h = copper();
-    let (s, r) = step(&h, &old, &inc(50.0, 0.0, 0.0, 0.0));
+    let h = law(0.0);
+    let (s, r) = step(&h, &old, &inc(50.0, 0.0, 0.0));
     assert_eq!(r.regime(), FrictionRegime::Stick);
-    assert_eq!(r.force, old.force);
-    assert_eq!(s.force, old.force);
+    assert_eq!(r.force, force(&old));
+    assert_eq!(force(&s), force(&old));
     // ... and caps it without dissipation when the cone shrinks.
-    let big = FrictionPointState {
-        force: [-300.0, 0.0],
-        ..Default::default()
-    };
-    let (_, r) = step(&h, &big, &inc(50.0, 0.0, 0.0, 0.0));
-    assert_eq!(r.force, [-r.slip_limit, 0.0]);
+    let big = with_force([-300.0, 0.0]);
+    let (_, r) = step(&h, &big, &inc(50.0, 0.0, 0.0));
+    assert_eq!(r.force, [-slip_limit(h.form(), &r), 0.0]);
     assert_eq!(r.dissipated, 0.0);
 }
 
 #[test]
 fn slip_reversal_and_direction_changes() {
-    let h = copper();
+    let (h, rigid) = (law(K), law(0.0));
     let n = 80.0;
     let lim = limit(&h, n);
     // Slide along +x into steady sliding.
-    let mut s = FrictionPointState::default();
+    let mut s = FRESH;
     for _ in 0..20 {
-        s = step(&h, &s, &inc(n, 1e-6, 0.0, K)).0;
+        s = step(&h, &s, &inc(n, 1e-6, 0.0)).0;
     }
-    assert_eq!(s.force, [-lim, 0.0]);
+    assert_eq!(force(&s), [-lim, 0.0]);
     // Reverse: elastic unloading through zero (stick) for 2 F_lim/k, then
     // sliding the other way with the force flipped.
     let ds = 1e-7;
     let mut stick = 0;
     let mut x = 0.0;
     loop {
-        let (s1, r) = step(&h, &s, &inc(n, -ds, 0.0, K));
+        let (s1, r) = step(&h, &s, &inc(n, -ds, 0.0));
         x += ds;
         s = s1;
         if r.regime() == FrictionRegime::Stick {
@@ -567,38 +654,39 @@ fn slip_reversal_and_direction_changes() {
     // Turn by 90°: with k > 0 the force rotates towards −y over a few
     // increments, always on or inside the cone; with k = 0 at once.
     for _ in 0..200 {
-        let (s1, r) = step(&h, &s, &inc(n, 0.0, 1e-6, K));
+        let (s1, r) = step(&h, &s, &inc(n, 0.0, 1e-6));
         assert!(norm(r.force) <= lim * (1.0 + 1e-15));
         s = s1;
     }
-    assert!(s.force[0].abs() < 1e-9 * lim && (s.force[1] + lim).abs() < 1e-9 * lim);
-    let (_, r) = step(&h, &s, &inc(n, 1e-6, 0.0, 0.0));
+    let f = force(&s);
+    assert!(f[0].abs() < 1e-9 * lim && (f[1] + lim).abs() < 1e-9 * lim);
+    let (_, r) = step(&rigid, &s, &inc(n, 1e-6, 0.0));
     assert_eq!(r.force, [-lim, 0.0]);
     // Reversal in one large increment (rigid–plastic): flips at once.
-    let (_, r) = step(&h, &s, &inc(n, 0.0, -1e-6, 0.0));
+    let (_, r) = step(&rigid, &s, &inc(n, 0.0, -1e-6));
     assert_eq!(r.force, [0.0, lim]);
 }
 
 #[test]
 fn re_evaluation_is_bit_identical() {
-    let h = copper();
-    let old = FrictionPointState {
-        force: [-12.5, 3.25],
-        slip_path: 2e-6,
-        dissipation: Dissipation::new(1e-4, 1e-5, 1e-7, 0.0).unwrap(),
-        steps: 3,
-    };
-    let i = inc(77.7, 3e-7, -1e-7, K);
+    let h = law(K);
+    let mut old = with_force([-12.5, 3.25]);
+    old[0] = 1.101e-4;
+    old[1] = 3e-6;
+    old[PLASTIC] = 2e-6;
+    old[MECHANISMS..].copy_from_slice(&[1e-4, 1e-5, 1e-7, 0.0]);
+    let i = inc(77.7, 3e-7, -1e-7);
     let (s1, r1) = step(&h, &old, &i);
     // Another step in between (cut back and redo) does not matter.
-    let _ = step(&h, &s1, &inc(10.0, 1.0, 1.0, K));
+    let _ = step(&h, &s1, &inc(10.0, 1.0, 1.0));
     let (s2, r2) = step(&h, &old, &i);
     assert_eq!(format!("{s1:?}{r1:?}"), format!("{s2:?}{r2:?}"));
     assert_eq!(s1, s2);
     assert_eq!(r1.force[0].to_bits(), r2.force[0].to_bits());
-    assert_eq!(old.steps, 3);
-    // step_value agrees with step.
-    assert_eq!(h.step_value(&old, &i).unwrap(), (s1, r1));
+    // In place agrees with old and new separate.
+    let mut st = old;
+    let r3 = h.step_in_place(&mut st, &i, &mut h.work()).unwrap();
+    assert_eq!(format!("{st:?}{r3:?}"), format!("{s1:?}{r1:?}"));
 }
 
 // ------------------------------------------------------------- blocks
@@ -612,37 +700,79 @@ fn block_inputs(n: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     (nf, a, s)
 }
 
+/// A block of the points `normal_force`, `area`, `slip` at Δt = 1e-6 s.
+fn block<'a>(
+    normal_force: &'a [f64],
+    area: &'a [f64],
+    slip: &'a [f64],
+    states: BlockStates<'a>,
+    tangential_force: &'a mut [f64],
+    dissipation: Option<&'a mut [f64]>,
+) -> FrictionBlock<'a> {
+    FrictionBlock {
+        normal_force,
+        area: Some(area),
+        slip,
+        dt: 1e-6,
+        states,
+        tangential_force,
+        dissipation,
+    }
+}
+
+/// Old and new states separate.
+fn sep<'a>(old: &'a [f64], new: &'a mut [f64]) -> BlockStates<'a> {
+    BlockStates::Separate { old, new }
+}
+
 #[test]
 fn block_equals_scalar_steps() {
-    let h = copper();
+    let h = law(K);
+    let mut w = h.work();
     let n = 64;
+    let m = HomogenisedFriction::STATE_LEN;
     let (nf, a, sl) = block_inputs(n);
-    let mut old = vec![FrictionPointState::default(); n];
+    let mut old = vec![0.0; n * m];
     let mut new = old.clone();
+    let mut in_place = old.clone();
     let mut f = vec![0.0; 2 * n];
     let mut d = vec![0.0; n];
+    let mut f2 = vec![0.0; 2 * n];
+    let mut d2 = vec![0.0; n];
     for round in 0..30 {
-        h.step_block(&nf, &a, &sl, 1e-6, K, &old, &mut new, &mut f, &mut d)
+        let states = BlockStates::Separate {
+            old: &old,
+            new: &mut new,
+        };
+        h.step_block(block(&nf, &a, &sl, states, &mut f, Some(&mut d)), &mut w)
+            .unwrap();
+        let states = BlockStates::InPlace(&mut in_place);
+        h.step_block(block(&nf, &a, &sl, states, &mut f2, Some(&mut d2)), &mut w)
             .unwrap();
         for i in 0..n {
-            let (s, r) = step(&h, &old[i], &inc(nf[i], sl[2 * i], sl[2 * i + 1], K));
-            assert_eq!(new[i], s, "round {round}, point {i}");
+            let o: State = old[i * m..(i + 1) * m].try_into().unwrap();
+            let (s, r) = step(&h, &o, &inc(nf[i], sl[2 * i], sl[2 * i + 1]));
+            assert_eq!(new[i * m..(i + 1) * m], s, "round {round}, point {i}");
             assert_eq!([f[2 * i], f[2 * i + 1]], r.force);
             assert_eq!(d[i], r.dissipated);
         }
+        assert_eq!((&in_place, &f2, &d2), (&new, &f, &d), "round {round}");
         std::mem::swap(&mut old, &mut new);
     }
     // Empty blocks are fine.
-    h.step_block(&[], &[], &[], 0.0, K, &[], &mut [], &mut [], &mut [])
+    let states = BlockStates::InPlace(&mut []);
+    h.step_block(block(&[], &[], &[], states, &mut [], None), &mut w)
         .unwrap();
 }
 
 #[test]
 fn block_errors_name_the_slice_and_the_element() {
-    let h = copper();
+    let h = law(K);
+    let mut w = h.work();
     let n = 8;
+    let m = HomogenisedFriction::STATE_LEN;
     let (mut nf, a, sl) = block_inputs(n);
-    let old = vec![FrictionPointState::default(); n];
+    let old = vec![0.0; n * m];
     let mut new = old.clone();
     let mut f = vec![0.0; 2 * n];
     let mut d = vec![0.0; n];
@@ -651,60 +781,115 @@ fn block_errors_name_the_slice_and_the_element() {
         other => panic!("{other:?}"),
     };
     let e = h
-        .step_block(&nf, &a[..7], &sl, 0.0, K, &old, &mut new, &mut f, &mut d)
+        .step_block(
+            block(&nf, &a[..7], &sl, sep(&old, &mut new), &mut f, Some(&mut d)),
+            &mut w,
+        )
         .unwrap_err();
-    assert_eq!(name(e), (0, "areas"));
+    assert_eq!(name(e), (0, "area.len()"));
     let e = h
-        .step_block(&nf, &a, &sl[..8], 0.0, K, &old, &mut new, &mut f, &mut d)
+        .step_block(
+            block(&nf, &a, &sl[..8], sep(&old, &mut new), &mut f, Some(&mut d)),
+            &mut w,
+        )
         .unwrap_err();
-    assert_eq!(name(e), (0, "slip_increments"));
+    assert_eq!(name(e), (0, "slip.len()"));
     let e = h
-        .step_block(&nf, &a, &sl, 0.0, K, &old[..2], &mut new, &mut f, &mut d)
+        .step_block(
+            block(
+                &nf,
+                &a,
+                &sl,
+                sep(&old[..2 * m], &mut new),
+                &mut f,
+                Some(&mut d),
+            ),
+            &mut w,
+        )
         .unwrap_err();
-    assert_eq!(name(e), (0, "old"));
+    assert_eq!(name(e), (0, "old.len()"));
     let e = h
-        .step_block(&nf, &a, &sl, 0.0, K, &old, &mut new[..3], &mut f, &mut d)
+        .step_block(
+            block(&nf, &a, &sl, sep(&old, &mut new[..3]), &mut f, Some(&mut d)),
+            &mut w,
+        )
         .unwrap_err();
-    assert_eq!(name(e), (0, "new"));
+    assert_eq!(name(e), (0, "new.len()"));
     let e = h
-        .step_block(&nf, &a, &sl, 0.0, K, &old, &mut new, &mut f[..3], &mut d)
+        .step_block(
+            block(
+                &nf,
+                &a,
+                &sl,
+                BlockStates::InPlace(&mut new[1..]),
+                &mut f,
+                None,
+            ),
+            &mut w,
+        )
         .unwrap_err();
-    assert_eq!(name(e), (0, "tangential_forces"));
+    assert_eq!(name(e), (0, "states.len()"));
     let e = h
-        .step_block(&nf, &a, &sl, 0.0, K, &old, &mut new, &mut f, &mut d[..1])
+        .step_block(
+            block(&nf, &a, &sl, sep(&old, &mut new), &mut f[..3], Some(&mut d)),
+            &mut w,
+        )
         .unwrap_err();
-    assert_eq!(name(e), (0, "dissipation"));
+    assert_eq!(name(e), (0, "tangential_force.len()"));
+    let e = h
+        .step_block(
+            block(&nf, &a, &sl, sep(&old, &mut new), &mut f, Some(&mut d[..1])),
+            &mut w,
+        )
+        .unwrap_err();
+    assert_eq!(name(e), (0, "dissipation.len()"));
     // A bad element: earlier ones written, later ones untouched.
     nf[5] = f64::NAN;
     let mut f = vec![-99.0; 2 * n];
     let e = h
-        .step_block(&nf, &a, &sl, 0.0, K, &old, &mut new, &mut f, &mut d)
+        .step_block(
+            block(&nf, &a, &sl, sep(&old, &mut new), &mut f, Some(&mut d)),
+            &mut w,
+        )
         .unwrap_err();
-    assert_eq!(name(e), (5, "normal_force"));
     assert!(e.to_string().contains("element 5"));
+    assert_eq!(name(e), (5, "normal_force"));
     assert!(f[..10].iter().all(|&x| x != -99.0));
     assert!(f[10..].iter().all(|&x| x == -99.0));
     nf[5] = 10.0;
-    let e = h
-        .step_block(&nf, &a, &sl, -1.0, K, &old, &mut new, &mut f, &mut d)
-        .unwrap_err();
+    let mut b = block(&nf, &a, &sl, sep(&old, &mut new), &mut f, Some(&mut d));
+    b.dt = -1.0;
+    let e = h.step_block(b, &mut w).unwrap_err();
     assert_eq!(name(e), (0, "dt"));
+    // No areas: 0 for every point, which this law refuses.
+    let mut b = block(&nf, &a, &sl, sep(&old, &mut new), &mut f, Some(&mut d));
+    b.area = None;
+    let e = h.step_block(b, &mut w).unwrap_err();
+    assert_eq!(name(e), (0, "area"));
 }
 
 // ---------------------------------------------------------- bad input
 
 #[test]
 fn bad_step_input_is_named() {
-    let h = copper();
-    let o = FrictionPointState::default();
-    let mut s = o;
-    let mut r = FrictionResponse::default();
-    let mut call = |old: &FrictionPointState, i: FrictionIncrement| {
-        let res = h.step(old, &i, &mut s, &mut r);
-        assert_eq!(s, o, "new state untouched on error");
+    let h = law(K);
+    let o = FRESH;
+    let sentinel = [-7.0; HomogenisedFriction::STATE_LEN];
+    let call = |old: &State, i: FrictionIncrement| {
+        let mut s = sentinel;
+        let res = h.step(old, &mut s, &i, &mut h.work());
+        assert_eq!(s, sentinel, "new state untouched on error");
+        let mut st = *old;
+        let res2 = h.step_in_place(&mut st, &i, &mut h.work());
+        assert_eq!(
+            st.map(f64::to_bits),
+            old.map(f64::to_bits),
+            "state untouched"
+        );
+        assert_eq!(res.is_err(), res2.is_err());
         res
     };
-    let good = inc(50.0, 1e-7, 0.0, K);
+    let good = inc(50.0, 1e-7, 0.0);
     invalid(
         call(
             &o,
@@ -777,44 +962,38 @@ fn bad_step_input_is_named() {
         ),
         "dt",
     );
-    invalid(
-        call(
-            &o,
-            FrictionIncrement {
-                stick_stiffness: -1.0,
-                ..good
-            },
-        ),
-        "stick_stiffness",
-    );
-    invalid(
-        call(
-            &o,
-            FrictionIncrement {
-                stick_stiffness: f64::NAN,
-                ..good
-            },
-        ),
-        "stick_stiffness",
-    );
-    let bad = FrictionPointState {
-        force: [f64::NAN, 0.0],
-        ..o
-    };
-    invalid(call(&bad, good), "old.force");
-    let bad = FrictionPointState {
-        slip_path: -1.0,
-        ..o
-    };
-    invalid(call(&bad, good), "old.slip_path");
-    let bad = FrictionPointState {
-        dissipation: Dissipation {
-            plastic: -1.0,
-            ..Dissipation::default()
+    match call(
+        &o,
+        FrictionIncrement {
+            tangents: 4,
+            ..good
         },
-        ..o
+    ) {
+        Err(Error::UnknownSelector {
+            name: "tangents", ..
+        }) => {}
+        other => panic!("{other:?}"),
+    }
+    // The stick stiffness is the law's, checked when it is set.
+    invalid(copper().with_stick_stiffness(-1.0), "stick_stiffness");
+    invalid(copper().with_stick_stiffness(f64::NAN), "stick_stiffness");
+    invalid(
+        copper().with_stick_stiffness(f64::INFINITY),
+        "stick_stiffness",
+    );
+    assert_eq!(law(K).stick_stiffness(), K);
+    assert_eq!(copper().stick_stiffness(), 0.0);
+    let bad = |i: usize, v: f64| {
+        let mut s = o;
+        s[i] = v;
+        s
     };
-    invalid(call(&bad, good), "old.dissipation");
+    invalid(call(&bad(FORCE, f64::NAN), good), "old.force");
+    invalid(call(&bad(FORCE + 1, f64::INFINITY), good), "old.force");
+    invalid(call(&bad(PLASTIC, -1.0), good), "old.plastic_slip_path");
+    invalid(call(&bad(MECHANISMS + 3, -1.0), good), "old.mechanisms");
+    invalid(call(&bad(0, -1.0), good), "old.dissipation");
+    invalid(call(&bad(1, f64::NAN), good), "old.slip_path");
     // Overflow is an error, never an infinity.
     let e = call(
         &o,
@@ -842,14 +1021,20 @@ fn bad_step_input_is_named() {
     // ... but a slip limit beyond f64 is.
     let mut one = copper_samples()[0];
     one.cof = 2.0;
-    let h2 = HomogenisedFriction::from_samples(&[one], CofForm::Derjaguin).unwrap();
+    let h2 = HomogenisedFriction::from_samples(&[one], CofForm::Derjaguin)
+        .unwrap()
+        .with_stick_stiffness(K)
+        .unwrap();
+    let mut s = o;
     let e = h2
-        .step_value(
+        .step(
             &o,
+            &mut s,
             &FrictionIncrement {
                 normal_force: 1.7e308,
                 ..good
             },
+            &mut h2.work(),
         )
         .unwrap_err();
     assert!(
@@ -928,12 +1113,18 @@ fn json_round_trip_is_bit_exact() {
                 assert_eq!(x.to_bits(), y.to_bits());
             }
         }
-        let mut s = FrictionPointState::default();
+        // The stick stiffness is the host's penalty, not the table's: not
+        // serialised.
+        let hk = h.clone().with_stick_stiffness(K).unwrap();
+        assert_eq!(hk.to_json(), json);
+        assert_eq!(g.stick_stiffness(), 0.0);
+        let gk = g.clone().with_stick_stiffness(K).unwrap();
+        let mut s = FRESH;
         for i in 0..200 {
             let n = 1.0 + i as f64;
-            let incr = inc(n, 1e-7 * (i as f64).cos(), 1e-7 * (i as f64).sin(), K);
-            let (s1, r1) = step(&h, &s, &incr);
-            let (s2, r2) = step(&g, &s, &incr);
+            let incr = inc(n, 1e-7 * (i as f64).cos(), 1e-7 * (i as f64).sin());
+            let (s1, r1) = step(&hk, &s, &incr);
+            let (s2, r2) = step(&gk, &s, &incr);
             assert_eq!(format!("{s1:?}{r1:?}"), format!("{s2:?}{r2:?}"));
             s = s1;
         }
@@ -974,66 +1165,64 @@ fn json_is_validated_on_load() {
 
 #[test]
 fn no_allocation_per_step() {
-    let h = copper();
+    let h = law(K);
+    let mut w = h.work();
     let n = 64;
+    let m = HomogenisedFriction::STATE_LEN;
     let (nf, a, sl) = block_inputs(n);
-    let mut old = vec![FrictionPointState::default(); n];
+    let mut old = vec![0.0; n * m];
     let mut new = old.clone();
     let mut f = vec![0.0; 2 * n];
     let mut d = vec![0.0; n];
-    let mut s = FrictionPointState::default();
+    let mut s = FRESH;
     let mut s1 = s;
-    let mut r = FrictionResponse::default();
     let mut acc = 0.0;
     let before = allocations();
     for i in 0..10_000 {
         let x = i as f64;
-        let incr = inc(1.0 + (x * 0.01) % 250.0, 1e-7 * x.cos(), 1e-7 * x.sin(), K);
-        h.step(&s, &incr, &mut s1, &mut r).unwrap();
+        let incr = inc(1.0 + (x * 0.01) % 250.0, 1e-7 * x.cos(), 1e-7 * x.sin());
+        let r = h.step(&s, &mut s1, &incr, &mut w).unwrap();
         s = s1;
         acc += r.dissipated;
-        h.step_block(&nf, &a, &sl, 1e-6, K, &old, &mut new, &mut f, &mut d)
-            .unwrap();
+        h.step_in_place(&mut s1, &incr, &mut w).unwrap();
+        h.step_block(
+            block(&nf, &a, &sl, sep(&old, &mut new), &mut f, Some(&mut d)),
+            &mut w,
+        )
+        .unwrap();
         std::mem::swap(&mut old, &mut new);
+        h.step_block(
+            block(&nf, &a, &sl, BlockStates::InPlace(&mut new), &mut f, None),
+            &mut w,
+        )
+        .unwrap();
         // The error path does not allocate either.
         let bad = FrictionIncrement { area: -1.0, ..incr };
-        assert!(h.step(&s, &bad, &mut s1, &mut r).is_err());
+        assert!(h.step(&s, &mut s1, &bad, &mut w).is_err());
     }
     let after = allocations();
     assert_eq!(
         after - before,
         0,
-        "allocations during 10^4 step + step_block calls"
+        "allocations during 10^4 step + step_in_place + step_block calls"
     );
     // The counter does count.
     let v = std::hint::black_box(vec![1u8; 16]);
     assert!(allocations() > after && v.len() == 16);
-    assert!(acc > 0.0 && old[3].dissipation.total() > 0.0);
+    assert!(acc > 0.0 && old[3 * m] > 0.0);
 }
 
 #[test]
 fn one_law_shared_by_threads() {
-    let h = copper();
+    let h = law(K);
     let reference: Vec<_> = (0..100)
-        .map(|i| {
-            step(
-                &h,
-                &FrictionPointState::default(),
-                &inc(i as f64, 1e-6, 0.0, K),
-            )
-            .1
-        })
+        .map(|i| step(&h, &FRESH, &inc(i as f64, 1e-6, 0.0)).1)
         .collect();
     std::thread::scope(|sc| {
         for _ in 0..2 {
             sc.spawn(|| {
                 for (i, r0) in reference.iter().enumerate() {
-                    let r = step(
-                        &h,
-                        &FrictionPointState::default(),
-                        &inc(i as f64, 1e-6, 0.0, K),
-                    )
-                    .1;
+                    let r = step(&h, &FRESH, &inc(i as f64, 1e-6, 0.0)).1;
                     assert_eq!(&r, r0);
                 }
             });

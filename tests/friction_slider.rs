@@ -1,7 +1,9 @@
 //! The sliding hierarchical slider (issue 6 §2 sliding, §3, §8): the
 //! chapter-6 findings on seeded synthetic profiles (and a measured profile
-//! when `../shared/data/profiles/` is present), bad input, extremes, and no
-//! allocation per step.
+//! when `../shared/data/profiles/` is present), bad input, extremes, no
+//! allocation per step, and the slider as the friction law of a surface
+//! patch (`FrictionLaw`: flat states, `SliderWork::record`, tangents,
+//! blocks) reproducing `Slider::slide` bit for bit.
 //!
 //! The chapter-6 scenes spread the volume of yielded rods with Gaussian
 //! weights of width 20 µm (thesis 6.2.3's proposed weighting function); the
@@ -11,7 +13,10 @@
 
 mod common;
 
-use asperity::friction::{Loading, SlideStep, Slider, SliderOptions, SliderState, TrackEnd};
+use asperity::friction::{
+    BlockStates, FrictionBlock, FrictionIncrement, FrictionLaw, FrictionResponse, Loading,
+    SlideStep, Slider, SliderOptions, SliderWork, TrackEnd,
+};
 use asperity::scene::{LoadingSpec, PlasticSpec, Scene, SurfaceSpec};
 use asperity::Error;
 use std::path::Path;
@@ -264,18 +269,21 @@ fn measured_profile_slides() {
 #[test]
 fn step_does_not_allocate() {
     let slider = scene().build().unwrap();
+    let m = slider.state_len();
     let mut work = slider.work();
-    let fresh = slider.fresh_state();
-    let mut a = fresh.clone();
-    slider.seat(&fresh, &mut a, &mut work).unwrap();
-    let mut b: SliderState = a.clone();
+    let mut a = vec![0.0; m];
+    // Seated and stepped once: the work is at capacity.
+    slider
+        .step_in_place(&mut a, &along(1.5e-6), &mut work)
+        .unwrap();
+    let mut b = a.clone();
     let before = allocations();
     for _ in 0..50 {
-        let r = slider.step(&a, &mut b, 1.5e-6, &mut work).unwrap();
-        check_step(&r);
+        slider.step(&a, &mut b, &along(1.5e-6), &mut work).unwrap();
+        check_step(record(&work));
         core::mem::swap(&mut a, &mut b);
     }
-    assert_eq!(allocations() - before, 0, "Slider::step allocated");
+    assert_eq!(allocations() - before, 0, "the slider's step allocated");
 }
 
 // --------------------------------------------------- extremes, errors
@@ -332,9 +340,12 @@ fn bad_arguments_are_named() {
     assert_eq!(name(s.slide(f64::NAN, 1e-6).unwrap_err()), "distance");
     assert_eq!(name(s.slide(1e-5, 0.0).unwrap_err()), "step");
     let mut w = s.work();
-    let a = s.fresh_state();
+    let a = vec![0.0; s.state_len()];
     let mut b = a.clone();
-    assert_eq!(name(s.step(&a, &mut b, -1.0, &mut w).unwrap_err()), "slip");
+    assert_eq!(
+        name(s.step(&a, &mut b, &along(f64::NAN), &mut w).unwrap_err()),
+        "slip"
+    );
     // Past the counter profile's end.
     assert_eq!(name(s.slide(1e-3, 1.5e-6).unwrap_err()), "position");
     let base = s.options();
@@ -385,7 +396,6 @@ fn periodic_track_and_flat_counter() {
 /// are the run's.
 #[test]
 fn homogenised_law_from_slider_runs_reproduces_the_runs() {
-    use asperity::friction::{FrictionIncrement, FrictionPointState, FrictionResponse};
     let base = scene().build().unwrap();
     let area = base.nominal_area();
     let (distance, step) = (30e-6, 1.5e-6);
@@ -404,12 +414,11 @@ fn homogenised_law_from_slider_runs_reproduces_the_runs() {
             area,
             slip: [1e-7, 0.0],
             dt: 1e-3,
-            stick_stiffness: 0.0,
+            ..Default::default()
         };
-        let mut new = FrictionPointState::default();
-        let mut out = FrictionResponse::default();
-        law.step(&FrictionPointState::default(), &inc, &mut new, &mut out)
-            .unwrap();
+        let fresh = vec![0.0; law.state_len()];
+        let mut new = fresh.clone();
+        let out = law.step(&fresh, &mut new, &inc, &mut law.work()).unwrap();
         let f = run.summary.mean_friction_force;
         assert!(
             (out.force_magnitude - f).abs() <= 1e-12 * f,
@@ -425,102 +434,109 @@ fn homogenised_law_from_slider_runs_reproduces_the_runs() {
     }
 }
 
-// ------------------------------------------- the flat per-increment step
+// ------------------------------------- the slider as a patch friction law
 
-use asperity::friction::{
-    FrictionRegime, SliderIncrement, SliderResponse, SliderStates, SliderTangents,
-};
+use asperity::friction::FrictionRegime;
 
-fn along(dx: f64) -> SliderIncrement {
-    SliderIncrement {
-        loading: None,
-        slip: [dx, 0.0],
+/// The chapter-6 scene's fixed load (N).
+const SCENE_LOAD: f64 = 0.18;
+
+/// A slip `dx` along the track at the scene's load.
+fn along(dx: f64) -> FrictionIncrement {
+    loaded(SCENE_LOAD, [dx, 0.0])
+}
+
+fn loaded(load: f64, slip: [f64; 2]) -> FrictionIncrement {
+    FrictionIncrement {
+        normal_force: load,
+        slip,
         dt: 1e-3,
-        tangents: SliderTangents::default(),
+        ..Default::default()
     }
 }
 
-fn loaded(load: f64, slip: [f64; 2]) -> SliderIncrement {
-    SliderIncrement {
-        loading: Some(Loading::FixedLoad { load }),
-        slip,
-        dt: 1e-3,
-        tangents: SliderTangents::default(),
-    }
+/// The full record of the last step made with `work`.
+fn record(work: &asperity::friction::FrictionWork) -> &SlideStep {
+    work.get::<SliderWork>().expect("a slider's work").record()
+}
+
+/// Whether the last step made with `work` seated a fresh state.
+fn seated(work: &asperity::friction::FrictionWork) -> bool {
+    work.get::<SliderWork>().expect("a slider's work").seated()
 }
 
 fn bits(v: &[f64]) -> Vec<u64> {
     v.iter().map(|x| x.to_bits()).collect()
 }
 
-fn same(a: &SliderResponse, b: &SliderResponse) -> bool {
+fn same(a: &FrictionResponse, b: &FrictionResponse) -> bool {
     // Bit for bit (NaN-safe through the debug text of every field).
     format!("{a:?}") == format!("{b:?}")
 }
 
+/// `Slider::slide` runs the friction step: its records are, bit for bit,
+/// the records (`SliderWork::record`) of a fresh flat state stepped in
+/// place along the track at the scene's load, and the responses carry
+/// them.
 #[test]
 fn flat_steps_reproduce_slide_bit_for_bit() {
     let s = scene();
     let slider = s.build().unwrap();
+    let Loading::FixedLoad { load } = slider.options().loading else {
+        panic!("the chapter-6 scene is load-controlled");
+    };
+    assert_eq!(load, SCENE_LOAD);
     let (d, dx) = (30e-6, 1.5e-6);
     let run = slider.slide(d, dx).unwrap();
     let m = slider.state_len();
-    assert_eq!(m, 8 + 2 * slider.rods());
+    assert_eq!(m, 9 + 2 * slider.rods());
     let mut work = slider.work();
     let mut a = vec![0.0; m]; // all-zero: fresh
-    let mut b = vec![0.0; m];
     let (mut path, mut total) = (0.0, 0.0);
     for (k, want) in run.steps.iter().enumerate() {
-        let r = slider.step_flat(&a, &mut b, &along(dx), &mut work).unwrap();
-        assert_eq!(r.seated, (k == 0) as i32, "only the first step seats");
+        let r = slider
+            .step_in_place(&mut a, &loaded(load, [dx, 0.0]), &mut work)
+            .unwrap();
+        let rec = record(&work);
+        assert_eq!(format!("{rec:?}"), format!("{want:?}"), "{k}");
+        assert_eq!(seated(&work), k == 0, "only the first step seats");
         assert_eq!(
-            r.friction_force.to_bits(),
+            r.force_magnitude.to_bits(),
             want.friction_force.to_bits(),
             "{k}"
         );
         assert_eq!(r.force[0], -want.friction_force, "opposes the slip");
         assert_eq!(r.force[1], 0.0);
         assert_eq!(r.dissipation, want.dissipation, "{k}");
+        assert_eq!(r.dissipated, want.dissipation.total(), "{k}");
         assert_eq!(r.true_contact_area, want.true_contact_area, "{k}");
+        assert_eq!(r.adhesion, want.adhesion, "{k}");
         assert_eq!(r.cof, want.cof, "{k}");
         assert_eq!(r.normal_force, want.normal_load, "{k}");
-        assert_eq!(r.position, want.position, "{k}");
-        assert_eq!(r.rod_position, want.rod_position, "{k}");
-        assert_eq!(r.nano_contacts as usize, want.nano_contacts, "{k}");
-        assert_eq!(r.slip_length, dx);
+        assert_eq!(a[Slider::STATE_POSITION], want.position, "{k}");
+        assert_eq!(a[Slider::STATE_ROD_POSITION], want.rod_position, "{k}");
         assert_eq!(r.regime(), FrictionRegime::Slip);
+        assert_eq!(r.regime, 2);
         assert_eq!(r.tangents, 0, "no tangent unless asked");
         assert_eq!(r.dforce_dslip, [[0.0; 2]; 2]);
+        // The stored energy is the rods'.
+        let energies = &a[Slider::STATE_HEIGHTS + slider.rods()..];
+        assert_eq!(r.stored_energy, energies.iter().sum::<f64>());
         // Dissipation >= 0 on every increment, by mechanism.
         r.dissipation.validate().unwrap();
         assert!(r.dissipated >= 0.0);
         path += dx;
         total += want.dissipation.total();
-        core::mem::swap(&mut a, &mut b);
     }
     // The state's ledger: slip path and the summed dissipation.
     assert_eq!(a[Slider::STATE_FLAG], 1.0);
-    assert!((a[Slider::STATE_SLIP_PATH] - path).abs() <= 1e-12 * path);
-    let acc: f64 = a[Slider::STATE_DISSIPATION..Slider::STATE_HEIGHTS]
+    assert!((a[1] - path).abs() <= 1e-12 * path);
+    assert!((a[0] - total).abs() <= 1e-12 * total);
+    let acc: f64 = a[Slider::STATE_MECHANISMS..Slider::STATE_HEIGHTS]
         .iter()
         .sum();
     assert!((acc - total).abs() <= 1e-12 * total);
     assert!((acc - run.summary.dissipation.total()).abs() <= 1e-12 * total);
-    // The rods' history equals that of the struct API (seat, then steps).
-    let mut w = slider.work();
-    let fresh = slider.fresh_state();
-    let mut x = fresh.clone();
-    slider.seat(&fresh, &mut x, &mut w).unwrap();
-    let mut y = x.clone();
-    for _ in 0..run.steps.len() {
-        slider.step(&x, &mut y, dx, &mut w).unwrap();
-        core::mem::swap(&mut x, &mut y);
-    }
-    let back = slider.state_from_flat(&a).unwrap();
-    assert_eq!(bits(&back.rod.heights), bits(&x.rod.heights));
-    assert_eq!(bits(&back.rod.energy), bits(&x.rod.energy));
-    assert_eq!(back.rod.position, x.rod.position);
-    assert_eq!(back.position, x.position);
 }
 
 #[test]
@@ -531,36 +547,41 @@ fn flat_step_is_a_pure_function_of_old_state_and_increment() {
     let mut st = vec![0.0; m];
     for _ in 0..7 {
         slider
-            .step_flat_in_place(&mut st, &along(1.5e-6), &mut work)
+            .step_in_place(&mut st, &along(1.5e-6), &mut work)
             .unwrap();
     }
     let old = st.clone();
     let mut inc = loaded(0.1, [1.2e-6, -0.7e-6]);
-    inc.tangents = SliderTangents::all();
+    inc.tangents = 3;
     let mut n1 = vec![0.0; m];
     let mut n2 = vec![1.0; m];
-    let r1 = slider.step_flat(&old, &mut n1, &inc, &mut work).unwrap();
+    let r1 = slider.step(&old, &mut n1, &inc, &mut work).unwrap();
+    let rec1 = *record(&work);
     // A cut-back: a different increment in between, then the same again,
     // and with fresh work buffers.
     let mut scratch = vec![0.0; m];
     slider
-        .step_flat(&old, &mut scratch, &loaded(0.2, [3e-6, 0.0]), &mut work)
+        .step(&old, &mut scratch, &loaded(0.2, [3e-6, 0.0]), &mut work)
         .unwrap();
-    let r2 = slider.step_flat(&old, &mut n2, &inc, &mut work).unwrap();
+    let r2 = slider.step(&old, &mut n2, &inc, &mut work).unwrap();
     assert!(same(&r1, &r2), "{r1:?}\n{r2:?}");
     assert_eq!(bits(&n1), bits(&n2));
+    assert_eq!(*record(&work), rec1);
     let mut other = slider.work();
-    let r3 = slider.step_flat(&old, &mut n2, &inc, &mut other).unwrap();
+    let r3 = slider.step(&old, &mut n2, &inc, &mut other).unwrap();
     assert!(same(&r1, &r3));
     assert_eq!(bits(&n1), bits(&n2));
     // In place gives the same.
     let mut inplace = old.clone();
-    let r4 = slider
-        .step_flat_in_place(&mut inplace, &inc, &mut work)
-        .unwrap();
+    let r4 = slider.step_in_place(&mut inplace, &inc, &mut work).unwrap();
     assert!(same(&r1, &r4));
     assert_eq!(bits(&n1), bits(&inplace));
     assert_eq!(old, st, "old is only read");
+    // Any work will do: one made for another law is rebuilt.
+    let mut foreign = asperity::friction::FrictionWork::default();
+    let r5 = slider.step(&old, &mut n2, &inc, &mut foreign).unwrap();
+    assert!(same(&r1, &r5));
+    assert_eq!(*record(&foreign), rec1);
 }
 
 #[test]
@@ -578,12 +599,13 @@ fn flat_step_with_the_hosts_load_matches_a_slider_built_for_that_load() {
         let mut st = vec![0.0; m];
         for (k, want) in run.steps.iter().enumerate() {
             let r = base
-                .step_flat_in_place(&mut st, &loaded(load, [dx, 0.0]), &mut work)
+                .step_in_place(&mut st, &loaded(load, [dx, 0.0]), &mut work)
                 .unwrap();
-            assert_eq!(r.friction_force, want.friction_force, "f = {f}, step {k}");
+            assert_eq!(r.force_magnitude, want.friction_force, "f = {f}, step {k}");
             assert_eq!(r.dissipation, want.dissipation);
             assert_eq!(r.true_contact_area, want.true_contact_area);
             assert_eq!(r.normal_force, load);
+            assert_eq!(record(&work), want);
         }
     }
 }
@@ -596,34 +618,34 @@ fn slip_direction_sets_the_force_direction_not_its_size() {
     let mut st = vec![0.0; m];
     for _ in 0..3 {
         slider
-            .step_flat_in_place(&mut st, &along(1.5e-6), &mut work)
+            .step_in_place(&mut st, &along(1.5e-6), &mut work)
             .unwrap();
     }
     let s = 1.5e-6;
     let mut n = vec![0.0; m];
     let r0 = slider
-        .step_flat(&st, &mut n, &loaded(0.18, [s, 0.0]), &mut work)
+        .step(&st, &mut n, &loaded(0.18, [s, 0.0]), &mut work)
         .unwrap();
     for (sx, sy) in [(0.0, s), (-s, 0.0), (0.0, -s)] {
         let r = slider
-            .step_flat(&st, &mut n, &loaded(0.18, [sx, sy]), &mut work)
+            .step(&st, &mut n, &loaded(0.18, [sx, sy]), &mut work)
             .unwrap();
         // Same path length, same track advance, same friction force ...
-        assert_eq!(r.friction_force, r0.friction_force);
+        assert_eq!(r.force_magnitude, r0.force_magnitude);
         assert_eq!(r.dissipation, r0.dissipation);
         // ... opposing the slip.
         assert_eq!(
             r.force,
-            [-r0.friction_force * sx / s, -r0.friction_force * sy / s]
+            [-r0.force_magnitude * sx / s, -r0.force_magnitude * sy / s]
         );
     }
     // An oblique slip: |F| = F_t, F antiparallel to the slip.
     let (sx, sy) = (0.9e-6, -1.3e-6);
     let r = slider
-        .step_flat(&st, &mut n, &loaded(0.18, [sx, sy]), &mut work)
+        .step(&st, &mut n, &loaded(0.18, [sx, sy]), &mut work)
         .unwrap();
     let fm = r.force[0].hypot(r.force[1]);
-    assert!((fm - r.friction_force).abs() <= 1e-14 * fm);
+    assert!((fm - r.force_magnitude).abs() <= 1e-14 * fm);
     let cross = r.force[0] * sy - r.force[1] * sx;
     assert!(cross.abs() <= 1e-14 * fm * sx.hypot(sy));
     assert!(r.force[0] * sx + r.force[1] * sy < 0.0);
@@ -641,40 +663,60 @@ fn zero_slip_is_stick_with_nothing_dissipated() {
     let zero = vec![0.0; m];
     let mut st = vec![0.0; m];
     let r = slider
-        .step_flat(&zero, &mut st, &SliderIncrement::default(), &mut work)
+        .step(&zero, &mut st, &FrictionIncrement::default(), &mut work)
         .unwrap();
-    assert_eq!(r.seated, 1);
+    assert!(seated(&work));
     assert_eq!(r.regime(), FrictionRegime::Stick);
     assert_eq!(
-        (r.force, r.friction_force, r.dissipated, r.cof),
+        (r.force, r.force_magnitude, r.dissipated, r.cof),
         ([0.0; 2], 0.0, 0.0, 0.0)
     );
-    assert_eq!(r.position, 0.0);
+    assert_eq!(record(&work).position, 0.0);
     assert!(r.true_contact_area > 0.0);
     assert_eq!(st[Slider::STATE_FLAG], 1.0);
-    assert_eq!(st[Slider::STATE_SLIP_PATH], 0.0);
-    // The seated state equals Slider::seat's.
-    let mut w = slider.work();
-    let fresh = slider.fresh_state();
-    let mut seated = fresh.clone();
-    slider.seat(&fresh, &mut seated, &mut w).unwrap();
-    assert_eq!(slider.state_from_flat(&st).unwrap(), seated);
+    assert_eq!(st[1], 0.0);
+    // Seating is what a fresh state's first step does before it moves: a
+    // step from the seated state equals the same step from the fresh one,
+    // bit for bit.
+    let mut seated_state = vec![0.0; m];
+    slider
+        .step(
+            &zero,
+            &mut seated_state,
+            &loaded(SCENE_LOAD, [0.0; 2]),
+            &mut work,
+        )
+        .unwrap();
+    let (mut a, mut b) = (vec![0.0; m], vec![0.0; m]);
+    let ra = slider
+        .step(&seated_state, &mut a, &along(1.5e-6), &mut work)
+        .unwrap();
+    assert!(!seated(&work));
+    let rec_a = *record(&work);
+    let rb = slider
+        .step(&zero, &mut b, &along(1.5e-6), &mut work)
+        .unwrap();
+    assert!(seated(&work));
+    assert!(same(&ra, &rb), "{ra:?}\n{rb:?}");
+    assert_eq!(bits(&a), bits(&b));
+    assert_eq!(*record(&work), rec_a);
     // Zero slip under a heavier load: a normal loading step, stick, nothing
     // booked, the track position kept; tangents asked are 0.
     let mut inc = loaded(0.5 * slider.capacity(), [0.0, 0.0]);
-    inc.tangents = SliderTangents::all();
+    inc.tangents = 3;
     let before = st.clone();
-    let r = slider.step_flat_in_place(&mut st, &inc, &mut work).unwrap();
+    let r = slider.step_in_place(&mut st, &inc, &mut work).unwrap();
     assert_eq!(r.regime(), FrictionRegime::Stick);
-    assert_eq!((r.friction_force, r.dissipated), (0.0, 0.0));
+    assert_eq!((r.force_magnitude, r.dissipated), (0.0, 0.0));
     assert_eq!(r.dforce_dslip, [[0.0; 2]; 2]);
     assert_eq!(r.dforce_dnormal, [0.0; 2]);
     assert_eq!(r.tangents, 0);
     assert_eq!(r.normal_force, 0.5 * slider.capacity());
     assert_eq!(st[Slider::STATE_POSITION], before[Slider::STATE_POSITION]);
+    assert_eq!(st[..2], before[..2]);
     assert_eq!(
-        st[Slider::STATE_DISSIPATION..Slider::STATE_HEIGHTS],
-        before[Slider::STATE_DISSIPATION..Slider::STATE_HEIGHTS]
+        st[Slider::STATE_MECHANISMS..Slider::STATE_HEIGHTS],
+        before[Slider::STATE_MECHANISMS..Slider::STATE_HEIGHTS]
     );
     // More rods now yield: heights changed (plastic indentation, not
     // friction).
@@ -687,27 +729,37 @@ fn fresh_state_starts_at_its_position() {
     let m = slider.state_len();
     let mut work = slider.work();
     let x0 = 45e-6;
-    let mut st = vec![0.0; m];
-    st[Slider::STATE_POSITION] = x0;
-    st[Slider::STATE_HEIGHTS] = 123.0; // ignored in a fresh state
     let dx = 1.5e-6;
-    // The struct API: a fresh state moved to x0, seated, stepped.
+    let mut clean = vec![0.0; m];
+    clean[Slider::STATE_POSITION] = x0;
+    // Of a fresh state only the position is read (and the accumulators,
+    // the mechanisms' among them, carried): the rest is ignored.
+    let mut st = clean.clone();
+    st[Slider::STATE_ROD_POSITION] = 7.0;
+    st[Slider::STATE_HEIGHTS] = 123.0;
+    st[Slider::STATE_HEIGHTS + slider.rods()] = -1.0;
+    let mut at_zero = vec![0.0; m];
     let mut w = slider.work();
-    let mut fresh = slider.fresh_state();
-    fresh.position = x0;
-    let mut a = fresh.clone();
-    slider.seat(&fresh, &mut a, &mut w).unwrap();
-    let mut b = a.clone();
     for k in 0..5 {
-        let want = slider.step(&a, &mut b, dx, &mut w).unwrap();
-        let r = slider
-            .step_flat_in_place(&mut st, &along(dx), &mut work)
+        let want = slider
+            .step_in_place(&mut clean, &along(dx), &mut w)
             .unwrap();
-        assert_eq!(r.friction_force, want.friction_force, "{k}");
-        assert_eq!(r.position, want.position);
-        assert!((r.position - (x0 + (k + 1) as f64 * dx)).abs() < 1e-18);
-        core::mem::swap(&mut a, &mut b);
+        let r = slider
+            .step_in_place(&mut st, &along(dx), &mut work)
+            .unwrap();
+        assert!(same(&r, &want), "{k}");
+        assert_eq!(bits(&st), bits(&clean), "{k}");
+        let p = record(&work).position;
+        assert!((p - (x0 + (k + 1) as f64 * dx)).abs() < 1e-18);
+        // Elsewhere on the counter-surface, another history.
+        slider
+            .step_in_place(&mut at_zero, &along(dx), &mut w)
+            .unwrap();
     }
+    assert_ne!(
+        st[Slider::STATE_HEIGHTS..],
+        at_zero[Slider::STATE_HEIGHTS..]
+    );
 }
 
 #[test]
@@ -718,47 +770,38 @@ fn tangents_are_the_documented_secants() {
     let mut st = vec![0.0; m];
     for _ in 0..5 {
         slider
-            .step_flat_in_place(&mut st, &along(1.5e-6), &mut work)
+            .step_in_place(&mut st, &along(1.5e-6), &mut work)
             .unwrap();
     }
     let (load, s) = (0.12, 1.5e-6);
     let mut n = vec![0.0; m];
-    let only = |normal: bool, slip: bool| SliderIncrement {
-        tangents: SliderTangents { normal, slip },
+    let only = |tangents: i32| FrictionIncrement {
+        tangents,
         ..loaded(load, [s, 0.0])
     };
-    let r0 = slider
-        .step_flat(&st, &mut n, &only(false, false), &mut work)
-        .unwrap();
-    let rn = slider
-        .step_flat(&st, &mut n, &only(true, false), &mut work)
-        .unwrap();
-    let rs = slider
-        .step_flat(&st, &mut n, &only(false, true), &mut work)
-        .unwrap();
-    let r = slider
-        .step_flat(&st, &mut n, &only(true, true), &mut work)
-        .unwrap();
+    let r0 = slider.step(&st, &mut n, &only(0), &mut work).unwrap();
+    let rn = slider.step(&st, &mut n, &only(1), &mut work).unwrap();
+    let rs = slider.step(&st, &mut n, &only(2), &mut work).unwrap();
+    let r = slider.step(&st, &mut n, &only(3), &mut work).unwrap();
     // Only what is asked is computed; the step itself is unchanged.
     assert_eq!((rn.tangents, rs.tangents, r.tangents), (1, 2, 3));
     assert_eq!(rn.dforce_dslip, [[0.0; 2]; 2]);
     assert_eq!(rs.dforce_dnormal, [0.0; 2]);
     for x in [&rn, &rs, &r] {
-        assert_eq!(x.friction_force, r0.friction_force);
+        assert_eq!(x.force_magnitude, r0.force_magnitude);
         assert_eq!(x.dissipation, r0.dissipation);
     }
     assert_eq!(r.dforce_dnormal, rn.dforce_dnormal);
     assert_eq!(r.dforce_dslip, rs.dforce_dslip);
-    // The secants, recomputed through the struct API from the same old
-    // state (Slider::step_loaded), with the documented steps.
-    let old = slider.state_from_flat(&st).unwrap();
+    // The secants, recomputed from the same old state by steps without
+    // tangents at the documented perturbed loads and slips.
     let mut w = slider.work();
-    let mut tmp = old.clone();
+    let mut tmp = vec![0.0; m];
     let mut ft = |slip: f64, load: f64| {
         slider
-            .step_loaded(&old, &mut tmp, slip, Loading::FixedLoad { load }, &mut w)
+            .step(&st, &mut tmp, &loaded(load, [slip, 0.0]), &mut w)
             .unwrap()
-            .friction_force
+            .force_magnitude
     };
     let h = Slider::TANGENT_STEP;
     let dn = h * load.max(h * slider.capacity());
@@ -779,7 +822,7 @@ fn tangents_are_the_documented_secants() {
         -dfds
     );
     // Across the slip the force turns with it: −F_t/s, closed form.
-    let turn = -r0.friction_force / s;
+    let turn = -r0.force_magnitude / s;
     assert!(close(r.dforce_dslip[1][1], turn));
     assert_eq!(r.dforce_dslip[0][1], 0.0);
     assert_eq!(r.dforce_dslip[1][0], 0.0);
@@ -788,9 +831,9 @@ fn tangents_are_the_documented_secants() {
     // A rotated slip rotates the tangent: R diag(a, b) Rᵀ.
     let th: f64 = 0.6;
     let (c, sn) = (th.cos(), th.sin());
-    let mut inc = only(true, true);
+    let mut inc = only(3);
     inc.slip = [s * c, s * sn];
-    let q = slider.step_flat(&st, &mut n, &inc, &mut work).unwrap();
+    let q = slider.step(&st, &mut n, &inc, &mut work).unwrap();
     let (a, b) = (r.dforce_dslip[0][0], r.dforce_dslip[1][1]);
     let want = [
         [a * c * c + b * sn * sn, (a - b) * c * sn],
@@ -821,14 +864,12 @@ fn flat_step_limits_and_bad_input() {
     };
     let mut st = vec![0.0; m];
     slider
-        .step_flat_in_place(&mut st, &along(1.5e-6), &mut work)
+        .step_in_place(&mut st, &along(1.5e-6), &mut work)
         .unwrap();
     let sentinel = vec![-7.0; m];
     let mut new = sentinel.clone();
-    let mut err = |old: &[f64], inc: SliderIncrement| {
-        let e = slider
-            .step_flat(old, &mut new, &inc, &mut work)
-            .unwrap_err();
+    let mut err = |old: &[f64], inc: FrictionIncrement| {
+        let e = slider.step(old, &mut new, &inc, &mut work).unwrap_err();
         assert_eq!(new, sentinel, "new untouched on error");
         name(e)
     };
@@ -840,7 +881,7 @@ fn flat_step_limits_and_bad_input() {
     assert_eq!(
         err(
             &st,
-            SliderIncrement {
+            FrictionIncrement {
                 dt: -1.0,
                 ..along(1e-6)
             }
@@ -850,7 +891,7 @@ fn flat_step_limits_and_bad_input() {
     assert_eq!(
         err(
             &st,
-            SliderIncrement {
+            FrictionIncrement {
                 dt: f64::NAN,
                 ..along(1e-6)
             }
@@ -861,30 +902,36 @@ fn flat_step_limits_and_bad_input() {
     assert_eq!(err(&st, loaded(-1e-3, [1e-6, 0.0])), "normal_force");
     // Load above the total yield capacity: no equilibrium.
     assert_eq!(err(&st, loaded(1.001 * cap, [1e-6, 0.0])), "normal_force");
-    let gap = SliderIncrement {
-        loading: Some(Loading::FixedGap {
-            position: f64::INFINITY,
-        }),
-        ..along(1e-6)
-    };
-    assert_eq!(err(&st, gap), "gap");
+    assert_eq!(
+        err(
+            &st,
+            FrictionIncrement {
+                tangents: 4,
+                ..along(1e-6)
+            }
+        ),
+        "tangents"
+    );
     // Bad states.
-    assert_eq!(err(&st[1..], along(1e-6)), "old_state.len()");
+    assert_eq!(err(&st[1..], along(1e-6)), "old.len()");
     let mut bad = st.clone();
     bad[Slider::STATE_FLAG] = 2.0;
-    assert_eq!(err(&bad, along(1e-6)), "old_state.flag");
+    assert_eq!(err(&bad, along(1e-6)), "old.flag");
     let mut bad = st.clone();
     bad[Slider::STATE_POSITION] = f64::NAN;
-    assert_eq!(err(&bad, along(1e-6)), "old_state.position");
+    assert_eq!(err(&bad, along(1e-6)), "old.position");
     let mut bad = st.clone();
     bad[Slider::STATE_ROD_POSITION] = f64::INFINITY;
-    assert_eq!(err(&bad, along(1e-6)), "old_state.rod_position");
+    assert_eq!(err(&bad, along(1e-6)), "old.rod_position");
     let mut bad = st.clone();
-    bad[Slider::STATE_DISSIPATION + 2] = -1.0;
-    assert_eq!(err(&bad, along(1e-6)), "old_state.dissipation");
+    bad[Slider::STATE_MECHANISMS + 2] = -1.0;
+    assert_eq!(err(&bad, along(1e-6)), "old.mechanisms");
     let mut bad = st.clone();
-    bad[Slider::STATE_SLIP_PATH] = f64::NAN;
-    assert_eq!(err(&bad, along(1e-6)), "old_state.slip_path");
+    bad[0] = -1.0;
+    assert_eq!(err(&bad, along(1e-6)), "old.dissipation");
+    let mut bad = st.clone();
+    bad[1] = f64::NAN;
+    assert_eq!(err(&bad, along(1e-6)), "old.slip_path");
     let mut bad = st.clone();
     bad[Slider::STATE_HEIGHTS + 3] = f64::NAN;
     assert_eq!(err(&bad, along(1e-6)), "state.heights");
@@ -894,57 +941,36 @@ fn flat_step_limits_and_bad_input() {
     // Past the counter profile's end.
     assert_eq!(err(&st, along(1e-3)), "position");
     let e = slider
-        .step_flat(&st, &mut vec![0.0; m + 1], &along(1e-6), &mut work)
+        .step(&st, &mut vec![0.0; m + 1], &along(1e-6), &mut work)
         .unwrap_err();
-    assert_eq!(name(e), "new_state.len()");
-    assert_eq!(name(SliderTangents::from_bits(4).unwrap_err()), "tangents");
+    assert_eq!(name(e), "new.len()");
     // A rod-bed position NaN is "none": no warm start, same equilibrium.
     let mut cold = st.clone();
     cold[Slider::STATE_ROD_POSITION] = f64::NAN;
     let mut a = vec![0.0; m];
     let mut b = vec![0.0; m];
-    let ra = slider
-        .step_flat(&st, &mut a, &along(1.5e-6), &mut work)
+    slider.step(&st, &mut a, &along(1.5e-6), &mut work).unwrap();
+    let ra = *record(&work);
+    slider
+        .step(&cold, &mut b, &along(1.5e-6), &mut work)
         .unwrap();
-    let rb = slider
-        .step_flat(&cold, &mut b, &along(1.5e-6), &mut work)
-        .unwrap();
+    let rb = *record(&work);
     assert!((ra.rod_position - rb.rod_position).abs() <= 1e-15);
     assert_eq!(ra.nano_contacts, rb.nano_contacts);
 
     // Zero load: a defined result (the slider just touches; adhesive
     // contacts may still give friction), finite, dissipation >= 0.
     let r = slider
-        .step_flat(&st, &mut a, &loaded(0.0, [1.5e-6, 0.0]), &mut work)
+        .step(&st, &mut a, &loaded(0.0, [1.5e-6, 0.0]), &mut work)
         .unwrap();
     assert_eq!(r.normal_force, 0.0);
-    assert!(r.friction_force.is_finite() && r.cof.is_finite() && r.dissipated >= 0.0);
+    assert!(r.force_magnitude.is_finite() && r.cof.is_finite() && r.dissipated >= 0.0);
     // Load at the capacity: every rod yields, still defined.
     let r = slider
-        .step_flat(&st, &mut a, &loaded(cap, [1.5e-6, 0.0]), &mut work)
+        .step(&st, &mut a, &loaded(cap, [1.5e-6, 0.0]), &mut work)
         .unwrap();
-    assert_eq!(r.yielded_rods as usize, slider.rods());
-    assert!(r.friction_force.is_finite() && r.friction_force > 0.0);
-    // No contact (a gap far above the counter-surface): friction 0, the
-    // flag, no division by zero.
-    let far = SliderIncrement {
-        loading: Some(Loading::FixedGap { position: 1e-3 }),
-        ..along(1.5e-6)
-    };
-    let r = slider
-        .step_flat(&vec![0.0; m], &mut a, &far, &mut work)
-        .unwrap();
-    assert_eq!(r.regime(), FrictionRegime::NoContact);
-    assert_eq!((r.friction_force, r.cof, r.nano_contacts), (0.0, 0.0, 0));
-    assert_eq!(r.force, [-0.0, -0.0]);
-    let far0 = SliderIncrement {
-        slip: [0.0; 2],
-        ..far
-    };
-    let r = slider
-        .step_flat(&vec![0.0; m], &mut a, &far0, &mut work)
-        .unwrap();
-    assert_eq!(r.regime(), FrictionRegime::NoContact);
+    assert_eq!(record(&work).yielded_rods, slider.rods());
+    assert!(r.force_magnitude.is_finite() && r.force_magnitude > 0.0);
 }
 
 #[test]
@@ -986,10 +1012,10 @@ fn mismatched_profile_lengths() {
     let s = mk(wave(n, 1.5e-6), 1.5e-6, TrackEnd::Error).unwrap();
     let mut st = vec![0.0; s.state_len()];
     let mut w = s.work();
-    s.step_flat_in_place(&mut st, &SliderIncrement::default(), &mut w)
+    s.step_in_place(&mut st, &FrictionIncrement::default(), &mut w)
         .unwrap();
     let e = s
-        .step_flat_in_place(&mut st, &along(1.5e-6), &mut w)
+        .step_in_place(&mut st, &along(1.5e-6), &mut w)
         .unwrap_err();
     assert!(
         matches!(
@@ -1032,10 +1058,30 @@ fn flat_step_on_a_flat_counter_surface() {
     let mut w = s.work();
     for _ in 0..20 {
         let r = s
-            .step_flat_in_place(&mut st, &loaded(0.1, [1e-6, 1e-6]), &mut w)
+            .step_in_place(&mut st, &loaded(0.1, [1e-6, 1e-6]), &mut w)
             .unwrap();
-        assert!(r.friction_force.is_finite() && r.friction_force > 0.0);
+        assert!(r.force_magnitude.is_finite() && r.force_magnitude > 0.0);
         r.dissipation.validate().unwrap();
+    }
+}
+
+/// A block of the points `normal`, `slip` (no areas: the slider does not
+/// use them) at Δt = 1 ms.
+fn block<'a>(
+    normal: &'a [f64],
+    slip: &'a [f64],
+    states: BlockStates<'a>,
+    forces: &'a mut [f64],
+    dissipation: Option<&'a mut [f64]>,
+) -> FrictionBlock<'a> {
+    FrictionBlock {
+        normal_force: normal,
+        area: None,
+        slip,
+        dt: 1e-3,
+        states,
+        tangential_force: forces,
+        dissipation,
     }
 }
 
@@ -1063,28 +1109,22 @@ fn block_step_equals_scalar_steps() {
         let mut f_block = vec![0.0; 2 * n];
         let mut d_block = vec![0.0; n];
         let mut f_sep = vec![0.0; 2 * n];
+        let sep = BlockStates::Separate {
+            old: &states,
+            new: &mut sep_new,
+        };
         slider
-            .step_flat_block(
-                &normal,
-                &slip,
-                1e-3,
-                SliderStates::Separate {
-                    old: &states,
-                    new: &mut sep_new,
-                },
-                &mut f_sep,
-                None,
-                &mut work,
-            )
+            .step_block(block(&normal, &slip, sep, &mut f_sep, None), &mut work)
             .unwrap();
         slider
-            .step_flat_block(
-                &normal,
-                &slip,
-                1e-3,
-                SliderStates::InPlace(&mut states),
-                &mut f_block,
-                Some(&mut d_block),
+            .step_block(
+                block(
+                    &normal,
+                    &slip,
+                    BlockStates::InPlace(&mut states),
+                    &mut f_block,
+                    Some(&mut d_block),
+                ),
                 &mut work,
             )
             .unwrap();
@@ -1092,7 +1132,7 @@ fn block_step_equals_scalar_steps() {
         assert_eq!(bits(&f_block), bits(&f_sep));
         for i in 0..n {
             let r = slider
-                .step_flat_in_place(
+                .step_in_place(
                     &mut scalar[i * m..(i + 1) * m],
                     &loaded(normal[i], [slip[2 * i], slip[2 * i + 1]]),
                     &mut work,
@@ -1110,13 +1150,14 @@ fn block_step_equals_scalar_steps() {
     let before = states.clone();
     let mut f = vec![9.0; 2 * n];
     let e = slider
-        .step_flat_block(
-            &bad,
-            &[1e-6; 10],
-            1e-3,
-            SliderStates::InPlace(&mut states),
-            &mut f,
-            None,
+        .step_block(
+            block(
+                &bad,
+                &[1e-6; 10],
+                BlockStates::InPlace(&mut states),
+                &mut f,
+                None,
+            ),
             &mut work,
         )
         .unwrap_err();
@@ -1133,13 +1174,14 @@ fn block_step_equals_scalar_steps() {
     assert_eq!(f[6..], [9.0; 4]);
     // Mismatched lengths name the slice.
     let e = slider
-        .step_flat_block(
-            &normal,
-            &[0.0; 3],
-            1e-3,
-            SliderStates::InPlace(&mut states),
-            &mut f,
-            None,
+        .step_block(
+            block(
+                &normal,
+                &[0.0; 3],
+                BlockStates::InPlace(&mut states),
+                &mut f,
+                None,
+            ),
             &mut work,
         )
         .unwrap_err();
@@ -1164,7 +1206,7 @@ fn one_slider_many_threads_one_work_each() {
         for k in 0..20 {
             let th = 0.3 * (i + k) as f64;
             let r = slider
-                .step_flat_in_place(
+                .step_in_place(
                     &mut st,
                     &loaded(
                         0.03 * (i + 1) as f64,
@@ -1188,4 +1230,32 @@ fn one_slider_many_threads_one_work_each() {
         h.into_iter().map(|h| h.join().unwrap()).collect()
     });
     assert_eq!(serial, parallel);
+}
+
+/// A fresh state carries every accumulator it is given (the total, the
+/// slip path and the four mechanisms), so the total stays the sum of the
+/// mechanisms' after the seat and the first step.
+#[test]
+fn fresh_state_carries_its_accumulators() {
+    let slider = scene().build().unwrap();
+    let m = slider.state_len();
+    let mut work = slider.work();
+    let mut st = vec![0.0; m];
+    st[0] = 10.0;
+    st[1] = 2e-6;
+    st[Slider::STATE_MECHANISMS..Slider::STATE_HEIGHTS].copy_from_slice(&[1.0, 2.0, 3.0, 4.0]);
+    let r = slider
+        .step_in_place(&mut st, &along(1.5e-6), &mut work)
+        .unwrap();
+    assert!(r.dissipated > 0.0);
+    assert_eq!(st[0], 10.0 + r.dissipated);
+    assert_eq!(st[1], 2e-6 + 1.5e-6);
+    let d = r.dissipation;
+    let want = [
+        1.0 + d.chemical,
+        2.0 + d.van_der_waals,
+        3.0 + d.elastic,
+        4.0 + d.plastic,
+    ];
+    assert_eq!(st[Slider::STATE_MECHANISMS..Slider::STATE_HEIGHTS], want);
 }

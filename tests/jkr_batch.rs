@@ -1,6 +1,6 @@
 //! Batch evaluation of the JKR sphere (the vectorised kernel of
 //! `src/contact/jkr_simd.rs` where the CPU has AVX2) against the scalar
-//! `Jkr::eval` and the reference element loop `eval_elementwise`: every
+//! `Jkr::eval` and a reference element loop over `NormalLaw::eval`: every
 //! output bit for bit, over overlaps from 1e-12 to 1e6 length scales of both
 //! signs, across δ_c and 0, beyond the Hertz switch, with random histories,
 //! for w = 0, tiny and ordinary w; tail lengths, aliasing, NULL arrays, errors
@@ -9,12 +9,11 @@
 mod common;
 use common::c_errors::last_message;
 
-use asperity::contact::batch::eval_elementwise;
-use asperity::contact::{eval_batch, BatchError, ContactState, Jkr, RawBatch};
+use asperity::contact::{eval_batch, BatchError, ContactState, Jkr, NormalLaw};
 use asperity::ffi::contact::*;
 use asperity::ffi::*;
 use asperity::NormalContact;
-use std::ptr::{null, null_mut};
+use std::ptr::null_mut;
 
 /// xorshift64*: deterministic pseudo-random numbers.
 struct Rng(u64);
@@ -59,7 +58,7 @@ fn overlaps(law: &Jkr, rng: &mut Rng) -> Vec<f64> {
         d.push(x);
         d.push(-x);
     }
-    let dc = law.critical_delta;
+    let dc = law.critical_delta();
     for c in [dc, 0.0, -scale] {
         d.push(c);
         d.push(f64::from_bits(c.to_bits() + 1));
@@ -74,10 +73,10 @@ fn overlaps(law: &Jkr, rng: &mut Rng) -> Vec<f64> {
     d.push(-0.0);
     d.push(f64::MIN_POSITIVE);
     d.push(-f64::MIN_POSITIVE);
-    if law.delta_scale > 0.0 {
+    if law.delta_scale() > 0.0 {
         // Reduced overlap Δ around and beyond HERTZ_SWITCH = 1e60.
         for big in [1e59, 9.99e59, 1e60, 1.0001e60, 1e61, 1e80] {
-            d.push(big * law.delta_scale);
+            d.push(big * law.delta_scale());
         }
     }
     for _ in 0..300 {
@@ -175,25 +174,37 @@ fn batch(law: &Jkr, d: &[f64], old: Option<&[ContactState]>) -> (Outs, Result<()
     (o, r)
 }
 
-/// The reference element loop.
+/// The reference element loop: `NormalLaw::eval` (which turns an
+/// overflowed response into an error) per element, stopping at the first
+/// error with the elements before it written.
 fn reference(law: &Jkr, d: &[f64], old: Option<&[ContactState]>) -> (Outs, Result<(), BatchError>) {
     let mut o = Outs::new(d.len());
-    let b = RawBatch {
-        n: d.len(),
-        delta: d.as_ptr(),
-        old_state: old.map_or(null(), |s| s.as_ptr()),
-        new_state: o.new.as_mut_ptr(),
-        force: o.force.as_mut_ptr(),
-        contact_radius: o.radius.as_mut_ptr(),
-        stiffness: o.stiffness.as_mut_ptr(),
-    };
-    let r = unsafe { eval_elementwise(law, &b) };
-    (o, r)
+    let law = NormalLaw::Jkr(*law);
+    for (i, &di) in d.iter().enumerate() {
+        let old_i = old.map_or(ContactState::default(), |s| s[i]);
+        match law.eval(di, &old_i) {
+            Ok((r, s)) => {
+                o.force[i] = r.force;
+                o.radius[i] = r.contact_radius;
+                o.stiffness[i] = r.stiffness;
+                o.new[i] = s;
+            }
+            Err(error) => return (o, Err(BatchError { index: i, error })),
+        }
+    }
+    (o, Ok(()))
 }
 
 fn c_law(l: &Jkr) -> AsperityNormalLaw {
     let mut out = std::mem::MaybeUninit::<AsperityNormalLaw>::zeroed();
-    let s = unsafe { asperity_law_jkr(l.radius, l.e_star, l.work_of_adhesion, out.as_mut_ptr()) };
+    let s = unsafe {
+        asperity_law_jkr(
+            l.params().radius,
+            l.params().e_star,
+            l.params().work_of_adhesion,
+            out.as_mut_ptr(),
+        )
+    };
     assert_eq!(s, ASPERITY_OK);
     unsafe { out.assume_init() }
 }
@@ -233,7 +244,7 @@ fn batch_equals_scalar_bit_for_bit() {
 #[test]
 fn hysteresis_and_branch_fields() {
     let law = Jkr::new(1e-5, 1e9, 0.05).unwrap();
-    let dc = law.critical_delta;
+    let dc = law.critical_delta();
     // (δ, old in contact) → in contact after the step?
     let cases = [
         (0.5 * dc, 1, true),
@@ -379,21 +390,24 @@ fn aliasing_inputs_and_outputs() {
                 stiffness,
             };
             got.assert_same(&want, &format!("aliased, n = {n}"));
-            // contact_radius == delta and stiffness == delta's copy, through
-            // the raw batch: radius overwrites δ.
+            // contact_radius == delta, stiffness not wanted: the radius
+            // overwrites δ.
             let mut buf = d.clone();
             let mut force = vec![f64::NAN; n];
             let mut new = vec![POISON; n];
-            let b = RawBatch {
-                n,
-                delta: buf.as_ptr(),
-                old_state: old.as_ptr(),
-                new_state: new.as_mut_ptr(),
-                force: force.as_mut_ptr(),
-                contact_radius: buf.as_mut_ptr(),
-                stiffness: null_mut(),
+            let s = unsafe {
+                asperity_normal_eval_batch(
+                    &cl,
+                    n,
+                    buf.as_ptr(),
+                    old.as_ptr(),
+                    new.as_mut_ptr(),
+                    force.as_mut_ptr(),
+                    buf.as_mut_ptr(),
+                    null_mut(),
+                )
             };
-            assert_eq!(unsafe { law.eval_batch_raw(&b) }, Ok(()));
+            assert_eq!(s, ASPERITY_OK, "{}", last_message());
             let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
             assert_eq!(bits(&buf), bits(&want.radius));
             assert_eq!(bits(&force), bits(&want.force));

@@ -43,7 +43,7 @@ fn reference_values() {
     let e_star = effective_modulus(120e9, 0.355, 120e9, 0.355).unwrap();
     printed(e_star, "68.65e9");
     let k = Kendall::no_slip(215e-9, e_star, 0.10928, 0.355).unwrap();
-    printed(k.no_slip_factor, "1.017376");
+    printed(k.no_slip_factor(), "1.017376");
     let f = -k.pull_off_force(Control::Load).unwrap();
     printed(f, "4.366e-5");
     printed(100.0 * f, "4.366e-3");
@@ -64,19 +64,19 @@ fn contact_law_and_critical_overlap() {
             None => Kendall::new(a, e, w).unwrap(),
             Some(nu) => Kendall::no_slip(a, e, w, nu).unwrap(),
         };
-        let c = k.no_slip_factor;
+        let c = k.no_slip_factor();
         let stiff = 2.0 * e * c * a;
-        assert!(rel(k.stiffness, stiff) < 1e-15);
+        assert!(rel(k.stiffness(), stiff) < 1e-15);
         let pc = -(8.0 * PI * w * e * c * a * a * a).sqrt();
         assert!(rel(k.pull_off_force(Control::Load).unwrap(), pc) < 1e-14);
         let dc = pc / stiff;
-        assert!(rel(k.critical_delta, dc) < 1e-14);
+        assert!(rel(k.critical_delta(), dc) < 1e-14);
         assert!(rel(k.length_scale(), (2.0 * PI * w * a / (e * c)).sqrt()) < 1e-14);
         for delta in [dc, 0.5 * dc, 0.0, 1e-9, 1e-6] {
             let (r, s) = k.eval(delta, &touching()).unwrap();
             assert_eq!((r.in_contact, s.in_contact), (1, 1));
             assert!((r.force - stiff * delta).abs() <= 1e-15 * stiff * delta.abs());
-            assert_eq!(r.stiffness, k.stiffness);
+            assert_eq!(r.stiffness, k.stiffness());
             assert_eq!(r.contact_radius, a);
             // Load control inverts it.
             let l = k.eval_at_load(r.force).unwrap();
@@ -95,7 +95,7 @@ fn contact_law_and_critical_overlap() {
 #[test]
 fn hysteresis_loop() {
     let k = Kendall::new(1e-6, 1e9, 0.05).unwrap();
-    let dc = k.critical_delta;
+    let dc = k.critical_delta();
     let n = 300;
     let approach = (0..=n).map(|i| 2.0 * dc - 5.0 * dc * i as f64 / n as f64);
     let retract = (0..=n).map(|i| -3.0 * dc + 5.0 * dc * i as f64 / n as f64);
@@ -156,11 +156,22 @@ fn no_slip_tends_to_frictionless() {
     let mut prev = f64::INFINITY;
     for k in 1..=15 {
         let n = Kendall::no_slip(1e-6, 1e9, 0.05, 0.5 - 10f64.powi(-k)).unwrap();
-        let d = rel(n.pull_off_force(Control::Load).unwrap(), pf) + rel(n.stiffness, f.stiffness);
+        let d =
+            rel(n.pull_off_force(Control::Load).unwrap(), pf) + rel(n.stiffness(), f.stiffness());
         assert!(d <= prev && d < 10.0 * 10f64.powi(-k) + 1e-15, "{d:e}");
         prev = d;
     }
-    assert_eq!(Kendall::no_slip(1e-6, 1e9, 0.05, 0.5).unwrap(), f);
+    // At ν = 0.5, C_NS = 1: the bonded punch is the frictionless one (the
+    // inputs still say bonded, ν = 0.5).
+    let n = Kendall::no_slip(1e-6, 1e9, 0.05, 0.5).unwrap();
+    assert_eq!(n.no_slip_factor(), 1.0);
+    assert_eq!(n.stiffness(), f.stiffness());
+    assert_eq!(n.critical_delta(), f.critical_delta());
+    assert_eq!(
+        n.pull_off_force(Control::Load).unwrap(),
+        f.pull_off_force(Control::Load).unwrap()
+    );
+    assert_eq!((n.params().nu, n.params().no_slip), (0.5, 1));
 }
 
 #[test]

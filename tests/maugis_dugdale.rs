@@ -48,7 +48,7 @@ fn lambda_over_mu_is_1_157012() {
     );
     assert_relative_eq!(md.lambda(), 5.23435, max_relative = 1e-5);
     // λ agrees with the material module's definition.
-    let lam = asperity::material::maugis_parameter(r, w, e, md.cohesive_stress).unwrap();
+    let lam = asperity::material::maugis_parameter(r, w, e, md.params().cohesive_stress).unwrap();
     assert_relative_eq!(md.lambda(), lam, max_relative = 1e-13);
     // Load-controlled pull-off lies between JKR (1.5πwR) and DMT (2πwR).
     let pc = -md.pull_off_force(Control::Load).unwrap() / (PI * w * r);

@@ -3,9 +3,11 @@
 //! (scalar and batch), counted by a global allocator that tallies the
 //! current thread's allocations. Building a law or a table may allocate;
 //! evaluating one may not (host codes call these millions of times per
-//! increment, often from many threads). The dynamic friction steps are
-//! counted here too; the homogenised and slider steps have their own
-//! counting tests (tests/friction_homogenised.rs, tests/slider_alloc.rs).
+//! increment, often from many threads). The friction steps through the one
+//! C handle (`AsperityFriction`: the dynamic models, the homogenised law,
+//! the slider) are counted here too, once their work exists; the Rust
+//! homogenised and slider steps have their own counting tests
+//! (tests/friction_homogenised.rs, tests/slider_alloc.rs).
 
 use asperity::contact::ContactState;
 use asperity::ffi::contact::*;
@@ -52,6 +54,17 @@ fn laws() -> Vec<(&'static str, Law)> {
     ));
     add!("derjaguin", |o| asperity_law_derjaguin(r, w, 1, 3e-10, o));
     v
+}
+
+#[test]
+fn every_kind_of_law_is_counted() {
+    let names: Vec<&str> = laws().iter().map(|(n, _)| *n).collect();
+    for kind in asperity::NormalLaw::NAMES {
+        assert!(
+            names.contains(kind),
+            "tests/no_alloc.rs: laws() has no `{kind}` (add its asperity_law_{kind})"
+        );
+    }
 }
 
 #[test]
@@ -145,13 +158,17 @@ fn laws_and_table_lookups_allocate_nothing() {
     unsafe { asperity_table_free(table) };
 }
 
-/// The dynamic friction steps (LuGre, Maxwell-slip, Prandtl–Tomlinson with
-/// one and two springs, Burridge–Knopoff from 1 to 256 blocks) through the
-/// C ABI: scalar with tangents, in place and separate, and the block.
+/// The friction steps through the C handle (LuGre, Maxwell-slip,
+/// Prandtl–Tomlinson with one and two springs, Burridge–Knopoff from 1 to
+/// 256 blocks, bristles, the homogenised law, the slider): scalar with
+/// tangents, old and new separate and the same (in place), in place, and
+/// the blocks, with the law's work.
 #[test]
-fn dynamic_friction_steps_allocate_nothing() {
+fn friction_steps_allocate_nothing() {
     use asperity::ffi::dynamic::*;
-    use asperity::friction::dynamic::{DynamicIncrement, DynamicResponse};
+    use asperity::ffi::friction_law::*;
+    use asperity::friction::{FrictionIncrement, FrictionResponse};
+    // (handle, slip scale m, area m², normal force scale N)
     let mut models = vec![];
     let p = AsperityLugreParams {
         mu_coulomb: 0.3,
@@ -165,25 +182,25 @@ fn dynamic_friction_steps_allocate_nothing() {
     };
     let mut h = core::ptr::null_mut();
     assert_eq!(
-        unsafe { asperity_dynamic_lugre_new(&p, &mut h) },
+        unsafe { asperity_friction_lugre_new(&p, &mut h) },
         ASPERITY_OK
     );
-    models.push((h, 1e-6));
+    models.push((h, 1e-6, 0.0, 1.0));
     let (k, mu) = ([2e5, 5e4, 1e4], [0.2, 0.2, 0.1]);
     let mut h = core::ptr::null_mut();
     assert_eq!(
-        unsafe { asperity_dynamic_maxwell_slip_new(k.as_ptr(), mu.as_ptr(), 3, 0.1, &mut h) },
+        unsafe { asperity_friction_maxwell_slip_new(k.as_ptr(), mu.as_ptr(), 3, 0.1, &mut h) },
         ASPERITY_OK
     );
-    models.push((h, 1e-6));
+    models.push((h, 1e-6, 0.0, 1.0));
     let mut h = core::ptr::null_mut();
     assert_eq!(
         unsafe {
-            asperity_dynamic_prandtl_tomlinson_new(2e-21, 3e-10, 1.0, 1e-12, 1e-6, 1e-9, &mut h)
+            asperity_friction_prandtl_tomlinson_new(2e-21, 3e-10, 1.0, 1e-12, 1e-6, 1e-9, &mut h)
         },
         ASPERITY_OK
     );
-    models.push((h, 1e-11));
+    models.push((h, 1e-11, 0.0, 1.0));
     let t = AsperityPrandtlTomlinsonTwoSpringParams {
         amplitude: 2e-21,
         period: 3e-10,
@@ -197,10 +214,10 @@ fn dynamic_friction_steps_allocate_nothing() {
     };
     let mut h = core::ptr::null_mut();
     assert_eq!(
-        unsafe { asperity_dynamic_prandtl_tomlinson_two_spring_new(&t, &mut h) },
+        unsafe { asperity_friction_prandtl_tomlinson_two_spring_new(&t, &mut h) },
         ASPERITY_OK
     );
-    models.push((h, 1e-11));
+    models.push((h, 1e-11, 0.0, 1.0));
     // Every size class of the chain's integration arrays.
     for blocks in [1, 3, 16, 64, 256] {
         let b = AsperityBurridgeKnopoffParams {
@@ -216,63 +233,168 @@ fn dynamic_friction_steps_allocate_nothing() {
         };
         let mut h = core::ptr::null_mut();
         assert_eq!(
-            unsafe { asperity_dynamic_burridge_knopoff_new(&b, &mut h) },
+            unsafe { asperity_friction_burridge_knopoff_new(&b, &mut h) },
             ASPERITY_OK
         );
-        models.push((h, 1e-5));
+        models.push((h, 1e-5, 0.0, 1.0));
     }
     let (kb, db) = ([1e5, 2e5, 5e4], [1e-6, 2.5e-6, 4e-6]);
     let mut h = core::ptr::null_mut();
     assert_eq!(
-        unsafe { asperity_dynamic_bristles_new(kb.as_ptr(), db.as_ptr(), 3, 0.1, &mut h) },
+        unsafe { asperity_friction_bristles_new(kb.as_ptr(), db.as_ptr(), 3, 0.1, &mut h) },
         ASPERITY_OK
     );
-    models.push((h, 2e-6));
-    for (h, scale) in models {
+    models.push((h, 2e-6, 0.0, 1.0));
+    // The homogenised law (k = 1e8 N/m) on 1 mm² points at 10–60 MPa.
+    {
+        use asperity::ffi::homogenised::*;
+        use asperity::friction::{Dissipation, HomogenisedSample};
+        let samples: Vec<HomogenisedSample> = [(10e6, 1.1), (100e6, 0.97)]
+            .iter()
+            .map(|&(p, cof)| HomogenisedSample {
+                pressure: p,
+                cof,
+                adhesion_pressure: 0.09 * p,
+                contact_fraction: p / 1e9,
+                shares: Dissipation {
+                    chemical: 0.9,
+                    van_der_waals: 0.06,
+                    elastic: 0.03,
+                    plastic: 0.01,
+                },
+            })
+            .collect();
+        let mut table = core::ptr::null_mut();
+        assert_eq!(
+            unsafe {
+                asperity_homogenised_friction_new(samples.as_ptr(), samples.len(), &mut table)
+            },
+            ASPERITY_OK
+        );
+        let mut h = core::ptr::null_mut();
+        assert_eq!(
+            unsafe { asperity_friction_from_homogenised(table, 1e8, &mut h) },
+            ASPERITY_OK
+        );
+        unsafe { asperity_homogenised_friction_free(table) };
+        models.push((h, 1e-6, 1e-6, 15.0));
+    }
+    // The chapter-6 slider as a patch law at 0.02–0.1 N.
+    {
+        use asperity::ffi::slider::*;
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("examples/scenes/chapter6_copper.json");
+        let text = std::fs::read_to_string(path).unwrap();
+        let mut slider = core::ptr::null_mut();
+        assert_eq!(
+            unsafe {
+                asperity_slider_from_scene_json(
+                    text.as_ptr().cast(),
+                    text.len(),
+                    core::ptr::null(),
+                    &mut slider,
+                )
+            },
+            ASPERITY_OK
+        );
+        let mut h = core::ptr::null_mut();
+        assert_eq!(
+            unsafe { asperity_friction_from_slider(slider, &mut h) },
+            ASPERITY_OK
+        );
+        unsafe { asperity_slider_free(slider) };
+        models.push((h, 2e-7, 0.0, 0.02));
+    }
+    for (h, scale, area, load) in models {
         let mut n = 0usize;
-        unsafe { asperity_dynamic_friction_state_size(h, &mut n) };
+        unsafe { asperity_friction_state_size(h, &mut n) };
+        let mut work = core::ptr::null_mut();
+        assert_eq!(
+            unsafe { asperity_friction_work_new(h, &mut work) },
+            ASPERITY_OK
+        );
         let mut a = vec![0.0; n];
         let mut b = vec![0.0; n];
         let mut blocks = vec![0.0; 4 * n];
-        let normal = [1.0, 2.0, 3.0, 4.0];
+        let mut next = vec![0.0; 4 * n];
+        let normal = [load, 2.0 * load, 3.0 * load, 4.0 * load];
+        let areas = [area; 4];
         let slip = [scale, 0.0, -scale, 0.0, 2.0 * scale, 0.0, 0.5 * scale, 0.0];
         let (mut f, mut d) = ([0.0; 8], [0.0; 4]);
-        let mut out = DynamicResponse::default();
+        let mut out = FrictionResponse::default();
+        // Once, so that the work is at capacity.
+        let first = FrictionIncrement {
+            normal_force: 1.5 * load,
+            area,
+            slip: [scale, 0.0],
+            dt: 1e-6,
+            ..Default::default()
+        };
+        assert_eq!(
+            unsafe { asperity_friction_step_in_place(h, &first, a.as_mut_ptr(), work, &mut out) },
+            ASPERITY_OK
+        );
         let before = count();
         for k in 0..50 {
-            let inc = DynamicIncrement {
-                normal_force: 1.5,
+            let inc = FrictionIncrement {
+                normal_force: 1.5 * load,
+                area,
                 slip: [scale * (0.3 * k as f64).cos(), 0.0],
                 dt: 1e-6,
                 tangents: k % 4,
-                reserved: 0,
+                ..Default::default()
             };
             unsafe {
                 assert_eq!(
-                    asperity_dynamic_friction_step(h, &inc, a.as_ptr(), b.as_mut_ptr(), &mut out),
+                    asperity_friction_step(h, &inc, a.as_ptr(), b.as_mut_ptr(), work, &mut out),
                     ASPERITY_OK
                 );
                 assert_eq!(
-                    asperity_dynamic_friction_step(h, &inc, b.as_ptr(), b.as_mut_ptr(), &mut out),
+                    asperity_friction_step(h, &inc, b.as_ptr(), b.as_mut_ptr(), work, &mut out),
                     ASPERITY_OK
                 );
                 assert_eq!(
-                    asperity_dynamic_friction_step_block(
+                    asperity_friction_step_in_place(h, &inc, b.as_mut_ptr(), work, &mut out),
+                    ASPERITY_OK
+                );
+                assert_eq!(
+                    asperity_friction_step_block_in_place(
                         h,
                         4,
                         normal.as_ptr(),
+                        areas.as_ptr(),
                         slip.as_ptr(),
                         1e-6,
                         blocks.as_mut_ptr(),
                         f.as_mut_ptr(),
                         d.as_mut_ptr(),
+                        work,
+                    ),
+                    ASPERITY_OK
+                );
+                assert_eq!(
+                    asperity_friction_step_block(
+                        h,
+                        4,
+                        normal.as_ptr(),
+                        areas.as_ptr(),
+                        slip.as_ptr(),
+                        1e-6,
+                        blocks.as_ptr(),
+                        next.as_mut_ptr(),
+                        f.as_mut_ptr(),
+                        core::ptr::null_mut(),
+                        work,
                     ),
                     ASPERITY_OK
                 );
             }
             core::mem::swap(&mut a, &mut b);
         }
-        assert_eq!(count() - before, 0, "a dynamic friction step allocated");
-        unsafe { asperity_dynamic_friction_free(h) };
+        assert_eq!(count() - before, 0, "a friction step allocated");
+        unsafe {
+            asperity_friction_work_free(work);
+            asperity_friction_free(h);
+        }
     }
 }

@@ -301,7 +301,7 @@ fn jkr_reach_closed_forms_over_decades() {
             for e in [1e6, 1e9, 1e12] {
                 let j = Jkr::new(r, e, w).unwrap();
                 let d = j.reach(Control::Displacement, REL).unwrap();
-                assert_eq!(d, j.critical_delta);
+                assert_eq!(d, j.critical_delta());
                 let dc = -0.75 * (PI * PI * w * w * r / (e * e)).cbrt();
                 assert!(((d - dc) / dc).abs() < 1e-13, "δ_c {d} vs {dc}");
                 let l = j.reach(Control::Load, REL).unwrap();

@@ -10,7 +10,7 @@ mod common;
 
 use asperity::contact::BatchError;
 use asperity::friction::dynamic::{
-    BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip,
+    BurridgeKnopoff, DynamicModel, FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip,
     PrandtlTomlinson, STATE_DISSIPATION,
 };
 use asperity::friction::{SlideRun, SlideStep, SlideSummary};
@@ -350,15 +350,16 @@ fn assert_direct(model: &DynamicModel, run: &SlideRun, velocity: f64, got: &Trac
     let dx = run.summary.distance / n as f64;
     let mut old = vec![0.0; model.state_len()];
     let mut new = old.clone();
+    let mut work = model.work();
     let mut total = 0.0;
     for (k, s) in run.steps.iter().enumerate() {
-        let inc = DynamicIncrement {
+        let inc = FrictionIncrement {
             normal_force: s.normal_load,
             slip: [dx, 0.0],
             dt: dx / velocity,
-            ..DynamicIncrement::default()
+            ..FrictionIncrement::default()
         };
-        let r = model.step(&old, &mut new, &inc).unwrap();
+        let r = model.step(&old, &mut new, &inc, &mut work).unwrap();
         let g = &got.steps[k];
         assert_eq!(r.force[1], 0.0, "{k}: a track along x");
         assert_eq!(g.friction_force.to_bits(), (-r.force[0]).to_bits(), "{k}");

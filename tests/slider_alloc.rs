@@ -1,10 +1,11 @@
-//! The flat slider step allocates nothing once its `SliderWork` exists
-//! (ARCHITECTURE.md: the hot path does not allocate): a counting global allocator,
-//! in its own test binary, around `Slider::step_flat`, `step_flat_in_place`
-//! (with tangents, zero slip, a fresh state seated inside the call) and
-//! `step_flat_block`.
+//! The slider's friction step allocates nothing once its work exists
+//! (ARCHITECTURE.md: the hot path does not allocate): a counting global
+//! allocator, in its own test binary, around `FrictionLaw::step`,
+//! `step_in_place` (with tangents, zero slip, a fresh state seated inside
+//! the call, an error) and `step_block` (both state forms), for the slider
+//! as the friction law of a patch.
 
-use asperity::friction::{Loading, SliderIncrement, SliderStates, SliderTangents};
+use asperity::friction::{BlockStates, FrictionBlock, FrictionIncrement, FrictionLaw};
 use asperity::scene::Scene;
 use std::path::Path;
 
@@ -23,25 +24,31 @@ fn flat_step_does_not_allocate() {
     let mut work = slider.work();
     let mut a = vec![0.0; m];
     let mut b = vec![0.0; m];
-    let along = SliderIncrement {
-        loading: None,
+    let along = FrictionIncrement {
+        normal_force: 0.18,
         slip: [1.5e-6, 0.0],
         dt: 1e-3,
-        tangents: SliderTangents::default(),
+        ..Default::default()
     };
-    let oblique = SliderIncrement {
-        loading: Some(Loading::FixedLoad { load: 0.1 }),
+    let oblique = FrictionIncrement {
+        normal_force: 0.1,
         slip: [0.8e-6, -1.1e-6],
         dt: 1e-3,
-        tangents: SliderTangents::all(),
+        tangents: 3,
+        ..Default::default()
     };
-    let gap = SliderIncrement {
-        loading: Some(Loading::FixedGap { position: 1e-7 }),
-        tangents: SliderTangents::all(),
+    let heavy = FrictionIncrement {
+        normal_force: 0.3,
+        tangents: 3,
         ..along
     };
+    let still = FrictionIncrement {
+        normal_force: 0.18,
+        tangents: 3,
+        ..Default::default()
+    };
     // The first call with this work (a fresh state: seated inside).
-    slider.step_flat(&a, &mut b, &along, &mut work).unwrap();
+    slider.step(&a, &mut b, &along, &mut work).unwrap();
     core::mem::swap(&mut a, &mut b);
 
     let before = allocations();
@@ -49,27 +56,28 @@ fn flat_step_does_not_allocate() {
         let inc = match k % 4 {
             0 => along,
             1 => oblique,
-            2 => gap,
-            _ => SliderIncrement::default(), // zero slip
+            2 => heavy,
+            _ => still, // zero slip
         };
-        let r = slider.step_flat(&a, &mut b, &inc, &mut work).unwrap();
+        let r = slider.step(&a, &mut b, &inc, &mut work).unwrap();
         assert!(r.dissipated >= 0.0);
         core::mem::swap(&mut a, &mut b);
-        slider
-            .step_flat_in_place(&mut a, &along, &mut work)
-            .unwrap();
+        slider.step_in_place(&mut a, &along, &mut work).unwrap();
     }
     // A fresh state seated inside the call, and an error path.
     b.iter_mut().for_each(|x| *x = 0.0);
-    slider
-        .step_flat_in_place(&mut b, &oblique, &mut work)
-        .unwrap();
-    let bad = SliderIncrement {
+    slider.step_in_place(&mut b, &oblique, &mut work).unwrap();
+    let bad = FrictionIncrement {
         slip: [f64::NAN, 0.0],
         ..along
     };
-    assert!(slider.step_flat(&a, &mut b, &bad, &mut work).is_err());
-    assert_eq!(allocations() - before, 0, "Slider::step_flat allocated");
+    assert!(slider.step(&a, &mut b, &bad, &mut work).is_err());
+    let past_the_end = FrictionIncrement {
+        slip: [1e-3, 0.0],
+        ..along
+    };
+    assert!(slider.step(&a, &mut b, &past_the_end, &mut work).is_err());
+    assert_eq!(allocations() - before, 0, "the slider's step allocated");
 
     // The block step.
     let n = 4;
@@ -82,27 +90,33 @@ fn flat_step_does_not_allocate() {
     let before = allocations();
     for _ in 0..10 {
         slider
-            .step_flat_block(
-                &normal,
-                &slip,
-                1e-3,
-                SliderStates::InPlace(&mut states),
-                &mut force,
-                Some(&mut diss),
+            .step_block(
+                FrictionBlock {
+                    normal_force: &normal,
+                    area: None,
+                    slip: &slip,
+                    dt: 1e-3,
+                    states: BlockStates::InPlace(&mut states),
+                    tangential_force: &mut force,
+                    dissipation: Some(&mut diss),
+                },
                 &mut work,
             )
             .unwrap();
         slider
-            .step_flat_block(
-                &normal,
-                &slip,
-                1e-3,
-                SliderStates::Separate {
-                    old: &states,
-                    new: &mut new,
+            .step_block(
+                FrictionBlock {
+                    normal_force: &normal,
+                    area: None,
+                    slip: &slip,
+                    dt: 1e-3,
+                    states: BlockStates::Separate {
+                        old: &states,
+                        new: &mut new,
+                    },
+                    tangential_force: &mut force,
+                    dissipation: None,
                 },
-                &mut force,
-                None,
                 &mut work,
             )
             .unwrap();
@@ -110,7 +124,7 @@ fn flat_step_does_not_allocate() {
     assert_eq!(
         allocations() - before,
         0,
-        "Slider::step_flat_block allocated"
+        "the slider's step_block allocated"
     );
     assert!(force.iter().all(|f| f.is_finite()));
 }

@@ -667,22 +667,50 @@ fn c_abi_handles_null_and_errors() {
     unsafe {
         let mut t: *mut AsperityTable = null_mut();
         assert_eq!(
-            asperity_table_new_maugis_dugdale(R, E_STAR, W, m.cohesive_stress, 1e-4, null_mut()),
+            asperity_table_new_maugis_dugdale(
+                R,
+                E_STAR,
+                W,
+                m.params().cohesive_stress,
+                1e-4,
+                null_mut()
+            ),
             ASPERITY_ERR_NULL_POINTER
         );
         assert!(msg().contains("out"));
         assert_eq!(
-            asperity_table_new_maugis_dugdale(-R, E_STAR, W, m.cohesive_stress, 1e-4, &mut t),
+            asperity_table_new_maugis_dugdale(
+                -R,
+                E_STAR,
+                W,
+                m.params().cohesive_stress,
+                1e-4,
+                &mut t
+            ),
             ASPERITY_ERR_INVALID_ARGUMENT
         );
         assert!(t.is_null() && msg().contains("radius"), "{}", msg());
         assert_eq!(
-            asperity_table_new_maugis_dugdale(R, E_STAR, W, m.cohesive_stress, 0.0, &mut t),
+            asperity_table_new_maugis_dugdale(
+                R,
+                E_STAR,
+                W,
+                m.params().cohesive_stress,
+                0.0,
+                &mut t
+            ),
             ASPERITY_ERR_INVALID_ARGUMENT
         );
         assert!(msg().contains("tolerance"));
         assert_eq!(
-            asperity_table_new_maugis_dugdale(R, E_STAR, W, m.cohesive_stress, 1e-4, &mut t),
+            asperity_table_new_maugis_dugdale(
+                R,
+                E_STAR,
+                W,
+                m.params().cohesive_stress,
+                1e-4,
+                &mut t
+            ),
             ASPERITY_OK
         );
         assert!(!t.is_null());
@@ -739,6 +767,37 @@ fn c_abi_handles_null_and_errors() {
             ASPERITY_ERR_INVALID_ARGUMENT
         );
         assert!(msg().contains("element 1"), "{}", msg());
+        // Aliased arrays (force over δ, states in place) give what separate
+        // arrays give.
+        let d: Vec<f64> = (0..9)
+            .map(|i| m.length_scale() * (i as f64 - 4.0) / 2.0)
+            .collect();
+        let n = d.len();
+        let mut f_sep = vec![0.0; n];
+        let mut s_sep = vec![ContactState::default(); n];
+        let zero = vec![ContactState::default(); n];
+        assert_eq!(
+            asperity_table_eval_batch(
+                t,
+                n,
+                d.as_ptr(),
+                zero.as_ptr(),
+                s_sep.as_mut_ptr(),
+                f_sep.as_mut_ptr(),
+                null_mut(),
+                null_mut()
+            ),
+            ASPERITY_OK
+        );
+        let mut buf = d.clone();
+        let mut states = zero.clone();
+        let (p, sp) = (buf.as_mut_ptr(), states.as_mut_ptr());
+        assert_eq!(
+            asperity_table_eval_batch(t, n, p, sp, sp, p, null_mut(), null_mut()),
+            ASPERITY_OK
+        );
+        assert_eq!(buf, f_sep);
+        assert_eq!(states, s_sep);
         assert_eq!(
             asperity_table_eval_batch(
                 t,

@@ -18,6 +18,7 @@ use asperity::contact::{
     SurfaceLaw, TabulatedLaw,
 };
 use asperity::ffi::contact::*;
+use asperity::ffi::friction_law::*;
 use asperity::ffi::homogenised::*;
 use asperity::ffi::lj_sphere::asperity_lj_sphere_pull_off;
 use asperity::ffi::slider::*;
@@ -25,8 +26,8 @@ use asperity::ffi::statistics::*;
 use asperity::ffi::tabulated::*;
 use asperity::ffi::*;
 use asperity::friction::{
-    FrictionIncrement, FrictionPointState, FrictionResponse, HomogenisedFriction, Loading, Slider,
-    SliderIncrement, SliderStates, SliderTangents,
+    BlockStates, FrictionBlock, FrictionIncrement, FrictionLaw, FrictionResponse,
+    HomogenisedFriction, Slider,
 };
 use asperity::rescaling::{KnownSolution, Rescaling};
 use asperity::scene::Scene;
@@ -116,6 +117,17 @@ fn laws() -> Vec<NormalLaw> {
         .unwrap()
         .into(),
     ]
+}
+
+#[test]
+fn laws_cover_every_kind() {
+    let names: Vec<&str> = laws().iter().map(NormalLaw::name).collect();
+    for kind in NormalLaw::NAMES {
+        assert!(
+            names.contains(kind),
+            "tests/threads.rs: laws() has no `{kind}` law"
+        );
+    }
 }
 
 /// The i-th overlap of a deterministic approach–retraction path over ±4
@@ -237,49 +249,62 @@ fn increment(i: usize, k: usize) -> FrictionIncrement {
         area: 1e-6,
         slip: [2e-7 * (0.3 * t).cos(), 1e-7 * (0.11 * t).sin()],
         dt: 1e-3,
-        stick_stiffness: if i % 3 == 0 { 0.0 } else { 1e8 },
+        ..Default::default()
     }
 }
 
-fn friction_bits(r: &FrictionResponse, s: &FrictionPointState) -> Vec<u64> {
+/// The stick stiffness (N/m) of point `i`'s law: rigid–plastic for one
+/// point in three.
+fn stick_stiffness(i: usize) -> f64 {
+    if i % 3 == 0 {
+        0.0
+    } else {
+        1e8
+    }
+}
+
+fn friction_bits(r: &FrictionResponse, s: &[f64]) -> Vec<u64> {
     let mut v: Vec<u64> = [
         r.force[0],
         r.force[1],
-        r.slip_limit,
+        r.force_magnitude,
         r.dissipated,
-        r.plastic_slip[0],
-        r.plastic_slip[1],
+        r.stored_energy,
         r.dforce_dnormal[0],
         r.dforce_dslip[0][1],
-        s.force[0],
-        s.force[1],
-        s.slip_path,
-        s.dissipation.total(),
     ]
     .iter()
+    .chain(s)
     .map(|x| x.to_bits())
     .collect();
     v.push(r.regime as u64);
-    v.push(s.steps);
     v
 }
 
 #[test]
 fn homogenised_friction_step_and_block() {
-    let law: HomogenisedFriction = common::native::fe_strip_law();
+    let table: HomogenisedFriction = common::native::fe_strip_law();
+    let laws = [0.0, 1e8].map(|k| table.clone().with_stick_stiffness(k).unwrap());
+    let law = |i: usize| &laws[(stick_stiffness(i) > 0.0) as usize];
+    let m = HomogenisedFriction::STATE_LEN;
     same_on_threads("homogenised step", 64, |i| {
-        let mut st = FrictionPointState::default();
+        let law = law(i);
+        let mut work = law.work();
+        let mut st = vec![0.0; m];
+        let mut s = vec![0.0; m];
         let mut out = vec![];
         for k in 0..50 {
-            let (s, r) = law.step_value(&st, &increment(i, k)).unwrap();
+            let r = law.step(&st, &mut s, &increment(i, k), &mut work).unwrap();
             out.extend(friction_bits(&r, &s));
-            st = s;
+            std::mem::swap(&mut st, &mut s);
         }
         out
     });
+    let law = &laws[1];
     same_on_threads("homogenised block", 32, |i| {
         let n = 16;
-        let mut old = vec![FrictionPointState::default(); n];
+        let mut work = law.work();
+        let mut old = vec![0.0; n * m];
         let mut new = old.clone();
         let (mut f, mut d) = (vec![0.0; 2 * n], vec![0.0; n]);
         let mut out = vec![];
@@ -288,8 +313,19 @@ fn homogenised_friction_step_and_block() {
             let nf: Vec<f64> = incs.iter().map(|c| c.normal_force).collect();
             let ar: Vec<f64> = incs.iter().map(|c| c.area).collect();
             let sl: Vec<f64> = incs.iter().flat_map(|c| c.slip).collect();
-            law.step_block(&nf, &ar, &sl, 1e-3, 1e8, &old, &mut new, &mut f, &mut d)
-                .unwrap();
+            let block = FrictionBlock {
+                normal_force: &nf,
+                area: Some(&ar),
+                slip: &sl,
+                dt: 1e-3,
+                states: BlockStates::Separate {
+                    old: &old,
+                    new: &mut new,
+                },
+                tangential_force: &mut f,
+                dissipation: Some(&mut d),
+            };
+            law.step_block(block, &mut work).unwrap();
             out.extend(f.iter().chain(&d).map(|x| x.to_bits()));
             std::mem::swap(&mut old, &mut new);
         }
@@ -297,35 +333,33 @@ fn homogenised_friction_step_and_block() {
     });
 }
 
-fn slider_increment(i: usize, k: usize) -> SliderIncrement {
+fn slider_increment(i: usize, k: usize) -> FrictionIncrement {
     let th = 0.4 * (i + k) as f64;
     let slip = if k % 5 == 4 {
         [0.0, 0.0]
     } else {
         [1.2e-6 * th.cos(), 1.2e-6 * th.sin()]
     };
-    SliderIncrement {
-        loading: Some(Loading::FixedLoad {
-            load: 0.02 + 0.01 * ((i + 3 * k) % 7) as f64,
-        }),
+    FrictionIncrement {
+        normal_force: 0.02 + 0.01 * ((i + 3 * k) % 7) as f64,
         slip,
         dt: 1e-3,
-        tangents: SliderTangents::default(),
+        ..Default::default()
     }
 }
 
 #[test]
-fn slider_step_flat_and_block() {
+fn slider_step_and_block() {
     let slider = scene_slider();
     let m = slider.state_len();
-    same_on_threads("slider step_flat", 16, |i| {
+    same_on_threads("slider step", 16, |i| {
         let mut work = slider.work();
         let mut st = vec![0.0; m];
         st[Slider::STATE_POSITION] = 4e-6 * i as f64;
         let mut out = vec![];
         for k in 0..6 {
             let r = slider
-                .step_flat_in_place(&mut st, &slider_increment(i, k), &mut work)
+                .step_in_place(&mut st, &slider_increment(i, k), &mut work)
                 .unwrap();
             out.extend([r.force[0], r.force[1], r.dissipated, r.normal_force].map(f64::to_bits));
         }
@@ -351,17 +385,16 @@ fn slider_step_flat_and_block() {
                     [1.5e-6 * th.cos(), 1.5e-6 * th.sin()]
                 })
                 .collect();
-            slider
-                .step_flat_block(
-                    &loads,
-                    &slips,
-                    1e-3,
-                    SliderStates::InPlace(&mut states),
-                    &mut f,
-                    Some(&mut d),
-                    &mut work,
-                )
-                .unwrap();
+            let block = FrictionBlock {
+                normal_force: &loads,
+                area: None,
+                slip: &slips,
+                dt: 1e-3,
+                states: BlockStates::InPlace(&mut states),
+                tangential_force: &mut f,
+                dissipation: Some(&mut d),
+            };
+            slider.step_block(block, &mut work).unwrap();
             out.extend(f.iter().chain(&d).map(|x| x.to_bits()));
         }
         out.extend(states.iter().map(|x| x.to_bits()));
@@ -540,30 +573,51 @@ fn c_abi_laws_tables_friction_on_shared_handles() {
     });
     unsafe { asperity_table_free(t) };
 
-    // Homogenised friction.
+    // Homogenised friction: two laws of one table (rigid–plastic and
+    // k = 1e8 N/m), shared, stepped without a work.
     let samples = common::native::fe_strip_law().samples().to_vec();
     let mut h = null_mut();
     assert_eq!(
         unsafe { asperity_homogenised_friction_new(samples.as_ptr(), samples.len(), &mut h) },
         ASPERITY_OK
     );
-    let fr = Shared(h as *const AsperityHomogenisedFriction);
+    let laws = [0.0, 1e8].map(|k| {
+        let mut law = null_mut();
+        assert_eq!(
+            unsafe { asperity_friction_from_homogenised(h, k, &mut law) },
+            ASPERITY_OK
+        );
+        Shared(law as *const AsperityFriction)
+    });
+    unsafe { asperity_homogenised_friction_free(h) };
+    let m = HomogenisedFriction::STATE_LEN;
     same_on_threads("C homogenised", 64, |i| {
-        let mut st = FrictionPointState::default();
+        let law = &laws[(stick_stiffness(i) > 0.0) as usize];
+        let mut st = vec![0.0; m];
         let mut out = vec![];
         for k in 0..30 {
-            let mut s = FrictionPointState::default();
+            let mut s = vec![0.0; m];
             let mut r = FrictionResponse::default();
             let inc = increment(i, k);
-            let status =
-                unsafe { asperity_homogenised_friction_step(fr.get(), &inc, &st, &mut s, &mut r) };
+            let status = unsafe {
+                asperity_friction_step(
+                    law.get(),
+                    &inc,
+                    st.as_ptr(),
+                    s.as_mut_ptr(),
+                    null_mut(),
+                    &mut r,
+                )
+            };
             assert_eq!(status, ASPERITY_OK);
             out.extend(friction_bits(&r, &s));
             st = s;
         }
         out
     });
-    unsafe { asperity_homogenised_friction_free(h) };
+    for law in laws {
+        unsafe { asperity_friction_free(law.get() as *mut AsperityFriction) };
+    }
 
     // Statistics: an empirical GW handle.
     let heights: Vec<f64> = (0..100).map(|k| 1e-6 * (k as f64 * 0.61).sin()).collect();
@@ -621,45 +675,41 @@ fn c_abi_slider_shared_with_one_work_per_thread() {
         },
         ASPERITY_OK
     );
-    let mut m = 0usize;
+    let mut law = null_mut();
     assert_eq!(
-        unsafe { asperity_slider_state_size(s, &mut m) },
+        unsafe { asperity_friction_from_slider(s, &mut law) },
         ASPERITY_OK
     );
-    let slider = Shared(s as *const AsperitySlider);
+    unsafe { asperity_slider_free(s) };
+    let mut m = 0usize;
+    assert_eq!(
+        unsafe { asperity_friction_state_size(law, &mut m) },
+        ASPERITY_OK
+    );
+    let slider = Shared(law as *const AsperityFriction);
     same_on_threads("C slider", 16, |i| {
         let mut work = null_mut();
         assert_eq!(
-            unsafe { asperity_slider_work_new(slider.get(), &mut work) },
+            unsafe { asperity_friction_work_new(slider.get(), &mut work) },
             ASPERITY_OK
         );
         let mut st = vec![0.0; m];
         st[Slider::STATE_POSITION] = 4e-6 * i as f64;
         let mut out = vec![];
         for k in 0..5 {
-            let r = slider_increment(i, k);
-            let Some(Loading::FixedLoad { load }) = r.loading else {
-                unreachable!()
-            };
-            let inc = AsperitySliderIncrement {
-                normal_force: load,
-                gap: 0.0,
-                slip: r.slip,
-                dt: r.dt,
-                control: ASPERITY_SLIDER_CONTROL_LOAD,
-                tangents: 0,
-            };
-            let mut resp = asperity::friction::SliderResponse::default();
+            let inc = slider_increment(i, k);
+            let mut resp = FrictionResponse::default();
             let p = st.as_mut_ptr();
-            let status = unsafe { asperity_slider_step(slider.get(), work, &inc, p, p, &mut resp) };
+            let status =
+                unsafe { asperity_friction_step(slider.get(), &inc, p, p, work, &mut resp) };
             assert_eq!(status, ASPERITY_OK);
             out.extend([resp.force[0], resp.force[1], resp.dissipated].map(f64::to_bits));
         }
-        unsafe { asperity_slider_work_free(work) };
+        unsafe { asperity_friction_work_free(work) };
         out.extend(st.iter().map(|x| x.to_bits()));
         out
     });
-    unsafe { asperity_slider_free(s) };
+    unsafe { asperity_friction_free(law) };
 }
 
 /// The last-error message is per thread: a failure on one thread does not
@@ -725,8 +775,7 @@ fn last_error_message_is_thread_local() {
 #[test]
 fn dynamic_friction_models_step_and_block() {
     use asperity::friction::dynamic::{
-        Bristles, BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre,
-        MaxwellSlip, PrandtlTomlinson,
+        Bristles, BurridgeKnopoff, DynamicModel, LuGre, MaxwellSlip, PrandtlTomlinson,
     };
     let models = [
         DynamicModel::LuGre(LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4).unwrap()),
@@ -761,7 +810,7 @@ fn dynamic_friction_models_step_and_block() {
         };
         let inc = |i: usize, k: usize| {
             let t = (i * 31 + k) as f64;
-            DynamicIncrement {
+            FrictionIncrement {
                 normal_force: 1.0 + 0.5 * (0.3 * t).sin(),
                 slip: [
                     scale * (0.7 * t).cos(),
@@ -769,14 +818,15 @@ fn dynamic_friction_models_step_and_block() {
                 ],
                 dt: 1e-6,
                 tangents: (k % 4) as i32,
-                reserved: 0,
+                ..Default::default()
             }
         };
         same_on_threads("dynamic step", 32, |i| {
             let mut s = vec![0.0; model.state_len()];
+            let mut work = model.work();
             let mut out = vec![];
             for k in 0..40 {
-                let r = model.step_in_place(&mut s, &inc(i, k)).unwrap();
+                let r = model.step_in_place(&mut s, &inc(i, k), &mut work).unwrap();
                 out.extend(
                     [r.force[0], r.force[1], r.dissipated, r.dforce_dslip[0][0]]
                         .iter()
@@ -790,15 +840,23 @@ fn dynamic_friction_models_step_and_block() {
             let n = 8;
             let m = model.state_len();
             let mut s = vec![0.0; n * m];
+            let mut work = model.work();
             let (mut f, mut d) = (vec![0.0; 2 * n], vec![0.0; n]);
             let mut out = vec![];
             for k in 0..10 {
-                let incs: Vec<DynamicIncrement> = (0..n).map(|j| inc(i * n + j, k)).collect();
+                let incs: Vec<FrictionIncrement> = (0..n).map(|j| inc(i * n + j, k)).collect();
                 let nf: Vec<f64> = incs.iter().map(|c| c.normal_force).collect();
                 let sl: Vec<f64> = incs.iter().flat_map(|c| c.slip).collect();
-                model
-                    .step_block(&nf, &sl, 1e-6, &mut s, &mut f, Some(&mut d))
-                    .unwrap();
+                let block = FrictionBlock {
+                    normal_force: &nf,
+                    area: None,
+                    slip: &sl,
+                    dt: 1e-6,
+                    states: BlockStates::InPlace(&mut s),
+                    tangential_force: &mut f,
+                    dissipation: Some(&mut d),
+                };
+                model.step_block(block, &mut work).unwrap();
                 out.extend(f.iter().chain(&d).chain(&s).map(|x| x.to_bits()));
             }
             out

@@ -10,7 +10,8 @@
  *   the status code (`status()`, one of `ASPERITY_ERR_*`) and the library's
  *   message naming the argument and its bound (`what()`).
  * - Opaque handles are RAII classes (`Table`, `GwEmpirical`,
- *   `HomogenisedFriction`, `SliderGeometry`, `Slider`, `SliderWork`):
+ *   `HomogenisedFriction`, `SliderGeometry`, `Slider`, `Friction`,
+ *   `FrictionWork`):
  *   move-only, `noexcept` moves, the destructor calls `asperity_<thing>_free`;
  *   `get()` gives the C pointer for mixing with C calls and `release()` gives
  *   up ownership.
@@ -339,15 +340,15 @@ struct free_slider_geometry {
 struct free_slider {
     static void free(AsperitySlider* p) noexcept { asperity_slider_free(p); }
 };
-/// `asperity_dynamic_friction_free`, called by the destructor of
-/// `asperity::DynamicFriction`.
-struct free_dynamic_friction {
-    static void free(AsperityDynamicFriction* p) noexcept { asperity_dynamic_friction_free(p); }
+/// `asperity_friction_free`, called by the destructor of
+/// `asperity::Friction`.
+struct free_friction {
+    static void free(AsperityFriction* p) noexcept { asperity_friction_free(p); }
 };
-/// `asperity_slider_work_free`, called by the destructor of
-/// `asperity::SliderWork`.
-struct free_slider_work {
-    static void free(AsperitySliderWork* p) noexcept { asperity_slider_work_free(p); }
+/// `asperity_friction_work_free`, called by the destructor of
+/// `asperity::FrictionWork`.
+struct free_friction_work {
+    static void free(AsperityFrictionWork* p) noexcept { asperity_friction_work_free(p); }
 };
 
 /// Calls a C++ callable from a C callback; an exception is kept and rethrown
@@ -375,6 +376,16 @@ struct density_callback {
 
 // ---------------------------------------------------------------------------
 // Single-asperity normal laws (AsperityNormalLaw by value)
+
+/// `asperity_law_from_params`: the law of kind `kind` (`ASPERITY_LAW_*`) from
+/// its inputs, the member of `params` that `kind` names (`params.jkr`, ...).
+[[nodiscard]] inline AsperityNormalLaw law_from_params(std::int32_t kind,
+                                                       const AsperityLawParams& params)
+{
+    AsperityNormalLaw law{};
+    check(asperity_law_from_params(kind, &params, &law));
+    return law;
+}
 
 /// `asperity_law_hertz`: Hertz sphere, radius R (m), contact modulus E* (Pa).
 [[nodiscard]] inline AsperityNormalLaw law_hertz(double radius, double e_star)
@@ -851,9 +862,10 @@ public:
 // ---------------------------------------------------------------------------
 // Homogenised friction law of FE integration points
 
-/// The homogenised friction law (`AsperityHomogenisedFriction`): mu(p),
+/// The homogenised friction table (`AsperityHomogenisedFriction`): mu(p),
 /// adhesion, contact fraction and dissipation shares over the nominal
-/// pressure. Immutable; safe to share between threads.
+/// pressure. Immutable; safe to share between threads. Stepped as a
+/// friction law through `Friction::from_homogenised`.
 class HomogenisedFriction
     : public detail::unique_handle<AsperityHomogenisedFriction,
                                    detail::free_homogenised_friction> {
@@ -887,210 +899,10 @@ public:
             return asperity_homogenised_friction_to_json(h, buf, len, needed);
         });
     }
-
-    /// `asperity_homogenised_friction_state_size`: the size in bytes of
-    /// `AsperityFrictionPointState` as the library sees it.
-    [[nodiscard]] static std::size_t state_size() noexcept
-    {
-        return asperity_homogenised_friction_state_size();
-    }
-
-    /// `asperity_homogenised_friction_step`: one increment at one point from
-    /// `old_state` (NULL: fresh) into `new_state` (NULL: discarded; may equal
-    /// `old_state`). On failure the states are untouched.
-    [[nodiscard]] AsperityFrictionResponse step(
-        const AsperityFrictionIncrement& increment,
-        const AsperityFrictionPointState* old_state = nullptr,
-        AsperityFrictionPointState* new_state = nullptr) const
-    {
-        AsperityFrictionResponse out{};
-        check(asperity_homogenised_friction_step(get(), &increment, old_state, new_state, &out));
-        return out;
-    }
-
-    /// `asperity_homogenised_friction_step` with the point's `state` updated
-    /// in place.
-    AsperityFrictionResponse step(const AsperityFrictionIncrement& increment,
-                                  AsperityFrictionPointState& state) const
-    {
-        return step(increment, &state, &state);
-    }
-
-    /// `asperity_homogenised_friction_step_block`: `normal_forces.size()`
-    /// points at once (Abaqus VFRIC shape). `areas` holds one value per
-    /// point, `slip_increments` and `tangential_forces` two (x, y
-    /// interleaved); `old_state` (all fresh when empty), `new_state` and
-    /// `dissipation` are empty or one per point. Pass one vector of states
-    /// as both `old_state` and `new_state` to step them in place.
-    void step_block(span<const double> normal_forces, span<const double> areas,
-                    span<const double> slip_increments, double dt, double stick_stiffness,
-                    span<const AsperityFrictionPointState> old_state,
-                    span<AsperityFrictionPointState> new_state, span<double> tangential_forces,
-                    span<double> dissipation = {}) const
-    {
-        const char* f = "asperity::HomogenisedFriction::step_block";
-        const std::size_t n = normal_forces.size();
-        check(asperity_homogenised_friction_step_block(
-            get(), n, detail::required(normal_forces), detail::at_least(areas, n, f, "areas"),
-            detail::at_least(slip_increments, 2 * n, f, "slip_increments"), dt, stick_stiffness,
-            detail::optional(old_state, n, f, "old_state"),
-            detail::optional(new_state, n, f, "new_state"),
-            detail::at_least(tangential_forces, 2 * n, f, "tangential_forces"),
-            detail::optional(dissipation, n, f, "dissipation")));
-    }
 };
 
 // ---------------------------------------------------------------------------
-// Dynamic friction models (thesis chapter 5) as per-increment friction steps
-
-/// A dynamic friction model (`AsperityDynamicFriction`): LuGre,
-/// Maxwell-slip, Prandtl-Tomlinson (one or two springs) or Burridge-Knopoff,
-/// stepped once per increment with caller-owned states of
-/// `state_size()` doubles (all-zero = fresh). Immutable; safe to share
-/// between threads. Sign convention: the slip increment is the motion of the
-/// point relative to the counter-surface, the force is the force on the
-/// point and opposes slip.
-class DynamicFriction
-    : public detail::unique_handle<AsperityDynamicFriction, detail::free_dynamic_friction> {
-public:
-    using unique_handle::unique_handle;
-    DynamicFriction() noexcept = default;
-
-    /// `asperity_dynamic_lugre_new`: the LuGre model of `params`.
-    [[nodiscard]] static DynamicFriction lugre(const AsperityLugreParams& params)
-    {
-        AsperityDynamicFriction* p = nullptr;
-        check(asperity_dynamic_lugre_new(&params, &p));
-        return DynamicFriction(p);
-    }
-
-    /// `asperity_dynamic_maxwell_slip_new`: Maxwell-slip elements of
-    /// stiffnesses `stiffness` (1/m per unit normal force) and break-away
-    /// coefficients `capacity` (one per element), viscous `sigma2` (N s/m).
-    [[nodiscard]] static DynamicFriction maxwell_slip(span<const double> stiffness,
-                                                      span<const double> capacity,
-                                                      double sigma2 = 0.0)
-    {
-        const std::size_t n = stiffness.size();
-        AsperityDynamicFriction* p = nullptr;
-        check(asperity_dynamic_maxwell_slip_new(
-            detail::required(stiffness),
-            detail::at_least(capacity, n, "asperity::DynamicFriction::maxwell_slip", "capacity"),
-            n, sigma2, &p));
-        return DynamicFriction(p);
-    }
-
-    /// `asperity_dynamic_bristles_new`: bristles of stiffnesses `stiffness`
-    /// (1/m per unit normal force) and break deflections `break_deflection`
-    /// (m, one per bristle), viscous `sigma2` (N s/m). One-dimensional.
-    [[nodiscard]] static DynamicFriction bristles(span<const double> stiffness,
-                                                  span<const double> break_deflection,
-                                                  double sigma2 = 0.0)
-    {
-        const std::size_t n = stiffness.size();
-        AsperityDynamicFriction* p = nullptr;
-        check(asperity_dynamic_bristles_new(
-            detail::required(stiffness),
-            detail::at_least(break_deflection, n, "asperity::DynamicFriction::bristles",
-                             "break_deflection"),
-            n, sigma2, &p));
-        return DynamicFriction(p);
-    }
-
-    /// `asperity_dynamic_prandtl_tomlinson_new`: a tip in a lattice
-    /// potential of amplitude `amplitude` (J) and period `period` (m) pulled
-    /// through a spring `stiffness` (N/m), mass `mass` (kg), damping
-    /// `damping` (kg/s), integration tolerance `tolerance`.
-    [[nodiscard]] static DynamicFriction prandtl_tomlinson(double amplitude, double period,
-                                                           double stiffness, double mass,
-                                                           double damping,
-                                                           double tolerance = 1e-9)
-    {
-        AsperityDynamicFriction* p = nullptr;
-        check(asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, damping,
-                                                     tolerance, &p));
-        return DynamicFriction(p);
-    }
-
-    /// `asperity_dynamic_prandtl_tomlinson_two_spring_new`: the
-    /// tip-cantilever Prandtl-Tomlinson model of `params` (the tip spring
-    /// and the cantilever spring in series; state size 7).
-    [[nodiscard]] static DynamicFriction
-    prandtl_tomlinson_two_spring(const AsperityPrandtlTomlinsonTwoSpringParams& params)
-    {
-        AsperityDynamicFriction* p = nullptr;
-        check(asperity_dynamic_prandtl_tomlinson_two_spring_new(&params, &p));
-        return DynamicFriction(p);
-    }
-
-    /// `asperity_dynamic_burridge_knopoff_new`: the Burridge-Knopoff block
-    /// chain of `params` (state size 3 + 2 x blocks; the force is the leaf
-    /// springs' pull on the driver).
-    [[nodiscard]] static DynamicFriction
-    burridge_knopoff(const AsperityBurridgeKnopoffParams& params)
-    {
-        AsperityDynamicFriction* p = nullptr;
-        check(asperity_dynamic_burridge_knopoff_new(&params, &p));
-        return DynamicFriction(p);
-    }
-
-    /// `asperity_dynamic_friction_state_size`: doubles of one point's state.
-    [[nodiscard]] std::size_t state_size() const
-    {
-        std::size_t n = 0;
-        check(asperity_dynamic_friction_state_size(get(), &n));
-        return n;
-    }
-
-    /// `asperity_dynamic_friction_step`: one increment of one point from
-    /// `old_state` into `new_state` (each at least `state_size()` doubles).
-    /// On failure `new_state` is untouched.
-    [[nodiscard]] AsperityDynamicResponse step(const AsperityDynamicIncrement& increment,
-                                               span<const double> old_state,
-                                               span<double> new_state) const
-    {
-        const char* f = "asperity::DynamicFriction::step";
-        const std::size_t m = state_size();
-        const double* old_p = detail::at_least(old_state, m, f, "old_state");
-        double* new_p = detail::at_least(new_state, m, f, "new_state");
-        AsperityDynamicResponse out{};
-        check(asperity_dynamic_friction_step(get(), &increment, old_p, new_p, &out));
-        return out;
-    }
-
-    /// `asperity_dynamic_friction_step` with the point's `state` updated in
-    /// place.
-    AsperityDynamicResponse step(const AsperityDynamicIncrement& increment,
-                                 span<double> state) const
-    {
-        return step(increment, span<const double>(state), state);
-    }
-
-    /// `asperity_dynamic_friction_step_block`: `normal_forces.size()` points
-    /// at once (Abaqus VFRIC shape), states stepped in place (`state_size()`
-    /// doubles per point); `slip_increments` and `tangential_forces` hold
-    /// two values per point (x, y interleaved), `dissipation` is empty or
-    /// one per point.
-    void step_block(span<const double> normal_forces, span<const double> slip_increments,
-                    double dt, span<double> states, span<double> tangential_forces,
-                    span<double> dissipation = {}) const
-    {
-        const char* f = "asperity::DynamicFriction::step_block";
-        const std::size_t n = normal_forces.size();
-        const std::size_t m = state_size();
-        check(asperity_dynamic_friction_step_block(
-            get(), n, detail::required(normal_forces),
-            detail::at_least(slip_increments, 2 * n, f, "slip_increments"), dt,
-            detail::at_least(states, n * m, f, "states"),
-            detail::at_least(tangential_forces, 2 * n, f, "tangential_forces"),
-            detail::optional(dissipation, n, f, "dissipation")));
-    }
-};
-
-// ---------------------------------------------------------------------------
-// The slider as a per-increment friction law of surface patches
-
-class Slider;
+// The hierarchical slider (thesis chapter 6)
 
 /// `asperity_friction_material_copper`: the thesis's Cu–Cu friction
 /// material (REFERENCE.md §5).
@@ -1110,27 +922,10 @@ class Slider;
     return out;
 }
 
-/// Scratch buffers of the slider step (`AsperitySliderWork`): one per
-/// thread, built once with `SliderWork(slider)`; it may serve any slider
-/// with the same number of rods. Not shared: a step writes into it.
-class SliderWork
-    : public detail::unique_handle<AsperitySliderWork, detail::free_slider_work> {
-public:
-    using unique_handle::unique_handle;
-    SliderWork() noexcept = default;
-
-    /// `asperity_slider_work_new`: the buffers of a step with `slider`.
-    explicit SliderWork(const Slider& slider);
-};
-
 /// The full hierarchical slider against its counter-surface
-/// (`AsperitySlider`), the friction law of a surface patch stepped once per
-/// time increment. Immutable; safe to share between threads, each thread
-/// stepping with its own `SliderWork`. Per-patch states are caller-owned
-/// arrays of `state_size()` doubles (all-zero = fresh; layout: the
-/// `ASPERITY_SLIDER_STATE_*` indices). Sign convention: the slip increment
-/// is the motion of the patch relative to the counter-surface, the force is
-/// the force on the patch and opposes slip.
+/// (`AsperitySlider`). Immutable; safe to share between threads. Stepped as
+/// the friction law of a surface patch through `Friction::from_slider`
+/// (state layout: the `ASPERITY_SLIDER_STATE_*` indices).
 class Slider : public detail::unique_handle<AsperitySlider, detail::free_slider> {
 public:
     using unique_handle::unique_handle;
@@ -1170,15 +965,6 @@ public:
         return from_scene_json(json, base_dir.c_str());
     }
 
-    /// `asperity_slider_state_size`: the number of doubles of one patch
-    /// state (8 + 2 x rods).
-    [[nodiscard]] std::size_t state_size() const
-    {
-        std::size_t n = 0;
-        check(asperity_slider_state_size(get(), &n));
-        return n;
-    }
-
     /// `asperity_slider_info`: sizes and capacities (SI).
     [[nodiscard]] AsperitySliderInfo info() const
     {
@@ -1186,64 +972,265 @@ public:
         check(asperity_slider_info(get(), &out));
         return out;
     }
+};
 
-    /// `asperity_slider_step`: one increment of one patch from `old_state`
-    /// into `new_state` (each at least `state_size()` doubles; the same
-    /// array for both steps in place). The same old state and increment give
-    /// bit-identical results, so an increment can be re-evaluated or cut
-    /// back. On failure `new_state` is untouched.
-    [[nodiscard]] AsperitySliderResponse step(SliderWork& work,
-                                              const AsperitySliderIncrement& increment,
-                                              span<const double> old_state,
-                                              span<double> new_state) const
+// ---------------------------------------------------------------------------
+// The friction step: one handle for every per-increment friction law
+
+class Friction;
+
+/// The scratch of a friction step (`AsperityFrictionWork`): one per thread,
+/// built once with `FrictionWork(law)` (or `law.work()`); one made for
+/// another law is rebuilt on its first use. Not shared: a step writes into
+/// it.
+class FrictionWork
+    : public detail::unique_handle<AsperityFrictionWork, detail::free_friction_work> {
+public:
+    using unique_handle::unique_handle;
+    FrictionWork() noexcept = default;
+
+    /// `asperity_friction_work_new`: the scratch of a step with `law`.
+    explicit FrictionWork(const Friction& law);
+
+    /// `asperity_slider_record`: the full record of the last step this
+    /// scratch took with a slider law (`Friction::from_slider`): positions
+    /// (m), the adhesion area share, the counts of contacts and whether the
+    /// step seated a fresh state (`seated` 1); all zero for a scratch made
+    /// for a slider law that has not stepped yet. Throws (naming `work`) for
+    /// an empty scratch or one of another law.
+    [[nodiscard]] AsperitySliderRecord slider_record() const
     {
-        const char* f = "asperity::Slider::step";
-        const std::size_t m = state_size();
-        const double* old_p = detail::at_least(old_state, m, f, "old_state");
-        double* new_p = detail::at_least(new_state, m, f, "new_state");
-        AsperitySliderResponse out{};
-        check(asperity_slider_step(get(), work.get(), &increment, old_p, new_p, &out));
+        AsperitySliderRecord out{};
+        check(asperity_slider_record(get(), &out));
         return out;
-    }
-
-    /// `asperity_slider_step` with the patch's `state` updated in place.
-    AsperitySliderResponse step(SliderWork& work, const AsperitySliderIncrement& increment,
-                                span<double> state) const
-    {
-        return step(work, increment, span<const double>(state), state);
-    }
-
-    /// `asperity_slider_step_block`: `normal_force.size()` patches at once
-    /// (Abaqus VFRIC shape) under fixed loads `normal_force[i]` (N, <= the
-    /// capacity). `slip` and `tangential_force` hold two values per patch (x,
-    /// y interleaved), `old_states` and `new_states` `state_size()` per patch
-    /// (pass one vector as both to step in place), `dissipation` is empty
-    /// (not wanted) or one per patch (J). No tangents (use `step`). On an
-    /// error at patch i, patches before i are written and the message names
-    /// element i.
-    void step_block(SliderWork& work, span<const double> normal_force, span<const double> slip,
-                    double dt, span<const double> old_states, span<double> new_states,
-                    span<double> tangential_force, span<double> dissipation = {}) const
-    {
-        const char* f = "asperity::Slider::step_block";
-        const std::size_t n = normal_force.size();
-        const std::size_t m = state_size();
-        // Checked in the C order, so the first short array is the one named.
-        const double* slip_p = detail::at_least(slip, 2 * n, f, "slip");
-        const double* old_p = detail::at_least(old_states, n * m, f, "old_states");
-        double* new_p = detail::at_least(new_states, n * m, f, "new_states");
-        double* force_p = detail::at_least(tangential_force, 2 * n, f, "tangential_force");
-        double* diss_p = detail::optional(dissipation, n, f, "dissipation");
-        check(asperity_slider_step_block(get(), work.get(), n, detail::required(normal_force),
-                                         slip_p, dt, old_p, new_p, force_p, diss_p));
     }
 };
 
-inline SliderWork::SliderWork(const Slider& slider)
+/// A friction law stepped once per time increment (`AsperityFriction`):
+/// the homogenised law, the slider as a patch law, or a chapter-5 dynamic
+/// model (LuGre, Maxwell-slip, bristles, Prandtl-Tomlinson with one or two
+/// springs, Burridge-Knopoff). Immutable; safe to share between threads,
+/// each thread stepping with its own `FrictionWork`.
+///
+/// Per-point states are caller-owned arrays of `state_size()` doubles
+/// (all-zero = fresh): `[ASPERITY_FRICTION_STATE_DISSIPATION]` the
+/// accumulated dissipation (J), `[ASPERITY_FRICTION_STATE_SLIP_PATH]` the
+/// slip path (m), then the law's own from `ASPERITY_FRICTION_STATE_MODEL`.
+/// The old and new states are separate (a host can re-evaluate or cut back
+/// an increment); the `_in_place` forms update one state. Sign convention:
+/// the slip increment is the motion of the point relative to the
+/// counter-surface, the force is the force on the point and opposes slip.
+/// `work` may be null: a scratch is then built for the call (the slider's
+/// allocates).
+class Friction : public detail::unique_handle<AsperityFriction, detail::free_friction> {
+public:
+    using unique_handle::unique_handle;
+    Friction() noexcept = default;
+
+    /// `asperity_friction_from_homogenised`: the homogenised law of `table`
+    /// (copied) with the stick stiffness `stick_stiffness` (N/m, >= 0; 0:
+    /// rigid-plastic). Increments need the nominal `area` > 0.
+    [[nodiscard]] static Friction from_homogenised(const HomogenisedFriction& table,
+                                                   double stick_stiffness = 0.0)
+    {
+        AsperityFriction* p = nullptr;
+        check(asperity_friction_from_homogenised(table.get(), stick_stiffness, &p));
+        return Friction(p);
+    }
+
+    /// `asperity_friction_from_slider`: the slider (copied) as the law of a
+    /// surface patch; the increment's normal force is the fixed load (<= the
+    /// capacity), its area is unused.
+    [[nodiscard]] static Friction from_slider(const Slider& slider)
+    {
+        AsperityFriction* p = nullptr;
+        check(asperity_friction_from_slider(slider.get(), &p));
+        return Friction(p);
+    }
+
+    /// `asperity_friction_lugre_new`: the LuGre model of `params`.
+    [[nodiscard]] static Friction lugre(const AsperityLugreParams& params)
+    {
+        AsperityFriction* p = nullptr;
+        check(asperity_friction_lugre_new(&params, &p));
+        return Friction(p);
+    }
+
+    /// `asperity_friction_maxwell_slip_new`: Maxwell-slip elements of
+    /// stiffnesses `stiffness` (1/m per unit normal force) and break-away
+    /// coefficients `capacity` (one per element), viscous `sigma2` (N s/m).
+    [[nodiscard]] static Friction maxwell_slip(span<const double> stiffness,
+                                               span<const double> capacity, double sigma2 = 0.0)
+    {
+        const std::size_t n = stiffness.size();
+        AsperityFriction* p = nullptr;
+        check(asperity_friction_maxwell_slip_new(
+            detail::required(stiffness),
+            detail::at_least(capacity, n, "asperity::Friction::maxwell_slip", "capacity"), n,
+            sigma2, &p));
+        return Friction(p);
+    }
+
+    /// `asperity_friction_bristles_new`: bristles of stiffnesses `stiffness`
+    /// (1/m per unit normal force) and break deflections `break_deflection`
+    /// (m, one per bristle), viscous `sigma2` (N s/m). One-dimensional.
+    [[nodiscard]] static Friction bristles(span<const double> stiffness,
+                                           span<const double> break_deflection,
+                                           double sigma2 = 0.0)
+    {
+        const std::size_t n = stiffness.size();
+        AsperityFriction* p = nullptr;
+        check(asperity_friction_bristles_new(
+            detail::required(stiffness),
+            detail::at_least(break_deflection, n, "asperity::Friction::bristles",
+                             "break_deflection"),
+            n, sigma2, &p));
+        return Friction(p);
+    }
+
+    /// `asperity_friction_prandtl_tomlinson_new`: a tip in a lattice
+    /// potential of amplitude `amplitude` (J) and period `period` (m) pulled
+    /// through a spring `stiffness` (N/m), mass `mass` (kg), damping
+    /// `damping` (kg/s), integration tolerance `tolerance`.
+    [[nodiscard]] static Friction prandtl_tomlinson(double amplitude, double period,
+                                                    double stiffness, double mass, double damping,
+                                                    double tolerance = 1e-9)
+    {
+        AsperityFriction* p = nullptr;
+        check(asperity_friction_prandtl_tomlinson_new(amplitude, period, stiffness, mass, damping,
+                                                      tolerance, &p));
+        return Friction(p);
+    }
+
+    /// `asperity_friction_prandtl_tomlinson_two_spring_new`: the
+    /// tip-cantilever Prandtl-Tomlinson model of `params` (the tip spring
+    /// and the cantilever spring in series; state size 7).
+    [[nodiscard]] static Friction
+    prandtl_tomlinson_two_spring(const AsperityPrandtlTomlinsonTwoSpringParams& params)
+    {
+        AsperityFriction* p = nullptr;
+        check(asperity_friction_prandtl_tomlinson_two_spring_new(&params, &p));
+        return Friction(p);
+    }
+
+    /// `asperity_friction_burridge_knopoff_new`: the Burridge-Knopoff block
+    /// chain of `params` (state size 3 + 2 x blocks; the force is the leaf
+    /// springs' pull on the driver).
+    [[nodiscard]] static Friction burridge_knopoff(const AsperityBurridgeKnopoffParams& params)
+    {
+        AsperityFriction* p = nullptr;
+        check(asperity_friction_burridge_knopoff_new(&params, &p));
+        return Friction(p);
+    }
+
+    /// `asperity_friction_state_size`: doubles of one point's state.
+    [[nodiscard]] std::size_t state_size() const
+    {
+        std::size_t n = 0;
+        check(asperity_friction_state_size(get(), &n));
+        return n;
+    }
+
+    /// A new scratch for steps with this law (`FrictionWork(*this)`).
+    [[nodiscard]] FrictionWork work() const;
+
+    /// `asperity_friction_step`: one increment of one point from
+    /// `old_state` into `new_state` (each at least `state_size()` doubles;
+    /// the same array for both steps in place). The same old state and
+    /// increment give bit-identical results. On failure `new_state` is
+    /// untouched.
+    [[nodiscard]] AsperityFrictionResponse step(const AsperityFrictionIncrement& increment,
+                                                span<const double> old_state,
+                                                span<double> new_state,
+                                                FrictionWork* work = nullptr) const
+    {
+        const char* f = "asperity::Friction::step";
+        const std::size_t m = state_size();
+        const double* old_p = detail::at_least(old_state, m, f, "old_state");
+        double* new_p = detail::at_least(new_state, m, f, "new_state");
+        AsperityFrictionResponse out{};
+        check(asperity_friction_step(get(), &increment, old_p, new_p, scratch(work), &out));
+        return out;
+    }
+
+    /// `asperity_friction_step_in_place`: one increment of one point with
+    /// its `state` updated in place (untouched on failure).
+    AsperityFrictionResponse step_in_place(const AsperityFrictionIncrement& increment,
+                                           span<double> state, FrictionWork* work = nullptr) const
+    {
+        double* p = detail::at_least(state, state_size(), "asperity::Friction::step_in_place",
+                                     "state");
+        AsperityFrictionResponse out{};
+        check(asperity_friction_step_in_place(get(), &increment, p, scratch(work), &out));
+        return out;
+    }
+
+    /// `asperity_friction_step_block`: `normal_forces.size()` points at once
+    /// (Abaqus VFRIC shape), no tangents. `areas` is empty (0 for every
+    /// point; refused by the homogenised law) or one per point (m^2);
+    /// `slip_increments` and `tangential_forces` hold two values per point
+    /// (x, y interleaved), `old_states` and `new_states` `state_size()` per
+    /// point (the same vector for both steps in place), `dissipation` is
+    /// empty (not wanted) or one per point (J). On an error at point i, the
+    /// points before i are written and the message names element i.
+    void step_block(span<const double> normal_forces, span<const double> areas,
+                    span<const double> slip_increments, double dt,
+                    span<const double> old_states, span<double> new_states,
+                    span<double> tangential_forces, span<double> dissipation = {},
+                    FrictionWork* work = nullptr) const
+    {
+        const char* f = "asperity::Friction::step_block";
+        const std::size_t n = normal_forces.size();
+        const std::size_t m = state_size();
+        // Checked in the C order, so the first short array is the one named.
+        const double* area_p = detail::optional(areas, n, f, "areas");
+        const double* slip_p = detail::at_least(slip_increments, 2 * n, f, "slip_increments");
+        const double* old_p = detail::at_least(old_states, n * m, f, "old_states");
+        double* new_p = detail::at_least(new_states, n * m, f, "new_states");
+        double* force_p = detail::at_least(tangential_forces, 2 * n, f, "tangential_forces");
+        double* diss_p = detail::optional(dissipation, n, f, "dissipation");
+        check(asperity_friction_step_block(get(), n, detail::required(normal_forces), area_p,
+                                           slip_p, dt, old_p, new_p, force_p, diss_p,
+                                           scratch(work)));
+    }
+
+    /// `asperity_friction_step_block_in_place`: `step_block` with the
+    /// `states` (`state_size()` doubles per point) stepped in place.
+    void step_block_in_place(span<const double> normal_forces, span<const double> areas,
+                             span<const double> slip_increments, double dt, span<double> states,
+                             span<double> tangential_forces, span<double> dissipation = {},
+                             FrictionWork* work = nullptr) const
+    {
+        const char* f = "asperity::Friction::step_block_in_place";
+        const std::size_t n = normal_forces.size();
+        const std::size_t m = state_size();
+        const double* area_p = detail::optional(areas, n, f, "areas");
+        const double* slip_p = detail::at_least(slip_increments, 2 * n, f, "slip_increments");
+        double* states_p = detail::at_least(states, n * m, f, "states");
+        double* force_p = detail::at_least(tangential_forces, 2 * n, f, "tangential_forces");
+        double* diss_p = detail::optional(dissipation, n, f, "dissipation");
+        check(asperity_friction_step_block_in_place(get(), n, detail::required(normal_forces),
+                                                    area_p, slip_p, dt, states_p, force_p, diss_p,
+                                                    scratch(work)));
+    }
+
+private:
+    static AsperityFrictionWork* scratch(FrictionWork* work) noexcept
+    {
+        return work != nullptr ? work->get() : nullptr;
+    }
+};
+
+inline FrictionWork::FrictionWork(const Friction& law)
 {
-    AsperitySliderWork* p = nullptr;
-    check(asperity_slider_work_new(slider.get(), &p));
+    AsperityFrictionWork* p = nullptr;
+    check(asperity_friction_work_new(law.get(), &p));
     reset(p);
+}
+
+inline FrictionWork Friction::work() const
+{
+    return FrictionWork(*this);
 }
 
 // ---------------------------------------------------------------------------

@@ -34,7 +34,8 @@
 !>   `character(len=:), allocatable`. Procedures that step a caller-owned
 !>   history also take `state` (or `states`): the old and the new history in
 !>   one variable, updated in place (Fortran forbids passing one variable as
-!>   both `old_state` and `new_state`).
+!>   both `old_state` and `new_state`); the friction step has its own
+!>   `_in_place` procedures for that, as in C.
 !>
 !> Types: `type, bind(c) :: asperity_<snake_case>` mirrors the C struct
 !> `Asperity<CamelCase>` field by field, with the C field names; the
@@ -44,8 +45,8 @@
 !> `(0:5)` by `ASPERITY_FIDELITY_*` and
 !> `AsperityIndentationOptions.area_coefficients` `(0:7)` by the NanoSuite
 !> coefficient number. The C union `AsperityLawParams` is its storage
-!> `raw(16)`; view it as one law with `transfer`, e.g.
-!> `jkr = transfer(law%params, jkr)` for a `type(asperity_jkr) :: jkr`.
+!> `raw(16)`; read a law's inputs with `transfer`, e.g.
+!> `jkr = transfer(law%params, jkr)` for a `type(asperity_jkr_params) :: jkr`.
 !> `asperity_type_layout` gives the size the library has for each C type;
 !> tests/fortran_bindings.rs checks `c_sizeof` of every mirror against it.
 !>
@@ -127,12 +128,29 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_FIDELITY_MAUGIS_DUGDALE = 4
   !> Fidelity: the full numerical Lennard-Jones sphere.
   integer(c_int32_t), parameter, public :: ASPERITY_FIDELITY_LENNARD_JONES = 5
-  !> `AsperityFrictionResponse.regime`: the trial force is inside the cone, no plastic slip.
+  !> `asperity_friction_increment%tangents` bit: compute dF/dN.
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_TANGENT_NORMAL = 1
+  !> `asperity_friction_increment%tangents` bit: compute dF/d(slip).
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_TANGENT_SLIP = 2
+  ! The friction state indices are C's, from 0: in Fortran the accumulated
+  ! dissipation is `state(ASPERITY_FRICTION_STATE_DISSIPATION + 1)`.
+  !> Index (from 0) in a friction state of the accumulated dissipation (J).
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_STATE_DISSIPATION = 0
+  !> Index (from 0) in a friction state of the accumulated slip path sum |ds| (m).
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_STATE_SLIP_PATH = 1
+  !> Index (from 0) in a friction state of the law's first own variable (see
+  !  `ASPERITY_FRICTION_STATE_MODEL` in asperity.h for each law's layout).
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_STATE_MODEL = 2
+  !> `asperity_friction_response%regime`: no slip (inside the slip cone, zero slip, every
+  !  element stuck).
   integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_STICK = 0
-  !> `AsperityFrictionResponse.regime`: the force is on the cone, plastic slip and dissipation.
-  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_SLIP = 1
-  !> `AsperityFrictionResponse.regime`: no normal force and no adhesion; no friction (force 0).
-  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_NO_CONTACT = 2
+  !> `asperity_friction_response%regime`: partial slip (pre-sliding: some elements or bristles
+  !  slipping).
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_PARTIAL_SLIP = 1
+  !> `asperity_friction_response%regime`: gross sliding.
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_SLIP = 2
+  !> `asperity_friction_response%regime`: no normal force and no adhesion; no friction.
+  integer(c_int32_t), parameter, public :: ASPERITY_FRICTION_NO_CONTACT = 3
   !> Segment label: not assigned.
   integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_UNKNOWN = 0
   !> Segment label: approach (before contact).
@@ -201,18 +219,11 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_PAIR_GEOMETRIC_MEAN = 0
   !> Pair rule of seed 001: `Δγ = (√γ₁ − √γ₂)²`.
   integer(c_int32_t), parameter, public :: ASPERITY_PAIR_SEED001_DIFFERENCE = 1
-  !> `asperity_slider_increment%control`: the slider's own loading (the scene's); `normal_force`
-  !  and `gap` are ignored.
-  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_CONTROL_SCENE = 0
-  !> `asperity_slider_increment%control`: fixed load `normal_force` (N).
+  !> `asperity_slider_info%scene_control`, `asperity_slider_options%control`: a fixed load (N).
   integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_CONTROL_LOAD = 1
-  !> `asperity_slider_increment%control`: fixed gap, the slider's mean line at `gap` (m) above
-  !  the counter-surface's mean line.
+  !> `asperity_slider_info%scene_control`, `asperity_slider_options%control`: a fixed gap, the
+  !  slider's mean line at the gap (m) above the counter-surface's mean line.
   integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_CONTROL_GAP = 2
-  !> `asperity_slider_increment%tangents` bit: compute dF/dN.
-  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_TANGENT_NORMAL = 1
-  !> `asperity_slider_increment%tangents` bit: compute dF/d(slip).
-  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_TANGENT_SLIP = 2
   !> `asperity_slider_options%mechanisms` bit: breaking of chemical bonds (4.1).
   integer(c_int32_t), parameter, public :: ASPERITY_MECHANISM_CHEMICAL = 1
   !> `asperity_slider_options%mechanisms` bit: breaking of van der Waals bonds (4.2).
@@ -242,38 +253,32 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_ROD_SOLVER_SWEEP = 0
   !> `asperity_slider_options%solver`: the thesis's dense formulation (reference).
   integer(c_int32_t), parameter, public :: ASPERITY_ROD_SOLVER_DENSE = 1
-  !> `asperity_dynamic_increment%tangents` bit: compute dF/dN.
-  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_TANGENT_NORMAL = 1
-  !> `asperity_dynamic_increment%tangents` bit: compute dF/d(slip).
-  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_TANGENT_SLIP = 2
-  ! The dynamic-friction state indices are C's, from 0.
-  !> Index (from 0) in a dynamic-friction state of the accumulated dissipation (J).
-  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_STATE_DISSIPATION = 0
-  !> Index (from 0) in a dynamic-friction state of the accumulated slip path (m).
-  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_STATE_SLIP_PATH = 1
-  !> Index (from 0) in a dynamic-friction state of the model's first variable.
-  integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_STATE_MODEL = 2
   !> The largest Burridge-Knopoff chain (blocks).
   integer(c_int32_t), parameter, public :: ASPERITY_DYNAMIC_MAX_BLOCKS = 256
-  ! The slider state indices are C's, from 0: in Fortran the position is
-  ! `state(ASPERITY_SLIDER_STATE_POSITION + 1)`.
-  !> Index (from 0) in a slider state of its flag: 0 fresh, 1 stepped.
-  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_FLAG = 0
-  !> Index (from 0) in a slider state of the slider position X along its track (m). A fresh
-  !  state (flag 0) starts there: set it to place patches at different points of the
+  ! The slider's and the homogenised law's state indices are C's, from 0: in
+  ! Fortran the slider position is `state(ASPERITY_SLIDER_STATE_POSITION + 1)`.
+  !> Index (from 0) in a slider's friction state of its flag: 0 fresh, 1 stepped.
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_FLAG = 2
+  !> Index (from 0) in a slider's friction state of the slider position X along its track (m).
+  !  A fresh state (flag 0) starts there: set it to place patches at different points of the
   !  counter-surface.
-  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_POSITION = 1
-  !> Index (from 0) in a slider state of the rod-bed position b of the last equilibrium (m;
-  !  NaN: none).
-  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_ROD_POSITION = 2
-  !> Index (from 0) in a slider state of the accumulated slip path (m).
-  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_SLIP_PATH = 3
-  !> Index (from 0) in a slider state of the accumulated dissipation (J), 4 values: chemical,
-  !  van der Waals, elastic, plastic.
-  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_DISSIPATION = 4
-  !> Index (from 0) in a slider state of the rod heights (m, one per rod), followed by the
-  !  rods' stored elastic energies (J, one per rod).
-  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_HEIGHTS = 8
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_POSITION = 3
+  !> Index (from 0) in a slider's friction state of the rod-bed position b of the last
+  !  equilibrium (m; NaN: none).
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_ROD_POSITION = 4
+  !> Index (from 0) in a slider's friction state of the accumulated dissipation by mechanism
+  !  (J), 4 values: chemical, van der Waals, elastic, plastic.
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_MECHANISMS = 5
+  !> Index (from 0) in a slider's friction state of the rod heights (m, one per rod), followed
+  !  by the rods' stored elastic energies (J, one per rod).
+  integer(c_int32_t), parameter, public :: ASPERITY_SLIDER_STATE_HEIGHTS = 9
+  !> Index (from 0) in a homogenised friction state of the stick force (N, x and y).
+  integer(c_int32_t), parameter, public :: ASPERITY_HOMOGENISED_STATE_FORCE = 2
+  !> Index (from 0) in a homogenised friction state of the accumulated plastic slip path (m).
+  integer(c_int32_t), parameter, public :: ASPERITY_HOMOGENISED_STATE_PLASTIC_SLIP_PATH = 4
+  !> Index (from 0) in a homogenised friction state of the accumulated dissipation by
+  !  mechanism (J), 4 values: chemical, van der Waals, elastic, plastic.
+  integer(c_int32_t), parameter, public :: ASPERITY_HOMOGENISED_STATE_MECHANISMS = 5
   !> Summit heights: Gaussian of zero mean and standard deviation σ.
   integer(c_int32_t), parameter, public :: ASPERITY_HEIGHTS_GAUSSIAN = 1
   !> Summit heights: exponential tail shifted to zero mean, standard deviation (decay length) σ.
@@ -322,180 +327,128 @@ module asperity
   ! ------------------------------------------------------------------------
   ! Mirrors of the C structs (`type, bind(c)`), in header order.
 
-  !> `AsperityHertz`
-  type, bind(c), public :: asperity_hertz
+  !> `AsperityHertzParams`
+  type, bind(c), public :: asperity_hertz_params
     !> Radius of curvature R of the sphere, or the effective radius `1/R = 1/R₁ + 1/R₂` of two
-    !  spheres (m).
+    !  spheres (m, > 0).
     real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
+    !> Contact modulus E* (Pa, > 0).
     real(c_double) :: e_star = 0.0_c_double
-  end type asperity_hertz
+  end type asperity_hertz_params
 
-  !> `AsperityPowerPunch`
-  type, bind(c), public :: asperity_power_punch
-    !> Shape coefficient B (m^{1−d}).
+  !> `AsperityPowerPunchParams`
+  type, bind(c), public :: asperity_power_punch_params
+    !> Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
     real(c_double) :: b = 0.0_c_double
     !> Shape exponent d (1 ≤ d ≤ 100).
     real(c_double) :: d = 0.0_c_double
-    !> Contact modulus E* (Pa).
+    !> Contact modulus E* (Pa, > 0).
     real(c_double) :: e_star = 0.0_c_double
-    !> Cached `C(d) B E*` (Pa·m^{1−d}).
-    real(c_double) :: force_coefficient = 0.0_c_double
-    !> Cached `D(d) B` (m^{1−d}).
-    real(c_double) :: depth_coefficient = 0.0_c_double
-    !> Cached `1/(D(d) B)` (m^{d−1}).
-    real(c_double) :: inverse_depth_coefficient = 0.0_c_double
-    !> Cached `1/d`.
-    real(c_double) :: inverse_d = 0.0_c_double
-    !> Cached `(C(d)/D(d)) E* = 2d E*/(d+1)` (Pa), so that `P = this · a δ`.
-    real(c_double) :: force_per_area = 0.0_c_double
-  end type asperity_power_punch
+  end type asperity_power_punch_params
 
-  !> `AsperityFlatPunch`
-  type, bind(c), public :: asperity_flat_punch
-    !> Punch radius a (m).
+  !> `AsperityFlatPunchParams`
+  type, bind(c), public :: asperity_flat_punch_params
+    !> Punch radius a (m, > 0).
     real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
+    !> Contact modulus E* (Pa, > 0).
     real(c_double) :: e_star = 0.0_c_double
-    !> Stiffness `2 E* a` times the no-slip factor (1 when frictionless) (N/m).
-    real(c_double) :: stiffness = 0.0_c_double
-  end type asperity_flat_punch
-
-  !> `AsperityDmt`
-  type, bind(c), public :: asperity_dmt
-    !> Sphere radius R (m).
-    real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-  end type asperity_dmt
-
-  !> `AsperityJkr`
-  type, bind(c), public :: asperity_jkr
-    !> Sphere radius R (m).
-    real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> Cached `k = √(2πw/E*)` (m^{1/2}); 0 without adhesion.
-    real(c_double) :: adhesion_coefficient = 0.0_c_double
-    !> Cached overlap scale `L = (4π²w²R/E*²)^{1/3}` (m) of the reduced quartic `η⁴ − η − δ/L =
-    !  0`; 0 without adhesion.
-    real(c_double) :: delta_scale = 0.0_c_double
-    !> Cached `1/L` (1/m); 0 without adhesion.
-    real(c_double) :: inv_delta_scale = 0.0_c_double
-    !> Cached radius scale `(kR)^{2/3} = (2πwR²/E*)^{1/3}` (m), `a = scale·η²` (the jump-in
-    !  radius); 0 without adhesion.
-    real(c_double) :: radius_scale = 0.0_c_double
-    !> Cached force scale `2πwR` (N), `P = scale·((4/3)η⁶ − 2η³)`.
-    real(c_double) :: force_scale = 0.0_c_double
-    !> Cached displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}` (m, ≤ 0).
-    real(c_double) :: critical_delta = 0.0_c_double
-  end type asperity_jkr
-
-  !> `AsperityJkrPowerPunch`
-  type, bind(c), public :: asperity_jkr_power_punch
-    !> Shape coefficient B (m^{1−d}).
-    real(c_double) :: b = 0.0_c_double
-    !> Shape exponent d (1 ≤ d ≤ 100).
-    real(c_double) :: d = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> No-slip factor C_NS (1 when frictionless).
-    real(c_double) :: no_slip_factor = 0.0_c_double
-    !> Shape factor k*(d) of the bonded punch (1 when frictionless).
-    real(c_double) :: k_star = 0.0_c_double
-    !> Cached `α = C_NS C(d) B E*/k*` (Pa·m^{1−d}), `P_shape = α a^{d+1}`.
-    real(c_double) :: force_coefficient = 0.0_c_double
-    !> Cached `γ = D(d) B/k*` (m^{1−d}), `δ_shape = γ a^d`.
-    real(c_double) :: depth_coefficient = 0.0_c_double
-    !> Cached radius scale `A₀ = (κ/γ)^{1/(d−1/2)}` (m), `κ = √(2πw/(E*C_NS))`; 0 without
-    !  adhesion.
-    real(c_double) :: radius_scale = 0.0_c_double
-    !> Cached overlap scale `L = κ A₀^{1/2}` (m); 0 without adhesion.
-    real(c_double) :: delta_scale = 0.0_c_double
-    !> Cached force scale `F = √(8πwE*C_NS) A₀^{3/2}` (N); 0 without adhesion.
-    real(c_double) :: force_scale = 0.0_c_double
-    !> Cached displacement-controlled instability δ_c (m, ≤ 0), the minimum of δ(a).
-    real(c_double) :: critical_delta = 0.0_c_double
-    !> Cached reduced radius `t_c = (2d)^{−1/(2d−1)}` at δ_c.
-    real(c_double) :: critical_t = 0.0_c_double
-  end type asperity_jkr_power_punch
-
-  !> `AsperityKendall`
-  type, bind(c), public :: asperity_kendall
-    !> Punch radius a (m).
-    real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> No-slip factor C_NS (1 when frictionless).
-    real(c_double) :: no_slip_factor = 0.0_c_double
-    !> Cached contact stiffness `2E* C_NS a` (N/m).
-    real(c_double) :: stiffness = 0.0_c_double
-    !> Cached pull-off force `P_c = −√(8πwE* C_NS a³)` (N, ≤ 0).
-    real(c_double) :: pull_off = 0.0_c_double
-    !> Cached separation overlap `δ_c = P_c/(2E* C_NS a)` (m, ≤ 0).
-    real(c_double) :: critical_delta = 0.0_c_double
-  end type asperity_kendall
-
-  !> `AsperityMaugisDugdale`
-  type, bind(c), public :: asperity_maugis_dugdale
-    !> Sphere radius R (m).
-    real(c_double) :: radius = 0.0_c_double
-    !> Contact modulus E* (Pa).
-    real(c_double) :: e_star = 0.0_c_double
-    !> Work of adhesion w (J/m²).
-    real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> Dugdale cohesive stress σ₀ (Pa).
-    real(c_double) :: cohesive_stress = 0.0_c_double
-    !> Cached: Maugis parameter λ (dimensionless).
-    real(c_double) :: lambda = 0.0_c_double
-    !> Cached: radius unit `(πwR²/K)^{1/3}` (m).
-    real(c_double) :: radius_scale = 0.0_c_double
-    !> Cached: overlap unit `(π²w²R/K²)^{1/3}` (m).
-    real(c_double) :: delta_scale = 0.0_c_double
-    !> Cached: `C̄₀`, where the non-contact branch closes onto the contact one.
-    real(c_double) :: c0_bar = 0.0_c_double
-    !> Cached: jump-out point: `C̄` (turn_kind 0) or `s` (turn_kind 1).
-    real(c_double) :: turn_param = 0.0_c_double
-    !> Cached: `Δ̄ + 2/(πλ)` at the jump-out point (≤ 0).
-    real(c_double) :: turn_dh = 0.0_c_double
-    !> Cached: load-controlled pull-off `P̄_c` (≤ 0, dimensionless).
-    real(c_double) :: pull_off_load_bar = 0.0_c_double
-    !> Cached: `s` at the load-controlled pull-off.
-    real(c_double) :: pull_off_load_s = 0.0_c_double
-    !> Cached: displacement-controlled pull-off (dimensionless).
-    real(c_double) :: pull_off_disp_bar = 0.0_c_double
-    !> Cached: 0 when the jump-out point is on the non-contact branch (λ ≤ λ_c), 1 when it is on
-    !  the contact branch.
-    integer(c_int32_t) :: turn_kind = 0_c_int32_t
+    !> Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip factor when `no_slip` =
+    !  1; range-checked only when 0.
+    real(c_double) :: nu = 0.0_c_double
+    !> 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    integer(c_int32_t) :: no_slip = 0_c_int32_t
     !> Reserved, 0.
     integer(c_int32_t) :: reserved = 0_c_int32_t
-  end type asperity_maugis_dugdale
+  end type asperity_flat_punch_params
 
-  !> `AsperityDerjaguin`
-  type, bind(c), public :: asperity_derjaguin
-    !> Sphere radius R (m).
+  !> `AsperityDmtParams`
+  type, bind(c), public :: asperity_dmt_params
+    !> Sphere radius R (m, > 0).
     real(c_double) :: radius = 0.0_c_double
-    !> Work of adhesion w (J/m²).
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², ≥ 0).
     real(c_double) :: work_of_adhesion = 0.0_c_double
-    !> The law's length (m): z₀, h₀ = w/σ₀ or ℓ.
-    real(c_double) :: range = 0.0_c_double
-    !> Surface law selector (`ASPERITY_SURFACE_LAW_*`).
+  end type asperity_dmt_params
+
+  !> `AsperityJkrParams`
+  type, bind(c), public :: asperity_jkr_params
+    !> Sphere radius R (m, > 0).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², ≥ 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+  end type asperity_jkr_params
+
+  !> `AsperityJkrPowerPunchParams`
+  type, bind(c), public :: asperity_jkr_power_punch_params
+    !> Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
+    real(c_double) :: b = 0.0_c_double
+    !> Shape exponent d (1 ≤ d ≤ 100).
+    real(c_double) :: d = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², ≥ 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives C_NS and k*(d) when `no_slip` = 1;
+    !  range-checked only when 0.
+    real(c_double) :: nu = 0.0_c_double
+    !> 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    integer(c_int32_t) :: no_slip = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_jkr_power_punch_params
+
+  !> `AsperityKendallParams`
+  type, bind(c), public :: asperity_kendall_params
+    !> Punch radius a (m, > 0).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², ≥ 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip factor when `no_slip` =
+    !  1; range-checked only when 0.
+    real(c_double) :: nu = 0.0_c_double
+    !> 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    integer(c_int32_t) :: no_slip = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_kendall_params
+
+  !> `AsperityMaugisDugdaleParams`
+  type, bind(c), public :: asperity_maugis_dugdale_params
+    !> Sphere radius R (m, > 0).
+    real(c_double) :: radius = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Work of adhesion w (J/m², > 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Dugdale cohesive stress σ₀ (Pa, > 0).
+    real(c_double) :: cohesive_stress = 0.0_c_double
+  end type asperity_maugis_dugdale_params
+
+  !> `AsperityDerjaguinParams`
+  type, bind(c), public :: asperity_derjaguin_params
+    !> Sphere radius R (m, > 0).
+    real(c_double) :: radius = 0.0_c_double
+    !> Work of adhesion w (J/m², > 0).
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> The surface law's second parameter: the equilibrium separation z₀ (m) for Lennard-Jones, the
+    !  cohesive stress σ₀ (Pa) for Dugdale, the decay length ℓ (m) for the exponential law (> 0).
+    real(c_double) :: parameter = 0.0_c_double
+    !> Surface law selector: 1 Lennard-Jones, 2 Dugdale, 3 exponential (`ASPERITY_SURFACE_LAW_*`).
     integer(c_int32_t) :: surface_law = 0_c_int32_t
     !> Reserved, 0.
     integer(c_int32_t) :: reserved = 0_c_int32_t
-  end type asperity_derjaguin
+  end type asperity_derjaguin_params
 
-  !> `AsperityLawParams`
+  !> `AsperityLawParams`: Fortran has no unions; view a member with `transfer`, e.g.
+  !  `jkr = transfer(law%params, jkr)` for a `type(asperity_jkr_params) :: jkr`, and fill one with
+  !  `params%raw(1:3) = transfer(jkr, params%raw(1:3))`.
   type, bind(c), public :: asperity_law_params
-    !> Storage.
+    !> Storage: the inputs, then the library's private derived values.
     real(c_double) :: raw(16) = 0.0_c_double
   end type asperity_law_params
 
@@ -505,7 +458,7 @@ module asperity
     integer(c_int32_t) :: kind = 0_c_int32_t
     !> Reserved, 0.
     integer(c_int32_t) :: reserved = 0_c_int32_t
-    !> The parameters of `kind`.
+    !> The inputs of `kind` (and the library's derived values).
     type(asperity_law_params) :: params
   end type asperity_normal_law
 
@@ -617,67 +570,60 @@ module asperity
     type(asperity_dissipation) :: shares
   end type asperity_homogenised_sample
 
-  !> `AsperityFrictionIncrement`
+  !> `AsperityFrictionIncrement`: one increment of a contact point (SI).
   type, bind(c), public :: asperity_friction_increment
-    !> Normal force N on the point (N), finite and ≥ 0 (compressive).
+    !> Normal force N on the point (N), finite and ≥ 0 (compressive), constant over the
+    !  increment.
     real(c_double) :: normal_force = 0.0_c_double
-    !> Nominal area A_n the point represents (m²), finite and > 0.
+    !> Nominal area A_n the point represents (m²), finite and ≥ 0; > 0 for laws that depend on
+    !  the nominal pressure N/A_n (the homogenised law), unused by the others.
     real(c_double) :: area = 0.0_c_double
-    !> Slip increment Δs of the point relative to the counter-surface (m), two components in the
-    !  caller's tangent basis; a one-dimensional track uses `slip[1] = 0`.
+    !> Slip increment Δs of the point relative to the counter-surface (m), two finite
+    !  components in the caller's tangent basis; a track uses `slip(2) = 0`.
     real(c_double) :: slip(2) = 0.0_c_double
-    !> Time increment (s), finite and ≥ 0 (unused by this rate-independent law).
+    !> Time increment Δt (s), finite and ≥ 0; > 0 when the slip is not zero and the law is rate
+    !  dependent.
     real(c_double) :: dt = 0.0_c_double
-    !> Stick stiffness k of the regularised stick (N/m), finite and ≥ 0; 0 is rigid–plastic (no
-    !  elastic slip).
-    real(c_double) :: stick_stiffness = 0.0_c_double
+    !> Tangents wanted: 0, or `ASPERITY_FRICTION_TANGENT_NORMAL` +
+    !  `ASPERITY_FRICTION_TANGENT_SLIP`.
+    integer(c_int32_t) :: tangents = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
   end type asperity_friction_increment
 
-  !> `AsperityFrictionPointState`
-  type, bind(c), public :: asperity_friction_point_state
-    !> Tangential force on the point at the end of the increment (N), the elastic (stick) force
-    !  carried into the next increment; the elastic slip is `−force/k`.
-    real(c_double) :: force(2) = 0.0_c_double
-    !> Accumulated plastic slip path length Σ|Δs_p| (m).
-    real(c_double) :: slip_path = 0.0_c_double
-    !> Accumulated dissipated energy by mechanism (J).
-    type(asperity_dissipation) :: dissipation
-    !> Number of steps taken (wraps at 2⁶⁴).
-    integer(c_int64_t) :: steps = 0_c_int64_t
-  end type asperity_friction_point_state
-
-  !> `AsperityFrictionResponse`
+  !> `AsperityFrictionResponse`: the response of one increment (SI).
   type, bind(c), public :: asperity_friction_response
-    !> Tangential force F on the point from the counter-surface (N), in the basis of the slip
-    !  increment; opposes slip (see the module's sign convention).
+    !> Tangential force F on the point from the counter-surface at the end of the increment
+    !  (N), in the basis of the slip; opposes slip.
     real(c_double) :: force(2) = 0.0_c_double
     !> |F| (N).
     real(c_double) :: force_magnitude = 0.0_c_double
-    !> Normal force N (N), as given.
+    !> Normal force N (N): as given, or what the law carries.
     real(c_double) :: normal_force = 0.0_c_double
-    !> Coefficient of friction μ(p) (in the table's [`CofForm`]).
+    !> Coefficient of friction of the increment in the law's form; 0 when undefined (no
+    !  contact).
     real(c_double) :: cof = 0.0_c_double
-    !> Slip limit F_lim, the radius of the friction cone (N).
-    real(c_double) :: slip_limit = 0.0_c_double
-    !> Adhesive holding force A = p_adh(p)·A_n (N).
+    !> Adhesive holding force A (N) of laws that model adhesion, else 0.
     real(c_double) :: adhesion = 0.0_c_double
-    !> True contact area, contact fraction × A_n (m²).
+    !> True contact area (m²) of laws that model it, else 0.
     real(c_double) :: true_contact_area = 0.0_c_double
-    !> Plastic slip increment Δs_p (m); 0 in stick.
-    real(c_double) :: plastic_slip(2) = 0.0_c_double
-    !> Energy dissipated in the increment ΔD = −F·Δs_p (J), ≥ 0.
+    !> Energy dissipated in the increment ΔD (J), ≥ 0.
     real(c_double) :: dissipated = 0.0_c_double
-    !> ΔD split between the mechanisms by the interpolated shares (J).
+    !> ΔD by mechanism (J) for laws built on the mechanisms of thesis chapter 4 (homogenised,
+    !  slider); all 0 for the others.
     type(asperity_dissipation) :: dissipation
-    !> dF/dN (dimensionless), at fixed slip increment and old state.
+    !> Elastic energy stored in the law at the end of the increment (J).
+    real(c_double) :: stored_energy = 0.0_c_double
+    !> dF/dN (dimensionless) at fixed slip increment and old state, when asked for.
     real(c_double) :: dforce_dnormal(2) = 0.0_c_double
-    !> dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, at fixed N and old state (the consistent tangent
-    !  of the return mapping; 0 for a rigid stick, k = 0 and Δs = 0, where it is unbounded).
+    !> dF_i/dΔs_j (N/m), `dforce_dslip[i][j]` is `dforce_dslip(j+1, i+1)`, at fixed N, Δt and
+    !  old state, when asked for.
     real(c_double) :: dforce_dslip(2,2) = 0.0_c_double
-    !> [`FrictionRegime`] as an integer: 0 stick, 1 slip, 2 no contact.
+    !> `ASPERITY_FRICTION_STICK`, `_PARTIAL_SLIP`, `_SLIP` or `_NO_CONTACT`.
     integer(c_int32_t) :: regime = 0_c_int32_t
-    !> Reserved, always 0.
-    integer(c_int32_t) :: reserved = 0_c_int32_t
+    !> The tangents computed, as `ASPERITY_FRICTION_TANGENT_*` bits (a law may compute more
+    !  than was asked for).
+    integer(c_int32_t) :: tangents = 0_c_int32_t
   end type asperity_friction_response
 
   !> `AsperityIndentationOptions`
@@ -858,44 +804,6 @@ module asperity
     real(c_double) :: tolerance = 0.0_c_double
   end type asperity_burridge_knopoff_params
 
-  !> `AsperityDynamicIncrement`: one increment of a contact point (SI).
-  type, bind(c), public :: asperity_dynamic_increment
-    !> Normal force N (N), >= 0.
-    real(c_double) :: normal_force = 0.0_c_double
-    !> Slip increment of the point relative to the counter-surface (m).
-    real(c_double) :: slip(2) = 0.0_c_double
-    !> Time increment (s), >= 0; > 0 with a non-zero slip for LuGre.
-    real(c_double) :: dt = 0.0_c_double
-    !> Tangents wanted: 0, or `ASPERITY_DYNAMIC_TANGENT_NORMAL` + `ASPERITY_DYNAMIC_TANGENT_SLIP`.
-    integer(c_int32_t) :: tangents = 0_c_int32_t
-    !> Reserved, 0.
-    integer(c_int32_t) :: reserved = 0_c_int32_t
-  end type asperity_dynamic_increment
-
-  !> `AsperityDynamicResponse`: the response of one increment (SI).
-  type, bind(c), public :: asperity_dynamic_response
-    !> Tangential force on the point at the end of the increment (N), opposing slip.
-    real(c_double) :: force(2) = 0.0_c_double
-    !> |F| (N).
-    real(c_double) :: force_magnitude = 0.0_c_double
-    !> Normal force N (N).
-    real(c_double) :: normal_force = 0.0_c_double
-    !> |F|/N; 0 when N = 0.
-    real(c_double) :: cof = 0.0_c_double
-    !> Energy dissipated in the increment (J), >= 0.
-    real(c_double) :: dissipated = 0.0_c_double
-    !> Elastic energy stored at the end of the increment (J).
-    real(c_double) :: stored_energy = 0.0_c_double
-    !> dF/dN (dimensionless), when asked for.
-    real(c_double) :: dforce_dnormal(2) = 0.0_c_double
-    !> dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, when asked for.
-    real(c_double) :: dforce_dslip(2,2) = 0.0_c_double
-    !> 0 stick, 1 partial slip (pre-sliding), 2 gross sliding.
-    integer(c_int32_t) :: regime = 0_c_int32_t
-    !> The tangents computed, as bits.
-    integer(c_int32_t) :: tangents = 0_c_int32_t
-  end type asperity_dynamic_response
-
   !> `AsperitySliderOptions`: how `asperity_slider_new` builds a slider (SI units). Start from
   !  `asperity_slider_options_default`, then set the loading.
   type, bind(c), public :: asperity_slider_options
@@ -959,7 +867,7 @@ module asperity
   !> `AsperitySliderInfo` (read with `asperity_slider_get_info`: the name `asperity_slider_info`
   !  is this type's).
   type, bind(c), public :: asperity_slider_info
-    !> Doubles per patch state (8 + 2 x rods).
+    !> Doubles per patch state of its friction law (9 + 2 x rods).
     integer(c_size_t) :: state_size = 0_c_size_t
     !> Number of rods (micro-asperities of the finest level).
     integer(c_size_t) :: rods = 0_c_size_t
@@ -985,64 +893,17 @@ module asperity
     integer(c_int32_t) :: periodic = 0_c_int32_t
   end type asperity_slider_info
 
-  !> `AsperitySliderIncrement`: one time increment of a slider patch. SI units. An all-zero
-  !  increment seats a fresh patch under the scene's loading without sliding.
-  type, bind(c), public :: asperity_slider_increment
-    !> Normal force on the patch (N), finite, >= 0 and <= the capacity; read when `control` is
-    !  `ASPERITY_SLIDER_CONTROL_LOAD`.
-    real(c_double) :: normal_force = 0.0_c_double
-    !> Position of the slider's mean line above the counter-surface's mean line (m), finite;
-    !  read when `control` is `ASPERITY_SLIDER_CONTROL_GAP`.
-    real(c_double) :: gap = 0.0_c_double
-    !> Slip increment of the patch relative to the counter-surface (m), two finite components
-    !  in the caller's tangent basis; a track uses `slip(2) = 0`. The slider advances along its
-    !  track by |slip|.
-    real(c_double) :: slip(2) = 0.0_c_double
-    !> Time increment (s), finite and >= 0 (unused: rate independent).
-    real(c_double) :: dt = 0.0_c_double
-    !> `ASPERITY_SLIDER_CONTROL_SCENE` (0), `_LOAD` (1) or `_GAP` (2).
-    integer(c_int32_t) :: control = 0_c_int32_t
-    !> Tangents wanted: 0, or `ASPERITY_SLIDER_TANGENT_NORMAL` + `ASPERITY_SLIDER_TANGENT_SLIP`
-    !  (each costs two more evaluations).
-    integer(c_int32_t) :: tangents = 0_c_int32_t
-  end type asperity_slider_increment
-
-  !> `AsperitySliderResponse`: the response of one slider step (SI).
-  type, bind(c), public :: asperity_slider_response
-    !> Tangential force on the patch from the counter-surface (N), in the basis of the slip
-    !  increment: F = -F_t ds/|ds|, opposing slip; 0 for a zero slip increment.
-    real(c_double) :: force(2) = 0.0_c_double
-    !> Its magnitude, the friction force F_t = dU/|ds| (N), thesis (4-1); 0 for a zero slip
-    !  increment.
-    real(c_double) :: friction_force = 0.0_c_double
-    !> Normal load N carried by the rods (N): the given load, or at a fixed gap the rods' total
-    !  force.
-    real(c_double) :: normal_force = 0.0_c_double
-    !> Coefficient of friction in the slider's COF form; 0 when undefined (`regime` no contact)
-    !  and for a zero slip increment.
-    real(c_double) :: cof = 0.0_c_double
-    !> Adhesive holding force A = N_c F_adh,1 (N), 4.4.
-    real(c_double) :: adhesion = 0.0_c_double
-    !> Energy dissipated in the increment dU (J), >= 0.
-    real(c_double) :: dissipated = 0.0_c_double
-    !> dU by mechanism (J), each >= 0.
-    type(asperity_dissipation) :: dissipation
-    !> True contact area N_c w_vdW^2 (m^2), thesis 6.5.3.
-    real(c_double) :: true_contact_area = 0.0_c_double
+  !> `AsperitySliderRecord`: the full record of a slider patch's last step (SI), beyond the
+  !  friction response (read with `asperity_slider_get_record`: the name `asperity_slider_record`
+  !  is this type's). The counts are `uint64_t` in C, `integer(c_int64_t)` here.
+  type, bind(c), public :: asperity_slider_record
+    !> Slider position X along the track after the increment (m).
+    real(c_double) :: position = 0.0_c_double
+    !> Rod-bed position b: height of the slider's mean line above the counter-surface's mean
+    !  line (m).
+    real(c_double) :: rod_position = 0.0_c_double
     !> Fraction of the nano-asperities in contact touching only thanks to adhesion, in [0, 1].
     real(c_double) :: adhesion_area_share = 0.0_c_double
-    !> Slider position X along its track after the increment (m).
-    real(c_double) :: position = 0.0_c_double
-    !> Rod-bed position b after the increment (m).
-    real(c_double) :: rod_position = 0.0_c_double
-    !> Slip path length of the increment |ds| (m): the distance the slider advanced along its
-    !  track.
-    real(c_double) :: slip_length = 0.0_c_double
-    !> dF/dN (dimensionless), a finite-difference secant; 0 unless asked for.
-    real(c_double) :: dforce_dnormal(2) = 0.0_c_double
-    !> dF_i/d(ds_j) (N/m), `dforce_dslip[i][j]` is `dforce_dslip(j+1, i+1)`; 0 unless asked
-    !  for, and for a zero slip increment (rigid stick: unbounded).
-    real(c_double) :: dforce_dslip(2,2) = 0.0_c_double
     !> Nano-asperities in contact N_c.
     integer(c_int64_t) :: nano_contacts = 0_c_int64_t
     !> Of those, in contact only thanks to adhesion.
@@ -1051,16 +912,11 @@ module asperity
     integer(c_int64_t) :: rods_in_contact = 0_c_int64_t
     !> Rods at the yield force.
     integer(c_int64_t) :: yielded_rods = 0_c_int64_t
-    !> 0 stick (zero slip increment), 1 slip, 2 no contact.
-    integer(c_int32_t) :: regime = 0_c_int32_t
-    !> 1 when this call seated a fresh state first, else 0.
+    !> 1 when the step seated a fresh state first, else 0.
     integer(c_int32_t) :: seated = 0_c_int32_t
-    !> The tangents computed, as bits: 1 dF/dN (`ASPERITY_SLIDER_TANGENT_NORMAL`), 2 dF/d(ds)
-    !  (`ASPERITY_SLIDER_TANGENT_SLIP`).
-    integer(c_int32_t) :: tangents = 0_c_int32_t
-    !> Reserved, always 0.
+    !> Reserved, 0.
     integer(c_int32_t) :: reserved = 0_c_int32_t
-  end type asperity_slider_response
+  end type asperity_slider_record
 
   !> `AsperityGwParams`
   type, bind(c), public :: asperity_gw_params
@@ -1256,7 +1112,7 @@ module asperity
     final :: asperity_gw_empirical_final
   end type asperity_gw_empirical
 
-  !> Handle of `AsperityHomogenisedFriction`: the homogenised friction law of FE points (`asperity_homogenised_friction_new`, `..._from_json`).
+  !> Handle of `AsperityHomogenisedFriction`: the homogenised friction table of FE points (`asperity_homogenised_friction_new`, `..._from_json`), stepped through `asperity_friction_from_homogenised`.
   !> `ptr` is the C pointer (NULL when empty) for the raw layer.
   type, public :: asperity_homogenised_friction
     type(c_ptr) :: ptr = c_null_ptr
@@ -1280,7 +1136,7 @@ module asperity
     final :: asperity_slider_geometry_final
   end type asperity_slider_geometry
 
-  !> Handle of `AsperitySlider`: the slider as the friction law of a surface patch (`asperity_slider_from_scene_json`).
+  !> Handle of `AsperitySlider`: the hierarchical slider (`asperity_slider_new`, `asperity_slider_from_scene_json`), stepped as the friction law of a surface patch through `asperity_friction_from_slider`.
   !> `ptr` is the C pointer (NULL when empty) for the raw layer.
   type, public :: asperity_slider
     type(c_ptr) :: ptr = c_null_ptr
@@ -1292,30 +1148,32 @@ module asperity
     final :: asperity_slider_final
   end type asperity_slider
 
-  !> Handle of `AsperityDynamicFriction`: a LuGre, Maxwell-slip, Prandtl-Tomlinson or
-  !> Burridge-Knopoff friction model (`asperity_dynamic_*_new`).
+  !> Handle of `AsperityFriction`: a friction law stepped once per increment, the homogenised
+  !> law, the slider or a chapter-5 dynamic model (`asperity_friction_from_*`,
+  !> `asperity_friction_*_new`).
   !> `ptr` is the C pointer (NULL when empty) for the raw layer.
-  type, public :: asperity_dynamic_friction
+  type, public :: asperity_friction
     type(c_ptr) :: ptr = c_null_ptr
   contains
     !> Release the object (nothing when empty); the handle becomes empty.
-    procedure :: free => asperity_dynamic_friction_free
-    procedure, private :: asperity_dynamic_friction_assign
-    generic :: assignment(=) => asperity_dynamic_friction_assign
-    final :: asperity_dynamic_friction_final
-  end type asperity_dynamic_friction
+    procedure :: free => asperity_friction_free
+    procedure, private :: asperity_friction_assign
+    generic :: assignment(=) => asperity_friction_assign
+    final :: asperity_friction_final
+  end type asperity_friction
 
-  !> Handle of `AsperitySliderWork`: scratch buffers of the slider step, one per thread (`asperity_slider_work_new`).
+  !> Handle of `AsperityFrictionWork`: the scratch of a friction step, one per thread
+  !> (`asperity_friction_work_new`).
   !> `ptr` is the C pointer (NULL when empty) for the raw layer.
-  type, public :: asperity_slider_work
+  type, public :: asperity_friction_work
     type(c_ptr) :: ptr = c_null_ptr
   contains
     !> Release the object (nothing when empty); the handle becomes empty.
-    procedure :: free => asperity_slider_work_free
-    procedure, private :: asperity_slider_work_assign
-    generic :: assignment(=) => asperity_slider_work_assign
-    final :: asperity_slider_work_final
-  end type asperity_slider_work
+    procedure :: free => asperity_friction_work_free
+    procedure, private :: asperity_friction_work_assign
+    generic :: assignment(=) => asperity_friction_work_assign
+    final :: asperity_friction_work_final
+  end type asperity_friction_work
 
   abstract interface
     !> A summit density per unit depth n(xi) (1/m) at depth `xi` (m, >= 0)
@@ -1335,7 +1193,7 @@ module asperity
   interface asperity_free
     module procedure asperity_table_free, asperity_gw_empirical_free, &
         asperity_homogenised_friction_free, asperity_slider_geometry_free, asperity_slider_free, &
-        asperity_slider_work_free, asperity_dynamic_friction_free
+        asperity_friction_free, asperity_friction_work_free
   end interface asperity_free
   public :: asperity_free
 
@@ -1400,6 +1258,18 @@ module asperity
       integer(c_size_t), intent(out) :: needed
       integer(c_int32_t) :: r
     end function c_asperity_type_name
+
+    !> The law of kind `kind` (`ASPERITY_LAW_*`) from its inputs: the member of `params` that
+    !  `kind` names, validated as by the kind's `asperity_law_*` constructor.
+    function c_asperity_law_from_params(kind, params, out) result(r) bind(c, &
+        name="asperity_law_from_params")
+      import
+      implicit none
+      integer(c_int32_t), value :: kind
+      type(asperity_law_params), intent(in) :: params
+      type(asperity_normal_law), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_law_from_params
 
     !> Hertz sphere: radius R (m), contact modulus E* (Pa).
     function c_asperity_law_hertz(radius, e_star, out) result(r) bind(c, &
@@ -1847,59 +1717,6 @@ module asperity
       type(c_ptr), value :: friction
     end subroutine c_asperity_homogenised_friction_free
 
-    !> Size in bytes of `AsperityFrictionPointState`, for hosts that allocate per-point state
-    !  arrays generically (an all-zero state is a fresh point).
-    function c_asperity_homogenised_friction_state_size() result(r) bind(c, &
-        name="asperity_homogenised_friction_state_size")
-      import
-      implicit none
-      integer(c_size_t) :: r
-    end function c_asperity_homogenised_friction_state_size
-
-    !> One friction step at one point: the increment `*increment` from the history `*old_state`
-    !  (NULL: fresh), the history after the step into `*new_state` (may be NULL, may equal
-    !  `old_state`) and the response into `*out`. On failure `*new_state` and `*out` are
-    !  untouched.
-    function c_asperity_homogenised_friction_step(friction, increment, old_state, new_state, &
-        out) result(r) bind(c, name="asperity_homogenised_friction_step")
-      import
-      implicit none
-      type(c_ptr), value :: friction
-      type(asperity_friction_increment), intent(in) :: increment
-      type(c_ptr), value :: old_state
-      type(c_ptr), value :: new_state
-      type(asperity_friction_response), intent(inout) :: out
-      integer(c_int32_t) :: r
-    end function c_asperity_homogenised_friction_step
-
-    !> Step `n` points at once, in the shape of Abaqus/Explicit VFRIC: `normal_forces[i]` (N),
-    !  `areas[i]` (m²), slip increments `slip_increments[2i]`, `[2i+1]` (m, x and y
-    !  interleaved), one `dt` (s) and `stick_stiffness` (N/m) for all, `old_state[i]` →
-    !  `new_state[i]`, tangential forces out in `tangential_forces[2i]`, `[2i+1]` (N,
-    !  interleaved) and the dissipated energy of the increment in `dissipation[i]` (J).
-    !  `normal_forces`, `areas`, `slip_increments` and `tangential_forces` are required;
-    !  `old_state` may be NULL (all fresh), `new_state` and `dissipation` may be NULL (not
-    !  wanted); `old_state` may equal `new_state`. On an error at element i, elements before i
-    !  are written and the message names i.
-    function c_asperity_homogenised_friction_step_block(friction, n, normal_forces, areas, &
-        slip_increments, dt, stick_stiffness, old_state, new_state, tangential_forces, &
-        dissipation) result(r) bind(c, name="asperity_homogenised_friction_step_block")
-      import
-      implicit none
-      type(c_ptr), value :: friction
-      integer(c_size_t), value :: n
-      real(c_double), intent(in) :: normal_forces(*)
-      real(c_double), intent(in) :: areas(*)
-      real(c_double), intent(in) :: slip_increments(*)
-      real(c_double), value :: dt
-      real(c_double), value :: stick_stiffness
-      type(c_ptr), value :: old_state
-      type(c_ptr), value :: new_state
-      real(c_double), intent(inout) :: tangential_forces(*)
-      type(c_ptr), value :: dissipation
-      integer(c_int32_t) :: r
-    end function c_asperity_homogenised_friction_step_block
-
     !> Fill `options` with the defaults: Berkovich, ideal area, anchor at the maximum point,
     !  labels used, diamond indenter (1141 GPa, 0.07), sample ν = 0.3, β by indenter, ε = 0.75,
     !  windows 0.1–1 (loading) and 0.25–0.95 (unloading).
@@ -2253,19 +2070,44 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_hamaker_work_of_adhesion
 
+    !> The homogenised law of `table` with the stick stiffness `stick_stiffness` (N/m, finite
+    !  and >= 0; 0: rigid-plastic) of its regularised stick. The law copies the table. Writes a
+    !  new handle to `*out` (NULL on failure).
+    function c_asperity_friction_from_homogenised(table, stick_stiffness, out) result(r) &
+        bind(c, name="asperity_friction_from_homogenised")
+      import
+      implicit none
+      type(c_ptr), value :: table
+      real(c_double), value :: stick_stiffness
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_friction_from_homogenised
+
+    !> The hierarchical slider as the friction law of a surface patch (the increment's normal
+    !  force is the fixed load, at most the slider's capacity; its area is unused). The law
+    !  copies the slider. Writes a new handle to `*out` (NULL on failure).
+    function c_asperity_friction_from_slider(slider, out) result(r) &
+        bind(c, name="asperity_friction_from_slider")
+      import
+      implicit none
+      type(c_ptr), value :: slider
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_friction_from_slider
+
     !> Build a LuGre model from `*params`. Writes a new handle to `*out` (NULL on failure).
-    function c_asperity_dynamic_lugre_new(params, out) result(r) &
-        bind(c, name="asperity_dynamic_lugre_new")
+    function c_asperity_friction_lugre_new(params, out) result(r) &
+        bind(c, name="asperity_friction_lugre_new")
       import
       implicit none
       type(asperity_lugre_params), intent(in) :: params
       type(c_ptr), intent(out) :: out
       integer(c_int32_t) :: r
-    end function c_asperity_dynamic_lugre_new
+    end function c_asperity_friction_lugre_new
 
     !> Build `n` >= 1 bristles (Haessig-Friedland). Writes a new handle to `*out`.
-    function c_asperity_dynamic_bristles_new(stiffness, break_deflection, n, sigma2, out) &
-        result(r) bind(c, name="asperity_dynamic_bristles_new")
+    function c_asperity_friction_bristles_new(stiffness, break_deflection, n, sigma2, out) &
+        result(r) bind(c, name="asperity_friction_bristles_new")
       import
       implicit none
       real(c_double), intent(in) :: stiffness(*)
@@ -2274,11 +2116,11 @@ module asperity
       real(c_double), value :: sigma2
       type(c_ptr), intent(out) :: out
       integer(c_int32_t) :: r
-    end function c_asperity_dynamic_bristles_new
+    end function c_asperity_friction_bristles_new
 
     !> Build `n` >= 1 Maxwell-slip elements in parallel. Writes a new handle to `*out`.
-    function c_asperity_dynamic_maxwell_slip_new(stiffness, capacity, n, sigma2, out) result(r) &
-        bind(c, name="asperity_dynamic_maxwell_slip_new")
+    function c_asperity_friction_maxwell_slip_new(stiffness, capacity, n, sigma2, out) &
+        result(r) bind(c, name="asperity_friction_maxwell_slip_new")
       import
       implicit none
       real(c_double), intent(in) :: stiffness(*)
@@ -2287,11 +2129,11 @@ module asperity
       real(c_double), value :: sigma2
       type(c_ptr), intent(out) :: out
       integer(c_int32_t) :: r
-    end function c_asperity_dynamic_maxwell_slip_new
+    end function c_asperity_friction_maxwell_slip_new
 
     !> Build a Prandtl-Tomlinson tip (one-dimensional). Writes a new handle to `*out`.
-    function c_asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
-        damping, tolerance, out) result(r) bind(c, name="asperity_dynamic_prandtl_tomlinson_new")
+    function c_asperity_friction_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
+        damping, tolerance, out) result(r) bind(c, name="asperity_friction_prandtl_tomlinson_new")
       import
       implicit none
       real(c_double), value :: amplitude
@@ -2302,74 +2144,145 @@ module asperity
       real(c_double), value :: tolerance
       type(c_ptr), intent(out) :: out
       integer(c_int32_t) :: r
-    end function c_asperity_dynamic_prandtl_tomlinson_new
+    end function c_asperity_friction_prandtl_tomlinson_new
 
     !> Build a two-spring (tip-cantilever) Prandtl-Tomlinson model from `*params`.
-    function c_asperity_dynamic_prandtl_tomlinson_two_spring_new(params, out) result(r) &
-        bind(c, name="asperity_dynamic_prandtl_tomlinson_two_spring_new")
+    function c_asperity_friction_prandtl_tomlinson_two_spring_new(params, out) result(r) &
+        bind(c, name="asperity_friction_prandtl_tomlinson_two_spring_new")
       import
       implicit none
       type(asperity_prandtl_tomlinson_two_spring_params), intent(in) :: params
       type(c_ptr), intent(out) :: out
       integer(c_int32_t) :: r
-    end function c_asperity_dynamic_prandtl_tomlinson_two_spring_new
+    end function c_asperity_friction_prandtl_tomlinson_two_spring_new
 
     !> Build a Burridge-Knopoff block chain from `*params`.
-    function c_asperity_dynamic_burridge_knopoff_new(params, out) result(r) &
-        bind(c, name="asperity_dynamic_burridge_knopoff_new")
+    function c_asperity_friction_burridge_knopoff_new(params, out) result(r) &
+        bind(c, name="asperity_friction_burridge_knopoff_new")
       import
       implicit none
       type(asperity_burridge_knopoff_params), intent(in) :: params
       type(c_ptr), intent(out) :: out
       integer(c_int32_t) :: r
-    end function c_asperity_dynamic_burridge_knopoff_new
+    end function c_asperity_friction_burridge_knopoff_new
 
-    !> Release a model; NULL is accepted and ignored.
-    subroutine c_asperity_dynamic_friction_free(model) bind(c, name="asperity_dynamic_friction_free")
+    !> Release a law; NULL is accepted and ignored.
+    subroutine c_asperity_friction_free(law) bind(c, name="asperity_friction_free")
       import
       implicit none
-      type(c_ptr), value :: model
-    end subroutine c_asperity_dynamic_friction_free
+      type(c_ptr), value :: law
+    end subroutine c_asperity_friction_free
 
-    !> Write the number of doubles of one point's state to `*n`.
-    function c_asperity_dynamic_friction_state_size(model, n) result(r) &
-        bind(c, name="asperity_dynamic_friction_state_size")
+    !> Write the number of doubles of one point's state to `*n` (homogenised: 9; slider:
+    !  9 + 2 x rods; LuGre: 4; Maxwell-slip: 2 + 2 x elements; bristles: 2 + bristles;
+    !  Prandtl-Tomlinson: 5, with two springs 7; Burridge-Knopoff: 3 + 2 x blocks).
+    function c_asperity_friction_state_size(law, n) result(r) &
+        bind(c, name="asperity_friction_state_size")
       import
       implicit none
-      type(c_ptr), value :: model
+      type(c_ptr), value :: law
       integer(c_size_t), intent(out) :: n
       integer(c_int32_t) :: r
-    end function c_asperity_dynamic_friction_state_size
+    end function c_asperity_friction_state_size
 
-    !> One increment of one point from `old_state` into `new_state` (may be equal).
-    function c_asperity_dynamic_friction_step(model, increment, old_state, new_state, out) &
-        result(r) bind(c, name="asperity_dynamic_friction_step")
+    !> Build the scratch of a step with `law` and write the handle to `*out` (NULL on failure).
+    !  Use one per thread; a scratch made for another law is rebuilt on first use.
+    function c_asperity_friction_work_new(law, out) result(r) &
+        bind(c, name="asperity_friction_work_new")
       import
       implicit none
-      type(c_ptr), value :: model
-      type(asperity_dynamic_increment), intent(in) :: increment
+      type(c_ptr), value :: law
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_friction_work_new
+
+    !> Release a scratch; NULL is accepted and ignored.
+    subroutine c_asperity_friction_work_free(work) bind(c, name="asperity_friction_work_free")
+      import
+      implicit none
+      type(c_ptr), value :: work
+    end subroutine c_asperity_friction_work_free
+
+    !> One increment of one point: `*increment` from the state `old_state`
+    !  (`asperity_friction_state_size` doubles; all-zero = fresh) into `new_state` (same size;
+    !  may equal `old_state`, must not partially overlap it) and the response into `*out`. The
+    !  same old state and increment give bit-identical results (cut-backs). `work` may be NULL.
+    !  On failure `new_state` and `*out` are untouched. The states are addresses (`c_loc`), so
+    !  that one array may be passed as both.
+    function c_asperity_friction_step(law, increment, old_state, new_state, work, out) &
+        result(r) bind(c, name="asperity_friction_step")
+      import
+      implicit none
+      type(c_ptr), value :: law
+      type(asperity_friction_increment), intent(in) :: increment
       type(c_ptr), value :: old_state
       type(c_ptr), value :: new_state
-      type(asperity_dynamic_response), intent(inout) :: out
+      type(c_ptr), value :: work
+      type(asperity_friction_response), intent(inout) :: out
       integer(c_int32_t) :: r
-    end function c_asperity_dynamic_friction_step
+    end function c_asperity_friction_step
 
-    !> Step `n` points at once (Abaqus/Explicit VFRIC shape), states in place.
-    function c_asperity_dynamic_friction_step_block(model, n, normal_forces, slip_increments, dt, &
-        states, tangential_forces, dissipation) result(r) &
-        bind(c, name="asperity_dynamic_friction_step_block")
+    !> `asperity_friction_step` with the state `state` updated in place (on failure it is
+    !  untouched).
+    function c_asperity_friction_step_in_place(law, increment, state, work, out) result(r) &
+        bind(c, name="asperity_friction_step_in_place")
       import
       implicit none
-      type(c_ptr), value :: model
+      type(c_ptr), value :: law
+      type(asperity_friction_increment), intent(in) :: increment
+      real(c_double), intent(inout) :: state(*)
+      type(c_ptr), value :: work
+      type(asperity_friction_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_friction_step_in_place
+
+    !> Step `n` points at once, in the shape of Abaqus/Explicit VFRIC: normal forces
+    !  `normal_forces[i]` (N), nominal areas `areas[i]` (m^2; NULL: 0 for every point, refused
+    !  by laws that need them), slip increments `slip_increments[2i]`, `[2i+1]` (m,
+    !  interleaved), one `dt` (s), the states `old_states[i*m .. (i+1)*m]` -> `new_states[...]`
+    !  (m = `asperity_friction_state_size`; `new_states` may equal `old_states`, must not
+    !  partially overlap it), tangential forces out in `tangential_forces[2i]`, `[2i+1]` (N)
+    !  and the dissipated energy of the increment in `dissipation[i]` (J; may be NULL). No
+    !  tangents. `work` may be NULL. On an error at point i, the points before i are written,
+    !  those from i on untouched, and the message names i. The states are addresses (`c_loc`),
+    !  so that one array may be passed as both.
+    function c_asperity_friction_step_block(law, n, normal_forces, areas, slip_increments, dt, &
+        old_states, new_states, tangential_forces, dissipation, work) result(r) &
+        bind(c, name="asperity_friction_step_block")
+      import
+      implicit none
+      type(c_ptr), value :: law
       integer(c_size_t), value :: n
       real(c_double), intent(in) :: normal_forces(*)
+      type(c_ptr), value :: areas
+      real(c_double), intent(in) :: slip_increments(*)
+      real(c_double), value :: dt
+      type(c_ptr), value :: old_states
+      type(c_ptr), value :: new_states
+      real(c_double), intent(inout) :: tangential_forces(*)
+      type(c_ptr), value :: dissipation
+      type(c_ptr), value :: work
+      integer(c_int32_t) :: r
+    end function c_asperity_friction_step_block
+
+    !> `asperity_friction_step_block` with the states `states` stepped in place.
+    function c_asperity_friction_step_block_in_place(law, n, normal_forces, areas, &
+        slip_increments, dt, states, tangential_forces, dissipation, work) result(r) &
+        bind(c, name="asperity_friction_step_block_in_place")
+      import
+      implicit none
+      type(c_ptr), value :: law
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: normal_forces(*)
+      type(c_ptr), value :: areas
       real(c_double), intent(in) :: slip_increments(*)
       real(c_double), value :: dt
       real(c_double), intent(inout) :: states(*)
       real(c_double), intent(inout) :: tangential_forces(*)
       type(c_ptr), value :: dissipation
+      type(c_ptr), value :: work
       integer(c_int32_t) :: r
-    end function c_asperity_dynamic_friction_step_block
+    end function c_asperity_friction_step_block_in_place
 
     !> Write the library's default slider options to `*out` (fixed load 0 N: set
     !  `normal_force`).
@@ -2434,16 +2347,6 @@ module asperity
       type(c_ptr), value :: slider
     end subroutine c_asperity_slider_free
 
-    !> Write the number of doubles of one patch state (8 + 2 x rods) to `*n`.
-    function c_asperity_slider_state_size(slider, n) result(r) bind(c, &
-        name="asperity_slider_state_size")
-      import
-      implicit none
-      type(c_ptr), value :: slider
-      integer(c_size_t), intent(out) :: n
-      integer(c_int32_t) :: r
-    end function c_asperity_slider_state_size
-
     !> Write the sizes and capacities of `slider` to `*info`.
     function c_asperity_slider_info(slider, info) result(r) bind(c, name="asperity_slider_info")
       import
@@ -2453,72 +2356,17 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_slider_info
 
-    !> Build the scratch buffers of a step with `slider` and write the handle to `*out` (NULL on
-    !  failure). Use one per thread; it may serve any slider with the same number of rods.
-    function c_asperity_slider_work_new(slider, out) result(r) bind(c, &
-        name="asperity_slider_work_new")
-      import
-      implicit none
-      type(c_ptr), value :: slider
-      type(c_ptr), intent(out) :: out
-      integer(c_int32_t) :: r
-    end function c_asperity_slider_work_new
-
-    !> Release work buffers; NULL is accepted and ignored.
-    subroutine c_asperity_slider_work_free(work) bind(c, name="asperity_slider_work_free")
+    !> Write the record of the last step taken with `work` by a slider law
+    !  (`asperity_friction_from_slider`) to `*out`; all zero for a work made for a slider law
+    !  that has not stepped yet. Errors: NULL, or a work of another law (`work`).
+    function c_asperity_slider_record(work, out) result(r) &
+        bind(c, name="asperity_slider_record")
       import
       implicit none
       type(c_ptr), value :: work
-    end subroutine c_asperity_slider_work_free
-
-    !> One friction step of one patch: the increment `*increment` from the state `old_state`
-    !  (`asperity_slider_state_size` doubles; all-zero = fresh: seated first under the
-    !  increment's loading) into `new_state` (same size; may equal `old_state` to step in place,
-    !  must not partially overlap it) and the response into `*out`. The same old state and
-    !  increment give bit-identical results, so a host can re-evaluate or cut back an
-    !  increment. No allocation. On failure `new_state` and `*out` are untouched; the message
-    !  names the argument and its bound. The states are addresses (`c_loc`), so that one array
-    !  may be passed as both.
-    function c_asperity_slider_step(slider, work, increment, old_state, new_state, out) &
-        result(r) bind(c, name="asperity_slider_step")
-      import
-      implicit none
-      type(c_ptr), value :: slider
-      type(c_ptr), value :: work
-      type(asperity_slider_increment), intent(in) :: increment
-      type(c_ptr), value :: old_state
-      type(c_ptr), value :: new_state
-      type(asperity_slider_response), intent(inout) :: out
+      type(asperity_slider_record), intent(inout) :: out
       integer(c_int32_t) :: r
-    end function c_asperity_slider_step
-
-    !> Step `n` patches at once, in the shape of Abaqus/Explicit VFRIC: the normal force on
-    !  patch i `normal_force[i]` (N, a fixed load, <= the capacity), its slip increment
-    !  `slip[2i]`, `[2i+1]` (m, x and y interleaved), one `dt` (s) for all, states
-    !  `old_states[i*m .. (i+1)*m]` -> `new_states[...]` with m = `asperity_slider_state_size`,
-    !  tangential forces out in `tangential_force[2i]`, `[2i+1]` (N, interleaved, opposing slip)
-    !  and the dissipated energy of the increment in `dissipation[i]` (J). `dissipation` may be
-    !  NULL (not wanted); `new_states` may equal `old_states` (in place) but must not partially
-    !  overlap it. No tangents (use `asperity_slider_step`). On an error at element i,
-    !  elements before i are written, those from i on are untouched, and the message names i.
-    !  The states are addresses (`c_loc`), so that one array may be passed as both.
-    function c_asperity_slider_step_block(slider, work, n, normal_force, slip, dt, old_states, &
-        new_states, tangential_force, dissipation) result(r) bind(c, &
-        name="asperity_slider_step_block")
-      import
-      implicit none
-      type(c_ptr), value :: slider
-      type(c_ptr), value :: work
-      integer(c_size_t), value :: n
-      real(c_double), intent(in) :: normal_force(*)
-      real(c_double), intent(in) :: slip(*)
-      real(c_double), value :: dt
-      type(c_ptr), value :: old_states
-      type(c_ptr), value :: new_states
-      real(c_double), intent(inout) :: tangential_force(*)
-      type(c_ptr), value :: dissipation
-      integer(c_int32_t) :: r
-    end function c_asperity_slider_step_block
+    end function c_asperity_slider_record
 
     !> Greenwood–Williamson load, real area, number of contacts and stiffness at `separation` d
     !  (m, finite) (thesis (1-29), (1-30)).
@@ -3113,6 +2961,7 @@ module asperity
   public :: c_asperity_type_layout
   public :: c_asperity_type_count
   public :: c_asperity_type_name
+  public :: c_asperity_law_from_params
   public :: c_asperity_law_hertz
   public :: c_asperity_law_sphere_in_crater
   public :: c_asperity_law_power_punch
@@ -3146,9 +2995,6 @@ module asperity
   public :: c_asperity_homogenised_friction_from_json
   public :: c_asperity_homogenised_friction_to_json
   public :: c_asperity_homogenised_friction_free
-  public :: c_asperity_homogenised_friction_state_size
-  public :: c_asperity_homogenised_friction_step
-  public :: c_asperity_homogenised_friction_step_block
   public :: c_asperity_indentation_default_options
   public :: c_asperity_indentation_fit
   public :: c_asperity_indentation_flag_name
@@ -3176,27 +3022,29 @@ module asperity
   public :: c_asperity_weir_surface_energy_with
   public :: c_asperity_pair_work_of_adhesion
   public :: c_asperity_hamaker_work_of_adhesion
-  public :: c_asperity_dynamic_lugre_new
-  public :: c_asperity_dynamic_maxwell_slip_new
-  public :: c_asperity_dynamic_bristles_new
-  public :: c_asperity_dynamic_prandtl_tomlinson_new
-  public :: c_asperity_dynamic_prandtl_tomlinson_two_spring_new
-  public :: c_asperity_dynamic_burridge_knopoff_new
-  public :: c_asperity_dynamic_friction_free
-  public :: c_asperity_dynamic_friction_state_size
-  public :: c_asperity_dynamic_friction_step
-  public :: c_asperity_dynamic_friction_step_block
+  public :: c_asperity_friction_lugre_new
+  public :: c_asperity_friction_maxwell_slip_new
+  public :: c_asperity_friction_bristles_new
+  public :: c_asperity_friction_prandtl_tomlinson_new
+  public :: c_asperity_friction_prandtl_tomlinson_two_spring_new
+  public :: c_asperity_friction_burridge_knopoff_new
+  public :: c_asperity_friction_from_homogenised
+  public :: c_asperity_friction_from_slider
+  public :: c_asperity_friction_free
+  public :: c_asperity_friction_state_size
+  public :: c_asperity_friction_work_new
+  public :: c_asperity_friction_work_free
+  public :: c_asperity_friction_step
+  public :: c_asperity_friction_step_in_place
+  public :: c_asperity_friction_step_block
+  public :: c_asperity_friction_step_block_in_place
   public :: c_asperity_slider_options_default
   public :: c_asperity_friction_material_copper
   public :: c_asperity_slider_new
   public :: c_asperity_slider_from_scene_json
   public :: c_asperity_slider_free
-  public :: c_asperity_slider_state_size
   public :: c_asperity_slider_info
-  public :: c_asperity_slider_work_new
-  public :: c_asperity_slider_work_free
-  public :: c_asperity_slider_step
-  public :: c_asperity_slider_step_block
+  public :: c_asperity_slider_record
   public :: c_asperity_gw_eval
   public :: c_asperity_gw_eval_batch
   public :: c_asperity_gw_separation_at_load
@@ -3243,6 +3091,7 @@ module asperity
   public :: asperity_type_layout
   public :: asperity_type_count
   public :: asperity_type_name
+  public :: asperity_law_from_params
   public :: asperity_law_hertz
   public :: asperity_law_sphere_in_crater
   public :: asperity_law_power_punch
@@ -3266,15 +3115,20 @@ module asperity
   public :: asperity_fidelity_advise
   public :: asperity_slider_geometry_new
   public :: asperity_slider_geometry_new_uniform
-  public :: asperity_dynamic_lugre_new
-  public :: asperity_dynamic_maxwell_slip_new
-  public :: asperity_dynamic_bristles_new
-  public :: asperity_dynamic_prandtl_tomlinson_new
-  public :: asperity_dynamic_prandtl_tomlinson_two_spring_new
-  public :: asperity_dynamic_burridge_knopoff_new
-  public :: asperity_dynamic_friction_state_size
-  public :: asperity_dynamic_friction_step
-  public :: asperity_dynamic_friction_step_block
+  public :: asperity_friction_lugre_new
+  public :: asperity_friction_maxwell_slip_new
+  public :: asperity_friction_bristles_new
+  public :: asperity_friction_prandtl_tomlinson_new
+  public :: asperity_friction_prandtl_tomlinson_two_spring_new
+  public :: asperity_friction_burridge_knopoff_new
+  public :: asperity_friction_from_homogenised
+  public :: asperity_friction_from_slider
+  public :: asperity_friction_state_size
+  public :: asperity_friction_work_new
+  public :: asperity_friction_step
+  public :: asperity_friction_step_in_place
+  public :: asperity_friction_step_block
+  public :: asperity_friction_step_block_in_place
   public :: asperity_slider_options_default
   public :: asperity_friction_material_copper
   public :: asperity_slider_new
@@ -3286,15 +3140,9 @@ module asperity
   public :: asperity_homogenised_friction_new
   public :: asperity_homogenised_friction_from_json
   public :: asperity_homogenised_friction_to_json
-  public :: asperity_homogenised_friction_state_size
-  public :: asperity_homogenised_friction_step
-  public :: asperity_homogenised_friction_step_block
   public :: asperity_slider_from_scene_json
-  public :: asperity_slider_state_size
   public :: asperity_slider_get_info
-  public :: asperity_slider_work_new
-  public :: asperity_slider_step
-  public :: asperity_slider_step_block
+  public :: asperity_slider_get_record
   public :: asperity_indentation_default_options
   public :: asperity_indentation_fit
   public :: asperity_indentation_flag_name
@@ -3362,8 +3210,8 @@ module asperity
   public :: asperity_homogenised_friction_free
   public :: asperity_slider_geometry_free
   public :: asperity_slider_free
-  public :: asperity_dynamic_friction_free
-  public :: asperity_slider_work_free
+  public :: asperity_friction_free
+  public :: asperity_friction_work_free
 
   ! The friendly layer's own argument errors (per thread under OpenMP).
   logical :: fortran_error_set = .false.
@@ -3519,21 +3367,13 @@ contains
     end if
   end function loc_contacts
 
-  function loc_point(x) result(p)
-    type(asperity_friction_point_state), optional, target :: x
+  !> The C pointer of an optional scratch handle (NULL when absent).
+  function loc_work(work) result(p)
+    type(asperity_friction_work), intent(in), optional :: work
     type(c_ptr) :: p
     p = c_null_ptr
-    if (present(x)) p = c_loc(x)
-  end function loc_point
-
-  function loc_points(x) result(p)
-    type(asperity_friction_point_state), optional, target, contiguous :: x(:)
-    type(c_ptr) :: p
-    p = c_null_ptr
-    if (present(x)) then
-      if (size(x) > 0) p = c_loc(x)
-    end if
-  end function loc_points
+    if (present(work)) p = work%ptr
+  end function loc_work
 
   !> Check the optional state arrays of a batch call of `n` contacts and give
   !> the old and new pointers for the raw call.
@@ -3643,28 +3483,6 @@ contains
     call asperity_homogenised_friction_free(friction)
   end subroutine asperity_homogenised_friction_final
 
-  !> Release `model` (an empty handle is accepted); `model` becomes empty.
-  subroutine asperity_dynamic_friction_free(model)
-    class(asperity_dynamic_friction), intent(inout) :: model
-    call c_asperity_dynamic_friction_free(model%ptr)
-    model%ptr = c_null_ptr
-  end subroutine asperity_dynamic_friction_free
-
-  subroutine asperity_dynamic_friction_assign(lhs, rhs)
-    class(asperity_dynamic_friction), intent(inout) :: lhs
-    type(asperity_dynamic_friction), intent(in) :: rhs
-    if (c_associated(rhs%ptr)) then
-      if (c_associated(lhs%ptr, rhs%ptr)) return
-      call stop_copy('asperity_dynamic_friction')
-    end if
-    call asperity_dynamic_friction_free(lhs)
-  end subroutine asperity_dynamic_friction_assign
-
-  impure elemental subroutine asperity_dynamic_friction_final(model)
-    type(asperity_dynamic_friction), intent(inout) :: model
-    call asperity_dynamic_friction_free(model)
-  end subroutine asperity_dynamic_friction_final
-
   !> Release `geometry` (an empty handle is accepted); `geometry` becomes empty.
   subroutine asperity_slider_geometry_free(geometry)
     class(asperity_slider_geometry), intent(inout) :: geometry
@@ -3709,27 +3527,49 @@ contains
     call asperity_slider_free(slider)
   end subroutine asperity_slider_final
 
-  !> Release `work` (an empty handle is accepted); `work` becomes empty.
-  subroutine asperity_slider_work_free(work)
-    class(asperity_slider_work), intent(inout) :: work
-    call c_asperity_slider_work_free(work%ptr)
-    work%ptr = c_null_ptr
-  end subroutine asperity_slider_work_free
+  !> Release `law` (an empty handle is accepted); `law` becomes empty.
+  subroutine asperity_friction_free(law)
+    class(asperity_friction), intent(inout) :: law
+    call c_asperity_friction_free(law%ptr)
+    law%ptr = c_null_ptr
+  end subroutine asperity_friction_free
 
-  subroutine asperity_slider_work_assign(lhs, rhs)
-    class(asperity_slider_work), intent(inout) :: lhs
-    type(asperity_slider_work), intent(in) :: rhs
+  subroutine asperity_friction_assign(lhs, rhs)
+    class(asperity_friction), intent(inout) :: lhs
+    type(asperity_friction), intent(in) :: rhs
     if (c_associated(rhs%ptr)) then
       if (c_associated(lhs%ptr, rhs%ptr)) return
-      call stop_copy('asperity_slider_work')
+      call stop_copy('asperity_friction')
     end if
-    call asperity_slider_work_free(lhs)
-  end subroutine asperity_slider_work_assign
+    call asperity_friction_free(lhs)
+  end subroutine asperity_friction_assign
 
-  impure elemental subroutine asperity_slider_work_final(work)
-    type(asperity_slider_work), intent(inout) :: work
-    call asperity_slider_work_free(work)
-  end subroutine asperity_slider_work_final
+  impure elemental subroutine asperity_friction_final(law)
+    type(asperity_friction), intent(inout) :: law
+    call asperity_friction_free(law)
+  end subroutine asperity_friction_final
+
+  !> Release `work` (an empty handle is accepted); `work` becomes empty.
+  subroutine asperity_friction_work_free(work)
+    class(asperity_friction_work), intent(inout) :: work
+    call c_asperity_friction_work_free(work%ptr)
+    work%ptr = c_null_ptr
+  end subroutine asperity_friction_work_free
+
+  subroutine asperity_friction_work_assign(lhs, rhs)
+    class(asperity_friction_work), intent(inout) :: lhs
+    type(asperity_friction_work), intent(in) :: rhs
+    if (c_associated(rhs%ptr)) then
+      if (c_associated(lhs%ptr, rhs%ptr)) return
+      call stop_copy('asperity_friction_work')
+    end if
+    call asperity_friction_work_free(lhs)
+  end subroutine asperity_friction_work_assign
+
+  impure elemental subroutine asperity_friction_work_final(work)
+    type(asperity_friction_work), intent(inout) :: work
+    call asperity_friction_work_free(work)
+  end subroutine asperity_friction_work_final
 
   ! ------------------------------------------------------------------------
   ! Friendly layer: version, errors, layouts.
@@ -3807,6 +3647,16 @@ contains
 
   ! ------------------------------------------------------------------------
   ! Friendly layer: single-asperity normal laws (contact.rs).
+
+  !> The law of kind `kind` (`ASPERITY_LAW_KIND_*`) from its inputs `params` (the member of
+  !  the C union that `kind` names, filled with `transfer`).
+  subroutine asperity_law_from_params(kind, params, law, status)
+    integer(c_int32_t), intent(in) :: kind
+    type(asperity_law_params), intent(in) :: params
+    type(asperity_normal_law), intent(out) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_law_from_params(kind, params, law), 'asperity_law_from_params', status)
+  end subroutine asperity_law_from_params
 
   !> Hertz sphere: radius R (m), contact modulus E* (Pa).
   subroutine asperity_law_hertz(radius, e_star, law, status)
@@ -4176,264 +4026,8 @@ contains
     call check(st, 'asperity_homogenised_friction_to_json', status)
   end subroutine asperity_homogenised_friction_to_json
 
-  !> Size in bytes of `asperity_friction_point_state`.
-  function asperity_homogenised_friction_state_size() result(size)
-    integer(c_size_t) :: size
-    size = c_asperity_homogenised_friction_state_size()
-  end function asperity_homogenised_friction_state_size
-
-  !> One friction step at one point into `out`. History: `old_state`
-  !> (absent: fresh) to `new_state` (absent: discarded), or `state` in place.
-  subroutine asperity_homogenised_friction_step(friction, increment, out, old_state, new_state, &
-      state, status)
-    type(asperity_homogenised_friction), intent(in) :: friction
-    type(asperity_friction_increment), intent(in) :: increment
-    type(asperity_friction_response), intent(out) :: out
-    type(asperity_friction_point_state), intent(in), optional, target :: old_state
-    type(asperity_friction_point_state), intent(inout), optional, target :: new_state
-    type(asperity_friction_point_state), intent(inout), optional, target :: state
-    integer(c_int32_t), intent(out), optional :: status
-    character(len=*), parameter :: what = 'asperity_homogenised_friction_step'
-    if (state_clash(what, present(state), present(old_state) .or. present(new_state), status)) &
-        return
-    if (present(state)) then
-      call check(c_asperity_homogenised_friction_step(friction%ptr, increment, c_loc(state), &
-          c_loc(state), out), what, status)
-    else
-      call check(c_asperity_homogenised_friction_step(friction%ptr, increment, &
-          loc_point(old_state), loc_point(new_state), out), what, status)
-    end if
-  end subroutine asperity_homogenised_friction_step
-
-  !> Step `size(normal_forces)` points at once (the call of an Abaqus VFRIC):
-  !> `normal_forces(i)` (N), `areas(i)` (m^2), slip increments
-  !> `slip_increments(1:2, i)` (m), one `dt` (s) and `stick_stiffness` (N/m),
-  !> tangential forces out in `tangential_forces(1:2, i)` (N) and, when
-  !> given, the dissipated energy in `dissipation(i)` (J); histories
-  !> `old_state(i)` (absent: fresh) to `new_state(i)`, or `states(i)` in place.
-  subroutine asperity_homogenised_friction_step_block(friction, normal_forces, areas, &
-      slip_increments, dt, stick_stiffness, tangential_forces, old_state, new_state, dissipation, &
-      states, status)
-    type(asperity_homogenised_friction), intent(in) :: friction
-    real(c_double), intent(in) :: normal_forces(:), areas(:), slip_increments(:, :)
-    real(c_double), intent(in) :: dt, stick_stiffness
-    real(c_double), intent(inout) :: tangential_forces(:, :)
-    type(asperity_friction_point_state), intent(in), optional, target, contiguous :: old_state(:)
-    type(asperity_friction_point_state), intent(inout), optional, target, contiguous :: &
-        new_state(:)
-    real(c_double), intent(inout), optional, target, contiguous :: dissipation(:)
-    type(asperity_friction_point_state), intent(inout), optional, target, contiguous :: states(:)
-    integer(c_int32_t), intent(out), optional :: status
-    character(len=*), parameter :: what = 'asperity_homogenised_friction_step_block'
-    type(c_ptr) :: p_old, p_new
-    integer :: n
-    n = size(normal_forces)
-    if (too_small(what, 'areas', size(areas), n, 'the size of `normal_forces`', status)) return
-    if (size(slip_increments, 1) /= 2) then
-      call local_error(what, 'invalid argument `slip_increments`: the first dimension must be '// &
-          '2 (x and y), not '//itoa(int(size(slip_increments, 1), c_int64_t)), status)
-      return
-    end if
-    if (size(tangential_forces, 1) /= 2) then
-      call local_error(what, 'invalid argument `tangential_forces`: the first dimension must '// &
-          'be 2 (x and y), not '//itoa(int(size(tangential_forces, 1), c_int64_t)), status)
-      return
-    end if
-    if (too_small(what, 'slip_increments', size(slip_increments, 2), n, &
-        'columns, the size of `normal_forces`', status)) return
-    if (too_small(what, 'tangential_forces', size(tangential_forces, 2), n, &
-        'columns, the size of `normal_forces`', status)) return
-    if (present(dissipation)) then
-      if (too_small(what, 'dissipation', size(dissipation), n, 'the size of `normal_forces`', &
-          status)) return
-    end if
-    if (state_clash(what, present(states), present(old_state) .or. present(new_state), status)) &
-        return
-    if (present(states)) then
-      if (too_small(what, 'states', size(states), n, 'one per point', status)) return
-      p_old = loc_points(states)
-      p_new = p_old
-    else
-      p_old = c_null_ptr
-      p_new = c_null_ptr
-      if (present(old_state)) then
-        if (too_small(what, 'old_state', size(old_state), n, 'one per point', status)) return
-        p_old = loc_points(old_state)
-      end if
-      if (present(new_state)) then
-        if (too_small(what, 'new_state', size(new_state), n, 'one per point', status)) return
-        p_new = loc_points(new_state)
-      end if
-    end if
-    call check(c_asperity_homogenised_friction_step_block(friction%ptr, int(n, c_size_t), &
-        normal_forces, areas, slip_increments, dt, stick_stiffness, p_old, p_new, &
-        tangential_forces, loc_d(dissipation)), what, status)
-  end subroutine asperity_homogenised_friction_step_block
-
   ! ------------------------------------------------------------------------
-  ! Friendly layer: the slider as the friction law of surface patches.
-
-  !> A LuGre model from `params` into `model` (an object held is freed first).
-  subroutine asperity_dynamic_lugre_new(params, model, status)
-    type(asperity_lugre_params), intent(in) :: params
-    type(asperity_dynamic_friction), intent(inout) :: model
-    integer(c_int32_t), intent(out), optional :: status
-    call model%free()
-    call check(c_asperity_dynamic_lugre_new(params, model%ptr), 'asperity_dynamic_lugre_new', &
-        status)
-  end subroutine asperity_dynamic_lugre_new
-
-  !> Maxwell-slip elements of stiffnesses `stiffness` (1/m per unit normal force) and
-  !> break-away coefficients `capacity` (same size), viscous `sigma2` (N s/m), into `model`.
-  subroutine asperity_dynamic_maxwell_slip_new(stiffness, capacity, sigma2, model, status)
-    real(c_double), intent(in) :: stiffness(:)
-    real(c_double), intent(in) :: capacity(:)
-    real(c_double), intent(in) :: sigma2
-    type(asperity_dynamic_friction), intent(inout) :: model
-    integer(c_int32_t), intent(out), optional :: status
-    character(len=*), parameter :: what = 'asperity_dynamic_maxwell_slip_new'
-    call model%free()
-    if (too_small(what, 'capacity', size(capacity), size(stiffness), 'size(stiffness)', status)) &
-        return
-    call check(c_asperity_dynamic_maxwell_slip_new(stiffness, capacity, &
-        size(stiffness, kind=c_size_t), sigma2, model%ptr), what, status)
-  end subroutine asperity_dynamic_maxwell_slip_new
-
-  !> Bristles of stiffnesses `stiffness` (1/m per unit normal force) and break
-  !> deflections `break_deflection` (m, same size), viscous `sigma2` (N s/m), into `model`.
-  subroutine asperity_dynamic_bristles_new(stiffness, break_deflection, sigma2, model, status)
-    real(c_double), intent(in) :: stiffness(:)
-    real(c_double), intent(in) :: break_deflection(:)
-    real(c_double), intent(in) :: sigma2
-    type(asperity_dynamic_friction), intent(inout) :: model
-    integer(c_int32_t), intent(out), optional :: status
-    character(len=*), parameter :: what = 'asperity_dynamic_bristles_new'
-    call model%free()
-    if (too_small(what, 'break_deflection', size(break_deflection), size(stiffness), &
-        'size(stiffness)', status)) return
-    call check(c_asperity_dynamic_bristles_new(stiffness, break_deflection, &
-        size(stiffness, kind=c_size_t), sigma2, model%ptr), what, status)
-  end subroutine asperity_dynamic_bristles_new
-
-  !> A Prandtl-Tomlinson tip into `model`: lattice amplitude `amplitude` (J) and period
-  !> `period` (m), spring `stiffness` (N/m), `mass` (kg), `damping` (kg/s), integration
-  !> `tolerance`.
-  subroutine asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, damping, &
-      tolerance, model, status)
-    real(c_double), intent(in) :: amplitude, period, stiffness, mass, damping, tolerance
-    type(asperity_dynamic_friction), intent(inout) :: model
-    integer(c_int32_t), intent(out), optional :: status
-    call model%free()
-    call check(c_asperity_dynamic_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
-        damping, tolerance, model%ptr), 'asperity_dynamic_prandtl_tomlinson_new', status)
-  end subroutine asperity_dynamic_prandtl_tomlinson_new
-
-  !> A two-spring (tip-cantilever) Prandtl-Tomlinson model of `params` into `model` (state
-  !> size 7).
-  subroutine asperity_dynamic_prandtl_tomlinson_two_spring_new(params, model, status)
-    type(asperity_prandtl_tomlinson_two_spring_params), intent(in) :: params
-    type(asperity_dynamic_friction), intent(inout) :: model
-    integer(c_int32_t), intent(out), optional :: status
-    call model%free()
-    call check(c_asperity_dynamic_prandtl_tomlinson_two_spring_new(params, model%ptr), &
-        'asperity_dynamic_prandtl_tomlinson_two_spring_new', status)
-  end subroutine asperity_dynamic_prandtl_tomlinson_two_spring_new
-
-  !> A Burridge-Knopoff block chain of `params` into `model` (state size 3 + 2 blocks).
-  subroutine asperity_dynamic_burridge_knopoff_new(params, model, status)
-    type(asperity_burridge_knopoff_params), intent(in) :: params
-    type(asperity_dynamic_friction), intent(inout) :: model
-    integer(c_int32_t), intent(out), optional :: status
-    call model%free()
-    call check(c_asperity_dynamic_burridge_knopoff_new(params, model%ptr), &
-        'asperity_dynamic_burridge_knopoff_new', status)
-  end subroutine asperity_dynamic_burridge_knopoff_new
-
-  !> The number of doubles `n` of one point's state.
-  subroutine asperity_dynamic_friction_state_size(model, n, status)
-    type(asperity_dynamic_friction), intent(in) :: model
-    integer, intent(out) :: n
-    integer(c_int32_t), intent(out), optional :: status
-    integer(c_size_t) :: c
-    c = 0
-    call check(c_asperity_dynamic_friction_state_size(model%ptr, c), &
-        'asperity_dynamic_friction_state_size', status)
-    n = int(c)
-  end subroutine asperity_dynamic_friction_state_size
-
-  !> One increment of one point into `out`: `old_state` to `new_state` (each at least the
-  !> state size; all-zero = fresh), or `state` in place. On failure the states are untouched.
-  subroutine asperity_dynamic_friction_step(model, increment, out, old_state, new_state, state, &
-      status)
-    type(asperity_dynamic_friction), intent(in) :: model
-    type(asperity_dynamic_increment), intent(in) :: increment
-    type(asperity_dynamic_response), intent(out) :: out
-    real(c_double), intent(in), optional, target, contiguous :: old_state(:)
-    real(c_double), intent(inout), optional, target, contiguous :: new_state(:)
-    real(c_double), intent(inout), optional, target, contiguous :: state(:)
-    integer(c_int32_t), intent(out), optional :: status
-    character(len=*), parameter :: what = 'asperity_dynamic_friction_step'
-    integer :: m
-    if (state_clash(what, present(state), present(old_state) .or. present(new_state), status)) &
-        return
-    if (.not. (present(state) .or. (present(old_state) .and. present(new_state)))) then
-      call local_error(what, 'invalid argument `state`: give `state` (in place) or both '// &
-          '`old_state` and `new_state`', status)
-      return
-    end if
-    call asperity_dynamic_friction_state_size(model, m, status)
-    if (present(status)) then
-      if (status /= ASPERITY_OK) return
-    end if
-    if (present(state)) then
-      if (too_small(what, 'state', size(state), m, 'the state size', status)) return
-      call check(c_asperity_dynamic_friction_step(model%ptr, increment, c_loc(state), &
-          c_loc(state), out), what, status)
-    else
-      if (too_small(what, 'old_state', size(old_state), m, 'the state size', status)) return
-      if (too_small(what, 'new_state', size(new_state), m, 'the state size', status)) return
-      call check(c_asperity_dynamic_friction_step(model%ptr, increment, c_loc(old_state), &
-          c_loc(new_state), out), what, status)
-    end if
-  end subroutine asperity_dynamic_friction_step
-
-  !> Step `size(normal_force)` points at once (the call of an Abaqus VFRIC): slip increments
-  !> `slip(1:2, i)` (m), one `dt` (s), states `states(:, i)` in place (columns of the state
-  !> size), tangential forces out in `tangential_force(1:2, i)` (N, opposing slip) and, when
-  !> given, the dissipated energy in `dissipation(i)` (J). On an error at C's element i
-  !> (Fortran's point i + 1), the points before it are written.
-  subroutine asperity_dynamic_friction_step_block(model, normal_force, slip, dt, states, &
-      tangential_force, dissipation, status)
-    type(asperity_dynamic_friction), intent(in) :: model
-    real(c_double), intent(in) :: normal_force(:)
-    real(c_double), intent(in) :: slip(:,:)
-    real(c_double), intent(in) :: dt
-    real(c_double), intent(inout) :: states(:,:)
-    real(c_double), intent(inout) :: tangential_force(:,:)
-    real(c_double), intent(inout), optional, target, contiguous :: dissipation(:)
-    integer(c_int32_t), intent(out), optional :: status
-    character(len=*), parameter :: what = 'asperity_dynamic_friction_step_block'
-    integer :: n, m
-    type(c_ptr) :: p_diss
-    n = size(normal_force)
-    call asperity_dynamic_friction_state_size(model, m, status)
-    if (present(status)) then
-      if (status /= ASPERITY_OK) return
-    end if
-    if (too_small(what, 'slip', size(slip), 2 * n, '2 x size(normal_force)', status)) return
-    if (too_small(what, 'states', size(states), m * n, 'the state size x size(normal_force)', &
-        status)) return
-    if (too_small(what, 'tangential_force', size(tangential_force), 2 * n, &
-        '2 x size(normal_force)', status)) return
-    p_diss = c_null_ptr
-    if (present(dissipation)) then
-      if (too_small(what, 'dissipation', size(dissipation), n, 'size(normal_force)', status)) &
-          return
-      p_diss = c_loc(dissipation)
-    end if
-    call check(c_asperity_dynamic_friction_step_block(model%ptr, int(n, c_size_t), normal_force, &
-        slip, dt, states, tangential_force, p_diss), what, status)
-  end subroutine asperity_dynamic_friction_step_block
+  ! Friendly layer: the hierarchical slider.
 
   !> The library's default slider options (fixed load 0 N: set `normal_force`).
   subroutine asperity_slider_options_default(options, status)
@@ -4496,17 +4090,6 @@ contains
         slider%ptr), 'asperity_slider_from_scene_json', status)
   end subroutine asperity_slider_from_scene_json
 
-  !> The number of doubles `n` of one patch state (8 + 2 x rods).
-  subroutine asperity_slider_state_size(slider, n, status)
-    type(asperity_slider), intent(in) :: slider
-    integer, intent(out) :: n
-    integer(c_int32_t), intent(out), optional :: status
-    integer(c_size_t) :: c
-    c = 0
-    call check(c_asperity_slider_state_size(slider%ptr, c), 'asperity_slider_state_size', status)
-    n = int(c)
-  end subroutine asperity_slider_state_size
-
   !> The sizes and capacities of `slider` into `info` (C: `asperity_slider_info`; in Fortran
   !> that name is the type of `info`, and a type and a procedure cannot share a name).
   subroutine asperity_slider_get_info(slider, info, status)
@@ -4516,162 +4099,328 @@ contains
     call check(c_asperity_slider_info(slider%ptr, info), 'asperity_slider_info', status)
   end subroutine asperity_slider_get_info
 
-  !> The scratch buffers of a step with `slider` into `work`: one per thread;
-  !> it may serve any slider with the same number of rods. An object `work`
+  !> The full record of the last step `work` took with a slider law
+  !> (`asperity_friction_from_slider`) into `record`: the positions (m), the
+  !> adhesion area share, the counts of contacts and `seated` (1 when the
+  !> step seated a fresh state first); all zero for a work made for a slider
+  !> law that has not stepped yet. An empty work, or one of another law, is
+  !> an error naming `work`. (C: `asperity_slider_record`; in Fortran that
+  !> name is the type of `record`.)
+  subroutine asperity_slider_get_record(work, record, status)
+    type(asperity_friction_work), intent(in) :: work
+    type(asperity_slider_record), intent(out) :: record
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_slider_record(work%ptr, record), 'asperity_slider_record', status)
+  end subroutine asperity_slider_get_record
+
+  ! ------------------------------------------------------------------------
+  ! Friendly layer: the friction step, one handle for every friction law.
+
+  !> The homogenised law of `table` (copied) with the stick stiffness `stick_stiffness` (N/m,
+  !> >= 0; 0: rigid-plastic) into `law`; its increments need the nominal `area` > 0. An object
+  !> `law` held is freed first.
+  subroutine asperity_friction_from_homogenised(table, stick_stiffness, law, status)
+    type(asperity_homogenised_friction), intent(in) :: table
+    real(c_double), intent(in) :: stick_stiffness
+    type(asperity_friction), intent(inout) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call law%free()
+    call check(c_asperity_friction_from_homogenised(table%ptr, stick_stiffness, law%ptr), &
+        'asperity_friction_from_homogenised', status)
+  end subroutine asperity_friction_from_homogenised
+
+  !> The slider (copied) as the friction law of a surface patch into `law`: the increment's
+  !> normal force is the fixed load (at most the capacity), its area is unused. An object `law`
   !> held is freed first.
-  subroutine asperity_slider_work_new(slider, work, status)
+  subroutine asperity_friction_from_slider(slider, law, status)
     type(asperity_slider), intent(in) :: slider
-    type(asperity_slider_work), intent(inout) :: work
+    type(asperity_friction), intent(inout) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call law%free()
+    call check(c_asperity_friction_from_slider(slider%ptr, law%ptr), &
+        'asperity_friction_from_slider', status)
+  end subroutine asperity_friction_from_slider
+
+  !> A LuGre model from `params` into `law` (an object held is freed first).
+  subroutine asperity_friction_lugre_new(params, law, status)
+    type(asperity_lugre_params), intent(in) :: params
+    type(asperity_friction), intent(inout) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call law%free()
+    call check(c_asperity_friction_lugre_new(params, law%ptr), 'asperity_friction_lugre_new', &
+        status)
+  end subroutine asperity_friction_lugre_new
+
+  !> Maxwell-slip elements of stiffnesses `stiffness` (1/m per unit normal force) and
+  !> break-away coefficients `capacity` (same size), viscous `sigma2` (N s/m), into `law`.
+  subroutine asperity_friction_maxwell_slip_new(stiffness, capacity, sigma2, law, status)
+    real(c_double), intent(in) :: stiffness(:)
+    real(c_double), intent(in) :: capacity(:)
+    real(c_double), intent(in) :: sigma2
+    type(asperity_friction), intent(inout) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_friction_maxwell_slip_new'
+    call law%free()
+    if (too_small(what, 'capacity', size(capacity), size(stiffness), 'size(stiffness)', status)) &
+        return
+    call check(c_asperity_friction_maxwell_slip_new(stiffness, capacity, &
+        size(stiffness, kind=c_size_t), sigma2, law%ptr), what, status)
+  end subroutine asperity_friction_maxwell_slip_new
+
+  !> Bristles of stiffnesses `stiffness` (1/m per unit normal force) and break
+  !> deflections `break_deflection` (m, same size), viscous `sigma2` (N s/m), into `law`.
+  subroutine asperity_friction_bristles_new(stiffness, break_deflection, sigma2, law, status)
+    real(c_double), intent(in) :: stiffness(:)
+    real(c_double), intent(in) :: break_deflection(:)
+    real(c_double), intent(in) :: sigma2
+    type(asperity_friction), intent(inout) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_friction_bristles_new'
+    call law%free()
+    if (too_small(what, 'break_deflection', size(break_deflection), size(stiffness), &
+        'size(stiffness)', status)) return
+    call check(c_asperity_friction_bristles_new(stiffness, break_deflection, &
+        size(stiffness, kind=c_size_t), sigma2, law%ptr), what, status)
+  end subroutine asperity_friction_bristles_new
+
+  !> A Prandtl-Tomlinson tip into `law`: lattice amplitude `amplitude` (J) and period
+  !> `period` (m), spring `stiffness` (N/m), `mass` (kg), `damping` (kg/s), integration
+  !> `tolerance`.
+  subroutine asperity_friction_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
+      damping, tolerance, law, status)
+    real(c_double), intent(in) :: amplitude, period, stiffness, mass, damping, tolerance
+    type(asperity_friction), intent(inout) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call law%free()
+    call check(c_asperity_friction_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
+        damping, tolerance, law%ptr), 'asperity_friction_prandtl_tomlinson_new', status)
+  end subroutine asperity_friction_prandtl_tomlinson_new
+
+  !> A two-spring (tip-cantilever) Prandtl-Tomlinson model of `params` into `law` (state
+  !> size 7).
+  subroutine asperity_friction_prandtl_tomlinson_two_spring_new(params, law, status)
+    type(asperity_prandtl_tomlinson_two_spring_params), intent(in) :: params
+    type(asperity_friction), intent(inout) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call law%free()
+    call check(c_asperity_friction_prandtl_tomlinson_two_spring_new(params, law%ptr), &
+        'asperity_friction_prandtl_tomlinson_two_spring_new', status)
+  end subroutine asperity_friction_prandtl_tomlinson_two_spring_new
+
+  !> A Burridge-Knopoff block chain of `params` into `law` (state size 3 + 2 blocks).
+  subroutine asperity_friction_burridge_knopoff_new(params, law, status)
+    type(asperity_burridge_knopoff_params), intent(in) :: params
+    type(asperity_friction), intent(inout) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    call law%free()
+    call check(c_asperity_friction_burridge_knopoff_new(params, law%ptr), &
+        'asperity_friction_burridge_knopoff_new', status)
+  end subroutine asperity_friction_burridge_knopoff_new
+
+  !> The number of doubles `n` of one point's state of `law`.
+  subroutine asperity_friction_state_size(law, n, status)
+    type(asperity_friction), intent(in) :: law
+    integer, intent(out) :: n
+    integer(c_int32_t), intent(out), optional :: status
+    integer(c_size_t) :: c
+    c = 0
+    call check(c_asperity_friction_state_size(law%ptr, c), 'asperity_friction_state_size', &
+        status)
+    n = int(c)
+  end subroutine asperity_friction_state_size
+
+  !> The scratch of a step with `law` into `work`: one per thread (a scratch
+  !> made for another law is rebuilt on first use). An object `work` held is
+  !> freed first.
+  subroutine asperity_friction_work_new(law, work, status)
+    type(asperity_friction), intent(in) :: law
+    type(asperity_friction_work), intent(inout) :: work
     integer(c_int32_t), intent(out), optional :: status
     call work%free()
-    call check(c_asperity_slider_work_new(slider%ptr, work%ptr), 'asperity_slider_work_new', &
+    call check(c_asperity_friction_work_new(law%ptr, work%ptr), 'asperity_friction_work_new', &
         status)
-  end subroutine asperity_slider_work_new
+  end subroutine asperity_friction_work_new
 
-  !> The state size of `slider` for the size checks of `what`; -1 (and the
+  !> The state size of `law` for the size checks of `what`; -1 (and the
   !> library's error reported) when the library cannot give it.
-  function slider_state_len(slider, what, status) result(m)
-    type(asperity_slider), intent(in) :: slider
+  function friction_state_len(law, what, status) result(m)
+    type(asperity_friction), intent(in) :: law
     character(len=*), intent(in) :: what
     integer(c_int32_t), intent(out), optional :: status
     integer :: m
     integer(c_size_t) :: c
     integer(c_int32_t) :: st
     c = 0
-    st = c_asperity_slider_state_size(slider%ptr, c)
+    st = c_asperity_friction_state_size(law%ptr, c)
     m = int(c)
     if (st /= ASPERITY_OK) then
       m = -1
       call check(st, what, status)
     end if
-  end function slider_state_len
+  end function friction_state_len
 
-  !> One increment of one patch into `out`, with this thread's `work`:
-  !> `old_state` to `new_state` (each at least `asperity_slider_state_size`
-  !> values; all-zero = fresh), or `state` in place. The same old state and
-  !> increment give bit-identical results, so an increment can be
-  !> re-evaluated or cut back. On failure the states are untouched.
-  subroutine asperity_slider_step(slider, work, increment, out, old_state, new_state, state, &
-      status)
-    type(asperity_slider), intent(in) :: slider
-    type(asperity_slider_work), intent(inout) :: work
-    type(asperity_slider_increment), intent(in) :: increment
-    type(asperity_slider_response), intent(out) :: out
-    real(c_double), intent(in), optional, target, contiguous :: old_state(:)
-    real(c_double), intent(inout), optional, target, contiguous :: new_state(:)
-    real(c_double), intent(inout), optional, target, contiguous :: state(:)
+  !> One increment of one point into `out`: `old_state` to `new_state` (each
+  !> at least `asperity_friction_state_size` values; all-zero = fresh), with
+  !> this thread's `work` (absent: a scratch per call, which the slider
+  !> allocates). The same old state and increment give bit-identical
+  !> results, so an increment can be re-evaluated or cut back. On failure
+  !> `new_state` is untouched.
+  subroutine asperity_friction_step(law, increment, old_state, new_state, out, work, status)
+    type(asperity_friction), intent(in) :: law
+    type(asperity_friction_increment), intent(in) :: increment
+    real(c_double), intent(in), target, contiguous :: old_state(:)
+    real(c_double), intent(inout), target, contiguous :: new_state(:)
+    type(asperity_friction_response), intent(out) :: out
+    type(asperity_friction_work), intent(inout), optional :: work
     integer(c_int32_t), intent(out), optional :: status
-    character(len=*), parameter :: what = 'asperity_slider_step'
+    character(len=*), parameter :: what = 'asperity_friction_step'
     integer :: m
-    if (state_clash(what, present(state), present(old_state) .or. present(new_state), status)) &
-        return
-    if (.not. (present(state) .or. (present(old_state) .and. present(new_state)))) then
-      call local_error(what, 'invalid argument `state`: give `state` (in place) or both '// &
-          '`old_state` and `new_state`', status)
-      return
-    end if
-    m = slider_state_len(slider, what, status)
+    m = friction_state_len(law, what, status)
     if (m < 0) return
-    if (present(state)) then
-      if (too_small(what, 'state', size(state), m, 'the state size', status)) return
-      call check(c_asperity_slider_step(slider%ptr, work%ptr, increment, c_loc(state), &
-          c_loc(state), out), what, status)
-    else
-      if (too_small(what, 'old_state', size(old_state), m, 'the state size', status)) return
-      if (too_small(what, 'new_state', size(new_state), m, 'the state size', status)) return
-      call check(c_asperity_slider_step(slider%ptr, work%ptr, increment, c_loc(old_state), &
-          c_loc(new_state), out), what, status)
-    end if
-  end subroutine asperity_slider_step
+    if (too_small(what, 'old_state', size(old_state), m, 'the state size', status)) return
+    if (too_small(what, 'new_state', size(new_state), m, 'the state size', status)) return
+    call check(c_asperity_friction_step(law%ptr, increment, c_loc(old_state), &
+        c_loc(new_state), loc_work(work), out), what, status)
+  end subroutine asperity_friction_step
 
-  !> Step `size(normal_force)` patches at once (the call of an Abaqus VFRIC)
-  !> with this thread's `work`, under fixed loads `normal_force(i)` (N, at
-  !> most the capacity): slip increments `slip(1:2, i)` (m), one `dt` (s),
-  !> tangential forces out in `tangential_force(1:2, i)` (N, opposing slip)
-  !> and, when given, the dissipated energy in `dissipation(i)` (J). States
-  !> are columns of `asperity_slider_state_size` values: `old_states(:, i)`
-  !> to `new_states(:, i)`, or `states(:, i)` in place. No tangents (use
-  !> `asperity_slider_step`). On an error at C's element i (Fortran's patch
-  !> i + 1), the patches before it are written and the rest untouched.
-  subroutine asperity_slider_step_block(slider, work, normal_force, slip, dt, tangential_force, &
-      old_states, new_states, dissipation, states, status)
-    type(asperity_slider), intent(in) :: slider
-    type(asperity_slider_work), intent(inout) :: work
-    real(c_double), intent(in) :: normal_force(:), slip(:, :)
-    real(c_double), intent(in) :: dt
-    real(c_double), intent(inout) :: tangential_force(:, :)
-    real(c_double), intent(in), optional, target, contiguous :: old_states(:, :)
-    real(c_double), intent(inout), optional, target, contiguous :: new_states(:, :)
-    real(c_double), intent(inout), optional, target, contiguous :: dissipation(:)
-    real(c_double), intent(inout), optional, target, contiguous :: states(:, :)
+  !> `asperity_friction_step` with the point's `state` updated in place (on
+  !> failure it is untouched).
+  subroutine asperity_friction_step_in_place(law, increment, state, out, work, status)
+    type(asperity_friction), intent(in) :: law
+    type(asperity_friction_increment), intent(in) :: increment
+    real(c_double), intent(inout) :: state(:)
+    type(asperity_friction_response), intent(out) :: out
+    type(asperity_friction_work), intent(inout), optional :: work
     integer(c_int32_t), intent(out), optional :: status
-    character(len=*), parameter :: what = 'asperity_slider_step_block'
-    type(c_ptr) :: p_old, p_new
-    integer :: n, m
-    n = size(normal_force)
-    if (size(slip, 1) /= 2) then
-      call local_error(what, 'invalid argument `slip`: the first dimension must be 2 (x and '// &
-          'y), not '//itoa(int(size(slip, 1), c_int64_t)), status)
+    character(len=*), parameter :: what = 'asperity_friction_step_in_place'
+    integer :: m
+    m = friction_state_len(law, what, status)
+    if (m < 0) return
+    if (too_small(what, 'state', size(state), m, 'the state size', status)) return
+    call check(c_asperity_friction_step_in_place(law%ptr, increment, state, loc_work(work), &
+        out), what, status)
+  end subroutine asperity_friction_step_in_place
+
+  !> True (and the error reported) unless the arrays of a block of `n`
+  !> points with states of `m` values fit: `slip_increments` and
+  !> `tangential_forces` (2, n), `areas` and `dissipation` (n) when given.
+  logical function bad_block(what, n, slip_increments, tangential_forces, areas, dissipation, &
+      status)
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: n
+    real(c_double), intent(in) :: slip_increments(:, :), tangential_forces(:, :)
+    real(c_double), intent(in), optional :: areas(:), dissipation(:)
+    integer(c_int32_t), intent(out), optional :: status
+    bad_block = .true.
+    if (present(areas)) then
+      if (too_small(what, 'areas', size(areas), n, 'the size of `normal_forces`', status)) return
+    end if
+    if (size(slip_increments, 1) /= 2) then
+      call local_error(what, 'invalid argument `slip_increments`: the first dimension must be '// &
+          '2 (x and y), not '//itoa(int(size(slip_increments, 1), c_int64_t)), status)
       return
     end if
-    if (size(tangential_force, 1) /= 2) then
-      call local_error(what, 'invalid argument `tangential_force`: the first dimension must '// &
-          'be 2 (x and y), not '//itoa(int(size(tangential_force, 1), c_int64_t)), status)
+    if (size(tangential_forces, 1) /= 2) then
+      call local_error(what, 'invalid argument `tangential_forces`: the first dimension must '// &
+          'be 2 (x and y), not '//itoa(int(size(tangential_forces, 1), c_int64_t)), status)
       return
     end if
-    if (too_small(what, 'slip', size(slip, 2), n, 'columns, the size of `normal_force`', &
-        status)) return
-    if (too_small(what, 'tangential_force', size(tangential_force, 2), n, &
-        'columns, the size of `normal_force`', status)) return
+    if (too_small(what, 'slip_increments', size(slip_increments, 2), n, &
+        'columns, the size of `normal_forces`', status)) return
+    if (too_small(what, 'tangential_forces', size(tangential_forces, 2), n, &
+        'columns, the size of `normal_forces`', status)) return
     if (present(dissipation)) then
-      if (too_small(what, 'dissipation', size(dissipation), n, 'the size of `normal_force`', &
+      if (too_small(what, 'dissipation', size(dissipation), n, 'the size of `normal_forces`', &
           status)) return
     end if
-    if (state_clash(what, present(states), present(old_states) .or. present(new_states), &
-        status)) return
-    if (.not. (present(states) .or. (present(old_states) .and. present(new_states)))) then
-      call local_error(what, 'invalid argument `states`: give `states` (in place) or both '// &
-          '`old_states` and `new_states`', status)
+    bad_block = .false.
+  end function bad_block
+
+  !> True (and the error reported) unless the states `x` of argument `arg`
+  !> are columns of the state size `m`, at least `n` of them.
+  logical function bad_states(what, arg, x, m, n, status)
+    character(len=*), intent(in) :: what, arg
+    real(c_double), intent(in) :: x(:, :)
+    integer, intent(in) :: m, n
+    integer(c_int32_t), intent(out), optional :: status
+    bad_states = .true.
+    if (size(x, 1) /= m) then
+      call local_error(what, 'invalid argument `'//arg//'`: the first dimension must be '// &
+          'the state size '//itoa(int(m, c_int64_t))//', not '// &
+          itoa(int(size(x, 1), c_int64_t)), status)
       return
     end if
-    m = slider_state_len(slider, what, status)
+    bad_states = too_small(what, arg, size(x, 2), n, 'columns, one per point', status)
+  end function bad_states
+
+  !> Step `size(normal_forces)` points at once (the call of an Abaqus VFRIC):
+  !> normal forces `normal_forces(i)` (N), slip increments
+  !> `slip_increments(1:2, i)` (m), one `dt` (s), the states `old_states(:, i)`
+  !> to `new_states(:, i)` (columns of `asperity_friction_state_size`
+  !> values), tangential forces out in `tangential_forces(1:2, i)` (N,
+  !> opposing slip); when given, the nominal areas `areas(i)` (m^2; the
+  !> homogenised law needs them) and the dissipated energy out in
+  !> `dissipation(i)` (J); this thread's `work` (absent: a scratch per call).
+  !> No tangents. On an error at C's element i (Fortran's point i + 1), the
+  !> points before it are written and the rest untouched.
+  subroutine asperity_friction_step_block(law, normal_forces, slip_increments, dt, old_states, &
+      new_states, tangential_forces, areas, dissipation, work, status)
+    type(asperity_friction), intent(in) :: law
+    real(c_double), intent(in) :: normal_forces(:), slip_increments(:, :)
+    real(c_double), intent(in) :: dt
+    real(c_double), intent(in), target, contiguous :: old_states(:, :)
+    real(c_double), intent(inout), target, contiguous :: new_states(:, :)
+    real(c_double), intent(inout) :: tangential_forces(:, :)
+    real(c_double), intent(in), optional, target, contiguous :: areas(:)
+    real(c_double), intent(inout), optional, target, contiguous :: dissipation(:)
+    type(asperity_friction_work), intent(inout), optional :: work
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_friction_step_block'
+    type(c_ptr) :: p_old, p_new
+    integer :: n, m
+    n = size(normal_forces)
+    if (bad_block(what, n, slip_increments, tangential_forces, areas, dissipation, status)) &
+        return
+    m = friction_state_len(law, what, status)
     if (m < 0) return
+    if (bad_states(what, 'old_states', old_states, m, n, status)) return
+    if (bad_states(what, 'new_states', new_states, m, n, status)) return
     p_old = c_null_ptr
     p_new = c_null_ptr
-    if (present(states)) then
-      if (bad_states('states', states)) return
-      if (n > 0) p_old = c_loc(states)
-      p_new = p_old
-    else
-      if (bad_states('old_states', old_states)) return
-      if (bad_states('new_states', new_states)) return
-      if (n > 0) then
-        p_old = c_loc(old_states)
-        p_new = c_loc(new_states)
-      end if
+    if (n > 0) then
+      p_old = c_loc(old_states)
+      p_new = c_loc(new_states)
     end if
-    call check(c_asperity_slider_step_block(slider%ptr, work%ptr, int(n, c_size_t), &
-        normal_force, slip, dt, p_old, p_new, tangential_force, loc_d(dissipation)), what, &
-        status)
+    call check(c_asperity_friction_step_block(law%ptr, int(n, c_size_t), normal_forces, &
+        loc_d(areas), slip_increments, dt, p_old, p_new, tangential_forces, loc_d(dissipation), &
+        loc_work(work)), what, status)
+  end subroutine asperity_friction_step_block
 
-  contains
-
-    !> True (and the error reported) unless `x` has columns of the state size
-    !> and one per patch.
-    logical function bad_states(arg, x)
-      character(len=*), intent(in) :: arg
-      real(c_double), intent(in) :: x(:, :)
-      bad_states = .false.
-      if (size(x, 1) /= m) then
-        call local_error(what, 'invalid argument `'//arg//'`: the first dimension must be '// &
-            'the state size '//itoa(int(m, c_int64_t))//', not '// &
-            itoa(int(size(x, 1), c_int64_t)), status)
-        bad_states = .true.
+  !> `asperity_friction_step_block` with the states `states(:, i)` stepped in
+  !> place.
+  subroutine asperity_friction_step_block_in_place(law, normal_forces, slip_increments, dt, &
+      states, tangential_forces, areas, dissipation, work, status)
+    type(asperity_friction), intent(in) :: law
+    real(c_double), intent(in) :: normal_forces(:), slip_increments(:, :)
+    real(c_double), intent(in) :: dt
+    real(c_double), intent(inout) :: states(:, :)
+    real(c_double), intent(inout) :: tangential_forces(:, :)
+    real(c_double), intent(in), optional, target, contiguous :: areas(:)
+    real(c_double), intent(inout), optional, target, contiguous :: dissipation(:)
+    type(asperity_friction_work), intent(inout), optional :: work
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_friction_step_block_in_place'
+    integer :: n, m
+    n = size(normal_forces)
+    if (bad_block(what, n, slip_increments, tangential_forces, areas, dissipation, status)) &
         return
-      end if
-      bad_states = too_small(what, arg, size(x, 2), n, 'columns, one per patch', status)
-    end function bad_states
-  end subroutine asperity_slider_step_block
+    m = friction_state_len(law, what, status)
+    if (m < 0) return
+    if (bad_states(what, 'states', states, m, n, status)) return
+    call check(c_asperity_friction_step_block_in_place(law%ptr, int(n, c_size_t), normal_forces, &
+        loc_d(areas), slip_increments, dt, states, tangential_forces, loc_d(dissipation), &
+        loc_work(work)), what, status)
+  end subroutine asperity_friction_step_block_in_place
 
   ! ------------------------------------------------------------------------
   ! Friendly layer: indentation, rescaling, hardness (indentation.rs).

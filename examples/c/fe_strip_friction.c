@@ -10,12 +10,14 @@
  *
  *   a_i = (k_s (x_base - x_i) + c (v - u_i) + F_i) / m    (forces at t_n)
  *   u_i += dt a_i;  dx_i = dt u_i;  x_i += dx_i            (symplectic Euler)
- *   asperity_homogenised_friction_step_block(dx)  ->  F_i at t_{n+1}
+ *   asperity_friction_step_block_in_place(dx)  ->  F_i at t_{n+1}
  *
- * with the per-point states stepped in place. The friction law is built in C
- * from five copper-like samples (mu 1.10 .. 0.90 over 10 .. 200 MPa). The
- * strip sticks while the springs load, then slides; in steady sliding the
- * total friction force is sum mu(p_i)(N_i + A_i).
+ * with the per-point states (asperity_friction_state_size doubles each)
+ * stepped in place. The friction law is the homogenised law of a table built
+ * in C from five copper-like samples (mu 1.10 .. 0.90 over 10 .. 200 MPa)
+ * with a stick stiffness, one AsperityFriction handle. The strip sticks
+ * while the springs load, then slides; in steady sliding the total friction
+ * force is sum mu(p_i)(N_i + A_i).
  *
  * Prints the friction force history every 1000 increments and lines
  * "CHECK <name> <value>" read by tests/c_examples.rs.
@@ -86,12 +88,15 @@ static AsperityHomogenisedSample sample(double p_mpa, double mu, double adh_mpa,
 int main(void)
 {
     AsperityHomogenisedSample samples[5];
-    AsperityHomogenisedFriction *law = NULL;
-    static AsperityFrictionPointState state[NP];
+    AsperityHomogenisedFriction *table = NULL;
+    AsperityFriction *law = NULL;
+    AsperityFrictionWork *work = NULL;
+    double *state, *fresh, *scratch;
     static double normal[NP], area[NP], slip[2 * NP], force[2 * NP], diss[NP];
     static double x[NP], u[NP], limit[NP];
     double expected = 0.0, steady = 0.0, d_steps = 0.0, d_states = 0.0, d_limit_path = 0.0;
-    double min_diss = 0.0, stick_balance = 0.0;
+    double min_diss = 0.0, stick_balance = 0.0, path0 = 0.0;
+    size_t m = 0;
     long first_slip = -1, all_sliding_from = -1;
     int stick_below_limit = 1;
     int i;
@@ -102,14 +107,24 @@ int main(void)
     samples[2] = sample(100.0, 0.97, 9.00, 0.100, 0.920, 0.064, 0.010);
     samples[3] = sample(150.0, 0.93, 13.5, 0.150, 0.910, 0.062, 0.018);
     samples[4] = sample(200.0, 0.90, 18.0, 0.200, 0.900, 0.060, 0.025);
-    TRY(asperity_homogenised_friction_new(samples, 5, &law));
+    TRY(asperity_homogenised_friction_new(samples, 5, &table));
+    /* The friction law: the table with the stick stiffness. */
+    TRY(asperity_friction_from_homogenised(table, K_STICK, &law));
+    TRY(asperity_friction_work_new(law, &work));
+    TRY(asperity_friction_state_size(law, &m));
 
-    check("state_size_matches",
-          asperity_homogenised_friction_state_size() == sizeof(AsperityFrictionPointState));
+    /* The state: dissipation, slip path, stick force (x, y), plastic slip
+     * path, dissipation by mechanism (4). */
+    check("state_size_matches", m == ASPERITY_HOMOGENISED_STATE_MECHANISMS + 4);
+    state = (double *)calloc(NP * m, sizeof(double)); /* all-zero: fresh */
+    fresh = (double *)calloc(m, sizeof(double));
+    scratch = (double *)calloc(m, sizeof(double));
+    if (state == NULL || fresh == NULL || scratch == NULL) {
+        return EXIT_FAILURE;
+    }
 
     /* The strip, and each point's slip limit from a scalar step (a large slip
      * from a fresh state slides: |F| = mu (N + A)). */
-    memset(state, 0, sizeof state);
     for (i = 0; i < NP; ++i) {
         AsperityFrictionIncrement inc;
         AsperityFrictionResponse r;
@@ -120,13 +135,13 @@ int main(void)
         u[i] = 0.0;
         force[2 * i] = 0.0;
         force[2 * i + 1] = 0.0;
+        memset(&inc, 0, sizeof inc);
         inc.normal_force = normal[i];
         inc.area = AREA;
         inc.slip[0] = 1.0;
         inc.slip[1] = 0.0;
         inc.dt = DT;
-        inc.stick_stiffness = K_STICK;
-        TRY(asperity_homogenised_friction_step(law, &inc, NULL, NULL, &r));
+        TRY(asperity_friction_step(law, &inc, fresh, scratch, work, &r));
         limit[i] = r.cof * (r.normal_force + r.adhesion);
         expected += limit[i];
     }
@@ -148,8 +163,9 @@ int main(void)
                 slip[2 * i + 1] = 0.0;
                 x[i] += slip[2 * i];
             }
-            TRY(asperity_homogenised_friction_step_block(law, NP, normal, area, slip, DT, K_STICK,
-                                                         state, state, force, diss));
+            path0 += fabs(slip[0]);
+            TRY(asperity_friction_step_block_in_place(law, NP, normal, area, slip, DT, state,
+                                                      force, diss, work));
             for (i = 0; i < NP; ++i) {
                 total += force[2 * i];
                 d += diss[i];
@@ -188,10 +204,11 @@ int main(void)
     }
 
     for (i = 0; i < NP; ++i) {
-        const AsperityDissipation *a = &state[i].dissipation;
-        const double di = a->chemical + a->van_der_waals + a->elastic + a->plastic;
+        const double *s = state + i * m;
+        const double *a = s + ASPERITY_HOMOGENISED_STATE_MECHANISMS;
+        const double di = a[0] + a[1] + a[2] + a[3];
         d_states += di;
-        d_limit_path += limit[i] * state[i].slip_path;
+        d_limit_path += limit[i] * s[ASPERITY_HOMOGENISED_STATE_PLASTIC_SLIP_PATH];
     }
 
     check("points", NP);
@@ -206,35 +223,39 @@ int main(void)
     check("min_increment_dissipation", min_diss);
     check("dissipation_states_rel_diff", rel_diff(d_states, d_steps));
     check("dissipation_limit_path_rel_diff", rel_diff(d_limit_path, d_steps));
-    check("chemical_share",
-          state[NP / 2].dissipation.chemical /
-              (state[NP / 2].dissipation.chemical + state[NP / 2].dissipation.van_der_waals +
-               state[NP / 2].dissipation.elastic + state[NP / 2].dissipation.plastic));
-    check("steps_counted", (double)state[0].steps);
+    {
+        const double *a = state + (NP / 2) * m + ASPERITY_HOMOGENISED_STATE_MECHANISMS;
+        check("chemical_share", a[0] / (a[0] + a[1] + a[2] + a[3]));
+    }
+    /* Every increment is booked: point 0's slip path is the sum of |dx|. */
+    check("slip_path_booked_rel_diff", rel_diff(state[ASPERITY_FRICTION_STATE_SLIP_PATH], path0));
 
     /* JSON round trip: the reloaded law steps bit-identically. */
     {
         size_t needed = 0;
         char *json;
         AsperityHomogenisedFriction *copy = NULL;
+        AsperityFriction *copy_law = NULL;
         AsperityFrictionIncrement inc;
         AsperityFrictionResponse r1, r2;
-        TRY(asperity_homogenised_friction_to_json(law, NULL, 0, &needed));
+        TRY(asperity_homogenised_friction_to_json(table, NULL, 0, &needed));
         json = (char *)malloc(needed + 1);
         if (json == NULL) {
             return EXIT_FAILURE;
         }
-        TRY(asperity_homogenised_friction_to_json(law, json, needed + 1, &needed));
+        TRY(asperity_homogenised_friction_to_json(table, json, needed + 1, &needed));
         TRY(asperity_homogenised_friction_from_json(json, needed, &copy));
+        TRY(asperity_friction_from_homogenised(copy, K_STICK, &copy_law));
+        memset(&inc, 0, sizeof inc);
         inc.normal_force = 77.7;
         inc.area = AREA;
         inc.slip[0] = 3e-7;
         inc.slip[1] = -1e-7;
         inc.dt = DT;
-        inc.stick_stiffness = K_STICK;
-        TRY(asperity_homogenised_friction_step(law, &inc, &state[3], NULL, &r1));
-        TRY(asperity_homogenised_friction_step(copy, &inc, &state[3], NULL, &r2));
+        TRY(asperity_friction_step(law, &inc, state + 3 * m, scratch, work, &r1));
+        TRY(asperity_friction_step(copy_law, &inc, state + 3 * m, scratch, work, &r2));
         check("json_roundtrip_identical", memcmp(&r1, &r2, sizeof r1) == 0);
+        asperity_friction_free(copy_law);
         asperity_homogenised_friction_free(copy);
         free(json);
     }
@@ -244,19 +265,25 @@ int main(void)
         char msg[512];
         int32_t st;
         area[9] = -1.0;
-        st = asperity_homogenised_friction_step_block(law, NP, normal, area, slip, DT, K_STICK,
-                                                      state, state, force, diss);
+        st = asperity_friction_step_block_in_place(law, NP, normal, area, slip, DT, state, force,
+                                                   diss, work);
         asperity_last_error_message(msg, sizeof msg);
         check("bad_area_status", st);
         check("bad_area_names_element", strstr(msg, "element 9") != NULL);
         check("bad_area_names_area", strstr(msg, "`area`") != NULL);
         area[9] = AREA;
-        st = asperity_homogenised_friction_step_block(NULL, NP, normal, area, slip, DT, K_STICK,
-                                                      state, state, force, diss);
+        st = asperity_friction_step_block_in_place(NULL, NP, normal, area, slip, DT, state, force,
+                                                   diss, work);
         check("null_handle_status", st);
     }
 
-    asperity_homogenised_friction_free(law);
+    free(state);
+    free(fresh);
+    free(scratch);
+    asperity_friction_work_free(work);
+    asperity_friction_free(law);
+    asperity_friction_free(NULL);
+    asperity_homogenised_friction_free(table);
     asperity_homogenised_friction_free(NULL);
     return EXIT_SUCCESS;
 }

@@ -17,6 +17,10 @@
  * printing the friction force histories side by side ("row" lines: slip
  * position, then each model's force on the point along x, in N) and each
  * model's total dissipation ("CHECK" lines).
+ *
+ * Every model is one AsperityFriction handle stepped by the same call,
+ * asperity_friction_step, each with its own state of
+ * asperity_friction_state_size doubles (all-zero = fresh) and scratch.
  */
 #include <asperity.h>
 #include <math.h>
@@ -25,7 +29,8 @@
 
 #define STEPS 65
 #define N_MAX 32
-#define MODELS 6
+#define MODELS 7
+#define HOMOGENISED 6
 
 static int fail(const char *what, int32_t status) {
     char msg[512];
@@ -43,11 +48,13 @@ int main(void) {
     const double a = 5e-6, u0 = 2.0 * a / (2.0 * pi);
     const double k_pt = 4.0 * pi * pi * u0 / (3.0 * a * a), m_pt = 1e-3;
     const char *names[MODELS] = {"lugre",      "maxwell",          "prandtl_tomlinson",
-                                 "two_spring", "burridge_knopoff", "bristles"};
+                                 "two_spring", "burridge_knopoff", "bristles",
+                                 "homogenised"};
     AsperityLugreParams p;
     AsperityPrandtlTomlinsonTwoSpringParams t;
     AsperityBurridgeKnopoffParams b;
-    AsperityDynamicFriction *models[MODELS] = {NULL, NULL, NULL, NULL, NULL, NULL};
+    AsperityFriction *models[MODELS] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+    AsperityFrictionWork *works[MODELS] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL};
     AsperityHomogenisedFriction *homog = NULL;
     const double k[4] = {4e5, 1e5, 2.5e4, 6.25e3};
     const double mu[4] = {0.3, 0.3, 0.25, 0.2};
@@ -56,7 +63,6 @@ int main(void) {
     const double db[4] = {3e-6, 5.5e-6, 8e-6, 12e-6};
     AsperityHomogenisedSample sample;
     double states[MODELS][N_MAX];
-    AsperityFrictionPointState s_homog;
     double x = 0.0, d_homog = 0.0;
     int32_t st;
     int i, j;
@@ -87,17 +93,18 @@ int main(void) {
     b.weakening_velocity = 5e-2;
     b.damping = 0.3;
     b.tolerance = 1e-9;
-    if ((st = asperity_dynamic_lugre_new(&p, &models[0])) != ASPERITY_OK) return fail("lugre", st);
-    if ((st = asperity_dynamic_maxwell_slip_new(k, mu, 4, 0.0, &models[1])) != ASPERITY_OK)
+    if ((st = asperity_friction_lugre_new(&p, &models[0])) != ASPERITY_OK)
+        return fail("lugre", st);
+    if ((st = asperity_friction_maxwell_slip_new(k, mu, 4, 0.0, &models[1])) != ASPERITY_OK)
         return fail("maxwell", st);
-    if ((st = asperity_dynamic_prandtl_tomlinson_new(u0, a, k_pt, m_pt, sqrt(k_pt * m_pt), 1e-9,
-                                                     &models[2])) != ASPERITY_OK)
+    if ((st = asperity_friction_prandtl_tomlinson_new(u0, a, k_pt, m_pt, sqrt(k_pt * m_pt), 1e-9,
+                                                      &models[2])) != ASPERITY_OK)
         return fail("prandtl_tomlinson", st);
-    if ((st = asperity_dynamic_prandtl_tomlinson_two_spring_new(&t, &models[3])) != ASPERITY_OK)
+    if ((st = asperity_friction_prandtl_tomlinson_two_spring_new(&t, &models[3])) != ASPERITY_OK)
         return fail("two_spring", st);
-    if ((st = asperity_dynamic_burridge_knopoff_new(&b, &models[4])) != ASPERITY_OK)
+    if ((st = asperity_friction_burridge_knopoff_new(&b, &models[4])) != ASPERITY_OK)
         return fail("burridge_knopoff", st);
-    if ((st = asperity_dynamic_bristles_new(kb, db, 4, 0.0, &models[5])) != ASPERITY_OK)
+    if ((st = asperity_friction_bristles_new(kb, db, 4, 0.0, &models[5])) != ASPERITY_OK)
         return fail("bristles", st);
     memset(&sample, 0, sizeof sample);
     sample.pressure = normal / area;
@@ -106,54 +113,54 @@ int main(void) {
     sample.shares.chemical = 1.0;
     if ((st = asperity_homogenised_friction_new(&sample, 1, &homog)) != ASPERITY_OK)
         return fail("homogenised", st);
+    /* The homogenised law: the table with a stick stiffness. */
+    if ((st = asperity_friction_from_homogenised(homog, 2e5 * normal, &models[HOMOGENISED])) !=
+        ASPERITY_OK)
+        return fail("homogenised law", st);
     for (j = 0; j < MODELS; ++j) {
         size_t n = 0;
-        if ((st = asperity_dynamic_friction_state_size(models[j], &n)) != ASPERITY_OK)
+        if ((st = asperity_friction_state_size(models[j], &n)) != ASPERITY_OK)
             return fail("state size", st);
         if (n > N_MAX) return fail("state size", ASPERITY_ERR_INTERNAL);
+        if ((st = asperity_friction_work_new(models[j], &works[j])) != ASPERITY_OK)
+            return fail("work", st);
         memset(states[j], 0, sizeof states[j]);
     }
-    /* The state layout: block i's x_i - x_d at ASPERITY_DYNAMIC_STATE_MODEL + 2 i. */
-    states[4][ASPERITY_DYNAMIC_STATE_MODEL + 2 * 3] = -1e-6;
-    memset(&s_homog, 0, sizeof s_homog);
+    /* The state layout: block i's x_i - x_d at ASPERITY_FRICTION_STATE_MODEL + 2 i. */
+    states[4][ASPERITY_FRICTION_STATE_MODEL + 2 * 3] = -1e-6;
 
     printf("# x_um lugre_N maxwell_N homogenised_N prandtl_tomlinson_N two_spring_N "
            "burridge_knopoff_N bristles_N\n");
     for (i = 0; i < STEPS; ++i) {
         const double dx = i < 20 ? h : (i < 50 ? -h : h);
-        AsperityDynamicIncrement inc;
-        AsperityDynamicResponse r[MODELS];
-        AsperityFrictionIncrement hinc;
-        AsperityFrictionResponse r_homog;
+        AsperityFrictionIncrement inc;
+        AsperityFrictionResponse r[MODELS];
+        /* One increment for every model; the area is read by the
+         * homogenised law only. */
         memset(&inc, 0, sizeof inc);
         inc.normal_force = normal;
+        inc.area = area;
         inc.slip[0] = dx;
         inc.dt = dt;
         for (j = 0; j < MODELS; ++j)
-            if ((st = asperity_dynamic_friction_step(models[j], &inc, states[j], states[j],
-                                                     &r[j])) != ASPERITY_OK)
+            if ((st = asperity_friction_step(models[j], &inc, states[j], states[j], works[j],
+                                             &r[j])) != ASPERITY_OK)
                 return fail(names[j], st);
-        memset(&hinc, 0, sizeof hinc);
-        hinc.normal_force = normal;
-        hinc.area = area;
-        hinc.slip[0] = dx;
-        hinc.dt = dt;
-        hinc.stick_stiffness = 2e5 * normal;
-        if ((st = asperity_homogenised_friction_step(homog, &hinc, &s_homog, &s_homog, &r_homog)) !=
-            ASPERITY_OK)
-            return fail("homogenised step", st);
-        d_homog += r_homog.dissipated;
+        d_homog += r[HOMOGENISED].dissipated;
         x += dx;
         printf("row %.1f %.9e %.9e %.9e %.9e %.9e %.9e %.9e\n", x * 1e6, r[0].force[0],
-               r[1].force[0], r_homog.force[0], r[2].force[0], r[3].force[0], r[4].force[0],
-               r[5].force[0]);
+               r[1].force[0], r[HOMOGENISED].force[0], r[2].force[0], r[3].force[0],
+               r[4].force[0], r[5].force[0]);
     }
-    for (j = 0; j < MODELS; ++j)
+    for (j = 0; j < HOMOGENISED; ++j)
         printf("CHECK %s_dissipation %.17g\n", names[j],
-               states[j][ASPERITY_DYNAMIC_STATE_DISSIPATION]);
+               states[j][ASPERITY_FRICTION_STATE_DISSIPATION]);
     printf("CHECK homogenised_dissipation %.17g\n", d_homog);
-    printf("CHECK slip_path_um %.17g\n", states[0][ASPERITY_DYNAMIC_STATE_SLIP_PATH] * 1e6);
-    for (j = 0; j < MODELS; ++j) asperity_dynamic_friction_free(models[j]);
+    printf("CHECK slip_path_um %.17g\n", states[0][ASPERITY_FRICTION_STATE_SLIP_PATH] * 1e6);
+    for (j = 0; j < MODELS; ++j) {
+        asperity_friction_work_free(works[j]);
+        asperity_friction_free(models[j]);
+    }
     asperity_homogenised_friction_free(homog);
     return 0;
 }

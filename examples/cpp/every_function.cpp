@@ -124,6 +124,23 @@ void laws()
           asperity::pull_off_force(asperity::law_kendall(1e-6, e_star, w, 0.355, true),
                                    ASPERITY_CONTROL_LOAD));
 
+    // From inputs: the member of the union that the kind names; the law
+    // keeps them as given.
+    AsperityLawParams inputs{};
+    inputs.kendall = AsperityKendallParams{1e-6, e_star, w, 0.355, 1, 0};
+    const AsperityNormalLaw kendall_in = asperity::law_from_params(ASPERITY_LAW_KENDALL, inputs);
+    check("from_params_kendall_no_slip_pull_off",
+          asperity::pull_off_force(kendall_in, ASPERITY_CONTROL_LOAD));
+    check_bool("from_params_inputs_read_back",
+               kendall_in.kind == ASPERITY_LAW_KENDALL && kendall_in.params.kendall.nu == 0.355 &&
+                   kendall_in.params.kendall.no_slip == 1 &&
+                   kendall_in.params.kendall.radius == 1e-6);
+    expect_error("from_params_bad_no_slip", "`no_slip`", [] {
+        AsperityLawParams bad{};
+        bad.kendall = AsperityKendallParams{1e-6, e_star, w, 0.3, 2, 0};
+        (void)asperity::law_from_params(ASPERITY_LAW_KENDALL, bad);
+    });
+
     const AsperityNormalLaw md = asperity::law_maugis_dugdale(radius, e_star, w, 3.27e7);
     check("md_pull_off_load", asperity::pull_off_force(md, ASPERITY_CONTROL_LOAD));
     check("md_length_scale", asperity::law_length_scale(md));
@@ -283,14 +300,58 @@ void slider()
         counter[i] = 2e-7 * std::sin(0.7 * static_cast<double>(i));
     }
     const asperity::Slider from_structs(uniform, copper, counter, um, options);
-    asperity::SliderWork work(from_structs);
-    std::vector<double> state(from_structs.state_size(), 0.0);
-    AsperitySliderIncrement step{};
+    // Stepped as a friction law under the options' load (10 mN).
+    const asperity::Friction law = asperity::Friction::from_slider(from_structs);
+    asperity::FrictionWork work(law);
+    std::vector<double> state(law.state_size(), 0.0);
+    AsperityFrictionIncrement step{};
+    step.normal_force = options.normal_force;
     step.slip[0] = um;
-    const AsperitySliderResponse r = from_structs.step(work, step, state);
-    check("structs_friction_force", r.friction_force);
+    const AsperityFrictionResponse r = law.step_in_place(step, state, &work);
+    check("structs_friction_force", r.force_magnitude);
     check("structs_cof", r.cof);
-    check("structs_nano_contacts", static_cast<double>(r.nano_contacts));
+    // The full record of the step: the exact count of nano-asperities in
+    // contact and the rest, beyond the response. The step seated the fresh
+    // state, then slid 1 um from position 0.
+    const AsperitySliderRecord record = work.slider_record();
+    check("structs_nano_contacts", static_cast<double>(record.nano_contacts));
+    check("structs_adhesive_contacts", static_cast<double>(record.adhesive_contacts));
+    check("structs_rods_in_contact", static_cast<double>(record.rods_in_contact));
+    check("structs_yielded_rods", static_cast<double>(record.yielded_rods));
+    check("structs_adhesion_area_share", record.adhesion_area_share);
+    check("structs_position", record.position);
+    check("structs_rod_position", record.rod_position);
+    check("structs_seated", record.seated);
+    check_bool("structs_position_matches_state",
+               record.position == state[ASPERITY_SLIDER_STATE_POSITION]);
+    // The true contact area is N_c w_vdW^2.
+    check("structs_true_contact_area_rel_diff",
+          std::fabs(r.true_contact_area -
+                    static_cast<double>(record.nano_contacts) * nano.w_vdw * nano.w_vdw) /
+              r.true_contact_area);
+    // A second step: nothing seated, one more micrometre.
+    (void)law.step_in_place(step, state, &work);
+    const AsperitySliderRecord second = work.slider_record();
+    check("structs_second_seated", second.seated);
+    check("structs_second_position", second.position);
+    // A scratch that holds no slider record names `work`: empty (NULL), or
+    // a LuGre law's.
+    expect_error("record_null_work", "`work`", [] {
+        const asperity::FrictionWork empty;
+        (void)empty.slider_record();
+    });
+    expect_error("record_lugre_work", "`work`", [] {
+        AsperityLugreParams p{};
+        p.mu_coulomb = 0.3;
+        p.mu_static = 0.5;
+        p.stribeck_velocity = 1e-3;
+        p.stribeck_exponent = 2.0;
+        p.sigma0 = 1e5;
+        p.sigma1 = 1000.0;
+        p.damping_velocity = 1e-3;
+        const asperity::FrictionWork lugre_work = asperity::Friction::lugre(p).work();
+        (void)lugre_work.slider_record();
+    });
     options.plastic = 7;
     expect_error("structs_bad_plastic", "`options.plastic`", [&] {
         const asperity::Slider bad(uniform, copper, counter, um, options);
@@ -309,35 +370,37 @@ void dynamic_friction()
     p.sigma1 = 1000.0;
     p.damping_velocity = 1e-3;
     p.sigma2 = 0.4;
-    const asperity::DynamicFriction lugre = asperity::DynamicFriction::lugre(p);
+    const asperity::Friction lugre = asperity::Friction::lugre(p);
     std::vector<double> state(lugre.state_size(), 0.0);
-    AsperityDynamicIncrement inc{};
+    AsperityFrictionIncrement inc{};
     inc.normal_force = 3.0;
     inc.dt = 1.0;
     inc.slip[0] = 2e-3;
-    const AsperityDynamicResponse r = lugre.step(inc, state);
+    const AsperityFrictionResponse r = lugre.step_in_place(inc, state);
     check("lugre_state_size", static_cast<double>(state.size()));
     check("lugre_steady_force", -r.force[0]);
-    check("lugre_dissipation", state[ASPERITY_DYNAMIC_STATE_DISSIPATION]);
+    check("lugre_dissipation", state[ASPERITY_FRICTION_STATE_DISSIPATION]);
     // Maxwell-slip: two elements, loaded 3 um then back 2 um (Masing).
     const std::array<double, 2> k{1e5, 2e4};
     const std::array<double, 2> mu{0.2, 0.3};
-    const asperity::DynamicFriction ms = asperity::DynamicFriction::maxwell_slip(k, mu);
+    const asperity::Friction ms = asperity::Friction::maxwell_slip(k, mu);
     std::vector<double> states(2 * ms.state_size(), 0.0);
     const std::array<double, 2> normal{1.0, 2.0};
     std::array<double, 4> forces{};
     std::array<double, 2> dissipation{};
-    ms.step_block(normal, std::array<double, 4>{3e-6, 0.0, 3e-6, 0.0}, 0.0, states, forces,
-                  dissipation);
-    ms.step_block(normal, std::array<double, 4>{-2e-6, 0.0, -2e-6, 0.0}, 0.0, states, forces,
-                  dissipation);
+    // Old and new states separate, then in place.
+    std::vector<double> loaded(states.size(), 0.0);
+    ms.step_block(normal, {}, std::array<double, 4>{3e-6, 0.0, 3e-6, 0.0}, 0.0, states, loaded,
+                  forces, dissipation);
+    ms.step_block_in_place(normal, {}, std::array<double, 4>{-2e-6, 0.0, -2e-6, 0.0}, 0.0, loaded,
+                           forces, dissipation);
     check("maxwell_force_0", forces[0]);
     check("maxwell_force_1", forces[2]);
     check("maxwell_dissipation_1", dissipation[1]);
     expect_error("maxwell_bad", "`stiffness`", [] {
         const std::array<double, 1> k0{-1.0};
         const std::array<double, 1> m0{0.1};
-        (void)asperity::DynamicFriction::maxwell_slip(k0, m0);
+        (void)asperity::Friction::maxwell_slip(k0, m0);
     });
     // Two-spring Prandtl-Tomlinson: tip and cantilever springs of 2 N/m in
     // series on a 0.3 nm lattice; one increment of 10 pm in 1 us.
@@ -351,15 +414,16 @@ void dynamic_friction()
     t.cantilever_mass = 1e-12;
     t.cantilever_damping = 1e-6;
     t.tolerance = 1e-9;
-    const asperity::DynamicFriction pt =
-        asperity::DynamicFriction::prandtl_tomlinson_two_spring(t);
+    const asperity::Friction pt =
+        asperity::Friction::prandtl_tomlinson_two_spring(t);
     std::vector<double> pt_state(pt.state_size(), 0.0);
-    AsperityDynamicIncrement pt_inc{};
+    AsperityFrictionIncrement pt_inc{};
     pt_inc.normal_force = 1.0;
     pt_inc.slip[0] = 1e-11;
     pt_inc.dt = 1e-6;
     check("two_spring_state_size", static_cast<double>(pt_state.size()));
-    check("two_spring_force", pt.step(pt_inc, pt_state).force[0]);
+    asperity::FrictionWork pt_work = pt.work();
+    check("two_spring_force", pt.step(pt_inc, pt_state, pt_state, &pt_work).force[0]);
     // Burridge-Knopoff: four blocks, all stuck after a 10 um pull (below
     // the static reach mu_s (N/M)/k_p = 0.5 mm): F = -4 k_p slip.
     AsperityBurridgeKnopoffParams b{};
@@ -372,14 +436,14 @@ void dynamic_friction()
     b.weakening_velocity = 0.05;
     b.damping = 0.0;
     b.tolerance = 1e-9;
-    const asperity::DynamicFriction bk = asperity::DynamicFriction::burridge_knopoff(b);
+    const asperity::Friction bk = asperity::Friction::burridge_knopoff(b);
     std::vector<double> bk_state(bk.state_size(), 0.0);
-    AsperityDynamicIncrement bk_inc{};
+    AsperityFrictionIncrement bk_inc{};
     bk_inc.normal_force = 4.0;
     bk_inc.slip[0] = 1e-5;
     bk_inc.dt = 1e-3;
     check("burridge_knopoff_state_size", static_cast<double>(bk_state.size()));
-    check("burridge_knopoff_stuck_force", bk.step(bk_inc, bk_state).force[0]);
+    check("burridge_knopoff_stuck_force", bk.step_in_place(bk_inc, bk_state).force[0]);
     expect_error("burridge_knopoff_bad", "`params.mu_kinetic`", [] {
         AsperityBurridgeKnopoffParams bad{};
         bad.blocks = 2;
@@ -389,7 +453,32 @@ void dynamic_friction()
         bad.mu_kinetic = 0.5;
         bad.weakening_velocity = 1.0;
         bad.tolerance = 1e-9;
-        (void)asperity::DynamicFriction::burridge_knopoff(bad);
+        (void)asperity::Friction::burridge_knopoff(bad);
+    });
+    // The homogenised law: one sample (mu 0.5, no adhesion) with a stick
+    // stiffness of 1e6 N/m; a 1 mm slip at 1 N on 1 mm^2 slides at mu N.
+    AsperityHomogenisedSample sample{};
+    sample.pressure = 1e6;
+    sample.cof = 0.5;
+    sample.contact_fraction = 0.01;
+    sample.shares.chemical = 1.0;
+    const asperity::HomogenisedFriction table(
+        asperity::span<const AsperityHomogenisedSample>{&sample, 1});
+    const asperity::Friction homog = asperity::Friction::from_homogenised(table, 1e6);
+    std::vector<double> h_state(homog.state_size(), 0.0);
+    AsperityFrictionIncrement h_inc{};
+    h_inc.normal_force = 1.0;
+    h_inc.area = 1e-6;
+    h_inc.slip[0] = 1e-3;
+    const AsperityFrictionResponse h = homog.step_in_place(h_inc, h_state);
+    check("homogenised_state_size", static_cast<double>(h_state.size()));
+    check("homogenised_force", h.force[0]);
+    check("homogenised_regime", h.regime);
+    check("homogenised_dissipated", h.dissipated);
+    // The homogenised law needs the nominal area of the point.
+    expect_error("homogenised_no_area", "`area`", [&] {
+        h_inc.area = 0.0;
+        (void)homog.step_in_place(h_inc, h_state);
     });
 }
 

@@ -1,9 +1,10 @@
 // The homogenised friction law in an FE-like increment loop, through the C++
 // bindings: a host code with 16 contact points under normal pressures of
 // 20 .. 120 MPa prescribes their slip each increment (forward along a
-// direction at 30 degrees, then back), calls HomogenisedFriction::step_block
-// once per increment with the per-point states stepped in place, and reads
-// the tangential forces and the dissipated energy.
+// direction at 30 degrees, then back), calls Friction::step_block_in_place
+// once per increment (the homogenised law as an asperity::Friction) with the
+// per-point states stepped in place, and reads the tangential forces and the
+// dissipated energy.
 //
 // Every point sticks (elastic, stiffness k) until its force reaches the slip
 // limit mu(p)(N + A), then slides; on reversal it unloads elastically through
@@ -58,19 +59,24 @@ int main()
             sample(70.0, 0.98, 6.0, 0.07, 0.92, 0.065, 0.01),
             sample(120.0, 0.92, 10.0, 0.12, 0.90, 0.07, 0.02),
         };
-        const asperity::HomogenisedFriction law(samples);
-        check("state_size_matches",
-              asperity::HomogenisedFriction::state_size() == sizeof(AsperityFrictionPointState));
+        const asperity::HomogenisedFriction table(samples);
+        // The friction law: the table with the stick stiffness k.
+        const asperity::Friction law = asperity::Friction::from_homogenised(table, k);
+        asperity::FrictionWork work = law.work();
+        const std::size_t m = law.state_size();
+        // The state: dissipation, slip path, stick force (x, y), plastic slip
+        // path, dissipation by mechanism (4).
+        check("state_size_matches", m == ASPERITY_HOMOGENISED_STATE_MECHANISMS + 4);
         check("points", static_cast<double>(points));
 
         // The host's arrays: normal forces, areas, interleaved slips and
-        // forces, one state per point (all-zero: fresh).
+        // forces, one state of m doubles per point (all-zero: fresh).
         std::vector<double> normal(points);
         std::vector<double> areas(points, area);
         std::vector<double> slip(2 * points);
         std::vector<double> force(2 * points);
         std::vector<double> dissipated(points);
-        std::vector<AsperityFrictionPointState> states(points);
+        std::vector<double> states(points * m);
         for (std::size_t i = 0; i < points; ++i) {
             const double p = 20e6 + 100e6 * static_cast<double>(i) / (points - 1);
             normal[i] = p * area;
@@ -89,11 +95,11 @@ int main()
             }
             // Once, the scalar step on copies of the states must give the
             // block's forces bit for bit.
-            std::vector<AsperityFrictionPointState> copies;
+            std::vector<double> copies;
             if (n == forward / 2) {
                 copies = states;
             }
-            law.step_block(normal, areas, slip, dt, k, states, states, force, dissipated);
+            law.step_block_in_place(normal, areas, slip, dt, states, force, dissipated, &work);
             if (n == forward / 2) {
                 for (std::size_t i = 0; i < points; ++i) {
                     AsperityFrictionIncrement inc{};
@@ -102,8 +108,8 @@ int main()
                     inc.slip[0] = slip[2 * i];
                     inc.slip[1] = slip[2 * i + 1];
                     inc.dt = dt;
-                    inc.stick_stiffness = k;
-                    const AsperityFrictionResponse r = law.step(inc, copies[i]);
+                    const AsperityFrictionResponse r =
+                        law.step_in_place(inc, {&copies[i * m], m}, &work);
                     scalar_equals_block &= r.force[0] == force[2 * i] &&
                                            r.force[1] == force[2 * i + 1] &&
                                            r.dissipated == dissipated[i];
@@ -134,35 +140,40 @@ int main()
         check("scalar_equals_block", scalar_equals_block);
         check("total_dissipation", total_dissipation);
         check("min_increment_dissipation", min_increment_dissipation);
+        // The states' ledgers: the dissipation by mechanism, and the slip
+        // path, which every increment of every point adds |slip| to.
         double ledger = 0.0;
-        double steps = 0.0;
-        for (const AsperityFrictionPointState& s : states) {
-            ledger += s.dissipation.chemical + s.dissipation.van_der_waals +
-                      s.dissipation.elastic + s.dissipation.plastic;
-            steps += static_cast<double>(s.steps);
+        double slip_path = 0.0;
+        for (std::size_t i = 0; i < points; ++i) {
+            const double* s = &states[i * m];
+            for (std::size_t j = 0; j < 4; ++j) {
+                ledger += s[ASPERITY_HOMOGENISED_STATE_MECHANISMS + j];
+            }
+            slip_path += s[ASPERITY_FRICTION_STATE_SLIP_PATH];
         }
         check("ledger_total", ledger);
-        check("steps_counted", steps);
+        check("slip_path_total", slip_path);
         check("slip_increment", ds);
         check("stick_stiffness", k);
         check("forward_increments", forward);
 
         // The law saved and reloaded steps identically.
-        const asperity::HomogenisedFriction reloaded =
-            asperity::HomogenisedFriction::from_json(law.to_json());
+        const asperity::Friction reloaded = asperity::Friction::from_homogenised(
+            asperity::HomogenisedFriction::from_json(table.to_json()), k);
         AsperityFrictionIncrement inc{};
         inc.normal_force = normal[5];
         inc.area = area;
         inc.slip[0] = 3e-6;
-        inc.stick_stiffness = k;
-        const AsperityFrictionResponse r1 = law.step(inc);
-        const AsperityFrictionResponse r2 = reloaded.step(inc);
+        const std::vector<double> fresh(m);
+        std::vector<double> scratch(m);
+        const AsperityFrictionResponse r1 = law.step(inc, fresh, scratch);
+        const AsperityFrictionResponse r2 = reloaded.step(inc, fresh, scratch);
         check("json_roundtrip_identical", r1.force[0] == r2.force[0] && r1.cof == r2.cof);
 
         // A bad value in the host's arrays: the library names the element.
         areas[3] = -1.0;
         try {
-            law.step_block(normal, areas, slip, dt, k, states, states, force);
+            law.step_block_in_place(normal, areas, slip, dt, states, force);
             check("bad_area_threw", 0);
         } catch (const asperity::Error& e) {
             const std::string message = e.what();
@@ -174,7 +185,7 @@ int main()
         // Arrays of the wrong length: the C++ layer names the argument.
         areas.resize(points - 1);
         try {
-            law.step_block(normal, areas, slip, dt, k, states, states, force);
+            law.step_block_in_place(normal, areas, slip, dt, states, force);
             check("short_areas_threw", 0);
         } catch (const asperity::Error& e) {
             check("short_areas_threw", 1);

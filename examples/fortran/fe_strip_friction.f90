@@ -9,14 +9,16 @@
 !>
 !>   a_i = (k_s (x_base - x_i) + c (v - u_i) + F_i) / m    (forces at t_n)
 !>   u_i += dt a_i;  dx_i = dt u_i;  x_i += dx_i            (symplectic Euler)
-!>   asperity_homogenised_friction_step_block(dx)  ->  F_i at t_{n+1}
+!>   asperity_friction_step_block_in_place(dx)  ->  F_i at t_{n+1}
 !>
-!> with the per-point states stepped in place (`states=`). The slip
-!> increments and forces are Fortran arrays (2, n): column i is point i's
-!> (x, y), the C ABI's interleaved layout. The law is built from five
-!> copper-like samples (mu 1.10 .. 0.90 over 10 .. 200 MPa). The strip
-!> sticks while the springs load, then slides; in steady sliding the total
-!> friction force is sum mu(p_i)(N_i + A_i).
+!> with the per-point states, the columns of `state(m, np)` (m =
+!> asperity_friction_state_size), stepped in place. The slip increments and
+!> forces are Fortran arrays (2, n): column i is point i's (x, y), the C
+!> ABI's interleaved layout. The friction law is the homogenised law of a
+!> table built from five copper-like samples (mu 1.10 .. 0.90 over
+!> 10 .. 200 MPa) with a stick stiffness, one `asperity_friction` handle.
+!> The strip sticks while the springs load, then slides; in steady sliding
+!> the total friction force is sum mu(p_i)(N_i + A_i).
 !>
 !> Prints the friction force history every 1000 increments and lines
 !> "CHECK <name> <value>" read by tests/fortran_bindings.rs.
@@ -31,15 +33,17 @@ program fe_strip_friction
   real(c_double), parameter :: speed = 0.01_c_double          ! base speed (m/s)
   real(c_double), parameter :: dt = 1e-6_c_double             ! s
   type(asperity_homogenised_sample) :: samples(5)
-  type(asperity_homogenised_friction) :: law, copy
-  type(asperity_friction_point_state) :: state(np)
+  type(asperity_homogenised_friction) :: table, copy
+  type(asperity_friction) :: law, copy_law
+  type(asperity_friction_work) :: work
+  real(c_double), allocatable :: state(:, :), fresh(:), scratch(:)
   type(asperity_friction_increment) :: inc
   type(asperity_friction_response) :: r, r1, r2
   real(c_double) :: normal(np), area(np), slip(2, np), force(2, np), diss(np)
   real(c_double) :: x(np), u(np), limit(np)
   real(c_double) :: expected, steady, d_steps, d_states, d_limit_path, min_diss, stick_balance
-  real(c_double) :: c, base_old, total, d, sum_spring, p
-  integer :: first_slip, all_sliding_from, sliding, i, n
+  real(c_double) :: c, base_old, total, d, sum_spring, p, path1
+  integer :: first_slip, all_sliding_from, sliding, i, n, m, mech, plastic_path
   logical :: stick_below_limit
   integer(c_int32_t) :: st
   character(len=:), allocatable :: json, msg
@@ -54,7 +58,19 @@ program fe_strip_friction
       0.910_c_double, 0.062_c_double, 0.018_c_double)
   samples(5) = sample(200.0_c_double, 0.90_c_double, 18.0_c_double, 0.200_c_double, &
       0.900_c_double, 0.060_c_double, 0.025_c_double)
-  call asperity_homogenised_friction_new(samples, law)
+  call asperity_homogenised_friction_new(samples, table)
+  ! The friction law: the table with the stick stiffness.
+  call asperity_friction_from_homogenised(table, k_stick, law)
+  call asperity_friction_work_new(law, work)
+  call asperity_friction_state_size(law, m)
+  ! The state: dissipation, slip path, stick force (x, y), plastic slip path,
+  ! dissipation by mechanism (4); C's indices, from 0.
+  mech = ASPERITY_HOMOGENISED_STATE_MECHANISMS + 1
+  plastic_path = ASPERITY_HOMOGENISED_STATE_PLASTIC_SLIP_PATH + 1
+  call check('state_size_matches', flag(m == ASPERITY_HOMOGENISED_STATE_MECHANISMS + 4))
+  allocate (state(m, np), fresh(m), scratch(m))
+  state = 0 ! all-zero: fresh
+  fresh = 0
 
   ! The strip, and each point's slip limit from a scalar step (a large slip
   ! from a fresh state slides: |F| = mu (N + A)).
@@ -64,8 +80,8 @@ program fe_strip_friction
     normal(i) = p*area_per_point
     area(i) = area_per_point
     inc = asperity_friction_increment(normal_force=normal(i), area=area_per_point, &
-        slip=[1.0_c_double, 0.0_c_double], dt=dt, stick_stiffness=k_stick)
-    call asperity_homogenised_friction_step(law, inc, r)
+        slip=[1.0_c_double, 0.0_c_double], dt=dt)
+    call asperity_friction_step(law, inc, fresh, scratch, r, work)
     limit(i) = r%cof*(r%normal_force + r%adhesion)
     expected = expected + limit(i)
   end do
@@ -84,6 +100,7 @@ program fe_strip_friction
   first_slip = -1
   all_sliding_from = -1
   stick_below_limit = .true.
+  path1 = 0
   do n = 1, steps
     base_old = speed*dt*(n - 1)
     do i = 1, np
@@ -92,8 +109,9 @@ program fe_strip_friction
       slip(2, i) = 0
       x(i) = x(i) + slip(1, i)
     end do
-    call asperity_homogenised_friction_step_block(law, normal, area, slip, dt, k_stick, force, &
-        dissipation=diss, states=state)
+    path1 = path1 + abs(slip(1, 1))
+    call asperity_friction_step_block_in_place(law, normal, slip, dt, state, force, areas=area, &
+        dissipation=diss, work=work)
     total = sum(force(1, :))
     d = sum(diss)
     min_diss = min(min_diss, minval(diss))
@@ -118,8 +136,8 @@ program fe_strip_friction
   d_states = 0
   d_limit_path = 0
   do i = 1, np
-    d_states = d_states + ledger(state(i)%dissipation)
-    d_limit_path = d_limit_path + limit(i)*state(i)%slip_path
+    d_states = d_states + sum(state(mech:mech + 3, i))
+    d_limit_path = d_limit_path + limit(i)*state(plastic_path, i)
   end do
 
   call check('points', real(np, c_double))
@@ -134,43 +152,51 @@ program fe_strip_friction
   call check('min_increment_dissipation', min_diss)
   call check('dissipation_states_rel_diff', rel_diff(d_states, d_steps))
   call check('dissipation_limit_path_rel_diff', rel_diff(d_limit_path, d_steps))
-  call check('chemical_share', state(np/2 + 1)%dissipation%chemical/ &
-      ledger(state(np/2 + 1)%dissipation))
-  call check('steps_counted', real(state(1)%steps, c_double))
+  call check('chemical_share', state(mech, np/2 + 1)/sum(state(mech:mech + 3, np/2 + 1)))
+  ! Every increment is booked: point 1's slip path is the sum of |dx|.
+  call check('slip_path_booked_rel_diff', &
+      rel_diff(state(ASPERITY_FRICTION_STATE_SLIP_PATH + 1, 1), path1))
 
-  ! JSON round trip: the reloaded law steps bit-identically.
-  call asperity_homogenised_friction_to_json(law, json)
+  ! JSON round trip: the law of the reloaded table steps bit-identically.
+  call asperity_homogenised_friction_to_json(table, json)
   call asperity_homogenised_friction_from_json(json, copy)
+  call asperity_friction_from_homogenised(copy, k_stick, copy_law)
   inc = asperity_friction_increment(normal_force=77.7_c_double, area=area_per_point, &
-      slip=[3e-7_c_double, -1e-7_c_double], dt=dt, stick_stiffness=k_stick)
-  call asperity_homogenised_friction_step(law, inc, r1, old_state=state(4))
-  call asperity_homogenised_friction_step(copy, inc, r2, old_state=state(4))
+      slip=[3e-7_c_double, -1e-7_c_double], dt=dt)
+  call asperity_friction_step(law, inc, state(:, 4), scratch, r1, work)
+  call asperity_friction_step(copy_law, inc, state(:, 4), scratch, r2, work)
   call check('json_bytes', real(len(json), c_double))
   call check('json_roundtrip_identical', &
       flag(all(transfer(r1, [0_c_int64_t]) == transfer(r2, [0_c_int64_t]))))
+  call copy_law%free()
   call copy%free()
 
   ! Errors: a negative area in the block names the element (0-based, as the
   ! C ABI counts); an empty handle is a NULL pointer.
   area(10) = -1
-  call asperity_homogenised_friction_step_block(law, normal, area, slip, dt, k_stick, force, &
-      dissipation=diss, states=state, status=st)
+  call asperity_friction_step_block_in_place(law, normal, slip, dt, state, force, areas=area, &
+      dissipation=diss, work=work, status=st)
   msg = asperity_last_error_message()
   write (*, '(a)') 'bad area: '//msg
   call check('bad_area_status', real(st, c_double))
   call check('bad_area_names_element', flag(index(msg, 'element 9') > 0))
   call check('bad_area_names_area', flag(index(msg, '`area`') > 0))
   area(10) = area_per_point
-  call asperity_homogenised_friction_step_block(copy, normal, area, slip, dt, k_stick, force, &
-      states=state, status=st)
+  call asperity_friction_step_block_in_place(copy_law, normal, slip, dt, state, force, &
+      areas=area, status=st)
   call check('null_handle_status', real(st, c_double))
 
+  call work%free()
   call law%free()
   call asperity_free(law) ! an empty handle is accepted
+  call table%free()
   ! Main-program allocatables outlive END PROGRAM unless released: release
   ! them, so leak checkers (scripts/memcheck.sh) see a clean exit.
   if (allocated(json)) deallocate (json)
   if (allocated(msg)) deallocate (msg)
+  if (allocated(state)) deallocate (state)
+  if (allocated(fresh)) deallocate (fresh)
+  if (allocated(scratch)) deallocate (scratch)
 
 contains
 
@@ -183,11 +209,6 @@ contains
     s%contact_fraction = fraction
     s%shares = asperity_dissipation(chemical, vdw, elastic, 1 - chemical - vdw - elastic)
   end function sample
-
-  pure real(c_double) function ledger(a)
-    type(asperity_dissipation), intent(in) :: a
-    ledger = a%chemical + a%van_der_waals + a%elastic + a%plastic
-  end function ledger
 
   pure real(c_double) function rel_diff(got, want)
     real(c_double), intent(in) :: got, want

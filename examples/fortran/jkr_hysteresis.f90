@@ -9,8 +9,9 @@
 !> critical approach delta_c and then snaps off (jump-out).
 !>
 !> Numbers: the worked example of REFERENCE.md section 8, R = 1 um,
-!> w = 0.05 J/m^2, E* = 1 GPa. The law's cached constants are read through
-!> the `asperity_jkr` mirror of the law's parameter union.
+!> w = 0.05 J/m^2, E* = 1 GPa. The law's inputs are read back through the
+!> `asperity_jkr_params` mirror of the law's parameter union, its critical
+!> approach through `asperity_normal_reach`.
 !>
 !> Lines "CHECK <name> <value>" and the rows starting with "approach" or
 !> "retract" are read by tests/fortran_bindings.rs.
@@ -22,9 +23,9 @@ program jkr_hysteresis
   real(c_double), parameter :: radius = 1e-6_c_double, work = 0.05_c_double, e_star = 1e9_c_double
   integer, parameter :: n_approach_lo = -20, n_approach_hi = 40, n_retract = 62
   real(c_double) :: piwr, delta_c, abs_dc, a_jump, h, delta, p_load, p_disp, min_force
-  real(c_double) :: jump_in_delta, last_contact, first_free
+  real(c_double) :: jump_in_delta, last_contact, first_free, reach
   type(asperity_normal_law) :: law
-  type(asperity_jkr) :: jkr
+  type(asperity_jkr_params) :: jkr
   type(asperity_contact_state) :: old_state, new_state, saved, fresh
   type(asperity_normal_response) :: r, r2
   logical :: old_unchanged, reeval_identical
@@ -47,13 +48,14 @@ program jkr_hysteresis
   write (*, '(a, 3es10.2, a)') 'JKR sphere: R, w, E* =', radius, work, e_star, &
       ', library '//asperity_version()
 
-  ! The law is a plain value: its parameters are the JKR struct of the C union.
+  ! The law is a plain value: its inputs are the JKR member of the C union.
   jkr = transfer(law%params, jkr)
   call check('law_kind_is_jkr', flag(law%kind == ASPERITY_LAW_KIND_JKR))
   call check('jkr_params_radius', jkr%radius)
+  call check('jkr_params_e_star', jkr%e_star)
   call check('jkr_params_work_of_adhesion', jkr%work_of_adhesion)
-  call check('jkr_params_critical_delta', jkr%critical_delta)
-  call check('jkr_params_force_scale', jkr%force_scale)
+  call asperity_normal_reach(law, ASPERITY_CONTROL_DISPLACEMENT, 0.5_c_double, reach)
+  call check('jkr_reach_displacement', reach)
 
   call asperity_pull_off_force(law, ASPERITY_CONTROL_LOAD, p_load)
   call asperity_pull_off_force(law, ASPERITY_CONTROL_DISPLACEMENT, p_disp)

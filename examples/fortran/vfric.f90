@@ -8,14 +8,17 @@
 !> rest. Per contact point k on secondary node `jConSecid(k)` it passes the
 !> normal force `fNormal(k)`, the node's area `areaSec(node)` and the slip
 !> increment `dSlipFric(1:nFricDir, k)` (local basis: t1 along the slip) to
-!> one `asperity_homogenised_friction_step_block` call for the whole block.
-!> The law's history (`asperity_friction_point_state`, 8 doubles) lives in
-!> `statev(1:8, node)`, so nStateVar >= 8. Abaqus wants `fTangential(1, k)`
-!> between minus the stick force `fStickForce(k)` and zero; the law's force
-!> is clamped to that range (its own history is kept).
+!> one `asperity_friction_step_block_in_place` call for the whole block. The
+!> law's history (its friction state, `asperity_friction_state_size` = 9
+!> doubles: dissipation, slip path, stick force x and y, plastic slip path,
+!> dissipation by mechanism) lives in `statev(1:9, node)`, so nStateVar >= 9.
+!> Abaqus wants `fTangential(1, k)` between minus the stick force
+!> `fStickForce(k)` and zero; the law's force is clamped to that range (its
+!> own history is kept).
 !>
 !> The law comes from the properties of *FRICTION, USER (built on the first
-!> call and kept): props(1) = stick stiffness k (N/m); props(2) = number of
+!> call and kept: the homogenised table with its stick stiffness, one
+!> `asperity_friction` handle): props(1) = stick stiffness k (N/m); props(2) = number of
 !> table rows m; then m rows of 7 values: nominal pressure (Pa), coefficient
 !> of friction, adhesion pressure (Pa), contact fraction, and the chemical,
 !> van der Waals and elastic shares of the dissipation (the plastic share is
@@ -40,11 +43,10 @@ module vfric_law
   implicit none
   private
   !> The law, built from props on the first call of vfric.
-  type(asperity_homogenised_friction), save, public :: law
-  !> Stick stiffness (N/m) from props(1).
-  real(c_double), save, public :: stick_stiffness = 0
-  !> Doubles per point state in statev.
-  integer, parameter, public :: state_words = 8
+  type(asperity_friction), save, public :: law
+  !> Doubles per point state in statev (`asperity_friction_state_size` of
+  !> the homogenised law).
+  integer, parameter, public :: state_words = 9
 end module vfric_law
 
 subroutine vfric( &
@@ -76,7 +78,7 @@ subroutine vfric( &
       coordSec(nDir, nSecNod), coordMain(nDir, nMainNod), dirCosSl(nDir, nContact), &
       dircosN(nDir, nContact), props(nProps), areaSec(nSecNod), tempSec(nContact), &
       preDefSec(nContact, nPred), tempMain(numDefTfv), preDefMain(numDefTfv, nPred)
-  type(asperity_friction_point_state) :: states(nContact)
+  real(c_double) :: states(state_words, nContact)
   real(c_double) :: normal(nContact), area(nContact), slip(2, nContact), force(2, nContact)
   integer(c_int32_t) :: status
   integer :: k, node
@@ -94,10 +96,10 @@ subroutine vfric( &
     slip(1, k) = dSlipFric(1, k)
     slip(2, k) = 0
     if (nFricDir == 2) slip(2, k) = dSlipFric(2, k)
-    states(k) = transfer(statev(1:state_words, node), states(k))
+    states(:, k) = statev(1:state_words, node)
   end do
-  call asperity_homogenised_friction_step_block(law, normal, area, slip, dTimCur, &
-      stick_stiffness, force, states=states, status=status)
+  call asperity_friction_step_block_in_place(law, normal, slip, dTimCur, states, force, &
+      areas=area, status=status)
   if (status /= ASPERITY_OK) then
     ! In Abaqus: call XPLB_ABQERR with the message.
     write (*, '(a)') 'vfric: '//asperity_last_error_message()
@@ -108,7 +110,7 @@ subroutine vfric( &
     node = jConSecid(k)
     fTangential(:, k) = force(1:nFricDir, k)
     fTangential(1, k) = min(0.0_c_double, max(fTangential(1, k), -fStickForce(k)))
-    statev(1:state_words, node) = transfer(states(k), statev(1:state_words, node))
+    statev(1:state_words, node) = states(:, k)
   end do
 
 contains
@@ -122,8 +124,8 @@ contains
     integer, intent(in) :: n_props
     real(c_double), intent(in) :: props(n_props)
     type(asperity_homogenised_sample), allocatable :: samples(:)
-    integer :: m, i, j
-    stick_stiffness = props(1)
+    type(asperity_homogenised_friction) :: table
+    integer :: m, i, j, words
     m = nint(props(2))
     if (n_props /= 2 + 7*m) error stop 'vfric: nProps must be 2 + 7 * props(2)'
     allocate (samples(m))
@@ -136,7 +138,13 @@ contains
       samples(i)%shares = asperity_dissipation(props(j + 5), props(j + 6), props(j + 7), &
           1 - props(j + 5) - props(j + 6) - props(j + 7))
     end do
-    call asperity_homogenised_friction_new(samples, law)
+    call asperity_homogenised_friction_new(samples, table)
+    ! The law: the table with the stick stiffness props(1) (the law keeps a
+    ! copy of the table).
+    call asperity_friction_from_homogenised(table, props(1), law)
+    call table%free()
+    call asperity_friction_state_size(law, words)
+    if (words /= state_words) error stop 'vfric: unexpected friction state size'
   end subroutine build_law
 
 end subroutine vfric
@@ -148,7 +156,7 @@ program vfric_driver
   use vfric_law, only: law, state_words
   implicit none
   integer, parameter :: n_contact = 4, n_sec = 6, n_main = 4, n_fac = 4, n_dir = 3, &
-      n_fric_dir = 2, n_state = 8, n_rows = 3, n_props = 2 + 7*n_rows, n_temp = 0, &
+      n_fric_dir = 2, n_state = 9, n_rows = 3, n_props = 2 + 7*n_rows, n_temp = 0, &
       n_pred = 1, num_def_tfv = 1, increments = 100
   real(c_double), parameter :: ds = 1e-8_c_double, dt = 1e-6_c_double
   real(c_double) :: props(n_props), f_tangential(n_fric_dir, n_contact)
@@ -161,7 +169,7 @@ program vfric_driver
   integer :: j_sec_uid(n_sec), j_main_uid(n_main), j_con_sec(n_contact)
   integer :: j_con_main(n_fac, n_contact)
   character(len=80) :: surf_int, surf_sec, surf_main
-  type(asperity_friction_point_state) :: state
+  real(c_double) :: state(state_words)
   real(c_double) :: ledger
   character(len=200) :: line
   integer :: inc, k
@@ -215,16 +223,18 @@ program vfric_driver
     f_tang_prev(1:n_fric_dir, :) = f_tangential
   end do
 
-  ! The histories in statev: dissipation, plastic slip path, steps.
+  ! The histories in statev (C's indices, from 0): dissipation by mechanism,
+  ! plastic slip path, slip path, stick force.
   do k = 1, n_contact
-    state = transfer(statev(1:state_words, j_con_sec(k)), state)
-    ledger = state%dissipation%chemical + state%dissipation%van_der_waals + &
-        state%dissipation%elastic + state%dissipation%plastic
+    state = statev(1:state_words, j_con_sec(k))
+    ledger = sum(state(ASPERITY_HOMOGENISED_STATE_MECHANISMS + 1: &
+        ASPERITY_HOMOGENISED_STATE_MECHANISMS + 4))
     call check('dissipation_'//digit(k), ledger)
-    call check('chemical_share_'//digit(k), state%dissipation%chemical/ledger)
-    call check('slip_path_'//digit(k), state%slip_path)
-    call check('steps_'//digit(k), real(state%steps, c_double))
-    call check('state_force_'//digit(k), state%force(1))
+    call check('chemical_share_'//digit(k), state(ASPERITY_HOMOGENISED_STATE_MECHANISMS + 1)/ &
+        ledger)
+    call check('slip_path_'//digit(k), state(ASPERITY_HOMOGENISED_STATE_PLASTIC_SLIP_PATH + 1))
+    call check('total_slip_path_'//digit(k), state(ASPERITY_FRICTION_STATE_SLIP_PATH + 1))
+    call check('state_force_'//digit(k), state(ASPERITY_HOMOGENISED_STATE_FORCE + 1))
   end do
   call check('untouched_nodes_zero', merge(1.0_c_double, 0.0_c_double, &
       maxval(abs(statev(:, [1, n_sec]))) <= 0))

@@ -5,16 +5,17 @@
 //! of range, sizes 0 and huge where no caller buffer depends on them) and
 //! NULL pointers, on handles the sequence created (laws, tables, homogenised
 //! friction, slider geometries, empirical GW surfaces, sliders from scene
-//! JSON and from structs and their work buffers, dynamic friction models),
-//! freed at the end.
+//! JSON and from structs, the friction handles of sliders and the dynamic
+//! friction models and their work buffers), freed at the end.
 //!
 //! Findings: any panic. The C guard catches a library panic and returns
 //! `ASPERITY_ERR_INTERNAL`; the harness treats that status as a finding
 //! (it panics with the message), as it does an error status without a
 //! message, an unknown status code, and a constructor that fails without
-//! writing NULL to its out-handle. For `asperity_dynamic_friction_step`
-//! also: a failure that wrote `new_state` or `*out` (documented untouched),
-//! and `ASPERITY_OK` with a negative `dissipated`.
+//! writing NULL to its out-handle. For `asperity_friction_step` and
+//! `asperity_friction_step_in_place` of the dynamic models also: a failure
+//! that wrote the new state or `*out` (documented untouched), and
+//! `ASPERITY_OK` with a negative `dissipated`.
 //!
 //! What the harness does not feed (caller undefined behaviour, outside the
 //! contract): a pointer with a length longer than its buffer (every
@@ -23,8 +24,7 @@
 //! a partially overlapping in/out pair where the library cannot detect it.
 //! Inconsistent *counts* that the library can check (a PSD length other
 //! than n/2+1, a rod-heights buffer shorter than the level, a work buffer of
-//! another slider, a dynamic new state partially overlapping the old one)
-//! are fed.
+//! another law, a new state partially overlapping the old one) are fed.
 //!
 //! Cost bounds (so an input runs in milliseconds): the Lennard-Jones entry
 //! points get grids of at most 64 cells, or invalid ones (0 = the converged
@@ -90,15 +90,14 @@ mod tabulated;
 use arbitrary::{Arbitrary, Unstructured};
 use asperity::contact::ContactState;
 use asperity::ffi::contact::AsperityNormalLaw;
-use asperity::ffi::dynamic::asperity_dynamic_friction_free;
 use asperity::ffi::friction::{asperity_slider_geometry_free, AsperitySliderGeometry};
-use asperity::ffi::homogenised::{asperity_homogenised_friction_free, AsperityHomogenisedFriction};
-use asperity::ffi::slider::{
-    asperity_slider_free, asperity_slider_work_free, AsperitySlider, AsperitySliderWork,
+use asperity::ffi::friction_law::{
+    asperity_friction_free, asperity_friction_work_free, AsperityFriction, AsperityFrictionWork,
 };
+use asperity::ffi::homogenised::{asperity_homogenised_friction_free, AsperityHomogenisedFriction};
+use asperity::ffi::slider::{asperity_slider_free, AsperitySlider};
 use asperity::ffi::statistics::{asperity_gw_empirical_free, AsperityGwEmpirical};
 use asperity::ffi::tabulated::{asperity_table_free, AsperityTable};
-use asperity::friction::FrictionPointState;
 use common::*;
 use contact::OldState;
 use dynamic::{DynIncSpec, Dynamic, Integrated, LugreSpec, MaxwellSpec, Placement, PtSpec};
@@ -576,6 +575,13 @@ pub enum Op {
         rel_force: F,
         null: bool,
     },
+    // A law from its inputs (added last: the existing corpus keeps its
+    // meaning).
+    LawFromParams {
+        kind: Sel,
+        raw: [F; 16],
+        nulls: Nulls,
+    },
 }
 
 /// The handles and carried states of one input; all freed on drop.
@@ -587,9 +593,12 @@ struct Ctx {
     gws: Vec<*mut AsperityGwEmpirical>,
     geometries: Vec<*mut AsperitySliderGeometry>,
     frictions: Vec<*mut AsperityHomogenisedFriction>,
-    point: FrictionPointState,
+    /// The carried state of a homogenised law (9 doubles, or empty).
+    point: Vec<f64>,
     sliders: Vec<*mut AsperitySlider>,
-    works: Vec<*mut AsperitySliderWork>,
+    /// The friction law of each slider (`slider_laws[i]` of `sliders[i]`).
+    slider_laws: Vec<*mut AsperityFriction>,
+    works: Vec<*mut AsperityFrictionWork>,
     slider_state: Vec<f64>,
     dynamics: Vec<Dynamic>,
     dynamic_state: Vec<f64>,
@@ -611,11 +620,14 @@ impl Drop for Ctx {
                 .for_each(|p| asperity_homogenised_friction_free(p));
             self.works
                 .drain(..)
-                .for_each(|p| asperity_slider_work_free(p));
+                .for_each(|p| asperity_friction_work_free(p));
+            self.slider_laws
+                .drain(..)
+                .for_each(|p| asperity_friction_free(p));
             self.sliders.drain(..).for_each(|p| asperity_slider_free(p));
             self.dynamics
                 .drain(..)
-                .for_each(|d| asperity_dynamic_friction_free(d.model));
+                .for_each(|d| asperity_friction_free(d.model));
         }
     }
 }
@@ -669,7 +681,8 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
         | Op::PullOff { .. }
         | Op::LengthScale { .. }
         | Op::Reach { .. }
-        | Op::Energy { .. } => contact::call(ctx, op),
+        | Op::Energy { .. }
+        | Op::LawFromParams { .. } => contact::call(ctx, op),
         Op::TableMd { .. }
         | Op::TableLj { .. }
         | Op::TableEval { .. }

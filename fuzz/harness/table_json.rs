@@ -10,9 +10,7 @@
 
 use asperity::contact::curve::EquilibriumCurve;
 use asperity::contact::TabulatedLaw;
-use asperity::friction::{
-    FrictionIncrement, FrictionPointState, HomogenisedFriction, SliderGeometry,
-};
+use asperity::friction::{FrictionIncrement, FrictionLaw, HomogenisedFriction, SliderGeometry};
 use asperity::{ContactState, Control, NormalContact};
 
 const SPECIAL: [f64; 8] = [
@@ -67,7 +65,12 @@ fn probe_friction(f: &HomogenisedFriction) {
             2.0 * b.pressure,
         ]);
     }
-    let mut state = FrictionPointState::default();
+    let Ok(law) = f.clone().with_stick_stiffness(1e6) else {
+        panic!("a stick stiffness of 1e6 N/m refused");
+    };
+    let mut work = law.work();
+    let mut state = vec![0.0; law.state_len()];
+    let mut new = state.clone();
     for &p in &ps {
         let _ = f.sample_at(p);
         let _ = f.cof_slope(p);
@@ -77,11 +80,13 @@ fn probe_friction(f: &HomogenisedFriction) {
                 area: 1.0,
                 slip: [slip, -0.5 * slip],
                 dt: 1e-3,
-                stick_stiffness: 1e6,
+                tangents: 3,
+                ..Default::default()
             };
-            if let Ok((s, _)) = f.step_value(&state, &inc) {
-                state = s;
+            if law.step(&state, &mut new, &inc, &mut work).is_ok() {
+                state.copy_from_slice(&new);
             }
+            let _ = law.step_in_place(&mut state.clone(), &inc, &mut work);
         }
     }
     let _ = f.to_json();

@@ -1,11 +1,16 @@
 //! Batch evaluation: one law, many contacts, plain arrays.
 //!
-//! [`eval_batch`] is the safe entry point for Rust callers; the C ABI's
-//! `asperity_normal_eval_batch` passes the caller's arrays straight through as
-//! a [`RawBatch`], so a host code's own arrays are used without copying and
-//! input and output arrays may be the same memory. Laws with a vectorised
-//! kernel override [`NormalContact::eval_batch_raw`]; every other law runs the
-//! element loop of [`eval_elementwise`]. Batch and scalar evaluation agree to
+//! [`eval_batch`] is the entry point for Rust callers: slices, checked for
+//! length, which cannot overlap. The C ABI's `asperity_normal_eval_batch` and
+//! `asperity_table_eval_batch` (`src/ffi/`) pass the caller's arrays straight
+//! through as raw pointers, so a host code's own arrays are used without
+//! copying and input and output arrays may be the same memory. That raw form
+//! (`RawBatch`) and the per-law kernel hook (`NormalContact::eval_batch_raw`,
+//! hidden) are private to the crate: each element is read completely before
+//! it is written, which is what makes the aliasing safe, and only the crate's
+//! own kernels and the C boundary rely on it. Laws with a vectorised kernel
+//! (JKR, and the pointwise laws Hertz, DMT and flat punch) override the hook;
+//! every other law runs the element loop. Batch and scalar evaluation agree to
 //! rounding, and a batch is deterministic: an element's result does not depend
 //! on its position in the arrays or on the other elements.
 //!
@@ -44,27 +49,39 @@ impl core::fmt::Display for BatchError {
 
 impl std::error::Error for BatchError {}
 
-/// The arrays of a batch, as raw pointers so that inputs and outputs may alias
-/// element by element (each element is read completely before it is written).
-///
-/// `delta` and `force` must be valid for `n` elements; the others are either
-/// NULL (fresh states / output not wanted) or valid for `n` elements.
-#[derive(Debug, Clone, Copy)]
-pub struct RawBatch {
-    /// Number of contacts.
-    pub n: usize,
-    /// Overlaps δ (m).
-    pub delta: *const f64,
-    /// Histories before the step, or NULL for fresh contacts.
-    pub old_state: *const ContactState,
-    /// Histories after the step, or NULL.
-    pub new_state: *mut ContactState,
-    /// Forces (N).
-    pub force: *mut f64,
-    /// Contact radii (m), or NULL.
-    pub contact_radius: *mut f64,
-    /// Tangent stiffnesses dP/dδ (N/m), or NULL.
-    pub stiffness: *mut f64,
+pub(crate) use raw::RawBatch;
+
+/// The raw form lives in a private module: it is `pub` only so that the hidden
+/// hook of the public trait [`NormalContact`] may name it, and nothing outside
+/// the crate can name, build or receive one (so no caller outside the crate
+/// can call or override the hook).
+mod raw {
+    use crate::contact::ContactState;
+
+    /// The arrays of a batch, as raw pointers so that inputs and outputs may
+    /// alias element by element (each element is read completely before it is
+    /// written).
+    ///
+    /// `delta` and `force` must be valid for `n` elements; the others are
+    /// either NULL (fresh states / output not wanted) or valid for `n`
+    /// elements.
+    #[derive(Debug, Clone, Copy)]
+    pub struct RawBatch {
+        /// Number of contacts.
+        pub n: usize,
+        /// Overlaps δ (m).
+        pub delta: *const f64,
+        /// Histories before the step, or NULL for fresh contacts.
+        pub old_state: *const ContactState,
+        /// Histories after the step, or NULL.
+        pub new_state: *mut ContactState,
+        /// Forces (N).
+        pub force: *mut f64,
+        /// Contact radii (m), or NULL.
+        pub contact_radius: *mut f64,
+        /// Tangent stiffnesses dP/dδ (N/m), or NULL.
+        pub stiffness: *mut f64,
+    }
 }
 
 /// The element loop every law can use: [`NormalContact::eval`] per element,
@@ -73,7 +90,7 @@ pub struct RawBatch {
 /// # Safety
 /// The pointers of `b` must satisfy the contract of [`RawBatch`].
 #[inline]
-pub unsafe fn eval_elementwise<L: NormalContact + ?Sized>(
+pub(crate) unsafe fn eval_elementwise<L: NormalContact + ?Sized>(
     law: &L,
     b: &RawBatch,
 ) -> core::result::Result<(), BatchError> {
@@ -144,7 +161,11 @@ fn check_len(name: &'static str, len: usize, n: usize) -> Result<()> {
 /// Evaluate `law` for every overlap of `delta` (m), from the histories `old`
 /// (or fresh ones) into `new` (if given), writing forces (N) and, if given,
 /// contact radii (m) and stiffnesses (N/m). Every slice given must have the
-/// length of `delta`.
+/// length of `delta` (else [`Error::InvalidArgument`] naming the slice, at
+/// index 0, nothing written). Runs the law's own batch kernel where it has
+/// one (the same code as the C ABI's batch call), element `i` equal to
+/// `law.eval(delta[i], old[i])` to rounding; on an error at element `i` the
+/// elements before `i` are written and the rest untouched.
 pub fn eval_batch<L: NormalContact + ?Sized>(
     law: &L,
     delta: &[f64],

@@ -77,14 +77,15 @@ use super::{check_delta, check_force, ContactState, Control, NormalContact, Norm
 use crate::error::{check, Error, Result};
 use core::f64::consts::PI;
 
-/// `Derjaguin::surface_law` value of the Lennard-Jones 3-9 law (the C ABI's
-/// `ASPERITY_SURFACE_LAW_LENNARD_JONES`).
-const LENNARD_JONES: i32 = 1;
-/// `Derjaguin::surface_law` value of the Dugdale step (`ASPERITY_SURFACE_LAW_DUGDALE`).
-const DUGDALE: i32 = 2;
-/// `Derjaguin::surface_law` value of the exponential law
+/// `DerjaguinParams::surface_law` value of the Lennard-Jones 3-9 law (the C
+/// ABI's `ASPERITY_SURFACE_LAW_LENNARD_JONES`).
+pub(crate) const LENNARD_JONES: i32 = 1;
+/// `DerjaguinParams::surface_law` value of the Dugdale step
+/// (`ASPERITY_SURFACE_LAW_DUGDALE`).
+pub(crate) const DUGDALE: i32 = 2;
+/// `DerjaguinParams::surface_law` value of the exponential law
 /// (`ASPERITY_SURFACE_LAW_EXPONENTIAL`).
-const EXPONENTIAL: i32 = 3;
+pub(crate) const EXPONENTIAL: i32 = 3;
 
 /// The surface-force law between two flats: pressure p(z) (Pa) at the gap z
 /// (m), attraction positive, with energy per unit area
@@ -335,27 +336,61 @@ fn finite_gap(v: f64, gap: f64) -> Result<f64> {
     }
 }
 
-/// Rigid sphere with a surface-force law.
+/// Inputs of a rigid sphere with a surface-force law, as
+/// [`Derjaguin::from_params`] and C's `asperity_law_from_params` take them.
 #[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Derjaguin {
-    /// Sphere radius R (m).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DerjaguinParams {
+    /// Sphere radius R (m, > 0).
     pub radius: f64,
-    /// Work of adhesion w (J/m²).
+    /// Work of adhesion w (J/m², > 0).
     pub work_of_adhesion: f64,
-    /// The law's length (m): z₀, h₀ = w/σ₀ or ℓ.
-    pub range: f64,
-    /// Surface law selector (`ASPERITY_SURFACE_LAW_*`).
+    /// The surface law's second parameter: the equilibrium separation z₀ (m)
+    /// for Lennard-Jones, the cohesive stress σ₀ (Pa) for Dugdale, the decay
+    /// length ℓ (m) for the exponential law (> 0).
+    pub parameter: f64,
+    /// Surface law selector: 1 Lennard-Jones, 2 Dugdale, 3 exponential
+    /// (`ASPERITY_SURFACE_LAW_*`).
     pub surface_law: i32,
     /// Reserved, 0.
     pub reserved: i32,
 }
 
+/// Rigid sphere with a surface-force law. Its inputs are
+/// [`DerjaguinParams`]; it caches the law's length (z₀, h₀ = w/σ₀ or ℓ).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Derjaguin {
+    /// R (m).
+    pub(crate) radius: f64,
+    /// w (J/m²).
+    pub(crate) work_of_adhesion: f64,
+    /// z₀ (m), σ₀ (Pa) or ℓ (m).
+    pub(crate) parameter: f64,
+    /// Surface law selector.
+    pub(crate) surface_law: i32,
+    /// 0.
+    pub(crate) reserved: i32,
+    /// Cached length of the law (m): z₀, h₀ = w/σ₀ or ℓ.
+    range: f64,
+}
+
+law_inputs!(
+    Derjaguin,
+    DerjaguinParams {
+        radius,
+        work_of_adhesion,
+        parameter,
+        surface_law,
+        reserved
+    }
+);
+
 impl Derjaguin {
     /// A rigid sphere of radius `radius` R (m, > 0) under the surface law
     /// `law` (every parameter validated, see [`SurfaceLaw::validate`]). The
     /// adhesive force 2πRw must be a finite, nonzero f64 (else the error names
-    /// `radius`). The Dugdale law is stored by its range h₀ = w/σ₀.
+    /// `radius`).
     pub fn new(radius: f64, law: SurfaceLaw) -> Result<Self> {
         let radius = check::positive("radius", radius)?;
         let parts = law.parts()?;
@@ -368,32 +403,75 @@ impl Derjaguin {
                     "such that the adhesive force 2*pi*radius*work_of_adhesion is finite and > 0",
             });
         }
+        let parameter = match law {
+            SurfaceLaw::LennardJones {
+                equilibrium_separation,
+                ..
+            } => equilibrium_separation,
+            SurfaceLaw::Dugdale {
+                cohesive_stress, ..
+            } => cohesive_stress,
+            SurfaceLaw::Exponential { decay_length, .. } => decay_length,
+        };
         Ok(Self {
             radius,
             work_of_adhesion: parts.w,
-            range: parts.range,
+            parameter,
             surface_law: parts.kind,
             reserved: 0,
+            range: parts.range,
+        })
+    }
+
+    /// The sphere of the inputs `p`: `surface_law` is checked first
+    /// ([`Error::UnknownSelector`]), then as by [`Derjaguin::new`]; an error
+    /// about the law's second parameter names `parameter`.
+    pub fn from_params(p: &DerjaguinParams) -> Result<Self> {
+        let (w, x) = (p.work_of_adhesion, p.parameter);
+        let law = match p.surface_law {
+            LENNARD_JONES => SurfaceLaw::LennardJones {
+                work_of_adhesion: w,
+                equilibrium_separation: x,
+            },
+            DUGDALE => SurfaceLaw::Dugdale {
+                work_of_adhesion: w,
+                cohesive_stress: x,
+            },
+            EXPONENTIAL => SurfaceLaw::Exponential {
+                work_of_adhesion: w,
+                decay_length: x,
+            },
+            v => {
+                return Err(Error::UnknownSelector {
+                    name: "surface_law",
+                    value: v as i64,
+                })
+            }
+        };
+        Self::new(p.radius, law).map_err(|e| {
+            let e = e.renamed("equilibrium_separation", "parameter");
+            let e = e.renamed("cohesive_stress", "parameter");
+            e.renamed("decay_length", "parameter")
         })
     }
 
     /// The surface law, or [`Error::UnknownSelector`] on `surface_law` when the
-    /// field holds no law (only possible by writing the field directly). For
-    /// Dugdale σ₀ is recomputed as w/h₀ (equal to the input to rounding).
+    /// selector holds no law (only possible when C wrote the storage of a
+    /// law directly).
     pub fn try_surface_law(&self) -> Result<SurfaceLaw> {
         let w = self.work_of_adhesion;
         match self.surface_law {
             LENNARD_JONES => Ok(SurfaceLaw::LennardJones {
                 work_of_adhesion: w,
-                equilibrium_separation: self.range,
+                equilibrium_separation: self.parameter,
             }),
             DUGDALE => Ok(SurfaceLaw::Dugdale {
                 work_of_adhesion: w,
-                cohesive_stress: w / self.range,
+                cohesive_stress: self.parameter,
             }),
             EXPONENTIAL => Ok(SurfaceLaw::Exponential {
                 work_of_adhesion: w,
-                decay_length: self.range,
+                decay_length: self.parameter,
             }),
             v => Err(Error::UnknownSelector {
                 name: "surface_law",

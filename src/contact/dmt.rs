@@ -31,17 +31,39 @@ use super::{
 use crate::error::{check, Result};
 use core::f64::consts::PI;
 
-/// DMT sphere.
+/// Inputs of a DMT sphere, as [`Dmt::from_params`] and C's
+/// `asperity_law_from_params` take them.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DmtParams {
+    /// Sphere radius R (m, > 0).
+    pub radius: f64,
+    /// Contact modulus E* (Pa, > 0).
+    pub e_star: f64,
+    /// Work of adhesion w (J/m², ≥ 0).
+    pub work_of_adhesion: f64,
+}
+
+/// DMT sphere. Its inputs are [`DmtParams`]; it derives nothing from them.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Dmt {
-    /// Sphere radius R (m).
-    pub radius: f64,
-    /// Contact modulus E* (Pa).
-    pub e_star: f64,
-    /// Work of adhesion w (J/m²).
-    pub work_of_adhesion: f64,
+    /// R (m).
+    pub(crate) radius: f64,
+    /// E* (Pa).
+    pub(crate) e_star: f64,
+    /// w (J/m²).
+    pub(crate) work_of_adhesion: f64,
 }
+
+law_inputs!(
+    Dmt,
+    DmtParams {
+        radius,
+        e_star,
+        work_of_adhesion
+    }
+);
 
 impl Dmt {
     /// A DMT sphere: radius (m), contact modulus (Pa), work of adhesion (J/m², ≥ 0).
@@ -51,6 +73,11 @@ impl Dmt {
             e_star: check::positive("e_star", e_star)?,
             work_of_adhesion: check::non_negative("work_of_adhesion", work_of_adhesion)?,
         })
+    }
+
+    /// The sphere of the inputs `p`, validated as by [`Dmt::new`].
+    pub fn from_params(p: &DmtParams) -> Result<Self> {
+        Self::new(p.radius, p.e_star, p.work_of_adhesion)
     }
 
     /// The adhesive force magnitude `2πwR` (N).

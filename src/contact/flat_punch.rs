@@ -33,17 +33,53 @@ use super::{
 use crate::error::{check, Result};
 use crate::material::no_slip_factor;
 
-/// Flat punch.
+/// Inputs of a flat punch, as [`FlatPunch::from_params`] and C's
+/// `asperity_law_from_params` take them.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FlatPunchParams {
+    /// Punch radius a (m, > 0).
+    pub radius: f64,
+    /// Contact modulus E* (Pa, > 0).
+    pub e_star: f64,
+    /// Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip
+    /// factor when `no_slip` = 1; range-checked only when 0.
+    pub nu: f64,
+    /// 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    pub no_slip: i32,
+    /// Reserved, 0.
+    pub reserved: i32,
+}
+
+/// Flat punch. Its inputs are [`FlatPunchParams`]; it caches its stiffness.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FlatPunch {
-    /// Punch radius a (m).
-    pub radius: f64,
-    /// Contact modulus E* (Pa).
-    pub e_star: f64,
-    /// Stiffness `2 E* a` times the no-slip factor (1 when frictionless) (N/m).
-    pub stiffness: f64,
+    /// a (m).
+    pub(crate) radius: f64,
+    /// E* (Pa).
+    pub(crate) e_star: f64,
+    /// ν.
+    pub(crate) nu: f64,
+    /// 1 bonded, 0 frictionless.
+    pub(crate) no_slip: i32,
+    /// 0.
+    pub(crate) reserved: i32,
+    /// Cached stiffness `2 E* a` times the no-slip factor (1 when
+    /// frictionless) (N/m).
+    stiffness: f64,
 }
+
+law_inputs!(
+    FlatPunch,
+    FlatPunchParams {
+        radius,
+        e_star,
+        nu,
+        no_slip,
+        reserved
+    }
+);
 
 impl FlatPunch {
     /// Frictionless punch of radius `radius` (m) and contact modulus `e_star` (Pa).
@@ -53,6 +89,9 @@ impl FlatPunch {
         Ok(Self {
             radius,
             e_star,
+            nu: 0.0,
+            no_slip: 0,
+            reserved: 0,
             stiffness: 2.0 * e_star * radius,
         })
     }
@@ -62,7 +101,30 @@ impl FlatPunch {
     pub fn no_slip(radius: f64, e_star: f64, nu: f64) -> Result<Self> {
         let mut p = Self::new(radius, e_star)?;
         p.stiffness *= no_slip_factor(nu)?;
+        p.nu = nu;
+        p.no_slip = 1;
         Ok(p)
+    }
+
+    /// The punch of the inputs `p`: `no_slip` is checked first (0 or 1),
+    /// then, when frictionless, `nu` (range only), then as by
+    /// [`FlatPunch::new`] or [`FlatPunch::no_slip`].
+    pub fn from_params(p: &FlatPunchParams) -> Result<Self> {
+        if super::no_slip_flag(p.no_slip)? {
+            Self::no_slip(p.radius, p.e_star, p.nu)
+        } else {
+            let nu = check::poisson("nu", p.nu)?;
+            Ok(Self {
+                nu,
+                ..Self::new(p.radius, p.e_star)?
+            })
+        }
+    }
+
+    /// The contact stiffness `2E*a`, times `C_NS(ν)` when bonded (N/m).
+    #[inline]
+    pub fn stiffness(&self) -> f64 {
+        self.stiffness
     }
 }
 

@@ -34,16 +34,30 @@ use super::{
 };
 use crate::error::{check, Result};
 
-/// Hertz sphere.
+/// Inputs of a Hertz sphere, as [`Hertz::from_params`] and C's
+/// `asperity_law_from_params` take them.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct HertzParams {
+    /// Radius of curvature R of the sphere, or the effective radius
+    /// `1/R = 1/R₁ + 1/R₂` of two spheres (m, > 0).
+    pub radius: f64,
+    /// Contact modulus E* (Pa, > 0).
+    pub e_star: f64,
+}
+
+/// Hertz sphere. Its inputs are [`HertzParams`]; it derives nothing from
+/// them.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Hertz {
-    /// Radius of curvature R of the sphere, or the effective radius
-    /// `1/R = 1/R₁ + 1/R₂` of two spheres (m).
-    pub radius: f64,
-    /// Contact modulus E* (Pa).
-    pub e_star: f64,
+    /// R (m).
+    pub(crate) radius: f64,
+    /// E* (Pa).
+    pub(crate) e_star: f64,
 }
+
+law_inputs!(Hertz, HertzParams { radius, e_star });
 
 impl Hertz {
     /// A sphere of radius `radius` (m) with contact modulus `e_star` (Pa).
@@ -52,6 +66,11 @@ impl Hertz {
             radius: check::positive("radius", radius)?,
             e_star: check::positive("e_star", e_star)?,
         })
+    }
+
+    /// The sphere of the inputs `p`, validated as by [`Hertz::new`].
+    pub fn from_params(p: &HertzParams) -> Result<Self> {
+        Self::new(p.radius, p.e_star)
     }
 
     /// Galanov's effective shape for a sphere of radius `radius` pressed into a

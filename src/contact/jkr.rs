@@ -76,34 +76,77 @@ use core::f64::consts::PI;
 /// (avoids overflow of `s³` in the resolvent).
 pub(crate) const HERTZ_SWITCH: f64 = 1e60;
 
-/// JKR sphere.
+/// Inputs of a JKR sphere, as [`Jkr::from_params`] and C's
+/// `asperity_law_from_params` take them.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct JkrParams {
+    /// Sphere radius R (m, > 0).
+    pub radius: f64,
+    /// Contact modulus E* (Pa, > 0).
+    pub e_star: f64,
+    /// Work of adhesion w (J/m², ≥ 0).
+    pub work_of_adhesion: f64,
+}
+
+/// JKR sphere. Its inputs are [`JkrParams`]; it caches the scales of the
+/// reduced quartic of the module docs.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Jkr {
-    /// Sphere radius R (m).
-    pub radius: f64,
-    /// Contact modulus E* (Pa).
-    pub e_star: f64,
-    /// Work of adhesion w (J/m²).
-    pub work_of_adhesion: f64,
+    /// R (m).
+    pub(crate) radius: f64,
+    /// E* (Pa).
+    pub(crate) e_star: f64,
+    /// w (J/m²).
+    pub(crate) work_of_adhesion: f64,
     /// Cached `k = √(2πw/E*)` (m^{1/2}); 0 without adhesion.
-    pub adhesion_coefficient: f64,
+    pub(crate) adhesion_coefficient: f64,
     /// Cached overlap scale `L = (4π²w²R/E*²)^{1/3}` (m) of the reduced quartic
     /// `η⁴ − η − δ/L = 0`; 0 without adhesion.
-    pub delta_scale: f64,
+    pub(crate) delta_scale: f64,
     /// Cached `1/L` (1/m); 0 without adhesion.
-    pub inv_delta_scale: f64,
+    pub(crate) inv_delta_scale: f64,
     /// Cached radius scale `(kR)^{2/3} = (2πwR²/E*)^{1/3}` (m), `a = scale·η²`
     /// (the jump-in radius); 0 without adhesion.
-    pub radius_scale: f64,
+    pub(crate) radius_scale: f64,
     /// Cached force scale `2πwR` (N), `P = scale·((4/3)η⁶ − 2η³)`.
-    pub force_scale: f64,
+    pub(crate) force_scale: f64,
     /// Cached displacement-controlled instability `δ_c = −(3/4)(π²w²R/E*²)^{1/3}`
     /// (m, ≤ 0).
-    pub critical_delta: f64,
+    pub(crate) critical_delta: f64,
 }
 
+law_inputs!(
+    Jkr,
+    JkrParams {
+        radius,
+        e_star,
+        work_of_adhesion
+    }
+);
+
 impl Jkr {
+    /// The sphere of the inputs `p`, validated as by [`Jkr::new`].
+    pub fn from_params(p: &JkrParams) -> Result<Self> {
+        Self::new(p.radius, p.e_star, p.work_of_adhesion)
+    }
+
+    /// The displacement-controlled instability (jump-out overlap)
+    /// `δ_c = −(3/4)(π²w²R/E*²)^{1/3}` (m, ≤ 0; 0 without adhesion).
+    #[inline]
+    pub fn critical_delta(&self) -> f64 {
+        self.critical_delta
+    }
+
+    /// The overlap scale `L = (4π²w²R/E*²)^{1/3}` (m) of the reduced quartic
+    /// `η⁴ − η − δ/L = 0` (module docs); 0 without adhesion (or when w is so
+    /// small that the scales underflow).
+    #[inline]
+    pub fn delta_scale(&self) -> f64 {
+        self.delta_scale
+    }
+
     /// A JKR sphere: radius R (m, > 0), contact modulus E* (Pa, > 0), work of
     /// adhesion w (J/m², ≥ 0). `w = 0` is Hertz. A w so small that its scales
     /// underflow `f64` behaves as `w = 0`.

@@ -93,39 +93,82 @@ use core::f64::consts::PI;
 /// Cap on the Newton iterations of the contact-radius solve.
 pub const MAX_ITERATIONS: u32 = 100;
 
-/// JKR power-law punch, frictionless or no-slip.
+/// Inputs of a JKR power-law punch, as [`JkrPowerPunch::from_params`] and
+/// C's `asperity_law_from_params` take them.
 #[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct JkrPowerPunch {
-    /// Shape coefficient B (m^{1−d}).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct JkrPowerPunchParams {
+    /// Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
     pub b: f64,
     /// Shape exponent d (1 ≤ d ≤ 100).
     pub d: f64,
-    /// Contact modulus E* (Pa).
+    /// Contact modulus E* (Pa, > 0).
     pub e_star: f64,
-    /// Work of adhesion w (J/m²).
+    /// Work of adhesion w (J/m², ≥ 0).
     pub work_of_adhesion: f64,
-    /// No-slip factor C_NS (1 when frictionless).
-    pub no_slip_factor: f64,
-    /// Shape factor k*(d) of the bonded punch (1 when frictionless).
-    pub k_star: f64,
+    /// Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives C_NS and
+    /// k*(d) when `no_slip` = 1; range-checked only when 0.
+    pub nu: f64,
+    /// 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    pub no_slip: i32,
+    /// Reserved, 0.
+    pub reserved: i32,
+}
+
+/// JKR power-law punch, frictionless or no-slip. Its inputs are
+/// [`JkrPowerPunchParams`]; it caches the factors and scales of the module
+/// docs.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JkrPowerPunch {
+    /// B (m^{1−d}).
+    pub(crate) b: f64,
+    /// d.
+    pub(crate) d: f64,
+    /// E* (Pa).
+    pub(crate) e_star: f64,
+    /// w (J/m²).
+    pub(crate) work_of_adhesion: f64,
+    /// ν.
+    pub(crate) nu: f64,
+    /// 1 bonded, 0 frictionless.
+    pub(crate) no_slip: i32,
+    /// 0.
+    pub(crate) reserved: i32,
+    /// Cached no-slip factor C_NS (1 when frictionless).
+    no_slip_factor: f64,
+    /// Cached shape factor k*(d) of the bonded punch (1 when frictionless).
+    k_star: f64,
     /// Cached `α = C_NS C(d) B E*/k*` (Pa·m^{1−d}), `P_shape = α a^{d+1}`.
-    pub force_coefficient: f64,
+    force_coefficient: f64,
     /// Cached `γ = D(d) B/k*` (m^{1−d}), `δ_shape = γ a^d`.
-    pub depth_coefficient: f64,
+    depth_coefficient: f64,
     /// Cached radius scale `A₀ = (κ/γ)^{1/(d−1/2)}` (m), `κ = √(2πw/(E*C_NS))`;
     /// 0 without adhesion.
-    pub radius_scale: f64,
+    radius_scale: f64,
     /// Cached overlap scale `L = κ A₀^{1/2}` (m); 0 without adhesion.
-    pub delta_scale: f64,
+    delta_scale: f64,
     /// Cached force scale `F = √(8πwE*C_NS) A₀^{3/2}` (N); 0 without adhesion.
-    pub force_scale: f64,
+    force_scale: f64,
     /// Cached displacement-controlled instability δ_c (m, ≤ 0), the minimum of
     /// δ(a).
-    pub critical_delta: f64,
+    critical_delta: f64,
     /// Cached reduced radius `t_c = (2d)^{−1/(2d−1)}` at δ_c.
-    pub critical_t: f64,
+    critical_t: f64,
 }
+
+law_inputs!(
+    JkrPowerPunch,
+    JkrPowerPunchParams {
+        b,
+        d,
+        e_star,
+        work_of_adhesion,
+        nu,
+        no_slip,
+        reserved
+    }
+);
 
 impl JkrPowerPunch {
     /// Frictionless adhesive punch `f(r) = b r^d` (b in m^{1−d}, 1 ≤ d ≤ 100),
@@ -134,7 +177,7 @@ impl JkrPowerPunch {
         let (b, d) = check_shape(b, d)?;
         let e_star = check::positive("e_star", e_star)?;
         let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
-        Ok(Self::build(b, d, e_star, w, 1.0, 1.0))
+        Ok(Self::build(b, d, e_star, w, (0.0, 0), 1.0, 1.0))
     }
 
     /// Punch bonded (no slip) to a half-space of Poisson's ratio `nu`
@@ -146,10 +189,52 @@ impl JkrPowerPunch {
         let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
         let c_ns = no_slip_factor(nu)?;
         let ks = k_star(d, nu)?;
-        Ok(Self::build(b, d, e_star, w, c_ns, ks))
+        Ok(Self::build(b, d, e_star, w, (nu, 1), c_ns, ks))
     }
 
-    fn build(b: f64, d: f64, e_star: f64, w: f64, c_ns: f64, ks: f64) -> Self {
+    /// The punch of the inputs `p`: `no_slip` is checked first (0 or 1),
+    /// then, when frictionless, `nu` (range only), then as by
+    /// [`JkrPowerPunch::new`] or [`JkrPowerPunch::no_slip`].
+    pub fn from_params(p: &JkrPowerPunchParams) -> Result<Self> {
+        if super::no_slip_flag(p.no_slip)? {
+            Self::no_slip(p.b, p.d, p.e_star, p.work_of_adhesion, p.nu)
+        } else {
+            let nu = check::poisson("nu", p.nu)?;
+            Ok(Self {
+                nu,
+                ..Self::new(p.b, p.d, p.e_star, p.work_of_adhesion)?
+            })
+        }
+    }
+
+    /// The no-slip factor `C_NS(ν)` (1 when frictionless).
+    #[inline]
+    pub fn no_slip_factor(&self) -> f64 {
+        self.no_slip_factor
+    }
+
+    /// The shape factor k*(d) of the bonded punch (1 when frictionless).
+    #[inline]
+    pub fn k_star(&self) -> f64 {
+        self.k_star
+    }
+
+    /// The displacement-controlled instability δ_c (m, ≤ 0), the minimum of
+    /// δ(a); 0 without adhesion.
+    #[inline]
+    pub fn critical_delta(&self) -> f64 {
+        self.critical_delta
+    }
+
+    fn build(
+        b: f64,
+        d: f64,
+        e_star: f64,
+        w: f64,
+        (nu, no_slip): (f64, i32),
+        c_ns: f64,
+        ks: f64,
+    ) -> Self {
         let alpha = c_ns * galin_c(d) * b * e_star / ks;
         let gamma = galin_d(d) * b / ks;
         let kappa = (2.0 * PI * w / (e_star * c_ns)).sqrt();
@@ -165,6 +250,9 @@ impl JkrPowerPunch {
             d,
             e_star,
             work_of_adhesion: w,
+            nu,
+            no_slip,
+            reserved: 0,
             no_slip_factor: c_ns,
             k_star: ks,
             force_coefficient: alpha,

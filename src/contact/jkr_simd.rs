@@ -99,16 +99,13 @@ use super::jkr::Jkr;
 /// The pointers of `b` must satisfy the contract of [`RawBatch`].
 #[inline]
 pub(crate) unsafe fn eval_batch(law: &Jkr, b: &RawBatch) -> Result<(), BatchError> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if x86::available() {
-            // SAFETY: AVX2 and FMA are present (checked just above); the
-            // pointer contract is the caller's.
-            return unsafe { x86::eval_batch_avx2(law, b) };
-        }
-    }
-    // SAFETY: the pointer contract is the caller's.
-    unsafe { eval_elementwise(law, b) }
+    crate::simd::dispatch!(
+        // SAFETY: AVX2 and FMA are present (checked by the dispatch); the
+        // pointer contract is the caller's.
+        avx2_fma => unsafe { x86::eval_batch_avx2(law, b) },
+        // SAFETY: the pointer contract is the caller's.
+        portable => unsafe { eval_elementwise(law, b) },
+    )
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -117,28 +114,6 @@ mod x86 {
     use super::super::jkr::{Jkr, HERTZ_SWITCH};
     use super::super::ContactState;
     use core::arch::x86_64::*;
-    use core::sync::atomic::{AtomicU8, Ordering};
-
-    /// 0: not yet detected; 1: AVX2 + FMA absent; 2: present.
-    static AVX2_FMA: AtomicU8 = AtomicU8::new(0);
-
-    /// Whether the CPU has AVX2 and FMA; detected on the first call, then one
-    /// relaxed atomic load.
-    #[inline]
-    pub(super) fn available() -> bool {
-        match AVX2_FMA.load(Ordering::Relaxed) {
-            2 => true,
-            1 => false,
-            _ => detect(),
-        }
-    }
-
-    #[cold]
-    fn detect() -> bool {
-        let yes = std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma");
-        AVX2_FMA.store(if yes { 2 } else { 1 }, Ordering::Relaxed);
-        yes
-    }
 
     /// The law's constants, broadcast to four lanes.
     #[derive(Clone, Copy)]

@@ -40,25 +40,64 @@ use super::{check_delta, check_force, ContactState, Control, NormalContact, Norm
 use crate::error::{check, Result};
 use core::f64::consts::PI;
 
-/// Kendall adhesive flat punch.
+/// Inputs of a Kendall punch, as [`Kendall::from_params`] and C's
+/// `asperity_law_from_params` take them.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct KendallParams {
+    /// Punch radius a (m, > 0).
+    pub radius: f64,
+    /// Contact modulus E* (Pa, > 0).
+    pub e_star: f64,
+    /// Work of adhesion w (J/m², ≥ 0).
+    pub work_of_adhesion: f64,
+    /// Poisson's ratio ν of the half-space (0 ≤ ν ≤ 0.5): gives the no-slip
+    /// factor when `no_slip` = 1; range-checked only when 0.
+    pub nu: f64,
+    /// 1 for a punch bonded to the half-space (no slip), 0 frictionless.
+    pub no_slip: i32,
+    /// Reserved, 0.
+    pub reserved: i32,
+}
+
+/// Kendall adhesive flat punch. Its inputs are [`KendallParams`]; it caches
+/// C_NS, the stiffness, the pull-off force and the separation overlap.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Kendall {
-    /// Punch radius a (m).
-    pub radius: f64,
-    /// Contact modulus E* (Pa).
-    pub e_star: f64,
-    /// Work of adhesion w (J/m²).
-    pub work_of_adhesion: f64,
-    /// No-slip factor C_NS (1 when frictionless).
-    pub no_slip_factor: f64,
+    /// a (m).
+    pub(crate) radius: f64,
+    /// E* (Pa).
+    pub(crate) e_star: f64,
+    /// w (J/m²).
+    pub(crate) work_of_adhesion: f64,
+    /// ν.
+    pub(crate) nu: f64,
+    /// 1 bonded, 0 frictionless.
+    pub(crate) no_slip: i32,
+    /// 0.
+    pub(crate) reserved: i32,
+    /// Cached no-slip factor C_NS (1 when frictionless).
+    no_slip_factor: f64,
     /// Cached contact stiffness `2E* C_NS a` (N/m).
-    pub stiffness: f64,
+    stiffness: f64,
     /// Cached pull-off force `P_c = −√(8πwE* C_NS a³)` (N, ≤ 0).
-    pub pull_off: f64,
+    pub(crate) pull_off: f64,
     /// Cached separation overlap `δ_c = P_c/(2E* C_NS a)` (m, ≤ 0).
-    pub critical_delta: f64,
+    critical_delta: f64,
 }
+
+law_inputs!(
+    Kendall,
+    KendallParams {
+        radius,
+        e_star,
+        work_of_adhesion,
+        nu,
+        no_slip,
+        reserved
+    }
+);
 
 impl Kendall {
     /// Frictionless adhesive flat punch: radius (m, > 0), contact modulus
@@ -67,7 +106,7 @@ impl Kendall {
         let radius = check::positive("radius", radius)?;
         let e_star = check::positive("e_star", e_star)?;
         let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
-        Ok(Self::build(radius, e_star, w, 1.0))
+        Ok(Self::build(radius, e_star, w, (0.0, 0), 1.0))
     }
 
     /// Bonded (no-slip) adhesive flat punch on a half-space of Poisson's ratio
@@ -77,10 +116,43 @@ impl Kendall {
         let e_star = check::positive("e_star", e_star)?;
         let w = check::non_negative("work_of_adhesion", work_of_adhesion)?;
         let c_ns = crate::material::no_slip_factor(nu)?;
-        Ok(Self::build(radius, e_star, w, c_ns))
+        Ok(Self::build(radius, e_star, w, (nu, 1), c_ns))
     }
 
-    fn build(radius: f64, e_star: f64, w: f64, c_ns: f64) -> Self {
+    /// The punch of the inputs `p`: `no_slip` is checked first (0 or 1),
+    /// then, when frictionless, `nu` (range only), then as by
+    /// [`Kendall::new`] or [`Kendall::no_slip`].
+    pub fn from_params(p: &KendallParams) -> Result<Self> {
+        if super::no_slip_flag(p.no_slip)? {
+            Self::no_slip(p.radius, p.e_star, p.work_of_adhesion, p.nu)
+        } else {
+            let nu = check::poisson("nu", p.nu)?;
+            Ok(Self {
+                nu,
+                ..Self::new(p.radius, p.e_star, p.work_of_adhesion)?
+            })
+        }
+    }
+
+    /// The no-slip factor `C_NS(ν)` (1 when frictionless).
+    #[inline]
+    pub fn no_slip_factor(&self) -> f64 {
+        self.no_slip_factor
+    }
+
+    /// The contact stiffness `2E* C_NS a` (N/m).
+    #[inline]
+    pub fn stiffness(&self) -> f64 {
+        self.stiffness
+    }
+
+    /// The separation overlap `δ_c = P_c/(2E* C_NS a)` (m, ≤ 0).
+    #[inline]
+    pub fn critical_delta(&self) -> f64 {
+        self.critical_delta
+    }
+
+    fn build(radius: f64, e_star: f64, w: f64, (nu, no_slip): (f64, i32), c_ns: f64) -> Self {
         let stiffness = 2.0 * e_star * c_ns * radius;
         let pull_off = if w > 0.0 {
             -(8.0 * PI * w * e_star * c_ns * radius).sqrt() * radius
@@ -91,6 +163,9 @@ impl Kendall {
             radius,
             e_star,
             work_of_adhesion: w,
+            nu,
+            no_slip,
+            reserved: 0,
             no_slip_factor: c_ns,
             stiffness,
             pull_off,

@@ -128,21 +128,37 @@ pub fn s_curve_onset() -> f64 {
     (9.0 * PI / (16.0 * (PI - 1.0))).cbrt()
 }
 
+/// Inputs of a Maugis–Dugdale sphere, as [`MaugisDugdale::from_params`] and
+/// C's `asperity_law_from_params` take them.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct MaugisDugdaleParams {
+    /// Sphere radius R (m, > 0).
+    pub radius: f64,
+    /// Contact modulus E* (Pa, > 0).
+    pub e_star: f64,
+    /// Work of adhesion w (J/m², > 0).
+    pub work_of_adhesion: f64,
+    /// Dugdale cohesive stress σ₀ (Pa, > 0).
+    pub cohesive_stress: f64,
+}
+
 /// Maugis–Dugdale sphere. Build it with [`MaugisDugdale::new`] (or
-/// [`MaugisDugdale::from_tabor`], [`MaugisDugdale::from_maugis_parameter`]),
-/// which validates the parameters and caches the derived constants and the
-/// turning points; treat the fields as read-only.
+/// [`MaugisDugdale::from_params`], [`MaugisDugdale::from_tabor`],
+/// [`MaugisDugdale::from_maugis_parameter`]), which validates the inputs
+/// ([`MaugisDugdaleParams`]) and caches the derived constants and the
+/// turning points.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MaugisDugdale {
-    /// Sphere radius R (m).
-    pub radius: f64,
-    /// Contact modulus E* (Pa).
-    pub e_star: f64,
-    /// Work of adhesion w (J/m²).
-    pub work_of_adhesion: f64,
-    /// Dugdale cohesive stress σ₀ (Pa).
-    pub cohesive_stress: f64,
+    /// R (m).
+    pub(crate) radius: f64,
+    /// E* (Pa).
+    pub(crate) e_star: f64,
+    /// w (J/m²).
+    pub(crate) work_of_adhesion: f64,
+    /// σ₀ (Pa).
+    pub(crate) cohesive_stress: f64,
     /// Cached: Maugis parameter λ (dimensionless).
     lambda: f64,
     /// Cached: radius unit `(πwR²/K)^{1/3}` (m).
@@ -356,7 +372,22 @@ fn sign_change(lam: f64, g: impl Fn(&Pt) -> f64) -> f64 {
     (lo * hi).sqrt()
 }
 
+law_inputs!(
+    MaugisDugdale,
+    MaugisDugdaleParams {
+        radius,
+        e_star,
+        work_of_adhesion,
+        cohesive_stress
+    }
+);
+
 impl MaugisDugdale {
+    /// The sphere of the inputs `p`, validated as by [`MaugisDugdale::new`].
+    pub fn from_params(p: &MaugisDugdaleParams) -> Result<Self> {
+        Self::new(p.radius, p.e_star, p.work_of_adhesion, p.cohesive_stress)
+    }
+
     /// A Maugis–Dugdale sphere: radius R (m), contact modulus E* (Pa), work of
     /// adhesion w (J/m²) and Dugdale cohesive stress σ₀ (Pa), all finite and
     /// positive. Computes λ, the scales, and the turning points (jump-out and

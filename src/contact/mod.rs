@@ -47,6 +47,32 @@
 
 use crate::error::{check, Error, Result};
 
+/// The inputs of a law. `$params` is the plain `repr(C)` struct of what a
+/// caller gives (SI units; in the C header `Asperity<Law>Params`), and the
+/// `repr(C)` law `$law` starts with the same fields in the same order,
+/// followed by the values it derives from them (private, so caching can
+/// change without touching the API or the C ABI). Generates `$law::params`
+/// and checks at compile time that the fields sit at the same offsets, which
+/// lets the C ABI hand out a law's storage whose leading bytes read as its
+/// inputs.
+macro_rules! law_inputs {
+    ($law:ident, $params:ident { $($field:ident),+ $(,)? }) => {
+        impl $law {
+            /// The inputs the law was built from, as given (see
+            #[doc = concat!("[`", stringify!($params), "`]).")]
+            #[inline]
+            pub fn params(&self) -> $params {
+                $params { $($field: self.$field),+ }
+            }
+        }
+        const _: () = {
+            $(assert!(
+                core::mem::offset_of!($law, $field) == core::mem::offset_of!($params, $field)
+            );)+
+        };
+    };
+}
+
 pub mod batch;
 pub mod curve;
 pub mod derjaguin;
@@ -62,17 +88,18 @@ pub mod maugis_dugdale;
 pub mod power_punch;
 pub mod tabulated;
 
-pub use batch::{eval_batch, BatchError, RawBatch};
-pub use derjaguin::{Derjaguin, SurfaceLaw};
-pub use dmt::Dmt;
-pub use flat_punch::FlatPunch;
-pub use hertz::Hertz;
-pub use jkr::Jkr;
-pub use jkr_power_punch::JkrPowerPunch;
-pub use kendall::Kendall;
+pub(crate) use batch::RawBatch;
+pub use batch::{eval_batch, BatchError};
+pub use derjaguin::{Derjaguin, DerjaguinParams, SurfaceLaw};
+pub use dmt::{Dmt, DmtParams};
+pub use flat_punch::{FlatPunch, FlatPunchParams};
+pub use hertz::{Hertz, HertzParams};
+pub use jkr::{Jkr, JkrParams};
+pub use jkr_power_punch::{JkrPowerPunch, JkrPowerPunchParams};
+pub use kendall::{Kendall, KendallParams};
 pub use lj_sphere::{LjCurve, LjOptions, LjPoint, LjPullOff, LjSolution, LjSolver, LjSphere};
-pub use maugis_dugdale::MaugisDugdale;
-pub use power_punch::PowerPunch;
+pub use maugis_dugdale::{MaugisDugdale, MaugisDugdaleParams};
+pub use power_punch::{PowerPunch, PowerPunchParams};
 pub use tabulated::TabulatedLaw;
 
 /// How the contact is driven, which decides where an adhesive contact
@@ -140,12 +167,18 @@ pub trait NormalContact {
     /// without adhesion) under the given control.
     fn pull_off_force(&self, control: Control) -> Result<f64>;
 
-    /// Evaluate a batch of contacts (see [`batch`]). The default runs
-    /// [`NormalContact::eval`] element by element; laws with a vectorised
-    /// kernel override it. Results agree with `eval` to rounding.
+    /// The crate's batch-kernel hook behind [`eval_batch`] and the C ABI's
+    /// batch calls (see [`batch`]); not an API. Its argument type cannot be
+    /// named outside the crate, so the hook can be neither called nor
+    /// overridden there: a law of another crate gets the default, which runs
+    /// [`NormalContact::eval`] element by element. Laws of the crate with a
+    /// vectorised kernel override it; results agree with `eval` to rounding.
     ///
     /// # Safety
-    /// The pointers of `b` must satisfy the contract of [`RawBatch`].
+    /// The pointers of `b` must satisfy the contract of `RawBatch`: `delta`
+    /// and `force` valid for `n` elements, the other arrays NULL or valid for
+    /// `n` elements, aliasing allowed element by element.
+    #[doc(hidden)]
     #[inline]
     unsafe fn eval_batch_raw(&self, b: &RawBatch) -> core::result::Result<(), BatchError> {
         batch::eval_elementwise(self, b)
@@ -280,64 +313,99 @@ pub(crate) fn hertz_energy(radius: f64, e_star: f64, delta: f64) -> f64 {
     }
 }
 
-/// Any of the library's normal laws, by value. This is what scenes and the C
-/// ABI carry; it dispatches to the law's own implementation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum NormalLaw {
-    /// [`Hertz`] sphere.
-    Hertz(Hertz),
-    /// [`PowerPunch`] (Galin), including cones.
-    PowerPunch(PowerPunch),
-    /// [`FlatPunch`] (Boussinesq).
-    FlatPunch(FlatPunch),
-    /// [`Dmt`] sphere.
-    Dmt(Dmt),
-    /// [`Jkr`] sphere.
-    Jkr(Jkr),
-    /// [`JkrPowerPunch`], frictionless or no-slip.
-    JkrPowerPunch(JkrPowerPunch),
-    /// [`Kendall`] adhesive flat punch.
-    Kendall(Kendall),
-    /// [`MaugisDugdale`] sphere.
-    MaugisDugdale(MaugisDugdale),
-    /// [`Derjaguin`] rigid sphere with a surface-force law.
-    Derjaguin(Derjaguin),
+/// The library's normal laws, one entry each, in the order of their C kind
+/// values: the one list that [`NormalLaw`] (variants, `From`, names,
+/// dispatch), the C ABI's kind mapping, storage and construction from inputs
+/// (`src/ffi/contact.rs`) and the ABI's list of types (`src/ffi/abi.rs`) are
+/// generated from. `normal_laws!(callback!(args))` expands to
+/// `callback! { (args) entries }`, each entry being
+///
+/// ```text
+/// /// the doc line of the `NormalLaw` variant
+/// Law(LawParams) name = ASPERITY_LAW_NAME,
+/// ```
+///
+/// with `Law` the law type, `LawParams` its input struct, `name` its name
+/// (the member of the C union `AsperityLawParams`, the suffix of the C
+/// constructor `asperity_law_<name>`, [`NormalLaw::name`]) and
+/// `ASPERITY_LAW_NAME` its C kind constant, a bare name resolved where a
+/// callback in `src/ffi/` expands (the contact laws themselves know nothing
+/// of the C ABI).
+macro_rules! normal_laws {
+    ($callback:ident!($($args:tt)*)) => {
+        $callback! {
+            ($($args)*)
+            /// [`Hertz`] sphere.
+            Hertz(HertzParams) hertz = ASPERITY_LAW_HERTZ,
+            /// [`PowerPunch`] (Galin), including cones.
+            PowerPunch(PowerPunchParams) power_punch = ASPERITY_LAW_POWER_PUNCH,
+            /// [`FlatPunch`] (Boussinesq).
+            FlatPunch(FlatPunchParams) flat_punch = ASPERITY_LAW_FLAT_PUNCH,
+            /// [`Dmt`] sphere.
+            Dmt(DmtParams) dmt = ASPERITY_LAW_DMT,
+            /// [`Jkr`] sphere.
+            Jkr(JkrParams) jkr = ASPERITY_LAW_JKR,
+            /// [`JkrPowerPunch`], frictionless or no-slip.
+            JkrPowerPunch(JkrPowerPunchParams) jkr_power_punch = ASPERITY_LAW_JKR_POWER_PUNCH,
+            /// [`Kendall`] adhesive flat punch.
+            Kendall(KendallParams) kendall = ASPERITY_LAW_KENDALL,
+            /// [`MaugisDugdale`] sphere.
+            MaugisDugdale(MaugisDugdaleParams) maugis_dugdale = ASPERITY_LAW_MAUGIS_DUGDALE,
+            /// [`Derjaguin`] rigid sphere with a surface-force law.
+            Derjaguin(DerjaguinParams) derjaguin = ASPERITY_LAW_DERJAGUIN,
+        }
+    };
 }
+pub(crate) use normal_laws;
 
-macro_rules! law_from {
-    ($($t:ident),*) => {$(
-        impl From<$t> for NormalLaw {
+/// [`NormalLaw`] and what goes with it, from the list of [`normal_laws!`].
+macro_rules! define_normal_law {
+    (() $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
+        /// Any of the library's normal laws, by value: what the C ABI's
+        /// `AsperityNormalLaw` converts to. It dispatches to the law's own
+        /// implementation.
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub enum NormalLaw {
+            $($(#[$doc])* $law($law),)*
+        }
+
+        $(impl From<$law> for NormalLaw {
             #[inline]
-            fn from(l: $t) -> Self {
-                NormalLaw::$t(l)
+            fn from(l: $law) -> Self {
+                NormalLaw::$law(l)
+            }
+        })*
+
+        impl NormalLaw {
+            /// The laws' names in the order of their C kinds
+            /// (`ASPERITY_LAW_<NAME>` is the index plus one): the C
+            /// constructor of a law is `asperity_law_<name>`.
+            pub const NAMES: &'static [&'static str] = &[$(stringify!($name)),*];
+
+            /// The name of this law (one of [`NormalLaw::NAMES`]).
+            pub fn name(&self) -> &'static str {
+                match self {
+                    $(NormalLaw::$law(_) => stringify!($name),)*
+                }
             }
         }
-    )*};
+    };
 }
-law_from!(
-    Hertz,
-    PowerPunch,
-    FlatPunch,
-    Dmt,
-    Jkr,
-    JkrPowerPunch,
-    Kendall,
-    MaugisDugdale,
-    Derjaguin
-);
+normal_laws!(define_normal_law!());
 
+/// `match` on a [`NormalLaw`] with one arm per law, each binding the law to
+/// `$law` and evaluating `$e`.
 macro_rules! dispatch {
     ($self:ident, $law:ident => $e:expr) => {
+        normal_laws!(dispatch_arms!($self, $law, $e))
+    };
+}
+
+/// The arms of [`dispatch!`], from the list of [`normal_laws!`].
+macro_rules! dispatch_arms {
+    (($self:ident, $l:ident, $e:expr) $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
         match $self {
-            NormalLaw::Hertz($law) => $e,
-            NormalLaw::PowerPunch($law) => $e,
-            NormalLaw::FlatPunch($law) => $e,
-            NormalLaw::Dmt($law) => $e,
-            NormalLaw::Jkr($law) => $e,
-            NormalLaw::JkrPowerPunch($law) => $e,
-            NormalLaw::Kendall($law) => $e,
-            NormalLaw::MaugisDugdale($law) => $e,
-            NormalLaw::Derjaguin($law) => $e,
+            $(NormalLaw::$law($l) => $e,)*
         }
     };
 }
@@ -400,6 +468,19 @@ impl NormalContact for NormalLaw {
     fn energy(&self, delta: f64, old: &ContactState) -> Result<f64> {
         let u = dispatch!(self, l => l.energy(delta, old))?;
         check::finite_result(u, "delta", delta, "the energy overflows f64")
+    }
+}
+
+/// The `no_slip` selector of the punch laws' inputs: 0 frictionless, 1
+/// bonded; anything else is [`Error::UnknownSelector`] naming `no_slip`.
+pub(crate) fn no_slip_flag(no_slip: i32) -> Result<bool> {
+    match no_slip {
+        0 => Ok(false),
+        1 => Ok(true),
+        v => Err(Error::UnknownSelector {
+            name: "no_slip",
+            value: v as i64,
+        }),
     }
 }
 

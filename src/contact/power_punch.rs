@@ -68,29 +68,50 @@ pub(crate) fn check_shape(b: f64, d: f64) -> Result<(f64, f64)> {
     Ok((b, d))
 }
 
-/// A power-law punch `f(r) = B r^d`.
+/// Inputs of a power-law punch, as [`PowerPunch::from_params`] and C's
+/// `asperity_law_from_params` take them.
 #[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PowerPunch {
-    /// Shape coefficient B (m^{1−d}).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PowerPunchParams {
+    /// Shape coefficient B (m^{1−d}, > 0) of the profile `f(r) = B r^d`.
     pub b: f64,
     /// Shape exponent d (1 ≤ d ≤ 100).
     pub d: f64,
-    /// Contact modulus E* (Pa).
+    /// Contact modulus E* (Pa, > 0).
     pub e_star: f64,
-    /// Cached `C(d) B E*` (Pa·m^{1−d}).
-    pub force_coefficient: f64,
-    /// Cached `D(d) B` (m^{1−d}).
-    pub depth_coefficient: f64,
-    /// Cached `1/(D(d) B)` (m^{d−1}).
-    pub inverse_depth_coefficient: f64,
-    /// Cached `1/d`.
-    pub inverse_d: f64,
-    /// Cached `(C(d)/D(d)) E* = 2d E*/(d+1)` (Pa), so that `P = this · a δ`.
-    pub force_per_area: f64,
 }
 
+/// A power-law punch `f(r) = B r^d`. Its inputs are [`PowerPunchParams`];
+/// it caches Galin's coefficients.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PowerPunch {
+    /// B (m^{1−d}).
+    pub(crate) b: f64,
+    /// d.
+    pub(crate) d: f64,
+    /// E* (Pa).
+    pub(crate) e_star: f64,
+    /// Cached `C(d) B E*` (Pa·m^{1−d}).
+    force_coefficient: f64,
+    /// Cached `D(d) B` (m^{1−d}).
+    depth_coefficient: f64,
+    /// Cached `1/(D(d) B)` (m^{d−1}).
+    inverse_depth_coefficient: f64,
+    /// Cached `1/d`.
+    inverse_d: f64,
+    /// Cached `(C(d)/D(d)) E* = 2d E*/(d+1)` (Pa), so that `P = this · a δ`.
+    force_per_area: f64,
+}
+
+law_inputs!(PowerPunch, PowerPunchParams { b, d, e_star });
+
 impl PowerPunch {
+    /// The punch of the inputs `p`, validated as by [`PowerPunch::new`].
+    pub fn from_params(p: &PowerPunchParams) -> Result<Self> {
+        Self::new(p.b, p.d, p.e_star)
+    }
+
     /// A punch `f(r) = b r^d` with contact modulus `e_star` (Pa).
     pub fn new(b: f64, d: f64, e_star: f64) -> Result<Self> {
         let (b, d) = check_shape(b, d)?;

@@ -20,24 +20,27 @@ struct TypeLayout {
     align: usize,
 }
 
+/// The layouts of the laws' input structs (`Asperity<Law>Params`, from the
+/// list of `normal_laws!`, first in the header), then of the types listed.
 macro_rules! layouts {
-    ($($name:literal => $ty:ty),* $(,)?) => {
-        &[$(TypeLayout { name: $name, size: size_of::<$ty>(), align: align_of::<$ty>() }),*]
+    (
+        ($($name:literal => $ty:ty),* $(,)?)
+        $($(#[$doc:meta])* $law:ident($params:ident) $n:ident = $kind:ident,)*
+    ) => {
+        &[
+            $(TypeLayout {
+                name: concat!("Asperity", stringify!($params)),
+                size: size_of::<crate::contact::$params>(),
+                align: align_of::<crate::contact::$params>(),
+            },)*
+            $(TypeLayout { name: $name, size: size_of::<$ty>(), align: align_of::<$ty>() }),*
+        ]
     };
 }
 
 /// Every struct and union of the header with a body, in header order.
 /// `tests/abi_layout.rs` fails when the header gains one that is missing here.
-const TYPES: &[TypeLayout] = layouts![
-    "AsperityHertz" => crate::contact::Hertz,
-    "AsperityPowerPunch" => crate::contact::PowerPunch,
-    "AsperityFlatPunch" => crate::contact::FlatPunch,
-    "AsperityDmt" => crate::contact::Dmt,
-    "AsperityJkr" => crate::contact::Jkr,
-    "AsperityJkrPowerPunch" => crate::contact::JkrPowerPunch,
-    "AsperityKendall" => crate::contact::Kendall,
-    "AsperityMaugisDugdale" => crate::contact::MaugisDugdale,
-    "AsperityDerjaguin" => crate::contact::Derjaguin,
+const TYPES: &[TypeLayout] = crate::contact::normal_laws!(layouts!(
     "AsperityLawParams" => super::contact::AsperityLawParams,
     "AsperityNormalLaw" => super::contact::AsperityNormalLaw,
     "AsperityContactState" => crate::contact::ContactState,
@@ -48,7 +51,6 @@ const TYPES: &[TypeLayout] = layouts![
     "AsperityDissipation" => crate::friction::Dissipation,
     "AsperityHomogenisedSample" => crate::friction::HomogenisedSample,
     "AsperityFrictionIncrement" => crate::friction::FrictionIncrement,
-    "AsperityFrictionPointState" => crate::friction::FrictionPointState,
     "AsperityFrictionResponse" => crate::friction::FrictionResponse,
     "AsperityIndentationOptions" => super::indentation::AsperityIndentationOptions,
     "AsperityIndentationResult" => super::indentation::AsperityIndentationResult,
@@ -61,17 +63,14 @@ const TYPES: &[TypeLayout] = layouts![
     "AsperityRoughness" => super::surface::AsperityRoughness,
     "AsperityHurstFit" => super::surface::AsperityHurstFit,
     "AsperityPeakStatistics" => super::surface::AsperityPeakStatistics,
-    "AsperitySliderIncrement" => super::slider::AsperitySliderIncrement,
     "AsperitySliderInfo" => super::slider::AsperitySliderInfo,
+    "AsperitySliderRecord" => super::slider::AsperitySliderRecord,
     "AsperitySliderOptions" => super::slider::AsperitySliderOptions,
     "AsperityFrictionMaterial" => crate::friction::FrictionMaterial,
     "AsperityLugreParams" => super::dynamic::AsperityLugreParams,
     "AsperityPrandtlTomlinsonTwoSpringParams" => super::dynamic::AsperityPrandtlTomlinsonTwoSpringParams,
     "AsperityBurridgeKnopoffParams" => super::dynamic::AsperityBurridgeKnopoffParams,
-    "AsperityDynamicIncrement" => crate::friction::dynamic::DynamicIncrement,
-    "AsperityDynamicResponse" => crate::friction::dynamic::DynamicResponse,
-    "AsperitySliderResponse" => crate::friction::SliderResponse,
-];
+));
 
 /// The size `*size` and alignment `*align` in bytes of the `repr(C)` type
 /// whose C name is the NUL-terminated `name` (e.g. `"AsperityNormalLaw"`;

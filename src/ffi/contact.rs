@@ -3,8 +3,10 @@
 
 use super::{guard, input, output, Failure};
 use crate::contact::{
-    ContactState, Control, Derjaguin, Dmt, FlatPunch, Hertz, Jkr, JkrPowerPunch, Kendall,
-    MaugisDugdale, NormalContact, NormalLaw, NormalResponse, PowerPunch, RawBatch, SurfaceLaw,
+    normal_laws, ContactState, Control, Derjaguin, DerjaguinParams, Dmt, DmtParams, FlatPunch,
+    FlatPunchParams, Hertz, HertzParams, Jkr, JkrParams, JkrPowerPunch, JkrPowerPunchParams,
+    Kendall, KendallParams, MaugisDugdale, MaugisDugdaleParams, NormalContact, NormalLaw,
+    NormalResponse, PowerPunch, PowerPunchParams, RawBatch,
 };
 use crate::error::{Error, Result};
 
@@ -34,45 +36,58 @@ pub const ASPERITY_CONTROL_LOAD: i32 = 0;
 /// Control mode: prescribed approach (rigid machine, fixed grips).
 pub const ASPERITY_CONTROL_DISPLACEMENT: i32 = 1;
 
-/// Surface law of `asperity_law_derjaguin`: Lennard-Jones 3-9, `range` = z₀.
+/// Surface law of `asperity_law_derjaguin`: Lennard-Jones 3-9, `parameter` =
+/// equilibrium separation z₀ (m).
 pub const ASPERITY_SURFACE_LAW_LENNARD_JONES: i32 = 1;
-/// Surface law: Dugdale step, `range` = σ₀ (Pa), the cohesive stress.
+/// Surface law: Dugdale step, `parameter` = σ₀ (Pa), the cohesive stress.
 pub const ASPERITY_SURFACE_LAW_DUGDALE: i32 = 2;
-/// Surface law: exponential, `range` = decay length ℓ (m).
+/// Surface law: exponential, `parameter` = decay length ℓ (m).
 pub const ASPERITY_SURFACE_LAW_EXPONENTIAL: i32 = 3;
 
-/// Parameters of a law; which member is meaningful is given by
-/// `AsperityNormalLaw::kind`. Sized for 16 doubles so laws can grow without
-/// changing the layout.
+const _: () = {
+    use crate::contact::derjaguin::{DUGDALE, EXPONENTIAL, LENNARD_JONES};
+    assert!(ASPERITY_SURFACE_LAW_LENNARD_JONES == LENNARD_JONES);
+    assert!(ASPERITY_SURFACE_LAW_DUGDALE == DUGDALE);
+    assert!(ASPERITY_SURFACE_LAW_EXPONENTIAL == EXPONENTIAL);
+};
+
+/// The parameters of a law: the inputs of `AsperityNormalLaw::kind`, as
+/// given, in the member of that kind. In an `AsperityNormalLaw` built by a
+/// constructor, `raw` holds the library's own form of the law: those inputs
+/// first, then values it derives from them, whose layout is private and may
+/// change between releases. As input of `asperity_law_from_params` only the
+/// member of `kind` is read.
 #[repr(C)]
 #[derive(Clone, Copy)]
 pub union AsperityLawParams {
     /// `ASPERITY_LAW_HERTZ`.
-    pub hertz: Hertz,
+    pub hertz: HertzParams,
     /// `ASPERITY_LAW_POWER_PUNCH`.
-    pub power_punch: PowerPunch,
+    pub power_punch: PowerPunchParams,
     /// `ASPERITY_LAW_FLAT_PUNCH`.
-    pub flat_punch: FlatPunch,
+    pub flat_punch: FlatPunchParams,
     /// `ASPERITY_LAW_DMT`.
-    pub dmt: Dmt,
+    pub dmt: DmtParams,
     /// `ASPERITY_LAW_JKR`.
-    pub jkr: Jkr,
+    pub jkr: JkrParams,
     /// `ASPERITY_LAW_JKR_POWER_PUNCH`.
-    pub jkr_power_punch: JkrPowerPunch,
+    pub jkr_power_punch: JkrPowerPunchParams,
     /// `ASPERITY_LAW_KENDALL`.
-    pub kendall: Kendall,
+    pub kendall: KendallParams,
     /// `ASPERITY_LAW_MAUGIS_DUGDALE`.
-    pub maugis_dugdale: MaugisDugdale,
+    pub maugis_dugdale: MaugisDugdaleParams,
     /// `ASPERITY_LAW_DERJAGUIN`.
-    pub derjaguin: Derjaguin,
-    /// Storage.
+    pub derjaguin: DerjaguinParams,
+    /// Storage: the inputs, then the library's private derived values.
     pub raw: [f64; 16],
 }
 
 /// A single-asperity normal law, by value: copy it freely, share it between
 /// threads, keep it in your own arrays. Build it with an `asperity_law_*`
-/// constructor, which validates the parameters and fills derived constants;
-/// treat the fields as read-only.
+/// constructor (or `asperity_law_from_params`), which validates the inputs
+/// and stores derived values after them; read the inputs from the member of
+/// `params` that `kind` names, and build a new law to change them (a write
+/// to a member leaves the derived values stale).
 #[repr(C)]
 #[derive(Clone, Copy)]
 pub struct AsperityNormalLaw {
@@ -80,64 +95,103 @@ pub struct AsperityNormalLaw {
     pub kind: i32,
     /// Reserved, 0.
     pub reserved: i32,
-    /// The parameters of `kind`.
+    /// The inputs of `kind` (and the library's derived values).
     pub params: AsperityLawParams,
 }
 
 const _: () = assert!(core::mem::size_of::<AsperityLawParams>() == 16 * 8);
 
-impl From<NormalLaw> for AsperityNormalLaw {
-    fn from(law: NormalLaw) -> Self {
-        // Start from all-zero storage and write only the active member, so the
-        // bytes past it are deterministic zeros (copying a whole union built
-        // from one member would copy uninitialised padding).
-        let mut out = AsperityNormalLaw {
-            kind: ASPERITY_LAW_NONE,
-            reserved: 0,
-            params: AsperityLawParams { raw: [0.0; 16] },
+/// A Rust law that lives in the storage of [`AsperityLawParams`].
+///
+/// # Safety
+/// The type is `repr(C)`, made of `f64` and `i32` fields only and without
+/// padding (so every bit pattern is a valid value and every stored byte is
+/// initialised), at most 16 doubles in size and aligned to at most 8, and its
+/// leading fields are its inputs, laid out as the union member of its kind
+/// (which `law_inputs!` checks).
+unsafe trait Stored: Copy {}
+
+/// Per law of [`normal_laws!`]: it lives in the storage (size and alignment
+/// checked here), and the kind constants count 1, 2, … in the list's order,
+/// so `ASPERITY_LAW_NONE` (0) stays "not a law" and a new law takes the next
+/// value.
+macro_rules! c_laws {
+    (() $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
+        $(
+            // SAFETY: see the law's definition; size and alignment checked here.
+            unsafe impl Stored for $law {}
+            const _: () = assert!(
+                core::mem::size_of::<$law>() <= core::mem::size_of::<AsperityLawParams>()
+                    && core::mem::align_of::<$law>() <= 8
+            );
+        )*
+        const _: () = {
+            let mut next = ASPERITY_LAW_NONE;
+            $(
+                next += 1;
+                assert!($kind == next, "kinds count 1, 2, ... in the order of normal_laws!");
+            )*
         };
-        let p = &mut out.params;
-        out.kind = match law {
-            NormalLaw::Hertz(l) => {
-                p.hertz = l;
-                ASPERITY_LAW_HERTZ
-            }
-            NormalLaw::PowerPunch(l) => {
-                p.power_punch = l;
-                ASPERITY_LAW_POWER_PUNCH
-            }
-            NormalLaw::FlatPunch(l) => {
-                p.flat_punch = l;
-                ASPERITY_LAW_FLAT_PUNCH
-            }
-            NormalLaw::Dmt(l) => {
-                p.dmt = l;
-                ASPERITY_LAW_DMT
-            }
-            NormalLaw::Jkr(l) => {
-                p.jkr = l;
-                ASPERITY_LAW_JKR
-            }
-            NormalLaw::JkrPowerPunch(l) => {
-                p.jkr_power_punch = l;
-                ASPERITY_LAW_JKR_POWER_PUNCH
-            }
-            NormalLaw::Kendall(l) => {
-                p.kendall = l;
-                ASPERITY_LAW_KENDALL
-            }
-            NormalLaw::MaugisDugdale(l) => {
-                p.maugis_dugdale = l;
-                ASPERITY_LAW_MAUGIS_DUGDALE
-            }
-            NormalLaw::Derjaguin(l) => {
-                p.derjaguin = l;
-                ASPERITY_LAW_DERJAGUIN
-            }
-        };
-        out
-    }
+    };
 }
+normal_laws!(c_laws!());
+
+/// The storage of `law`: zeros, then the law (inputs first).
+#[inline]
+fn store<L: Stored>(law: L) -> AsperityLawParams {
+    let mut p = AsperityLawParams { raw: [0.0; 16] };
+    // SAFETY: `Stored` guarantees the size and alignment fit the storage.
+    unsafe { p.raw.as_mut_ptr().cast::<L>().write(law) };
+    p
+}
+
+/// The law of type `L` in the storage `p`.
+///
+/// # Safety
+/// None beyond the choice of `L` by the caller: every bit pattern is a valid
+/// `L` (see [`Stored`]); a wrong `L` gives a wrong law, never undefined
+/// behaviour.
+#[inline(always)]
+unsafe fn stored<L: Stored>(p: &AsperityLawParams) -> &L {
+    // SAFETY: `Stored` guarantees size, alignment and validity.
+    unsafe { &*p.raw.as_ptr().cast::<L>() }
+}
+
+/// The C value of a [`NormalLaw`], and a law from its inputs: one arm per
+/// law of [`normal_laws!`].
+macro_rules! c_law_conversions {
+    (() $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
+        impl From<NormalLaw> for AsperityNormalLaw {
+            fn from(law: NormalLaw) -> Self {
+                let (kind, params) = match law {
+                    $(NormalLaw::$law(l) => ($kind, store(l)),)*
+                };
+                AsperityNormalLaw {
+                    kind,
+                    reserved: 0,
+                    params,
+                }
+            }
+        }
+
+        /// The law of kind `kind` from the inputs `params`, validated by the
+        /// law's `from_params`.
+        fn law_from_params(kind: i32, params: &AsperityLawParams) -> Result<NormalLaw> {
+            // SAFETY: every member is plain old data (f64/i32 fields), valid
+            // for any bit pattern; `kind` selects the member the caller filled.
+            unsafe {
+                match kind {
+                    $($kind => $law::from_params(&params.$name).map(NormalLaw::$law),)*
+                    k => Err(Error::UnknownSelector {
+                        name: "kind",
+                        value: k as i64,
+                    }),
+                }
+            }
+        }
+    };
+}
+normal_laws!(c_law_conversions!());
 
 /// Run `$e` with `$l` bound to a reference to the concrete law stored in the
 /// C value `$c`, after validating the kind (never transmuted). `$e` must
@@ -145,46 +199,21 @@ impl From<NormalLaw> for AsperityNormalLaw {
 macro_rules! with_law {
     ($c:expr, $l:ident => $e:expr) => {{
         let c: &AsperityNormalLaw = $c;
-        // SAFETY: every member is plain old data (f64/i32 fields), valid for
-        // any bit pattern; `kind` selects the member the constructor wrote.
+        normal_laws!(with_law_arms!(c, $l, $e))
+    }};
+}
+
+/// The `match` of [`with_law!`]: one arm per law of [`normal_laws!`].
+macro_rules! with_law_arms {
+    (($c:ident, $l:ident, $e:expr) $($(#[$doc:meta])* $law:ident($params:ident) $name:ident = $kind:ident,)*) => {
+        // SAFETY: `stored` is sound for any bits; `kind` selects the type the
+        // constructor stored.
         unsafe {
-            match c.kind {
-                ASPERITY_LAW_HERTZ => {
-                    let $l = &c.params.hertz;
+            match $c.kind {
+                $($kind => {
+                    let $l = stored::<$law>(&$c.params);
                     $e
-                }
-                ASPERITY_LAW_POWER_PUNCH => {
-                    let $l = &c.params.power_punch;
-                    $e
-                }
-                ASPERITY_LAW_FLAT_PUNCH => {
-                    let $l = &c.params.flat_punch;
-                    $e
-                }
-                ASPERITY_LAW_DMT => {
-                    let $l = &c.params.dmt;
-                    $e
-                }
-                ASPERITY_LAW_JKR => {
-                    let $l = &c.params.jkr;
-                    $e
-                }
-                ASPERITY_LAW_JKR_POWER_PUNCH => {
-                    let $l = &c.params.jkr_power_punch;
-                    $e
-                }
-                ASPERITY_LAW_KENDALL => {
-                    let $l = &c.params.kendall;
-                    $e
-                }
-                ASPERITY_LAW_MAUGIS_DUGDALE => {
-                    let $l = &c.params.maugis_dugdale;
-                    $e
-                }
-                ASPERITY_LAW_DERJAGUIN => {
-                    let $l = &c.params.derjaguin;
-                    $e
-                }
+                })*
                 k => Err(Error::UnknownSelector {
                     name: "law.kind",
                     value: k as i64,
@@ -192,7 +221,7 @@ macro_rules! with_law {
                 .into()),
             }
         }
-    }};
+    };
 }
 
 impl AsperityNormalLaw {
@@ -214,23 +243,26 @@ pub(crate) fn control_of(control: i32) -> Result<Control> {
     }
 }
 
-fn no_slip_flag(no_slip: i32) -> Result<bool> {
-    match no_slip {
-        0 => Ok(false),
-        1 => Ok(true),
-        v => Err(Error::UnknownSelector {
-            name: "no_slip",
-            value: v as i64,
-        }),
-    }
-}
-
 unsafe fn build(out: *mut AsperityNormalLaw, make: impl FnOnce() -> Result<NormalLaw>) -> i32 {
     guard(|| {
         let out = output(out, "out")?;
         *out = make()?.into();
         Ok(())
     })
+}
+
+/// The law of kind `kind` (`ASPERITY_LAW_*`) from its inputs: the member of
+/// `params` that `kind` names (`params->jkr` for `ASPERITY_LAW_JKR`, ...;
+/// `params` must point to a whole `AsperityLawParams`), validated as by the
+/// kind's `asperity_law_*` constructor; errors name the member's field
+/// (`radius`, `no_slip`, `parameter`, ...), or `kind` for an unknown kind.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_law_from_params(
+    kind: i32,
+    params: *const AsperityLawParams,
+    out: *mut AsperityNormalLaw,
+) -> i32 {
+    build(out, || law_from_params(kind, input(params, "params")?))
 }
 
 /// Hertz sphere: radius R (m), contact modulus E* (Pa).
@@ -374,13 +406,16 @@ pub unsafe extern "C" fn asperity_law_jkr_power_punch(
     out: *mut AsperityNormalLaw,
 ) -> i32 {
     build(out, || {
-        let law = if no_slip_flag(no_slip)? {
-            JkrPowerPunch::no_slip(b, d, e_star, work_of_adhesion, nu)?
-        } else {
-            crate::error::check::poisson("nu", nu)?;
-            JkrPowerPunch::new(b, d, e_star, work_of_adhesion)?
-        };
-        Ok(NormalLaw::JkrPowerPunch(law))
+        JkrPowerPunch::from_params(&JkrPowerPunchParams {
+            b,
+            d,
+            e_star,
+            work_of_adhesion,
+            nu,
+            no_slip,
+            reserved: 0,
+        })
+        .map(NormalLaw::JkrPowerPunch)
     })
 }
 
@@ -396,13 +431,15 @@ pub unsafe extern "C" fn asperity_law_kendall(
     out: *mut AsperityNormalLaw,
 ) -> i32 {
     build(out, || {
-        let law = if no_slip_flag(no_slip)? {
-            Kendall::no_slip(radius, e_star, work_of_adhesion, nu)?
-        } else {
-            crate::error::check::poisson("nu", nu)?;
-            Kendall::new(radius, e_star, work_of_adhesion)?
-        };
-        Ok(NormalLaw::Kendall(law))
+        Kendall::from_params(&KendallParams {
+            radius,
+            e_star,
+            work_of_adhesion,
+            nu,
+            no_slip,
+            reserved: 0,
+        })
+        .map(NormalLaw::Kendall)
     })
 }
 
@@ -437,36 +474,14 @@ pub unsafe extern "C" fn asperity_law_derjaguin(
     out: *mut AsperityNormalLaw,
 ) -> i32 {
     build(out, || {
-        let w = work_of_adhesion;
-        let law = match surface_law {
-            ASPERITY_SURFACE_LAW_LENNARD_JONES => SurfaceLaw::LennardJones {
-                work_of_adhesion: w,
-                equilibrium_separation: parameter,
-            },
-            ASPERITY_SURFACE_LAW_DUGDALE => SurfaceLaw::Dugdale {
-                work_of_adhesion: w,
-                cohesive_stress: parameter,
-            },
-            ASPERITY_SURFACE_LAW_EXPONENTIAL => SurfaceLaw::Exponential {
-                work_of_adhesion: w,
-                decay_length: parameter,
-            },
-            v => {
-                return Err(Error::UnknownSelector {
-                    name: "surface_law",
-                    value: v as i64,
-                })
-            }
-        };
-        // The Rust API names the second parameter by its meaning; the C
-        // argument is `parameter`.
-        Derjaguin::new(radius, law)
-            .map(NormalLaw::Derjaguin)
-            .map_err(|e| {
-                let e = e.renamed("equilibrium_separation", "parameter");
-                let e = e.renamed("cohesive_stress", "parameter");
-                e.renamed("decay_length", "parameter")
-            })
+        Derjaguin::from_params(&DerjaguinParams {
+            radius,
+            work_of_adhesion,
+            parameter,
+            surface_law,
+            reserved: 0,
+        })
+        .map(NormalLaw::Derjaguin)
     })
 }
 

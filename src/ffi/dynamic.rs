@@ -2,24 +2,16 @@
 //! thesis chapter 5 (LuGre, Maxwell-slip, Prandtl–Tomlinson with one or two
 //! springs, the Burridge–Knopoff chain) as per-increment friction steps.
 //!
-//! * `AsperityDynamicFriction` (opaque, a boxed [`DynamicModel`]) is built by
-//!   `asperity_dynamic_lugre_new`, `asperity_dynamic_maxwell_slip_new`,
-//!   `asperity_dynamic_prandtl_tomlinson_new`,
-//!   `asperity_dynamic_prandtl_tomlinson_two_spring_new` or
-//!   `asperity_dynamic_burridge_knopoff_new`;
-//!   immutable, one handle may be used by any number of threads at once.
-//! * Per-point states are caller-owned arrays of
-//!   `asperity_dynamic_friction_state_size` doubles (all-zero = fresh;
-//!   layout: `ASPERITY_DYNAMIC_STATE_*`, then the model's variables).
-//! * `asperity_dynamic_friction_step` steps one point with every output and
-//!   optional tangents; `asperity_dynamic_friction_step_block` steps n points
-//!   in the shape of Abaqus/Explicit VFRIC.
-//!
-//! Sign convention (as VFRIC and the other friction steps): the slip
-//! increment is the motion of the point relative to the counter-surface, the
-//! tangential force is the force on the point and opposes slip.
+//! Each constructor (`asperity_friction_lugre_new`,
+//! `asperity_friction_maxwell_slip_new`, `asperity_friction_bristles_new`,
+//! `asperity_friction_prandtl_tomlinson_new`,
+//! `asperity_friction_prandtl_tomlinson_two_spring_new`,
+//! `asperity_friction_burridge_knopoff_new`) validates its parameter struct
+//! and writes an `AsperityFriction` handle, stepped through the one friction
+//! handle (`ffi::friction_law`).
 
-use super::{guard, input, output, partial_overlap, Failure};
+use super::friction_law::{emit_law, AsperityFriction};
+use super::input;
 
 /// `ctor(p.a, p.b, …)` for a constructor whose arguments are the C
 /// parameter struct's fields, in order and under the same names, with its
@@ -33,47 +25,16 @@ macro_rules! from_params {
         })
     }};
 }
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::friction::dynamic::burridge_knopoff::MAX_BLOCKS;
 use crate::friction::dynamic::{
-    Bristles, BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, DynamicResponse,
-    LuGre, MaxwellSlip, PrandtlTomlinson, STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH,
-    TANGENT_NORMAL, TANGENT_SLIP,
+    Bristles, BurridgeKnopoff, DynamicModel, LuGre, MaxwellSlip, PrandtlTomlinson,
 };
 
-/// `AsperityDynamicIncrement.tangents` bit: compute dF/dN.
-pub const ASPERITY_DYNAMIC_TANGENT_NORMAL: i32 = 1;
-/// `AsperityDynamicIncrement.tangents` bit: compute dF/d(slip).
-pub const ASPERITY_DYNAMIC_TANGENT_SLIP: i32 = 2;
-/// Index in a dynamic-friction state of the accumulated dissipation (J).
-pub const ASPERITY_DYNAMIC_STATE_DISSIPATION: usize = 0;
-/// Index in a dynamic-friction state of the accumulated slip path (m).
-pub const ASPERITY_DYNAMIC_STATE_SLIP_PATH: usize = 1;
-/// Index in a dynamic-friction state of the model's first variable: LuGre's
-/// bristle deflection z (x, y; m); Maxwell-slip's element deflections
-/// (x, y per element; m); Prandtl-Tomlinson's x - x_s (m), tip velocity
-/// (m/s), support position x_s (m), then with two springs the cantilever
-/// body's x_c - x_s (m) and velocity (m/s); Burridge-Knopoff's x_i - x_d (m)
-/// and v_i (m/s) per block, then the driver position x_d (m).
-pub const ASPERITY_DYNAMIC_STATE_MODEL: usize = 2;
 /// The largest Burridge-Knopoff chain (blocks).
 pub const ASPERITY_DYNAMIC_MAX_BLOCKS: usize = 256;
 
-const _: () = {
-    assert!(ASPERITY_DYNAMIC_TANGENT_NORMAL == TANGENT_NORMAL);
-    assert!(ASPERITY_DYNAMIC_TANGENT_SLIP == TANGENT_SLIP);
-    assert!(ASPERITY_DYNAMIC_STATE_DISSIPATION == STATE_DISSIPATION);
-    assert!(ASPERITY_DYNAMIC_STATE_SLIP_PATH == STATE_SLIP_PATH);
-    assert!(ASPERITY_DYNAMIC_STATE_MODEL == STATE_MODEL);
-    assert!(ASPERITY_DYNAMIC_MAX_BLOCKS == MAX_BLOCKS);
-};
-
-/// A dynamic friction model (opaque): LuGre, Maxwell-slip,
-/// Prandtl-Tomlinson (one or two springs) or Burridge-Knopoff. Create it
-/// with `asperity_dynamic_*_new`, release it with
-/// `asperity_dynamic_friction_free`. Immutable; safe to share between
-/// threads.
-pub struct AsperityDynamicFriction(DynamicModel);
+const _: () = assert!(ASPERITY_DYNAMIC_MAX_BLOCKS == MAX_BLOCKS);
 
 /// The LuGre model's parameters (see `LuGre::new`). SI units.
 #[repr(C)]
@@ -155,15 +116,10 @@ pub struct AsperityBurridgeKnopoffParams {
 }
 
 unsafe fn emit(
-    out: *mut *mut AsperityDynamicFriction,
+    out: *mut *mut AsperityFriction,
     make: impl FnOnce() -> Result<DynamicModel>,
 ) -> i32 {
-    guard(|| {
-        let out = output(out, "out")?;
-        *out = core::ptr::null_mut();
-        *out = Box::into_raw(Box::new(AsperityDynamicFriction(make()?)));
-        Ok(())
-    })
+    emit_law(out, make)
 }
 
 /// Build a LuGre model from `*params` (Canudas de Wit et al. 1995, scaled
@@ -171,9 +127,9 @@ unsafe fn emit(
 /// handle to `*out` (NULL on failure). Errors name the field and its bound
 /// (`params.sigma1` for the passivity bound).
 #[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_lugre_new(
+pub unsafe extern "C" fn asperity_friction_lugre_new(
     params: *const AsperityLugreParams,
-    out: *mut *mut AsperityDynamicFriction,
+    out: *mut *mut AsperityFriction,
 ) -> i32 {
     emit(out, || {
         from_params!(
@@ -197,12 +153,12 @@ pub unsafe extern "C" fn asperity_dynamic_lugre_new(
 /// coefficients `capacity[i]` (>= 0), viscous coefficient `sigma2`
 /// (N s/m, >= 0). Writes a new handle to `*out` (NULL on failure).
 #[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_maxwell_slip_new(
+pub unsafe extern "C" fn asperity_friction_maxwell_slip_new(
     stiffness: *const f64,
     capacity: *const f64,
     n: usize,
     sigma2: f64,
-    out: *mut *mut AsperityDynamicFriction,
+    out: *mut *mut AsperityFriction,
 ) -> i32 {
     emit(out, || {
         let k = input(stiffness, "stiffness")?;
@@ -223,12 +179,12 @@ pub unsafe extern "C" fn asperity_dynamic_maxwell_slip_new(
 /// bonds again undeflected. One-dimensional: increments need `slip[1]` = 0.
 /// Writes a new handle to `*out` (NULL on failure).
 #[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_bristles_new(
+pub unsafe extern "C" fn asperity_friction_bristles_new(
     stiffness: *const f64,
     break_deflection: *const f64,
     n: usize,
     sigma2: f64,
-    out: *mut *mut AsperityDynamicFriction,
+    out: *mut *mut AsperityFriction,
 ) -> i32 {
     emit(out, || {
         let k = input(stiffness, "stiffness")?;
@@ -251,14 +207,14 @@ pub unsafe extern "C" fn asperity_dynamic_bristles_new(
 /// One-dimensional: increments need `slip[1]` = 0. Stick-slip when
 /// 4 pi^2 U0/(k a^2) > 1. Writes a new handle to `*out` (NULL on failure).
 #[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_prandtl_tomlinson_new(
+pub unsafe extern "C" fn asperity_friction_prandtl_tomlinson_new(
     amplitude: f64,
     period: f64,
     stiffness: f64,
     mass: f64,
     damping: f64,
     tolerance: f64,
-    out: *mut *mut AsperityDynamicFriction,
+    out: *mut *mut AsperityFriction,
 ) -> i32 {
     emit(out, || {
         PrandtlTomlinson::new(amplitude, period, stiffness, mass, damping, tolerance)
@@ -274,9 +230,9 @@ pub unsafe extern "C" fn asperity_dynamic_prandtl_tomlinson_new(
 /// 1/k_eff = 1/k_t + 1/k_c. Writes a new handle to `*out` (NULL on
 /// failure); errors name the field (`params.tip_mass`, ...).
 #[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_prandtl_tomlinson_two_spring_new(
+pub unsafe extern "C" fn asperity_friction_prandtl_tomlinson_two_spring_new(
     params: *const AsperityPrandtlTomlinsonTwoSpringParams,
-    out: *mut *mut AsperityDynamicFriction,
+    out: *mut *mut AsperityFriction,
 ) -> i32 {
     emit(out, || {
         from_params!(
@@ -305,9 +261,9 @@ pub unsafe extern "C" fn asperity_dynamic_prandtl_tomlinson_two_spring_new(
 /// Writes a new handle to `*out` (NULL on failure); errors name the field
 /// (`params.blocks`, ...).
 #[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_burridge_knopoff_new(
+pub unsafe extern "C" fn asperity_friction_burridge_knopoff_new(
     params: *const AsperityBurridgeKnopoffParams,
-    out: *mut *mut AsperityDynamicFriction,
+    out: *mut *mut AsperityFriction,
 ) -> i32 {
     emit(out, || {
         from_params!(
@@ -324,117 +280,5 @@ pub unsafe extern "C" fn asperity_dynamic_burridge_knopoff_new(
             tolerance,
         )
         .map(DynamicModel::BurridgeKnopoff)
-    })
-}
-
-/// Release a model; NULL is accepted and ignored.
-#[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_friction_free(model: *mut AsperityDynamicFriction) {
-    if !model.is_null() {
-        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            drop(Box::from_raw(model));
-        }));
-    }
-}
-
-/// Write the number of doubles of one point's state to `*n` (LuGre: 4;
-/// Maxwell-slip: 2 + 2 x elements; Prandtl-Tomlinson: 5, with two springs
-/// 7; Burridge-Knopoff: 3 + 2 x blocks).
-#[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_friction_state_size(
-    model: *const AsperityDynamicFriction,
-    n: *mut usize,
-) -> i32 {
-    guard(|| {
-        let m = &input(model, "model")?.0;
-        *output(n, "n")? = m.state_len();
-        Ok(())
-    })
-}
-
-/// One increment of one point: `*increment` from the state `old_state`
-/// (`asperity_dynamic_friction_state_size` doubles; all-zero = fresh) into
-/// `new_state` (same size; may equal `old_state` to step in place, must not
-/// partially overlap it) and the response into `*out`. The same old state
-/// and increment give bit-identical results (cut-backs). No allocation. On
-/// failure `new_state` and `*out` are untouched; the message names the
-/// argument and its bound.
-#[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_friction_step(
-    model: *const AsperityDynamicFriction,
-    increment: *const DynamicIncrement,
-    old_state: *const f64,
-    new_state: *mut f64,
-    out: *mut DynamicResponse,
-) -> i32 {
-    guard(|| {
-        let m = &input(model, "model")?.0;
-        let inc = input(increment, "increment")?;
-        input(old_state, "old_state")?;
-        output(new_state, "new_state")?;
-        let out = output(out, "out")?;
-        let len = m.state_len();
-        let r = if core::ptr::eq(old_state, new_state) {
-            // SAFETY: the caller provides `len` writable values.
-            m.step_in_place(core::slice::from_raw_parts_mut(new_state, len), inc)
-        } else {
-            if partial_overlap(old_state, new_state, len) {
-                return Err(Error::InvalidArgument {
-                    name: "new_state",
-                    value: len as f64,
-                    bound: "equal to old_state or not overlapping it",
-                }
-                .into());
-            }
-            // SAFETY: distinct, non-overlapping arrays of `len` values.
-            m.step(
-                core::slice::from_raw_parts(old_state, len),
-                core::slice::from_raw_parts_mut(new_state, len),
-                inc,
-            )
-        }?;
-        *out = r;
-        Ok(())
-    })
-}
-
-/// Step `n` points at once, in the shape of Abaqus/Explicit VFRIC: normal
-/// forces `normal_forces[i]` (N), slip increments `slip_increments[2i]`,
-/// `[2i+1]` (m, interleaved), one `dt` (s), the states
-/// `states[i*m .. (i+1)*m]` (m = `asperity_dynamic_friction_state_size`)
-/// stepped in place, tangential forces out in `tangential_forces[2i]`,
-/// `[2i+1]` (N) and the dissipated energy of the increment in
-/// `dissipation[i]` (J; may be NULL). No tangents. On an error at point i,
-/// the points before i are written and the message names i.
-#[no_mangle]
-pub unsafe extern "C" fn asperity_dynamic_friction_step_block(
-    model: *const AsperityDynamicFriction,
-    n: usize,
-    normal_forces: *const f64,
-    slip_increments: *const f64,
-    dt: f64,
-    states: *mut f64,
-    tangential_forces: *mut f64,
-    dissipation: *mut f64,
-) -> i32 {
-    guard(|| {
-        let m = &input(model, "model")?.0;
-        if n == 0 {
-            return Ok(());
-        }
-        let len = m.state_len();
-        // SAFETY: the caller provides arrays of the documented lengths.
-        let normal = core::slice::from_raw_parts(input(normal_forces, "normal_forces")?, n);
-        let slip = core::slice::from_raw_parts(input(slip_increments, "slip_increments")?, 2 * n);
-        let states = core::slice::from_raw_parts_mut(output(states, "states")?, n * len);
-        let forces =
-            core::slice::from_raw_parts_mut(output(tangential_forces, "tangential_forces")?, 2 * n);
-        let diss = if dissipation.is_null() {
-            None
-        } else {
-            Some(core::slice::from_raw_parts_mut(dissipation, n))
-        };
-        m.step_block(normal, slip, dt, states, forces, diss)
-            .map_err(|e| Failure::at(e.index, e.error))
     })
 }

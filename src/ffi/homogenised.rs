@@ -1,38 +1,17 @@
 //! C ABI for `crate::friction::homogenised`: the opaque
 //! `AsperityHomogenisedFriction` handle (a boxed [`HomogenisedFriction`]),
-//! built from an array of samples or from JSON, the state size, the step per
-//! point and the VFRIC-shaped block step.
+//! the table built from an array of samples or from JSON.
+//! `asperity_friction_from_homogenised` makes it a friction law with a stick
+//! stiffness, stepped per increment through the one friction handle
+//! (`ffi::friction_law`).
 //!
-//! A law is immutable after construction: one handle may be used by any
-//! number of threads at once (per-point states stay with the caller). Sign
-//! convention (as Abaqus VFRIC): the slip increment is the motion of the
-//! point relative to the counter-surface, the tangential force is the force
-//! on the point and opposes slip.
+//! A table is immutable after construction: one handle may be used by any
+//! number of threads at once.
 
-use super::{copy_text, guard, input, output, read_text, Failure};
+use super::{copy_text, guard, input, output, read_text};
 use crate::error::Result;
-use crate::friction::{
-    CofForm, FrictionIncrement, FrictionPointState, FrictionResponse, HomogenisedFriction,
-    HomogenisedSample, RawFrictionBlock,
-};
+use crate::friction::{CofForm, HomogenisedFriction, HomogenisedSample};
 use std::ffi::c_char;
-
-/// `AsperityFrictionResponse.regime`: the trial force is inside the cone, no
-/// plastic slip.
-pub const ASPERITY_FRICTION_STICK: i32 = 0;
-/// `AsperityFrictionResponse.regime`: the force is on the cone, plastic slip
-/// and dissipation.
-pub const ASPERITY_FRICTION_SLIP: i32 = 1;
-/// `AsperityFrictionResponse.regime`: no normal force and no adhesion; no
-/// friction (force 0).
-pub const ASPERITY_FRICTION_NO_CONTACT: i32 = 2;
-
-const _: () = {
-    use crate::friction::FrictionRegime as R;
-    assert!(ASPERITY_FRICTION_STICK == R::Stick as i32);
-    assert!(ASPERITY_FRICTION_SLIP == R::Slip as i32);
-    assert!(ASPERITY_FRICTION_NO_CONTACT == R::NoContact as i32);
-};
 
 /// The homogenised friction law of FE integration points (opaque): μ(p),
 /// adhesion, contact fraction and dissipation shares over the nominal
@@ -40,7 +19,7 @@ const _: () = {
 /// `asperity_homogenised_friction_from_json`, release it with
 /// `asperity_homogenised_friction_free`. Immutable; safe to share between
 /// threads.
-pub struct AsperityHomogenisedFriction(HomogenisedFriction);
+pub struct AsperityHomogenisedFriction(pub(crate) HomogenisedFriction);
 
 unsafe fn emit(
     out: *mut *mut AsperityHomogenisedFriction,
@@ -120,91 +99,4 @@ pub unsafe extern "C" fn asperity_homogenised_friction_free(
             drop(Box::from_raw(friction));
         }));
     }
-}
-
-/// Size in bytes of `AsperityFrictionPointState`, for hosts that allocate
-/// per-point state arrays generically (an all-zero state is a fresh point).
-#[no_mangle]
-pub extern "C" fn asperity_homogenised_friction_state_size() -> usize {
-    core::mem::size_of::<FrictionPointState>()
-}
-
-/// One friction step at one point: the increment `*increment` from the
-/// history `*old_state` (NULL: fresh), the history after the step into
-/// `*new_state` (may be NULL, may equal `old_state`) and the response into
-/// `*out`. On failure `*new_state` and `*out` are untouched.
-#[no_mangle]
-pub unsafe extern "C" fn asperity_homogenised_friction_step(
-    friction: *const AsperityHomogenisedFriction,
-    increment: *const FrictionIncrement,
-    old_state: *const FrictionPointState,
-    new_state: *mut FrictionPointState,
-    out: *mut FrictionResponse,
-) -> i32 {
-    guard(|| {
-        let f = &input(friction, "friction")?.0;
-        let inc = input(increment, "increment")?;
-        let out = output(out, "out")?;
-        let old = if old_state.is_null() {
-            FrictionPointState::default()
-        } else {
-            old_state.read()
-        };
-        let (s, r) = f.step_value(&old, inc)?;
-        *out = r;
-        if !new_state.is_null() {
-            new_state.write(s);
-        }
-        Ok(())
-    })
-}
-
-/// Step `n` points at once, in the shape of Abaqus/Explicit VFRIC:
-/// `normal_forces[i]` (N), `areas[i]` (m²), slip increments
-/// `slip_increments[2i]`, `[2i+1]` (m, x and y interleaved), one `dt` (s) and
-/// `stick_stiffness` (N/m) for all, `old_state[i]` → `new_state[i]`,
-/// tangential forces out in `tangential_forces[2i]`, `[2i+1]` (N,
-/// interleaved) and the dissipated energy of the increment in
-/// `dissipation[i]` (J). `normal_forces`, `areas`, `slip_increments` and
-/// `tangential_forces` are required; `old_state` may be NULL (all fresh),
-/// `new_state` and `dissipation` may be NULL (not wanted); `old_state` may
-/// equal `new_state`. On an error at element i, elements before i are written,
-/// those from i on are untouched, and the message names i.
-#[no_mangle]
-pub unsafe extern "C" fn asperity_homogenised_friction_step_block(
-    friction: *const AsperityHomogenisedFriction,
-    n: usize,
-    normal_forces: *const f64,
-    areas: *const f64,
-    slip_increments: *const f64,
-    dt: f64,
-    stick_stiffness: f64,
-    old_state: *const FrictionPointState,
-    new_state: *mut FrictionPointState,
-    tangential_forces: *mut f64,
-    dissipation: *mut f64,
-) -> i32 {
-    guard(|| {
-        let f = &input(friction, "friction")?.0;
-        if n == 0 {
-            return Ok(());
-        }
-        input(normal_forces, "normal_forces")?;
-        input(areas, "areas")?;
-        input(slip_increments, "slip_increments")?;
-        output(tangential_forces, "tangential_forces")?;
-        f.step_block_raw(&RawFrictionBlock {
-            n,
-            normal_forces,
-            areas,
-            slip_increments,
-            dt,
-            stick_stiffness,
-            old: old_state,
-            new: new_state,
-            tangential_forces,
-            dissipation,
-        })
-        .map_err(|e| Failure::at(e.index, e.error))
-    })
 }

@@ -13,6 +13,7 @@ pub mod contact;
 pub mod dynamic;
 pub mod fidelity;
 pub mod friction;
+pub mod friction_law;
 pub mod homogenised;
 pub mod indentation;
 pub mod lj_sphere;

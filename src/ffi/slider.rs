@@ -1,48 +1,33 @@
 //! C ABI for `crate::friction::slider`: the full hierarchical slider as the
-//! friction step per time increment of a surface patch.
+//! friction law of a surface patch.
 //!
 //! * `AsperitySlider` (opaque, a boxed [`Slider`]) is built from a scene's
 //!   JSON text ([`Scene::from_json`], [`Scene::build`]) or from structs
 //!   (`asperity_slider_new`: a geometry handle, `AsperityFrictionMaterial`,
 //!   a counter-surface array, `AsperitySliderOptions`); immutable, one
 //!   handle may be used by any number of threads at once.
-//! * `AsperitySliderWork` (opaque, a boxed [`SliderWork`]) holds the
-//!   scratch buffers of a step: one per thread, built once.
-//! * Per-patch states are caller-owned arrays of
-//!   `asperity_slider_state_size` doubles (all-zero = fresh; layout:
-//!   the `ASPERITY_SLIDER_STATE_*` indices, [`Slider::state_len`]).
-//! * `asperity_slider_step` steps one patch with every output and optional
-//!   tangents; `asperity_slider_step_block` steps n patches in the shape of
-//!   Abaqus/Explicit VFRIC (as `asperity_homogenised_friction_step_block`).
-//!
-//! Sign convention (as VFRIC and the homogenised law): the slip increment
-//! is the motion of the patch relative to the counter-surface, the
-//! tangential force is the force on the patch and opposes slip.
+//! * `asperity_friction_from_slider` makes it the friction law of a surface
+//!   patch, stepped per increment through the one friction handle
+//!   (`ffi::friction_law`).
 
 use super::friction::AsperitySliderGeometry;
-use super::{guard, input, output, partial_overlap, read_text, set_last_error, Failure};
+use super::friction_law::AsperityFrictionWork;
+use super::{guard, input, output, read_text, set_last_error, Failure};
 use crate::error::{Error, Result};
 use crate::friction::{
-    CofForm, FrictionMaterial, Loading, Mechanisms, PlasticUpdate, RodOptions, RodSolver, Slider,
-    SliderIncrement, SliderOptions, SliderResponse, SliderStates, SliderTangents, SliderWork,
-    TrackEnd,
+    CofForm, FrictionLaw, FrictionMaterial, Loading, Mechanisms, PlasticUpdate, RodOptions,
+    RodSolver, Slider, SliderOptions, SliderWork, TrackEnd,
 };
 use crate::scene::{Scene, SceneError};
 use std::ffi::{c_char, CStr};
 
-/// `AsperitySliderIncrement.control`: the slider's own loading (the
-/// scene's); `normal_force` and `gap` are ignored.
-pub const ASPERITY_SLIDER_CONTROL_SCENE: i32 = 0;
-/// `AsperitySliderIncrement.control`: fixed load `normal_force` (N).
+/// `AsperitySliderInfo.scene_control`: the scene's loading is a fixed load
+/// (N).
 pub const ASPERITY_SLIDER_CONTROL_LOAD: i32 = 1;
-/// `AsperitySliderIncrement.control`: fixed gap, the slider's mean line at
-/// `gap` (m) above the counter-surface's mean line.
+/// `AsperitySliderInfo.scene_control`: the scene's loading is a fixed gap,
+/// the slider's mean line at `scene_loading` (m) above the counter-surface's
+/// mean line.
 pub const ASPERITY_SLIDER_CONTROL_GAP: i32 = 2;
-
-/// `AsperitySliderIncrement.tangents` bit: compute dF/dN.
-pub const ASPERITY_SLIDER_TANGENT_NORMAL: i32 = 1;
-/// `AsperitySliderIncrement.tangents` bit: compute dF/d(slip).
-pub const ASPERITY_SLIDER_TANGENT_SLIP: i32 = 2;
 
 /// `AsperitySliderOptions.mechanisms` bit: breaking of chemical bonds (4.1).
 pub const ASPERITY_MECHANISM_CHEMICAL: i32 = 1;
@@ -85,99 +70,52 @@ pub const ASPERITY_ROD_SOLVER_SWEEP: i32 = 0;
 /// (6-12)/(6-16), iterated over active sets (reference; allocates).
 pub const ASPERITY_ROD_SOLVER_DENSE: i32 = 1;
 
-/// Index in a slider state of its flag: 0 fresh, 1 stepped.
-pub const ASPERITY_SLIDER_STATE_FLAG: usize = 0;
-/// Index in a slider state of the slider position X along its track (m).
-/// A fresh state (flag 0) starts there: set it to place patches at
-/// different points of the counter-surface.
-pub const ASPERITY_SLIDER_STATE_POSITION: usize = 1;
-/// Index in a slider state of the rod-bed position b of the last
-/// equilibrium (m; NaN: none).
-pub const ASPERITY_SLIDER_STATE_ROD_POSITION: usize = 2;
-/// Index in a slider state of the accumulated slip path (m).
-pub const ASPERITY_SLIDER_STATE_SLIP_PATH: usize = 3;
-/// Index in a slider state of the accumulated dissipation (J), 4 values:
-/// chemical, van der Waals, elastic, plastic.
-pub const ASPERITY_SLIDER_STATE_DISSIPATION: usize = 4;
-/// Index in a slider state of the rod heights (m, one per rod), followed by
-/// the rods' stored elastic energies (J, one per rod).
-pub const ASPERITY_SLIDER_STATE_HEIGHTS: usize = 8;
+/// Index in a slider's friction state of its flag: 0 fresh, 1 stepped.
+pub const ASPERITY_SLIDER_STATE_FLAG: usize = 2;
+/// Index in a slider's friction state of the slider position X along its
+/// track (m). A fresh state (flag 0) starts there: set it to place patches
+/// at different points of the counter-surface.
+pub const ASPERITY_SLIDER_STATE_POSITION: usize = 3;
+/// Index in a slider's friction state of the rod-bed position b of the
+/// last equilibrium (m; NaN: none).
+pub const ASPERITY_SLIDER_STATE_ROD_POSITION: usize = 4;
+/// Index in a slider's friction state of the accumulated dissipation by
+/// mechanism (J), 4 values: chemical, van der Waals, elastic, plastic.
+pub const ASPERITY_SLIDER_STATE_MECHANISMS: usize = 5;
+/// Index in a slider's friction state of the rod heights (m, one per rod),
+/// followed by the rods' stored elastic energies (J, one per rod).
+pub const ASPERITY_SLIDER_STATE_HEIGHTS: usize = 9;
+/// Index in a homogenised friction state of the stick force (N, x and y).
+pub const ASPERITY_HOMOGENISED_STATE_FORCE: usize = 2;
+/// Index in a homogenised friction state of the accumulated plastic slip
+/// path (m).
+pub const ASPERITY_HOMOGENISED_STATE_PLASTIC_SLIP_PATH: usize = 4;
+/// Index in a homogenised friction state of the accumulated dissipation by
+/// mechanism (J), 4 values: chemical, van der Waals, elastic, plastic.
+pub const ASPERITY_HOMOGENISED_STATE_MECHANISMS: usize = 5;
 
 const _: () = {
-    assert!(ASPERITY_SLIDER_TANGENT_NORMAL == SliderTangents::NORMAL);
-    assert!(ASPERITY_SLIDER_TANGENT_SLIP == SliderTangents::SLIP);
+    use crate::friction::HomogenisedFriction as H;
     assert!(ASPERITY_SLIDER_STATE_FLAG == Slider::STATE_FLAG);
     assert!(ASPERITY_SLIDER_STATE_POSITION == Slider::STATE_POSITION);
     assert!(ASPERITY_SLIDER_STATE_ROD_POSITION == Slider::STATE_ROD_POSITION);
-    assert!(ASPERITY_SLIDER_STATE_SLIP_PATH == Slider::STATE_SLIP_PATH);
-    assert!(ASPERITY_SLIDER_STATE_DISSIPATION == Slider::STATE_DISSIPATION);
+    assert!(ASPERITY_SLIDER_STATE_MECHANISMS == Slider::STATE_MECHANISMS);
     assert!(ASPERITY_SLIDER_STATE_HEIGHTS == Slider::STATE_HEIGHTS);
+    assert!(ASPERITY_HOMOGENISED_STATE_FORCE == H::STATE_FORCE);
+    assert!(ASPERITY_HOMOGENISED_STATE_PLASTIC_SLIP_PATH == H::STATE_PLASTIC_SLIP_PATH);
+    assert!(ASPERITY_HOMOGENISED_STATE_MECHANISMS == H::STATE_MECHANISMS);
 };
 
 /// The hierarchical slider against its counter-surface (opaque). Create it
 /// with `asperity_slider_from_scene_json`, release it with
 /// `asperity_slider_free`. Immutable; safe to share between threads.
-pub struct AsperitySlider(Slider);
-
-/// Scratch buffers of the slider step (opaque): one per thread. Create it
-/// with `asperity_slider_work_new`, release it with
-/// `asperity_slider_work_free`.
-pub struct AsperitySliderWork(SliderWork);
-
-/// One time increment of a slider patch. SI units. An all-zero increment
-/// seats a fresh patch under the scene's loading without sliding.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct AsperitySliderIncrement {
-    /// Normal force on the patch (N), finite, >= 0 and <= the capacity
-    /// (`AsperitySliderInfo.capacity`); read when `control` is
-    /// `ASPERITY_SLIDER_CONTROL_LOAD`.
-    pub normal_force: f64,
-    /// Position of the slider's mean line above the counter-surface's mean
-    /// line (m), finite; read when `control` is `ASPERITY_SLIDER_CONTROL_GAP`.
-    pub gap: f64,
-    /// Slip increment of the patch relative to the counter-surface (m), two
-    /// finite components in the caller's tangent basis; a track uses
-    /// `slip[1] = 0`. The slider advances along its track by |slip|.
-    pub slip: [f64; 2],
-    /// Time increment (s), finite and >= 0 (unused: rate independent).
-    pub dt: f64,
-    /// `ASPERITY_SLIDER_CONTROL_SCENE` (0), `_LOAD` (1) or `_GAP` (2).
-    pub control: i32,
-    /// Tangents wanted: 0, or `ASPERITY_SLIDER_TANGENT_NORMAL` |
-    /// `ASPERITY_SLIDER_TANGENT_SLIP` (each costs two more evaluations).
-    pub tangents: i32,
-}
-
-impl AsperitySliderIncrement {
-    fn increment(&self) -> Result<SliderIncrement> {
-        let loading = match self.control {
-            ASPERITY_SLIDER_CONTROL_SCENE => None,
-            ASPERITY_SLIDER_CONTROL_LOAD => Some(Loading::FixedLoad {
-                load: self.normal_force,
-            }),
-            ASPERITY_SLIDER_CONTROL_GAP => Some(Loading::FixedGap { position: self.gap }),
-            other => {
-                return Err(Error::UnknownSelector {
-                    name: "control",
-                    value: other as i64,
-                })
-            }
-        };
-        Ok(SliderIncrement {
-            loading,
-            slip: self.slip,
-            dt: self.dt,
-            tangents: SliderTangents::from_bits(self.tangents)?,
-        })
-    }
-}
+pub struct AsperitySlider(pub(crate) Slider);
 
 /// What a slider is: sizes and capacities (SI).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct AsperitySliderInfo {
-    /// Doubles per patch state (8 + 2 x rods).
+    /// Doubles per patch state of its friction law (9 + 2 x rods).
     pub state_size: usize,
     /// Number of rods (micro-asperities of the finest level).
     pub rods: usize,
@@ -490,19 +428,6 @@ pub unsafe extern "C" fn asperity_slider_free(slider: *mut AsperitySlider) {
     }
 }
 
-/// Write the number of doubles of one patch state (8 + 2 x rods) to `*n`.
-#[no_mangle]
-pub unsafe extern "C" fn asperity_slider_state_size(
-    slider: *const AsperitySlider,
-    n: *mut usize,
-) -> i32 {
-    guard(|| {
-        let s = &input(slider, "slider")?.0;
-        *output(n, "n")? = s.state_len();
-        Ok(())
-    })
-}
-
 /// Write the sizes and capacities of `slider` to `*info`.
 #[no_mangle]
 pub unsafe extern "C" fn asperity_slider_info(
@@ -534,153 +459,62 @@ pub unsafe extern "C" fn asperity_slider_info(
     })
 }
 
-/// Build the scratch buffers of a step with `slider` and write the handle to
-/// `*out` (NULL on failure). Use one per thread; it may serve any slider
-/// with the same number of rods.
+/// The full record of a slider patch's last step (SI), beyond the friction
+/// response: positions and the counts of contacts.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AsperitySliderRecord {
+    /// Slider position X along the track after the increment (m).
+    pub position: f64,
+    /// Rod-bed position b: height of the slider's mean line above the
+    /// counter-surface's mean line (m).
+    pub rod_position: f64,
+    /// Fraction of the nano-asperities in contact touching only thanks to
+    /// adhesion, in [0, 1].
+    pub adhesion_area_share: f64,
+    /// Nano-asperities in contact N_c.
+    pub nano_contacts: u64,
+    /// Of those, in contact only thanks to adhesion.
+    pub adhesive_contacts: u64,
+    /// Rods carrying force.
+    pub rods_in_contact: u64,
+    /// Rods at the yield force.
+    pub yielded_rods: u64,
+    /// 1 when the step seated a fresh state first, else 0.
+    pub seated: i32,
+    /// Reserved, 0.
+    pub reserved: i32,
+}
+
+/// Write the record of the last step taken with `work` by a slider law
+/// (`asperity_friction_from_slider`) to `*out`; all zero for a work made
+/// for a slider law that has not stepped yet. Errors: NULL, or a work of
+/// another law (`work`).
 #[no_mangle]
-pub unsafe extern "C" fn asperity_slider_work_new(
-    slider: *const AsperitySlider,
-    out: *mut *mut AsperitySliderWork,
+pub unsafe extern "C" fn asperity_slider_record(
+    work: *const AsperityFrictionWork,
+    out: *mut AsperitySliderRecord,
 ) -> i32 {
     guard(|| {
+        let w = &input(work, "work")?.0;
         let out = output(out, "out")?;
-        *out = core::ptr::null_mut();
-        let s = &input(slider, "slider")?.0;
-        *out = Box::into_raw(Box::new(AsperitySliderWork(s.work())));
-        Ok(())
-    })
-}
-
-/// Release work buffers; NULL is accepted and ignored.
-#[no_mangle]
-pub unsafe extern "C" fn asperity_slider_work_free(work: *mut AsperitySliderWork) {
-    if !work.is_null() {
-        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            drop(Box::from_raw(work));
-        }));
-    }
-}
-
-/// One friction step of one patch: the increment `*increment` from the
-/// state `old_state` (`asperity_slider_state_size` doubles; all-zero =
-/// fresh: seated first under the increment's loading) into `new_state`
-/// (same size; may equal `old_state` to step in place, must not partially
-/// overlap it) and the response into `*out`. The same old state and
-/// increment give bit-identical results, so a host can re-evaluate or cut
-/// back an increment. See `Slider::step_flat` for the zero-slip rule (stick:
-/// force 0, nothing dissipated) and the finite-difference tangents. No
-/// allocation. On failure `new_state` and `*out` are untouched; the message
-/// names the argument and its bound.
-#[no_mangle]
-pub unsafe extern "C" fn asperity_slider_step(
-    slider: *const AsperitySlider,
-    work: *mut AsperitySliderWork,
-    increment: *const AsperitySliderIncrement,
-    old_state: *const f64,
-    new_state: *mut f64,
-    out: *mut SliderResponse,
-) -> i32 {
-    guard(|| {
-        let s = &input(slider, "slider")?.0;
-        let w = &mut output(work, "work")?.0;
-        let inc = input(increment, "increment")?.increment()?;
-        input(old_state, "old_state")?;
-        output(new_state, "new_state")?;
-        let out = output(out, "out")?;
-        let n = s.state_len();
-        if partial_overlap(old_state, new_state, n) {
-            return Err(Error::InvalidArgument {
-                name: "new_state",
-                value: 0.0,
-                bound: "equal to old_state (in place) or not overlapping it",
-            }
-            .into());
-        }
-        // SAFETY: the caller provides `n` doubles at each pointer; equal
-        // pointers are one mutable slice, otherwise they do not overlap.
-        let r = if core::ptr::eq(old_state, new_state) {
-            let state = core::slice::from_raw_parts_mut(new_state, n);
-            s.step_flat_in_place(state, &inc, w)?
-        } else {
-            let old = core::slice::from_raw_parts(old_state, n);
-            let new = core::slice::from_raw_parts_mut(new_state, n);
-            s.step_flat(old, new, &inc, w)?
-        };
-        *out = r;
-        Ok(())
-    })
-}
-
-/// Step `n` patches at once, in the shape of Abaqus/Explicit VFRIC (as
-/// `asperity_homogenised_friction_step_block`): the normal force on patch i
-/// `normal_force[i]` (N, a fixed load, <= the capacity), its slip increment
-/// `slip[2i]`, `[2i+1]` (m, x and y interleaved), one `dt` (s) for all,
-/// states `old_states[i*m .. (i+1)*m]` -> `new_states[...]` with m =
-/// `asperity_slider_state_size`, tangential forces out in
-/// `tangential_force[2i]`, `[2i+1]` (N, interleaved, opposing slip) and the
-/// dissipated energy of the increment in `dissipation[i]` (J). `dissipation`
-/// may be NULL (not wanted); `new_states` may equal `old_states` (in place)
-/// but must not partially overlap it. No tangents (use
-/// `asperity_slider_step`). On an error at element i, elements before i are
-/// written, those from i on are untouched, and the message names i.
-#[no_mangle]
-pub unsafe extern "C" fn asperity_slider_step_block(
-    slider: *const AsperitySlider,
-    work: *mut AsperitySliderWork,
-    n: usize,
-    normal_force: *const f64,
-    slip: *const f64,
-    dt: f64,
-    old_states: *const f64,
-    new_states: *mut f64,
-    tangential_force: *mut f64,
-    dissipation: *mut f64,
-) -> i32 {
-    guard(|| {
-        let s = &input(slider, "slider")?.0;
-        let w = &mut output(work, "work")?.0;
-        if n == 0 {
-            return Ok(());
-        }
-        input(normal_force, "normal_force")?;
-        input(slip, "slip")?;
-        input(old_states, "old_states")?;
-        output(new_states, "new_states")?;
-        output(tangential_force, "tangential_force")?;
-        let m = s.state_len();
-        let total = n.checked_mul(m).ok_or(Error::InvalidArgument {
-            name: "n",
-            value: n as f64,
-            bound: "such that n * state size fits in size_t",
+        let w = w.get::<SliderWork>().ok_or(Error::InvalidArgument {
+            name: "work",
+            value: 0.0,
+            bound: "a work of a slider law",
         })?;
-        if partial_overlap(old_states, new_states, total) {
-            return Err(Error::InvalidArgument {
-                name: "new_states",
-                value: 0.0,
-                bound: "equal to old_states (in place) or not overlapping it",
-            }
-            .into());
-        }
-        // SAFETY: the caller provides n normal forces, 2n slips, 2n
-        // tangential forces, n dissipations (or NULL) and n*m doubles of
-        // states; equal state pointers are one mutable slice.
-        let normal = core::slice::from_raw_parts(normal_force, n);
-        let slip = core::slice::from_raw_parts(slip, 2 * n);
-        let force = core::slice::from_raw_parts_mut(tangential_force, 2 * n);
-        let diss = if dissipation.is_null() {
-            None
-        } else {
-            Some(core::slice::from_raw_parts_mut(dissipation, n))
+        let r = w.record();
+        *out = AsperitySliderRecord {
+            position: r.position,
+            rod_position: r.rod_position,
+            adhesion_area_share: r.adhesion_area_share,
+            nano_contacts: r.nano_contacts as u64,
+            adhesive_contacts: r.adhesive_contacts as u64,
+            rods_in_contact: r.rods_in_contact as u64,
+            yielded_rods: r.yielded_rods as u64,
+            seated: w.seated() as i32,
+            reserved: 0,
         };
-        let states = if core::ptr::eq(old_states, new_states) {
-            SliderStates::InPlace(core::slice::from_raw_parts_mut(new_states, total))
-        } else {
-            SliderStates::Separate {
-                old: core::slice::from_raw_parts(old_states, total),
-                new: core::slice::from_raw_parts_mut(new_states, total),
-            }
-        };
-        s.step_flat_block(normal, slip, dt, states, force, diss, w)
-            .map_err(|e| Failure::at(e.index, e.error))
+        Ok(())
     })
 }

@@ -28,7 +28,7 @@
 //!
 //! # The step
 //!
-//! [`HomogenisedFriction::step`] is the return mapping of regularised
+//! The step ([`FrictionLaw`]) is the return mapping of regularised
 //! Coulomb friction (Wriggers, *Computational Contact Mechanics*, 2nd ed.,
 //! 2006, §5.2 and §6.2; Simo & Hughes, *Computational Inelasticity*, 1998,
 //! §1.2) with the slip limit of the Derjaguin law (thesis (4-3)), each step
@@ -59,7 +59,7 @@
 //! Reference, VFRIC: "Local coordinate system", "Frictional forces"): our
 //! `F·t₁` is that `fTangential(1)`, negative while sliding. A VFRIC wrapper
 //! passes `dSlipFric` as Δs and stores F in its state (VFRIC's `fTangPrev`
-//! plays the role of `old.force`).
+//! plays the role of the state's stick force, [`HomogenisedFriction::STATE_FORCE`]).
 //!
 //! The step is rate independent: the time increment is validated and
 //! otherwise unused, so rate-dependent laws can share the signature.
@@ -92,8 +92,11 @@
 //!   Springer, §1.2.
 //! * Abaqus User Subroutines Reference Guide, VFRIC (sign convention).
 
+use super::law::{
+    book_path, read, FrictionIncrement, FrictionLaw, FrictionRegime, FrictionResponse,
+    FrictionWork, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+};
 use super::ledger::{CofForm, Dissipation};
-use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
 use serde::{Deserialize, Serialize};
 
@@ -169,126 +172,6 @@ impl HomogenisedSample {
     }
 }
 
-// -------------------------------------------------------- step in/out
-
-/// One time increment of one contact point (the C ABI's
-/// `AsperityFrictionIncrement`). SI units.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct FrictionIncrement {
-    /// Normal force N on the point (N), finite and ≥ 0 (compressive).
-    pub normal_force: f64,
-    /// Nominal area A_n the point represents (m²), finite and > 0.
-    pub area: f64,
-    /// Slip increment Δs of the point relative to the counter-surface (m),
-    /// two components in the caller's tangent basis; a one-dimensional track
-    /// uses `slip[1] = 0`.
-    pub slip: [f64; 2],
-    /// Time increment (s), finite and ≥ 0 (unused by this rate-independent
-    /// law).
-    pub dt: f64,
-    /// Stick stiffness k of the regularised stick (N/m), finite and ≥ 0;
-    /// 0 is rigid–plastic (no elastic slip).
-    pub stick_stiffness: f64,
-}
-
-/// Per-point history of the friction step (the C ABI's
-/// `AsperityFrictionPointState`), owned by the caller. All-zero is a fresh
-/// point. SI units.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct FrictionPointState {
-    /// Tangential force on the point at the end of the increment (N), the
-    /// elastic (stick) force carried into the next increment; the elastic
-    /// slip is `−force/k`.
-    pub force: [f64; 2],
-    /// Accumulated plastic slip path length Σ|Δs_p| (m).
-    pub slip_path: f64,
-    /// Accumulated dissipated energy by mechanism (J).
-    pub dissipation: Dissipation,
-    /// Number of steps taken (wraps at 2⁶⁴).
-    pub steps: u64,
-}
-
-impl FrictionPointState {
-    /// Checks the state is finite with non-negative accumulators (errors
-    /// name `old.force`, `old.slip_path`, `old.dissipation`).
-    pub fn validate(&self) -> Result<()> {
-        check::finite("old.force", self.force[0])?;
-        check::finite("old.force", self.force[1])?;
-        check::non_negative("old.slip_path", self.slip_path)?;
-        let d = &self.dissipation;
-        for v in [d.chemical, d.van_der_waals, d.elastic, d.plastic] {
-            check::non_negative("old.dissipation", v)?;
-        }
-        Ok(())
-    }
-}
-
-/// What the step did at a point (the `regime` field of
-/// [`FrictionResponse`]).
-#[repr(i32)]
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum FrictionRegime {
-    /// The trial force is inside the slip cone: no plastic slip.
-    Stick = 0,
-    /// The force is on the cone: plastic slip and dissipation.
-    Slip = 1,
-    /// No normal force and no adhesion (N + A = 0): no friction, the force
-    /// and the stored elastic force are 0.
-    NoContact = 2,
-}
-
-/// The response of one friction step (the C ABI's
-/// `AsperityFrictionResponse`). SI units.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct FrictionResponse {
-    /// Tangential force F on the point from the counter-surface (N), in the
-    /// basis of the slip increment; opposes slip (see the module's sign
-    /// convention).
-    pub force: [f64; 2],
-    /// |F| (N).
-    pub force_magnitude: f64,
-    /// Normal force N (N), as given.
-    pub normal_force: f64,
-    /// Coefficient of friction μ(p) (in the table's [`CofForm`]).
-    pub cof: f64,
-    /// Slip limit F_lim, the radius of the friction cone (N).
-    pub slip_limit: f64,
-    /// Adhesive holding force A = p_adh(p)·A_n (N).
-    pub adhesion: f64,
-    /// True contact area, contact fraction × A_n (m²).
-    pub true_contact_area: f64,
-    /// Plastic slip increment Δs_p (m); 0 in stick.
-    pub plastic_slip: [f64; 2],
-    /// Energy dissipated in the increment ΔD = −F·Δs_p (J), ≥ 0.
-    pub dissipated: f64,
-    /// ΔD split between the mechanisms by the interpolated shares (J).
-    pub dissipation: Dissipation,
-    /// dF/dN (dimensionless), at fixed slip increment and old state.
-    pub dforce_dnormal: [f64; 2],
-    /// dF_i/dΔs_j (N/m), `dforce_dslip[i][j]`, at fixed N and old state
-    /// (the consistent tangent of the return mapping; 0 for a rigid stick,
-    /// k = 0 and Δs = 0, where it is unbounded).
-    pub dforce_dslip: [[f64; 2]; 2],
-    /// [`FrictionRegime`] as an integer: 0 stick, 1 slip, 2 no contact.
-    pub regime: i32,
-    /// Reserved, always 0.
-    pub reserved: i32,
-}
-
-impl FrictionResponse {
-    /// The regime of the step.
-    pub fn regime(&self) -> FrictionRegime {
-        match self.regime {
-            0 => FrictionRegime::Stick,
-            1 => FrictionRegime::Slip,
-            _ => FrictionRegime::NoContact,
-        }
-    }
-}
-
 // ------------------------------------------------------------- the law
 
 /// One interval of the interpolant between two samples: Hermite cubics
@@ -336,6 +219,7 @@ pub struct HomogenisedFriction {
     intervals: Vec<Interval>,
     first: Point,
     last: Point,
+    stick_stiffness: f64,
 }
 
 const _: () = {
@@ -522,6 +406,7 @@ impl HomogenisedFriction {
             intervals,
             first: constant_point(first),
             last: constant_point(&samples[n - 1]),
+            stick_stiffness: 0.0,
         })
     }
 
@@ -630,47 +515,35 @@ impl HomogenisedFriction {
         Ok(self.point(p).dcof)
     }
 
-    /// One friction step at one point: from the history `old` and the
-    /// increment `inc`, the new history into `new` and the response into
-    /// `out` (see the module documentation for the formulas and the sign
-    /// convention). `old` is only read, so the same step can be evaluated
-    /// again (cut back, re-iterated). No allocation.
-    ///
-    /// Errors (then `new` and `out` are untouched): `normal_force` not finite
-    /// and ≥ 0; `area` not finite and > 0; `slip` not finite; `dt` not
-    /// finite and ≥ 0; `stick_stiffness` not finite and ≥ 0; an invalid `old`
-    /// state ([`FrictionPointState::validate`]); OutOfDomain (`normal_force`
-    /// or `slip`) when the force, the dissipation or the consistent tangent
-    /// (`F_lim/|Δs|` for k = 0, e.g. N = 1.8e308 N with Δs = 4e-9 m)
-    /// overflows f64.
-    #[inline]
-    pub fn step(
-        &self,
-        old: &FrictionPointState,
-        inc: &FrictionIncrement,
-        new: &mut FrictionPointState,
-        out: &mut FrictionResponse,
-    ) -> Result<()> {
-        let (s, r) = self.step_value(old, inc)?;
-        *new = s;
-        *out = r;
-        Ok(())
+    /// The same law with the stick stiffness k (N/m, finite and ≥ 0) of
+    /// the regularised stick (*Formulas*): the elastic slip before sliding
+    /// is |F|/k; 0 (the default) is rigid–plastic. A penalty of the host's
+    /// discretisation, not a property of the table: it is not serialised.
+    pub fn with_stick_stiffness(mut self, stick_stiffness: f64) -> Result<Self> {
+        self.stick_stiffness = check::non_negative("stick_stiffness", stick_stiffness)?;
+        Ok(self)
     }
 
-    /// [`Self::step`] returning the new state and the response by value.
+    /// The stick stiffness k (N/m).
+    pub fn stick_stiffness(&self) -> f64 {
+        self.stick_stiffness
+    }
+
+    /// The return mapping of one step (module documentation) from the old
+    /// stick force `old_force` (N), on a checked increment with A_n > 0.
+    /// Returns the response and the plastic slip length Δλ (m). Errors:
+    /// OutOfDomain (`normal_force` or `slip`) when the force, the
+    /// dissipation or the consistent tangent (`F_lim/|Δs|` for k = 0, e.g.
+    /// N = 1.8e308 N with Δs = 4e-9 m) overflows f64.
     #[inline(always)]
-    pub fn step_value(
+    fn return_map(
         &self,
-        old: &FrictionPointState,
+        old_force: [f64; 2],
         inc: &FrictionIncrement,
-    ) -> Result<(FrictionPointState, FrictionResponse)> {
-        let n = check::non_negative("normal_force", inc.normal_force)?;
-        let a_n = check::positive("area", inc.area)?;
-        let dsx = check::finite("slip", inc.slip[0])?;
-        let dsy = check::finite("slip", inc.slip[1])?;
-        check::non_negative("dt", inc.dt)?;
-        let k = check::non_negative("stick_stiffness", inc.stick_stiffness)?;
-        old.validate()?;
+    ) -> Result<(FrictionResponse, f64)> {
+        let (n, a_n) = (inc.normal_force, inc.area);
+        let [dsx, dsy] = inc.slip;
+        let k = self.stick_stiffness;
 
         let p = n / a_n;
         let q = self.point(p);
@@ -691,21 +564,14 @@ impl HomogenisedFriction {
         let mut r = FrictionResponse {
             normal_force: n,
             cof: q.cof,
-            slip_limit: limit,
             adhesion,
             true_contact_area: q.fraction * a_n,
+            tangents: TANGENT_NORMAL | TANGENT_SLIP,
             ..FrictionResponse::default()
         };
-        let mut s = FrictionPointState {
-            force: [0.0; 2],
-            slip_path: old.slip_path,
-            dissipation: old.dissipation,
-            steps: old.steps.wrapping_add(1),
-        };
-
         if n + adhesion == 0.0 {
             r.regime = FrictionRegime::NoContact as i32;
-            return Ok((s, r));
+            return Ok((r, 0.0));
         }
 
         // Return mapping. `dir` is the unit direction of the force on the
@@ -713,8 +579,8 @@ impl HomogenisedFriction {
         // taken from (trial force, or |Δs| when rigid–plastic).
         let (fx, fy, lambda);
         if k > 0.0 {
-            let tx = old.force[0] - k * dsx;
-            let ty = old.force[1] - k * dsy;
+            let tx = old_force[0] - k * dsx;
+            let ty = old_force[1] - k * dsy;
             let tn = norm2(tx, ty);
             if !tn.is_finite() {
                 return Err(overflow("slip", dsx.abs().max(dsy.abs())));
@@ -728,7 +594,6 @@ impl HomogenisedFriction {
                 (fx, fy) = (limit * nx, limit * ny);
                 lambda = (tn - limit) / k;
                 r.regime = FrictionRegime::Slip as i32;
-                r.plastic_slip = [-lambda * nx, -lambda * ny];
                 let c = -k * limit / tn;
                 r.dforce_dslip = [
                     [c * (1.0 - nx * nx), -c * nx * ny],
@@ -746,7 +611,6 @@ impl HomogenisedFriction {
                 (fx, fy) = (-limit * ux, -limit * uy);
                 lambda = sn;
                 r.regime = FrictionRegime::Slip as i32;
-                r.plastic_slip = [dsx, dsy];
                 let c = -limit / sn;
                 r.dforce_dslip = [
                     [c * (1.0 - ux * ux), -c * ux * uy],
@@ -756,7 +620,7 @@ impl HomogenisedFriction {
             } else {
                 // Rigid stick: the old force, capped by the cone (without
                 // slip, so without dissipation).
-                let (tx, ty) = (old.force[0], old.force[1]);
+                let (tx, ty) = (old_force[0], old_force[1]);
                 let tn = norm2(tx, ty);
                 r.regime = FrictionRegime::Stick as i32;
                 lambda = 0.0;
@@ -797,6 +661,18 @@ impl HomogenisedFriction {
         } else {
             (fx * fx + fy * fy).sqrt()
         };
+        r.stored_energy = if k > 0.0 {
+            0.5 * r.force_magnitude * r.force_magnitude / k
+        } else {
+            0.0
+        };
+        if !r.stored_energy.is_finite() {
+            return Err(Error::OutOfDomain {
+                name: "stick_stiffness",
+                value: k,
+                reason: "the stored elastic energy |F|^2/(2k) overflows f64 (stick stiffness too small for this force)",
+            });
+        }
         r.dissipated = dissipated;
         r.dissipation = Dissipation {
             chemical: dissipated * q.shares[0],
@@ -804,146 +680,89 @@ impl HomogenisedFriction {
             elastic: dissipated * q.shares[2],
             plastic: dissipated * q.shares[3],
         };
-        s.force = [fx, fy];
-        s.slip_path = old.slip_path + lambda;
-        s.dissipation = old.dissipation + r.dissipation;
-        Ok((s, r))
-    }
-
-    /// [`Self::step`] for n points at once, in the shape of Abaqus/Explicit's
-    /// VFRIC: `normal_forces[i]` (N), `areas[i]` (m²), the slip increments
-    /// `slip_increments[2i], [2i+1]` (m, interleaved), one time increment
-    /// `dt` (s) and stick stiffness (N/m) for all, `old[i]` → `new[i]`, the
-    /// tangential forces out in `tangential_forces[2i], [2i+1]` (N,
-    /// interleaved; the sign convention of the module) and the dissipation
-    /// of the increment in `dissipation[i]` (J). n is `normal_forces.len()`;
-    /// every other slice must match it (2n for the interleaved ones), else
-    /// an error naming the slice at index 0. On an error at element i,
-    /// elements before i are written and those from i on are untouched. No
-    /// allocation.
-    #[allow(clippy::too_many_arguments)]
-    pub fn step_block(
-        &self,
-        normal_forces: &[f64],
-        areas: &[f64],
-        slip_increments: &[f64],
-        dt: f64,
-        stick_stiffness: f64,
-        old: &[FrictionPointState],
-        new: &mut [FrictionPointState],
-        tangential_forces: &mut [f64],
-        dissipation: &mut [f64],
-    ) -> core::result::Result<(), BatchError> {
-        let n = normal_forces.len();
-        let len = |name: &'static str, got: usize, want: usize, bound: &'static str| {
-            if got == want {
-                Ok(())
-            } else {
-                Err(BatchError {
-                    index: 0,
-                    error: Error::InvalidArgument {
-                        name,
-                        value: got as f64,
-                        bound,
-                    },
-                })
-            }
-        };
-        const SAME: &str = "of the length of normal_forces";
-        const TWICE: &str = "of twice the length of normal_forces (x, y interleaved)";
-        len("areas", areas.len(), n, SAME)?;
-        len("slip_increments", slip_increments.len(), 2 * n, TWICE)?;
-        len("old", old.len(), n, SAME)?;
-        len("new", new.len(), n, SAME)?;
-        len("tangential_forces", tangential_forces.len(), 2 * n, TWICE)?;
-        len("dissipation", dissipation.len(), n, SAME)?;
-        // SAFETY: every slice holds n (or 2n) elements; Rust slices do not
-        // alias, which the raw form allows but does not need.
-        unsafe {
-            self.step_block_raw(&RawFrictionBlock {
-                n,
-                normal_forces: normal_forces.as_ptr(),
-                areas: areas.as_ptr(),
-                slip_increments: slip_increments.as_ptr(),
-                dt,
-                stick_stiffness,
-                old: old.as_ptr(),
-                new: new.as_mut_ptr(),
-                tangential_forces: tangential_forces.as_mut_ptr(),
-                dissipation: dissipation.as_mut_ptr(),
-            })
-        }
-    }
-
-    /// [`Self::step_block`] on raw arrays, which may alias element by element
-    /// (`old` may be `new`): each element is read completely before it is
-    /// written. `old` NULL means every point is fresh; `new` and
-    /// `dissipation` may be NULL (not wanted).
-    ///
-    /// # Safety
-    /// The pointers of `b` must satisfy the contract of [`RawFrictionBlock`].
-    pub unsafe fn step_block_raw(
-        &self,
-        b: &RawFrictionBlock,
-    ) -> core::result::Result<(), BatchError> {
-        for i in 0..b.n {
-            let inc = FrictionIncrement {
-                normal_force: b.normal_forces.add(i).read(),
-                area: b.areas.add(i).read(),
-                slip: [
-                    b.slip_increments.add(2 * i).read(),
-                    b.slip_increments.add(2 * i + 1).read(),
-                ],
-                dt: b.dt,
-                stick_stiffness: b.stick_stiffness,
-            };
-            let old = if b.old.is_null() {
-                FrictionPointState::default()
-            } else {
-                b.old.add(i).read()
-            };
-            let (s, r) = self
-                .step_value(&old, &inc)
-                .map_err(|error| BatchError { index: i, error })?;
-            b.tangential_forces.add(2 * i).write(r.force[0]);
-            b.tangential_forces.add(2 * i + 1).write(r.force[1]);
-            if !b.dissipation.is_null() {
-                b.dissipation.add(i).write(r.dissipated);
-            }
-            if !b.new.is_null() {
-                b.new.add(i).write(s);
-            }
-        }
-        Ok(())
+        Ok((r, lambda))
     }
 }
 
-/// The arrays of a block step as raw pointers (the C ABI passes the host's
-/// arrays straight through). `normal_forces`, `areas` must be valid for `n`
-/// reads, `slip_increments` for 2n, `tangential_forces` for 2n writes; `old`
-/// (n reads), `new` and `dissipation` (n writes) are valid or NULL.
-#[derive(Debug, Clone, Copy)]
-pub struct RawFrictionBlock {
-    /// Number of points.
-    pub n: usize,
-    /// Normal forces (N).
-    pub normal_forces: *const f64,
-    /// Nominal areas (m²).
-    pub areas: *const f64,
-    /// Slip increments (m), x and y interleaved.
-    pub slip_increments: *const f64,
-    /// Time increment (s).
-    pub dt: f64,
-    /// Stick stiffness (N/m).
-    pub stick_stiffness: f64,
-    /// Histories before the step, or NULL for fresh points.
-    pub old: *const FrictionPointState,
-    /// Histories after the step, or NULL.
-    pub new: *mut FrictionPointState,
-    /// Tangential forces (N), x and y interleaved.
-    pub tangential_forces: *mut f64,
-    /// Dissipation of the increment (J), or NULL.
-    pub dissipation: *mut f64,
+/// cbindgen:ignore
+///
+/// The layout of a state ([`FrictionLaw::state_len`] = [`Self::STATE_LEN`]).
+impl HomogenisedFriction {
+    /// Index of the stick force F (N, x and y) carried into the next
+    /// increment; the elastic slip is −F/k.
+    pub const STATE_FORCE: usize = STATE_MODEL;
+    /// Index of the accumulated plastic slip path Σ|Δs_p| (m), the slip
+    /// that dissipates (the common slip path Σ|Δs| also counts elastic
+    /// slip).
+    pub const STATE_PLASTIC_SLIP_PATH: usize = STATE_MODEL + 2;
+    /// Index of the accumulated dissipation by mechanism (J): chemical, van
+    /// der Waals, elastic, plastic.
+    pub const STATE_MECHANISMS: usize = STATE_MODEL + 3;
+    /// Doubles of a state.
+    pub const STATE_LEN: usize = STATE_MODEL + 7;
+}
+
+/// The regularised Coulomb (Derjaguin) return mapping per increment
+/// (module documentation). State: the common accumulators, then
+/// [`HomogenisedFriction::STATE_FORCE`], `STATE_PLASTIC_SLIP_PATH`,
+/// `STATE_MECHANISMS`. Errors beyond the common ones: `area` not > 0;
+/// `old.force`, `old.plastic_slip_path`, `old.mechanisms` (finite, the
+/// accumulators ≥ 0); OutOfDomain when the force, the dissipation or a
+/// tangent overflows f64. Tangents are always computed (they cost nothing).
+/// Regimes: stick, slip, no contact (N + A = 0).
+impl FrictionLaw for HomogenisedFriction {
+    fn state_len(&self) -> usize {
+        Self::STATE_LEN
+    }
+
+    fn check(&self, increment: &FrictionIncrement) -> Result<()> {
+        check::positive("area", increment.area)?;
+        Ok(())
+    }
+
+    fn check_state(&self, state: &[f64], what: &'static str) -> Result<()> {
+        let old = what == "old";
+        let f = Self::STATE_FORCE;
+        let name = |o: &'static str, s: &'static str| if old { o } else { s };
+        check::finite(name("old.force", "state.force"), state[f])?;
+        check::finite(name("old.force", "state.force"), state[f + 1])?;
+        check::non_negative(
+            name("old.plastic_slip_path", "state.plastic_slip_path"),
+            state[Self::STATE_PLASTIC_SLIP_PATH],
+        )?;
+        for &v in &state[Self::STATE_MECHANISMS..Self::STATE_LEN] {
+            check::non_negative(name("old.mechanisms", "state.mechanisms"), v)?;
+        }
+        Ok(())
+    }
+
+    #[inline]
+    fn advance(
+        &self,
+        old: Option<&[f64]>,
+        new: &mut [f64],
+        inc: &FrictionIncrement,
+        _work: &mut FrictionWork,
+    ) -> Result<FrictionResponse> {
+        let f = Self::STATE_FORCE;
+        let old_force = [read(old, new, f), read(old, new, f + 1)];
+        let (r, lambda) = self.return_map(old_force, inc)?;
+        let path = crate::friction::dynamic::norm(inc.slip[0], inc.slip[1]);
+        book_path(old, new, r.dissipated, path);
+        new[f] = r.force[0];
+        new[f + 1] = r.force[1];
+        let p = Self::STATE_PLASTIC_SLIP_PATH;
+        new[p] = read(old, new, p) + lambda;
+        let d = &r.dissipation;
+        for (j, dj) in [d.chemical, d.van_der_waals, d.elastic, d.plastic]
+            .into_iter()
+            .enumerate()
+        {
+            let i = Self::STATE_MECHANISMS + j;
+            new[i] = read(old, new, i) + dj;
+        }
+        Ok(r)
+    }
 }
 
 #[cfg(test)]

@@ -25,24 +25,27 @@
 //!   start, the thesis's dense formulation as reference, plastic shortening
 //!   with volume-conserving pile-up (6.2.3), energies (4-15, 4-16), and rods
 //!   coupled through an elastic substrate ([`CoupledRodBed`]).
-//! * [`homogenised`]: the friction step per time increment of an FE
-//!   integration point — [`HomogenisedFriction`], μ(p),
-//!   adhesion, contact fraction and dissipation shares tabulated over the
-//!   nominal pressure (monotone cubic interpolation), evaluated by a
-//!   regularised Coulomb/Derjaguin return mapping with caller-owned
-//!   [`FrictionPointState`], tangents for implicit codes and a VFRIC-shaped
-//!   block call.
+//! * [`law`]: the friction step per time increment of a host code, one
+//!   contract for every friction law ([`FrictionLaw`]: caller-owned flat
+//!   states, old and new separate or in place, tangents for implicit codes,
+//!   a VFRIC-shaped block).
+//! * [`homogenised`]: the friction law of an FE integration point —
+//!   [`HomogenisedFriction`], μ(p), adhesion, contact fraction and
+//!   dissipation shares tabulated over the nominal pressure (monotone cubic
+//!   interpolation), evaluated by a regularised Coulomb/Derjaguin return
+//!   mapping.
 //! * [`slider`]: the hierarchical slider that slides (6.3–6.5) — counter
 //!   heights under the rods, the rod equilibrium, nano-asperities in contact
 //!   (adhesive snap-in, yielded rods), the ledger of every increment, true
 //!   contact area (6.5.3), runs and their summaries ([`Slider`]).
 //! * [`dynamic`]: the dynamic friction models of chapter 5 (LuGre with
 //!   Stribeck weakening, Maxwell-slip elements) in the same per-increment
-//!   shape, behind one trait ([`dynamic::DynamicFriction`]).
+//!   shape, as [`FrictionLaw`]s.
 
 pub mod dynamic;
 pub mod geometry;
 pub mod homogenised;
+pub mod law;
 pub mod ledger;
 pub mod mechanisms;
 pub mod rods;
@@ -52,9 +55,10 @@ pub use geometry::{
     asperity_statistics, nano_analysis, nano_per_rod, rod_heights, rod_levels, AsperityStatistics,
     NanoAnalysis, NanoAsperities, RodLevel, SliderGeometry, MAX_NANO_PER_ROD, MAX_RODS,
 };
-pub use homogenised::{
-    FrictionIncrement, FrictionPointState, FrictionRegime, FrictionResponse, HomogenisedFriction,
-    HomogenisedSample, RawFrictionBlock,
+pub use homogenised::{HomogenisedFriction, HomogenisedSample};
+pub use law::{
+    BlockStates, FrictionBlock, FrictionIncrement, FrictionLaw, FrictionRegime, FrictionResponse,
+    FrictionWork, STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
 };
 pub use ledger::{
     apparent_friction, coefficient_of_friction, ledger_step, ledger_step_for, single_rod,
@@ -66,10 +70,9 @@ pub use mechanisms::{
     FrictionMaterial, LjNanoAsperity, NanoAsperityBonds, RodIncrement,
 };
 pub use rods::{
-    square_influence, CoupledRodBed, PlasticUpdate, RodBed, RodOptions, RodReport, RodSolution,
-    RodSolver, RodState,
+    square_influence, CoupledRodBed, Loading, PlasticUpdate, RodBed, RodOptions, RodReport,
+    RodSolution, RodSolver, RodState,
 };
 pub use slider::{
-    summarize, Loading, SlideRun, SlideStep, SlideSummary, Slider, SliderIncrement, SliderOptions,
-    SliderResponse, SliderState, SliderStates, SliderTangents, SliderWork, TrackEnd,
+    summarize, SlideRun, SlideStep, SlideSummary, Slider, SliderOptions, SliderWork, TrackEnd,
 };

@@ -48,7 +48,7 @@
 //! load N_k (a tensile load as 0), the slip Δs = d/n along x (d the run's
 //! distance, n its increments: the slide step as [`Slider::slide`] used
 //! it) and Δt = Δs/v at the scene's sliding velocity v, from a fresh state,
-//! in place ([`DynamicFriction::step_in_place`]; one state and one record
+//! in place ([`FrictionLaw::step_in_place`]; one state and one record
 //! vector are allocated per run, nothing per step).
 //!
 //! [`Slider::slide`]: crate::friction::Slider::slide
@@ -56,7 +56,7 @@
 use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
 use crate::friction::dynamic::{
-    Bristles, BurridgeKnopoff, DynamicFriction, DynamicIncrement, DynamicModel, LuGre, MaxwellSlip,
+    Bristles, BurridgeKnopoff, DynamicModel, FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip,
     PrandtlTomlinson, STATE_DISSIPATION,
 };
 use crate::friction::slider::SlideRun;
@@ -503,16 +503,16 @@ const STICK_SLIP_BURST: f64 = 10.0;
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct TrackStep {
     /// Friction force along the motion, resisting it, at the end of the
-    /// increment (N): −F_x of [`DynamicResponse::force`].
+    /// increment (N): −F_x of [`FrictionResponse::force`].
     ///
-    /// [`DynamicResponse::force`]: crate::friction::dynamic::DynamicResponse::force
+    /// [`FrictionResponse::force`]: crate::friction::FrictionResponse::force
     pub friction_force: f64,
     /// μ = F/N with F = `friction_force` (0 when N = 0): signed, negative
     /// while the force drives the point forward (a Prandtl–Tomlinson tip
     /// overshooting after a slip); |μ| is the step's
-    /// [`DynamicResponse::cof`].
+    /// [`FrictionResponse::cof`].
     ///
-    /// [`DynamicResponse::cof`]: crate::friction::dynamic::DynamicResponse::cof
+    /// [`FrictionResponse::cof`]: crate::friction::FrictionResponse::cof
     pub cof: f64,
     /// Energy dissipated in the increment (J), ≥ 0.
     pub dissipated: f64,
@@ -565,7 +565,7 @@ pub struct TrackRun {
 /// Errors: `velocity` (index 0, nothing stepped), or the step's error at
 /// increment `index` (a Prandtl–Tomlinson integration out of sub-steps, a
 /// non-finite slip).
-pub fn run_along<M: DynamicFriction + ?Sized>(
+pub fn run_along<M: FrictionLaw + ?Sized>(
     model: &M,
     run: &SlideRun,
     velocity: f64,
@@ -574,18 +574,19 @@ pub fn run_along<M: DynamicFriction + ?Sized>(
     let n = run.steps.len();
     let mut steps = Vec::with_capacity(n);
     let mut state = vec![0.0; model.state_len()];
+    let mut work = model.work();
     if n > 0 {
         let dx = run.summary.distance / n as f64;
         let dt = dx / velocity;
         for (index, s) in run.steps.iter().enumerate() {
-            let increment = DynamicIncrement {
+            let increment = FrictionIncrement {
                 normal_force: s.normal_load.max(0.0),
                 slip: [dx, 0.0],
                 dt,
-                ..DynamicIncrement::default()
+                ..FrictionIncrement::default()
             };
             let r = model
-                .step_in_place(&mut state, &increment)
+                .step_in_place(&mut state, &increment, &mut work)
                 .map_err(|error| BatchError { index, error })?;
             let friction_force = -r.force[0];
             let normal = increment.normal_force;

@@ -566,7 +566,7 @@ fn continuity_across_switches() {
     // JKR at Δ = δ/δ_scale = 1e60 (1 ± 1e-9): the force ratio is Hertz's
     // (1 + ε)^{3/2}/(1 − ε)^{3/2}.
     let jkr = Jkr::new(1e-6, 1e11, 1e-20).unwrap();
-    let d0 = 1e60 * jkr.delta_scale;
+    let d0 = 1e60 * jkr.delta_scale();
     let e = 1e-9;
     let f = |d: f64| jkr.eval(d, &ContactState::default()).unwrap().0.force;
     let ratio = f(d0 * (1.0 + e)) / f(d0 * (1.0 - e));

@@ -1,10 +1,12 @@
-//! The homogenised friction step through `src/ffi/homogenised.rs`
-//! (`homogenised_*`): ΔD ≥ 0, |F| ≤ μ(N + A), failing calls leave outputs
-//! untouched.
+//! The homogenised friction law through the one C friction handle
+//! (`src/ffi/friction_law.rs`, `asperity_friction_from_homogenised`;
+//! `homogenised_*`): ΔD ≥ 0, |F| ≤ μ(N + A), failing calls leave outputs
+//! untouched; the stick stiffness is swept through the law's constructor.
 
 use super::*;
+use asperity::ffi::friction_law::*;
 use asperity::ffi::homogenised::*;
-use asperity::friction::{FrictionIncrement, FrictionPointState, FrictionResponse};
+use asperity::friction::{FrictionIncrement, FrictionLaw, FrictionResponse, HomogenisedFriction};
 
 const NORMAL_FORCE: Arg = arg(&["normal_force"], Dom::NonNeg, 1e-3, 1e3);
 const AREA: Arg = arg(&["area"], Dom::Pos, 1e-8, 1e-4);
@@ -12,10 +14,18 @@ const SLIP: Arg = arg(&["slip"], Dom::Finite, 1e-10, 1e-4);
 const DT: Arg = arg(&["dt"], Dom::NonNeg, 1e-6, 1.0);
 const STICK: Arg = arg(&["stick_stiffness"], Dom::NonNeg, 1e5, 1e12);
 
-/// The bytes of a plain `repr(C)` value without padding (the friction state
-/// and response), for bit-for-bit comparison.
+const M: usize = HomogenisedFriction::STATE_LEN;
+const FORCE: usize = HomogenisedFriction::STATE_FORCE;
+const PLASTIC: usize = HomogenisedFriction::STATE_PLASTIC_SLIP_PATH;
+
+/// The bytes of a plain `repr(C)` value without padding (the response),
+/// for bit-for-bit comparison.
 fn raw<T: Copy>(x: &T) -> &[u8] {
     unsafe { std::slice::from_raw_parts((x as *const T).cast::<u8>(), size_of::<T>()) }
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
 }
 
 fn friction_response_finite(r: &FrictionResponse) -> bool {
@@ -26,16 +36,14 @@ fn friction_response_finite(r: &FrictionResponse) -> bool {
         r.force_magnitude,
         r.normal_force,
         r.cof,
-        r.slip_limit,
         r.adhesion,
         r.true_contact_area,
-        r.plastic_slip[0],
-        r.plastic_slip[1],
         r.dissipated,
         d.chemical,
         d.van_der_waals,
         d.elastic,
         d.plastic,
+        r.stored_energy,
         r.dforce_dnormal[0],
         r.dforce_dnormal[1],
         r.dforce_dslip[0][0],
@@ -47,29 +55,9 @@ fn friction_response_finite(r: &FrictionResponse) -> bool {
     .all(|x| x.is_finite())
 }
 
-fn state_finite(s: &FrictionPointState) -> bool {
-    let d = &s.dissipation;
-    [
-        s.force[0],
-        s.force[1],
-        s.slip_path,
-        d.chemical,
-        d.van_der_waals,
-        d.elastic,
-        d.plastic,
-    ]
-    .iter()
-    .all(|x| x.is_finite())
-}
-
 /// A state and response full of sentinels, to see what a failing call wrote.
-fn friction_sentinels() -> (FrictionPointState, FrictionResponse) {
-    let s = FrictionPointState {
-        force: [-3.5, -3.5],
-        slip_path: -3.5,
-        steps: 77,
-        ..FrictionPointState::default()
-    };
+fn friction_sentinels() -> (Vec<f64>, FrictionResponse) {
+    let s = vec![-3.5; M];
     let r = FrictionResponse {
         force: [-3.5, -3.5],
         cof: -3.5,
@@ -80,9 +68,16 @@ fn friction_sentinels() -> (FrictionPointState, FrictionResponse) {
     (s, r)
 }
 
+/// The law of `table` with the stick stiffness `k`, through C.
+fn c_law(table: *const AsperityHomogenisedFriction, k: f64) -> (i32, *mut AsperityFriction) {
+    let mut law = 1usize as *mut AsperityFriction;
+    let st = unsafe { asperity_friction_from_homogenised(table, k, &mut law) };
+    (st, law)
+}
+
 fn sweep_homogenised(n: usize, seed: u64) -> Tally {
-    let law = common::native::fe_strip_law();
-    let samples = law.samples().to_vec();
+    let table = common::native::fe_strip_law();
+    let samples = table.samples().to_vec();
     let mut h = null_mut();
     assert_eq!(
         unsafe { asperity_homogenised_friction_new(samples.as_ptr(), samples.len(), &mut h) },
@@ -90,7 +85,7 @@ fn sweep_homogenised(n: usize, seed: u64) -> Tally {
     );
     let mut rng = Rng::new(seed);
     let mut t = Tally::default();
-    let mut last = FrictionPointState::default();
+    let mut last = vec![0.0; M];
     let mut last_typical = true;
     for _ in 0..n {
         t.points += 1;
@@ -105,34 +100,60 @@ fn sweep_homogenised(n: usize, seed: u64) -> Tally {
             area: sample(&mut rng, &AREA),
             slip: [slip_x, slip_y],
             dt: sample(&mut rng, &DT),
-            stick_stiffness: if rng.f() < 0.2 {
-                0.0
-            } else {
-                sample(&mut rng, &STICK)
-            },
+            ..Default::default()
+        };
+        let k = if rng.f() < 0.2 {
+            0.0
+        } else {
+            sample(&mut rng, &STICK)
         };
         let u_old = rng.f();
         let old_typical = u_old < 0.4 || (u_old < 0.95 && last_typical);
         let old = match u_old {
-            u if u < 0.4 => FrictionPointState::default(),
-            u if u < 0.95 => last,
+            u if u < 0.4 => vec![0.0; M],
+            u if u < 0.95 => last.clone(),
             _ => {
                 let fx = sample(&mut rng, &arg(&["old.force"], Dom::Finite, 1e-6, 1e3));
-                let path = sample(&mut rng, &arg(&["old.slip_path"], Dom::NonNeg, 1e-9, 1.0));
-                FrictionPointState {
-                    force: [fx, 0.0],
-                    slip_path: path,
-                    ..FrictionPointState::default()
-                }
+                let path = sample(
+                    &mut rng,
+                    &arg(
+                        &["old.slip_path", "old.plastic_slip_path"],
+                        Dom::NonNeg,
+                        1e-9,
+                        1.0,
+                    ),
+                );
+                let mut s = vec![0.0; M];
+                s[FORCE] = fx;
+                s[1] = path;
+                s[PLASTIC] = path;
+                s
             }
         };
+        // The stick stiffness is the law's: a bad one is refused by the
+        // constructor, naming it, with the Rust error's text and a NULL
+        // handle.
+        let rust_law = table.clone().with_stick_stiffness(k);
+        let (st, law) = c_law(h, k);
+        if st != ASPERITY_OK {
+            let m = last_message();
+            t.error(&m);
+            assert!(law.is_null(), "*out is NULL on failure");
+            assert!(!STICK.dom.contains(k), "k = {k:e}: refused: {m}");
+            assert_eq!(st, ASPERITY_ERR_INVALID_ARGUMENT, "{m}");
+            assert!(names_one_of(&m, &[&STICK]), "{m}");
+            assert_eq!(m, rust_law.unwrap_err().to_string());
+            continue;
+        }
+        assert!(STICK.dom.contains(k), "k = {k:e}: accepted");
+        let rust_law = rust_law.unwrap();
         let vals = [
             (NORMAL_FORCE, inc.normal_force),
             (AREA, inc.area),
             (SLIP, slip_x),
             (SLIP, slip_y),
             (DT, inc.dt),
-            (STICK, inc.stick_stiffness),
+            (STICK, k),
         ];
         let bad: Vec<&Arg> = vals
             .iter()
@@ -144,15 +165,19 @@ fn sweep_homogenised(n: usize, seed: u64) -> Tally {
                 .iter()
                 .all(|(a, x)| typical(a, *x) || (*x == 0.0 && a.dom.contains(0.0)));
         let (mut s, mut r) = friction_sentinels();
-        let st = unsafe { asperity_homogenised_friction_step(h, &inc, &old, &mut s, &mut r) };
-        let rust = law.step_value(&old, &inc);
+        let st = unsafe {
+            asperity_friction_step(law, &inc, old.as_ptr(), s.as_mut_ptr(), null_mut(), &mut r)
+        };
+        unsafe { asperity_friction_free(law) };
+        let mut rs = vec![0.0; M];
+        let rust = rust_law.step(&old, &mut rs, &inc, &mut rust_law.work());
         if st == ASPERITY_OK {
             assert!(bad.is_empty(), "{inc:?}: accepted");
             t.ok += 1;
-            let (rs, rr) = rust.unwrap();
-            assert!(raw(&s) == raw(&rs) && raw(&r) == raw(&rr), "{s:?} {r:?}");
+            let rr = rust.unwrap();
+            assert!(bits(&s) == bits(&rs) && raw(&r) == raw(&rr), "{s:?} {r:?}");
             assert!(
-                friction_response_finite(&r) && state_finite(&s),
+                friction_response_finite(&r) && s.iter().all(|x| x.is_finite()),
                 "{inc:?} {old:?}: {r:?}"
             );
             assert!(r.dissipated >= 0.0, "{inc:?}: ΔD = {:e}", r.dissipated);
@@ -162,18 +187,12 @@ fn sweep_homogenised(n: usize, seed: u64) -> Tally {
             );
             // |F| ≤ F_lim = μ(N + A) (Derjaguin form, thesis (4-3)).
             let fm = r.force[0].hypot(r.force[1]);
+            let limit = r.cof * (r.normal_force + r.adhesion);
             // (+ a few units of the subnormal spacing: F_lim = 5e-318 N has
             // five significant digits.)
             assert!(
-                fm <= r.slip_limit * (1.0 + 4.0 * f64::EPSILON) + 8.0 * 5e-324,
-                "{inc:?}: |F| = {fm:e} > F_lim = {:e}",
-                r.slip_limit
-            );
-            let want = r.cof * (r.normal_force + r.adhesion);
-            assert!(
-                (r.slip_limit - want).abs() <= 4.0 * f64::EPSILON * want + 8.0 * 5e-324,
-                "{:e} vs μ(N + A) = {want:e}",
-                r.slip_limit
+                fm <= limit * (1.0 + 4.0 * f64::EPSILON) + 8.0 * 5e-324,
+                "{inc:?}: |F| = {fm:e} > F_lim = {limit:e}"
             );
             last = s;
             last_typical = typical_inc;
@@ -183,7 +202,7 @@ fn sweep_homogenised(n: usize, seed: u64) -> Tally {
             assert_eq!(m, rust.unwrap_err().to_string());
             let (s0, r0) = friction_sentinels();
             assert!(
-                raw(&s) == raw(&s0) && raw(&r) == raw(&r0),
+                bits(&s) == bits(&s0) && raw(&r) == raw(&r0),
                 "written on failure"
             );
             if !bad.is_empty() {
@@ -191,7 +210,10 @@ fn sweep_homogenised(n: usize, seed: u64) -> Tally {
                 assert!(names_one_of(&m, &bad), "{inc:?}: {m}");
             } else {
                 assert!(
-                    m.contains("`old.") || m.contains("`normal_force`") || m.contains("`slip`"),
+                    m.contains("`old.")
+                        || m.contains("`normal_force`")
+                        || m.contains("`slip`")
+                        || m.contains("`stick_stiffness`"),
                     "{inc:?} {old:?}: {m}"
                 );
                 assert!(
@@ -199,7 +221,7 @@ fn sweep_homogenised(n: usize, seed: u64) -> Tally {
                     "{inc:?} {old:?}: typical increment refused: {m}"
                 );
             }
-            last = FrictionPointState::default();
+            last = vec![0.0; M];
             last_typical = true;
         }
 
@@ -209,6 +231,9 @@ fn sweep_homogenised(n: usize, seed: u64) -> Tally {
             let nb = 8;
             let j = (rng.u64() % nb as u64) as usize;
             let k = rng.pick(&[0.0, 1e9]);
+            let (st, law) = c_law(h, k);
+            assert_eq!(st, ASPERITY_OK, "{}", last_message());
+            let rust_law = table.clone().with_stick_stiffness(k).unwrap();
             let mut nf: Vec<f64> = (0..nb).map(|_| rng.log_uniform(1e-2, 1e2)).collect();
             let mut ar = vec![1e-6; nb];
             let sl: Vec<f64> = (0..2 * nb).map(|_| rng.uniform(-1e-6, 1e-6)).collect();
@@ -218,50 +243,50 @@ fn sweep_homogenised(n: usize, seed: u64) -> Tally {
                 ar[j] = rng.pick(&[0.0, -1e-6, f64::NAN]);
             }
             let (s0, _) = friction_sentinels();
-            let mut ns = vec![s0; nb];
+            let fresh = vec![0.0; nb * M];
+            let mut ns: Vec<f64> = (0..nb).flat_map(|_| s0.iter().copied()).collect();
             let mut tf = vec![-3.5; 2 * nb];
             let mut dis = vec![-3.5; nb];
             let st = unsafe {
-                asperity_homogenised_friction_step_block(
-                    h,
+                asperity_friction_step_block(
+                    law,
                     nb,
                     nf.as_ptr(),
                     ar.as_ptr(),
                     sl.as_ptr(),
                     1e-3,
-                    k,
-                    core::ptr::null(),
+                    fresh.as_ptr(),
                     ns.as_mut_ptr(),
                     tf.as_mut_ptr(),
                     dis.as_mut_ptr(),
+                    null_mut(),
                 )
             };
+            unsafe { asperity_friction_free(law) };
             assert_eq!(st, ASPERITY_ERR_INVALID_ARGUMENT);
             let m = last_message();
             assert!(m.starts_with(&format!("element {j}: ")), "{m}");
             for i in 0..nb {
+                let got = &ns[i * M..(i + 1) * M];
                 if i < j {
                     let inc = FrictionIncrement {
                         normal_force: nf[i],
                         area: ar[i],
                         slip: [sl[2 * i], sl[2 * i + 1]],
                         dt: 1e-3,
-                        stick_stiffness: k,
+                        ..Default::default()
                     };
-                    let (ws, wr) = law
-                        .step_value(&FrictionPointState::default(), &inc)
+                    let mut ws = vec![0.0; M];
+                    let wr = rust_law
+                        .step(&[0.0; M], &mut ws, &inc, &mut rust_law.work())
                         .unwrap();
-                    assert_eq!(format!("{:?}", ns[i]), format!("{ws:?}"));
+                    assert_eq!(bits(got), bits(&ws));
                     assert_eq!(
                         (tf[2 * i], tf[2 * i + 1], dis[i]),
                         (wr.force[0], wr.force[1], wr.dissipated)
                     );
                 } else {
-                    assert_eq!(
-                        format!("{:?}", ns[i]),
-                        format!("{s0:?}"),
-                        "element {i} ≥ {j}"
-                    );
+                    assert_eq!(bits(got), bits(&s0), "element {i} ≥ {j}");
                     assert_eq!((tf[2 * i], tf[2 * i + 1], dis[i]), (-3.5, -3.5, -3.5));
                 }
             }

@@ -23,10 +23,10 @@ fn sweep_tabulated(n: usize, seed: u64) -> Tally {
             let mut h = null_mut();
             let st = unsafe {
                 asperity_table_new_maugis_dugdale(
-                    md.radius,
-                    md.e_star,
-                    md.work_of_adhesion,
-                    md.cohesive_stress,
+                    md.params().radius,
+                    md.params().e_star,
+                    md.params().work_of_adhesion,
+                    md.params().cohesive_stress,
                     tol,
                     &mut h,
                 )

@@ -14,14 +14,25 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-// fix ID group asperity/history nvalues maxpartner
+namespace {
+// The format of the restart records. 1: [length, nvalues, npartner, ...],
+// with the homogenised friction state of the old per-model ABI (8 doubles);
+// 2: [length, -2, nvalues, npartner, ...], every friction state the
+// library's flat state of asperity_friction_state_size doubles.
+constexpr int RESTART_FORMAT = 2;
+}    // namespace
+
+// fix ID group asperity/history nvalues maxpartner [legacy]
+// legacy (default 1): whether restart records of format 1 may be read as
+// they are (0 when a homogenised friction law is in use: its state changed).
 FixAsperityHistory::FixAsperityHistory(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), npartner(nullptr), partner(nullptr), values(nullptr),
     peratom(nullptr)
 {
-  if (narg != 5) error->all(FLERR, "Illegal fix asperity/history command: it is created by pair_style asperity");
+  if (narg != 5 && narg != 6) error->all(FLERR, "Illegal fix asperity/history command: it is created by pair_style asperity");
   nvalues = utils::inumeric(FLERR, arg[3], false, lmp);
   maxpartner = utils::inumeric(FLERR, arg[4], false, lmp);
+  legacy = narg == 6 ? utils::inumeric(FLERR, arg[5], false, lmp) != 0 : true;
   if (nvalues < 1 || maxpartner < 1)
     error->all(FLERR, "fix asperity/history: nvalues and maxpartner must be >= 1");
 
@@ -143,11 +154,13 @@ int FixAsperityHistory::unpack_exchange(int nlocal, double *buf)
   return m;
 }
 
-// Restart record of an atom: [length, nvalues, npartner, (tag, values)...,
-// dissipation, contacts]; nvalues is checked on reading.
+// Restart record of an atom: [length, -RESTART_FORMAT, nvalues, npartner,
+// (tag, values)..., dissipation, contacts]; the format and nvalues are
+// checked on reading.
 int FixAsperityHistory::pack_restart(int i, double *buf)
 {
   int m = 1;
+  buf[m++] = -RESTART_FORMAT;
   buf[m++] = nvalues;
   buf[m++] = npartner[i];
   for (int k = 0; k < npartner[i]; k++) {
@@ -166,7 +179,22 @@ void FixAsperityHistory::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   m++;
-  int nv = static_cast<int>(extra[nlocal][m++]);
+  // Format 1 has no marker: its second value is nvalues (>= 1).
+  double first = extra[nlocal][m++];
+  int nv = 0;
+  if (first > 0) {
+    if (!legacy)
+      error->one(FLERR,
+                 "pair asperity: the restart file was written by an older asperity plugin "
+                 "(history format 1), whose homogenised friction states have another layout: "
+                 "run the input that wrote it again with this plugin");
+    nv = static_cast<int>(first);
+  } else {
+    if (static_cast<int>(-first) != RESTART_FORMAT)
+      error->one(FLERR, "pair asperity: the restart file holds contact histories of format {}, "
+                 "this plugin reads formats 1 and {}", -first, RESTART_FORMAT);
+    nv = static_cast<int>(extra[nlocal][m++]);
+  }
   if (nv != nvalues)
     error->one(FLERR,
                "pair asperity: the restart file holds {} history values per contact, this "
@@ -187,12 +215,12 @@ void FixAsperityHistory::unpack_restart(int nlocal, int nth)
 
 int FixAsperityHistory::size_restart(int i)
 {
-  return 3 + npartner[i] * (1 + nvalues) + 2;
+  return 4 + npartner[i] * (1 + nvalues) + 2;
 }
 
 int FixAsperityHistory::maxsize_restart()
 {
-  return 3 + maxpartner * (1 + nvalues) + 2;
+  return 4 + maxpartner * (1 + nvalues) + 2;
 }
 
 double FixAsperityHistory::memory_usage()

@@ -6,8 +6,9 @@
  * Each owned atom keeps a list of the partners it is in contact with (their
  * atom IDs) and, per partner, the pair's history as `nvalues` doubles (the
  * library's normal contact state, the tangent frame and the friction
- * state). The list moves with the atom between MPI ranks (pack_exchange)
- * and is written to and read from restart files (pack_restart), so a
+ * law's flat state of asperity_friction_state_size doubles). The list
+ * moves with the atom between MPI ranks (pack_exchange) and is written to
+ * and read from restart files (pack_restart, with a format number), so a
  * contact's hysteresis and friction state survive migration and restarts.
  * Both atoms of a pair hold the same values: pair_style asperity evaluates
  * every pair in the orientation of the lower atom ID.
@@ -52,6 +53,7 @@ class FixAsperityHistory : public Fix {
 
   int nvalues;        // doubles of history per contact
   int maxpartner;     // contacts an atom can hold
+  bool legacy;        // restart records of format 1 may be read
   int *npartner;      // contacts held by each atom
   tagint **partner;   // partner[i][k]: atom ID of contact k of atom i
   double **values;    // values[i][k*nvalues ...]: its history

@@ -41,9 +41,6 @@ constexpr int NORMAL_VALUES = 3;    // AsperityContactState as doubles
 constexpr int FRAME_VALUES = 3;     // tangent vector t1
 static_assert(sizeof(AsperityContactState) == NORMAL_VALUES * sizeof(double),
               "contact state packs into three doubles");
-static_assert(sizeof(AsperityFrictionPointState) % sizeof(double) == 0,
-              "friction point state packs into doubles");
-constexpr int HOM_VALUES = sizeof(AsperityFrictionPointState) / sizeof(double);
 
 bool is_law_table(int law)
 {
@@ -99,6 +96,7 @@ PairAsperity::PairAsperity(LAMMPS *lmp) : Pair(lmp)
   any_friction = false;
   nvalues = NORMAL_VALUES;
   fix_history = nullptr;
+  friction_work = nullptr;
   batch_law = -1;
   nlocal_ = eflag_ = 0;
   dissipated_run = 0.0;
@@ -109,6 +107,7 @@ PairAsperity::~PairAsperity()
   delete[] pvector;
   delete[] svector;
   free_built();
+  asperity_friction_work_free(friction_work);
   if (modify->get_fix_by_id(FIX_ID)) modify->delete_fix(FIX_ID);
   if (allocated) {
     memory->destroy(setflag);
@@ -120,8 +119,7 @@ void PairAsperity::free_built()
 {
   for (auto &t : tps) {
     if (t.owns_table) asperity_table_free(t.table);
-    asperity_homogenised_friction_free(t.hom);
-    asperity_dynamic_friction_free(t.dyn);
+    asperity_friction_free(t.friction);
     t = TypePair();
   }
   laws_.clear();
@@ -333,12 +331,13 @@ void PairAsperity::coeff(int narg, char **arg)
   }
 
   if (c.friction == FRICTION_LUGRE || c.friction == FRICTION_MAXWELL) {
-    // Let the library judge the friction parameters at this line.
-    AsperityDynamicFriction *trial = nullptr;
+    // Let the library judge the friction parameters at this line (the
+    // homogenised law's are judged when its file is read, at init).
+    AsperityFriction *trial = nullptr;
     int st = c.friction == FRICTION_LUGRE
-        ? asperity_dynamic_lugre_new(&c.lugre, &trial)
-        : asperity_dynamic_maxwell_slip_new(c.ms_stiffness.data(), c.ms_capacity.data(), c.ms_stiffness.size(), c.sigma2, &trial);
-    asperity_dynamic_friction_free(trial);
+        ? asperity_friction_lugre_new(&c.lugre, &trial)
+        : asperity_friction_maxwell_slip_new(c.ms_stiffness.data(), c.ms_capacity.data(), c.ms_stiffness.size(), c.sigma2, &trial);
+    asperity_friction_free(trial);
     if (st != ASPERITY_OK) error->all(FLERR, "pair_coeff asperity: friction: {}", library_message());
   }
 
@@ -412,7 +411,8 @@ void PairAsperity::build(int tp)
   build_friction(tp);
 }
 
-/* The friction model of type pair tp. */
+/* The friction law of type pair tp: one AsperityFriction handle, whatever
+   the model, and the doubles of its per-contact state. */
 void PairAsperity::build_friction(int tp)
 {
   TypePair &t = tps[tp];
@@ -424,17 +424,23 @@ void PairAsperity::build_friction(int tp)
     std::stringstream ss;
     ss << in.rdbuf();
     std::string json = ss.str();
-    status = asperity_homogenised_friction_from_json(json.data(), json.size(), &t.hom);
+    AsperityHomogenisedFriction *table = nullptr;
+    status = asperity_homogenised_friction_from_json(json.data(), json.size(), &table);
     if (status != ASPERITY_OK) error->all(FLERR, "pair_coeff asperity: friction law {}: {}", c.friction_file, library_message());
-    t.fstate = HOM_VALUES;
-  } else if (c.friction == FRICTION_LUGRE || c.friction == FRICTION_MAXWELL) {
-    if (c.friction == FRICTION_LUGRE)
-      status = asperity_dynamic_lugre_new(&c.lugre, &t.dyn);
-    else
-      status = asperity_dynamic_maxwell_slip_new(c.ms_stiffness.data(), c.ms_capacity.data(), c.ms_stiffness.size(), c.sigma2, &t.dyn);
-    if (status != ASPERITY_OK) error->all(FLERR, "pair_coeff asperity: friction: {}", library_message());
+    // The law: the table (copied) with the stick stiffness kt.
+    status = asperity_friction_from_homogenised(table, c.kt, &t.friction);
+    asperity_homogenised_friction_free(table);
+    if (status != ASPERITY_OK) error->all(FLERR, "pair_coeff asperity: friction homogenised {} kt: {}", c.friction_file, library_message());
+  } else if (c.friction == FRICTION_LUGRE) {
+    status = asperity_friction_lugre_new(&c.lugre, &t.friction);
+  } else if (c.friction == FRICTION_MAXWELL) {
+    status = asperity_friction_maxwell_slip_new(c.ms_stiffness.data(), c.ms_capacity.data(), c.ms_stiffness.size(), c.sigma2, &t.friction);
+  }
+  if (status != ASPERITY_OK) error->all(FLERR, "pair_coeff asperity: friction: {}", library_message());
+  if (t.friction) {
     size_t n = 0;
-    asperity_dynamic_friction_state_size(t.dyn, &n);
+    if (asperity_friction_state_size(t.friction, &n) != ASPERITY_OK)
+      error->all(FLERR, "pair asperity: friction: {}", library_message());
     t.fstate = (int) n;
   }
 }
@@ -540,11 +546,17 @@ void PairAsperity::init_style()
 
   any_friction = false;
   int fmax = 0;
+  bool homogenised = false;
   for (int i = 1; i <= nt; i++)
     for (int j = i; j <= nt; j++) {
       TypePair &t = tps[i * (nt + 1) + j];
       fmax = std::max(fmax, t.fstate);
       if (t.c.friction != FRICTION_NONE) any_friction = true;
+      if (t.c.friction == FRICTION_HOMOGENISED) homogenised = true;
+      // One scratch of the friction step for the pair style (the laws here
+      // need none; a law that does rebuilds it on first use).
+      if (t.friction && !friction_work && asperity_friction_work_new(t.friction, &friction_work) != ASPERITY_OK)
+        error->all(FLERR, "pair asperity: friction: {}", library_message());
       // Reach at the largest radius of the pair (the reach of every law
       // grows with R), for the neighbour cutoff.
       double ri = maxrad[i] * len, rj = maxrad[j] * len;
@@ -573,7 +585,9 @@ void PairAsperity::init_style()
     modify->delete_fix(FIX_ID);
     f = nullptr;
   }
-  if (!f) f = modify->add_fix(fmt::format("{} all asperity/history {} {}", FIX_ID, nvalues, maxcontacts));
+  // Restart records of the first history format hold homogenised friction
+  // states of another layout; the others read as they are.
+  if (!f) f = modify->add_fix(fmt::format("{} all asperity/history {} {} {}", FIX_ID, nvalues, maxcontacts, homogenised ? 0 : 1));
   fix_history = static_cast<FixAsperityHistory *>(f);
 
   // A half list in which every pair with a ghost is on both ranks (newton
@@ -920,42 +934,25 @@ void PairAsperity::flush(int eflag)
         // force for adhesive laws (Thornton and Yin 1991, as LAMMPS granular).
         double nf = b_force[k] + adhesion_offset;
         if (nf < 0) nf = 0;
-        double F1 = 0, F2 = 0;
-        if (fmodel == FRICTION_HOMOGENISED) {
-          AsperityFrictionIncrement inc;
-          inc.normal_force = nf;
-          double a = b_radius[k];
-          inc.area = a > 0 ? M_PI * a * a : M_PI * law.radius * law.radius * 1e-12;
-          inc.slip[0] = s1;
-          inc.slip[1] = s2;
-          inc.dt = dt_si;
-          inc.stick_stiffness = t.c.kt;
-          AsperityFrictionPointState fs;
-          std::memcpy(&fs, fst, sizeof(fs));
-          AsperityFrictionResponse r;
-          status = asperity_homogenised_friction_step(t.hom, &inc, &fs, &fs, &r);
-          if (status != ASPERITY_OK) error->one(FLERR, "pair asperity: friction step of atoms {} {}: {}", tag[lo], tag[hi], library_message());
-          std::memcpy(fst, &fs, sizeof(fs));
-          F1 = r.force[0]; F2 = r.force[1];
-          dissipated = r.dissipated;
-          // Elastic energy of the regularised stick spring, |F|^2/(2k).
-          if (t.c.kt > 0) stored = (F1 * F1 + F2 * F2) / (2.0 * t.c.kt);
-        } else {
-          AsperityDynamicIncrement inc;
-          inc.normal_force = nf;
-          inc.slip[0] = s1;
-          inc.slip[1] = s2;
-          inc.dt = dt_si;
-          inc.tangents = 0;
-          inc.reserved = 0;
-          AsperityDynamicResponse r;
-          status = asperity_dynamic_friction_step(t.dyn, &inc, fst, fst, &r);
-          if (status != ASPERITY_OK) error->one(FLERR, "pair asperity: friction step of atoms {} {}: {}", tag[lo], tag[hi], library_message());
-          F1 = r.force[0]; F2 = r.force[1];
-          dissipated = r.dissipated;
-          stored = r.stored_energy;
-        }
-        F1 /= frc; F2 /= frc;
+        // One increment of the contact, whatever the law: its nominal area
+        // is the contact area (read by the homogenised law only).
+        AsperityFrictionIncrement inc;
+        inc.normal_force = nf;
+        double a = b_radius[k];
+        inc.area = a > 0 ? M_PI * a * a : M_PI * law.radius * law.radius * 1e-12;
+        inc.slip[0] = s1;
+        inc.slip[1] = s2;
+        inc.dt = dt_si;
+        inc.tangents = 0;
+        inc.reserved = 0;
+        AsperityFrictionResponse r;
+        status = asperity_friction_step_in_place(t.friction, &inc, fst, friction_work, &r);
+        if (status != ASPERITY_OK) error->one(FLERR, "pair asperity: friction step of atoms {} {}: {}", tag[lo], tag[hi], library_message());
+        dissipated = r.dissipated;
+        // The elastic energy the law stores (the stick spring's |F|^2/(2 kt),
+        // the bristles' or elements' springs).
+        stored = r.stored_energy;
+        double F1 = r.force[0] / frc, F2 = r.force[1] / frc;
         tx = F1 * t1[0] + F2 * t2[0];
         ty = F1 * t1[1] + F2 * t2[1];
         tz = F1 * t1[2] + F2 * t2[2];

@@ -54,7 +54,7 @@ class PairAsperity : public Pair {
     int grid = 0;                  // LJ solver cells (0: library default)
     std::string file;              // table JSON file
     int friction = 0;              // FRICTION_*
-    std::string friction_file;     // homogenised law JSON
+    std::string friction_file;     // homogenised table JSON
     double kt = NAN;               // stick stiffness (N/m)
     AsperityLugreParams lugre{};
     std::vector<double> ms_stiffness, ms_capacity;    // Maxwell-slip
@@ -79,9 +79,8 @@ class PairAsperity : public Pair {
     AsperityTable *table = nullptr;
     bool owns_table = true;                     // false: shared with another type pair
     double table_radius = 0;                    // R the table was built for (m)
-    AsperityHomogenisedFriction *hom = nullptr;
-    AsperityDynamicFriction *dyn = nullptr;
-    int fstate = 0;                             // friction state doubles
+    AsperityFriction *friction = nullptr;       // the friction law (any model)
+    int fstate = 0;                             // its state: doubles per contact
     double reach_max = 0;                       // reach at the largest R (m)
     bool energy = false;                        // library gives its energy
     bool history = true;                        // contacts keep a history
@@ -111,6 +110,7 @@ class PairAsperity : public Pair {
   bool any_friction;
   int nvalues;                       // history doubles per contact
   class FixAsperityHistory *fix_history;
+  AsperityFrictionWork *friction_work;   // scratch of the friction step
 
   // A batch of pairs sharing one law.
   struct Item {

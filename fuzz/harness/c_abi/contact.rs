@@ -1,7 +1,7 @@
-//! Closed-form normal laws (`src/ffi/contact.rs`): constructors, raw and
-//! tampered law structs, evaluation (single, batch, at load), pull-off,
-//! length scale, reach, energy; and the contact-state helpers the tables
-//! share.
+//! Closed-form normal laws (`src/ffi/contact.rs`): constructors (from
+//! scalars and from raw inputs), raw and tampered law structs, evaluation
+//! (single, batch, at load), pull-off, length scale, reach, energy; and the
+//! contact-state helpers the tables share.
 
 use super::common::*;
 use super::{Ctx, Op};
@@ -49,6 +49,15 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             l.params.raw = fs(*raw);
             if ctx.laws.len() < 16 {
                 ctx.laws.push(l);
+            }
+        }
+        Op::LawFromParams { kind, raw, nulls } => {
+            let p = AsperityLawParams { raw: fs(*raw) };
+            let mut out: AsperityNormalLaw = zeroed();
+            let s =
+                asperity_law_from_params(kind.0, cp(&p, nulls.at(0)), mp(&mut out, nulls.at(1)));
+            if ok(s, "law_from_params") && ctx.laws.len() < 16 {
+                ctx.laws.push(out);
             }
         }
         Op::LawTamper { law: i, at, value } => {

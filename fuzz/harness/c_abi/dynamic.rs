@@ -1,14 +1,17 @@
-//! Dynamic friction (`src/ffi/dynamic.rs`): LuGre, Maxwell-slip, bristles,
+//! Dynamic friction (`src/ffi/dynamic.rs`, stepped through the one friction
+//! handle of `src/ffi/friction_law.rs`): LuGre, Maxwell-slip, bristles,
 //! Prandtl–Tomlinson (one and two springs), Burridge–Knopoff; state sizes,
-//! steps (with the untouched-on-failure checks), blocks, freeing; and the
-//! cost bound on Prandtl–Tomlinson integrations.
+//! steps (separate, old == new, in place, with and without a work; with the
+//! untouched-on-failure checks), blocks (separate and in place), freeing;
+//! and the cost bound on Prandtl–Tomlinson integrations.
 
 use super::common::*;
 use super::{Ctx, Op};
 use arbitrary::Arbitrary;
 use asperity::ffi::dynamic::*;
+use asperity::ffi::friction_law::*;
 use asperity::ffi::ASPERITY_OK;
-use asperity::friction::dynamic::{DynamicIncrement, DynamicResponse};
+use asperity::friction::{FrictionIncrement, FrictionResponse};
 use std::ptr::{null, null_mut};
 
 /// Runs one operation of this domain; `super::call` routes each variant
@@ -18,8 +21,8 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
         Op::LugreNew { params, nulls } => {
             let p = params.get();
             let mut out = null_mut();
-            let s = asperity_dynamic_lugre_new(cp(&p, nulls.at(0)), mp(&mut out, nulls.at(1)));
-            if let Some(d) = made(s, out, !nulls.at(1), "dynamic_lugre_new") {
+            let s = asperity_friction_lugre_new(cp(&p, nulls.at(0)), mp(&mut out, nulls.at(1)));
+            if let Some(d) = made(s, out, !nulls.at(1), "friction_lugre_new") {
                 ctx.dynamics.push(Dynamic {
                     model: d,
                     pt: None,
@@ -37,14 +40,14 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             let mut out = null_mut();
             let (k, m, n) = (bufp(&k, nulls.at(0)), bufp(&m, nulls.at(1)), k.len());
             let s = if *bristles {
-                asperity_dynamic_bristles_new(k, m, n, sigma2.0, mp(&mut out, nulls.at(2)))
+                asperity_friction_bristles_new(k, m, n, sigma2.0, mp(&mut out, nulls.at(2)))
             } else {
-                asperity_dynamic_maxwell_slip_new(k, m, n, sigma2.0, mp(&mut out, nulls.at(2)))
+                asperity_friction_maxwell_slip_new(k, m, n, sigma2.0, mp(&mut out, nulls.at(2)))
             };
             let what = if *bristles {
-                "dynamic_bristles_new"
+                "friction_bristles_new"
             } else {
-                "dynamic_maxwell_slip_new"
+                "friction_maxwell_slip_new"
             };
             if let Some(d) = made(s, out, !nulls.at(2), what) {
                 ctx.dynamics.push(Dynamic {
@@ -72,9 +75,11 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 tolerance: v[8],
             };
             let mut out = null_mut();
-            let s =
-                asperity_dynamic_prandtl_tomlinson_two_spring_new(cp(&p, *np), mp(&mut out, *null));
-            if let Some(d) = made(s, out, !*null, "dynamic_prandtl_tomlinson_two_spring_new") {
+            let s = asperity_friction_prandtl_tomlinson_two_spring_new(
+                cp(&p, *np),
+                mp(&mut out, *null),
+            );
+            if let Some(d) = made(s, out, !*null, "friction_prandtl_tomlinson_two_spring_new") {
                 ctx.dynamics.push(Dynamic {
                     model: d,
                     pt: None,
@@ -102,8 +107,8 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 tolerance: v[8],
             };
             let mut out = null_mut();
-            let s = asperity_dynamic_burridge_knopoff_new(cp(&p, *np), mp(&mut out, *null));
-            if let Some(d) = made(s, out, !*null, "dynamic_burridge_knopoff_new") {
+            let s = asperity_friction_burridge_knopoff_new(cp(&p, *np), mp(&mut out, *null));
+            if let Some(d) = made(s, out, !*null, "friction_burridge_knopoff_new") {
                 ctx.dynamics.push(Dynamic {
                     model: d,
                     pt: None,
@@ -114,7 +119,7 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
         Op::PtNew { params, null, .. } => {
             let p = params.get();
             let mut out = null_mut();
-            let s = asperity_dynamic_prandtl_tomlinson_new(
+            let s = asperity_friction_prandtl_tomlinson_new(
                 p[0],
                 p[1],
                 p[2],
@@ -123,7 +128,7 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 p[5],
                 mp(&mut out, *null),
             );
-            if let Some(d) = made(s, out, !*null, "dynamic_prandtl_tomlinson_new") {
+            if let Some(d) = made(s, out, !*null, "friction_prandtl_tomlinson_new") {
                 ctx.dynamics.push(Dynamic {
                     model: d,
                     pt: Some(p),
@@ -135,8 +140,8 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             let (d, _, _) = pick_dynamic(ctx, *model);
             let mut n = 0usize;
             if ok(
-                asperity_dynamic_friction_state_size(d, mp(&mut n, *null)),
-                "dynamic_friction_state_size",
+                asperity_friction_state_size(d, mp(&mut n, *null)),
+                "friction_state_size",
             ) && !*null
             {
                 assert!(n >= 2, "dynamic_friction_state_size: {n} < 2");
@@ -156,8 +161,9 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 return;
             }
             let v = inc.get();
-            let i = DynamicIncrement {
+            let i = FrictionIncrement {
                 normal_force: v[0],
+                area: 0.0,
                 slip: [v[1], v[2]],
                 dt: v[3],
                 tangents: tangents.0,
@@ -166,7 +172,7 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             let m = dynamic_state_len(d);
             let old = make_state(&ctx.dynamic_state, state, m);
             if let Some(p) = pt {
-                let integrations = if i.tangents & ASPERITY_DYNAMIC_TANGENT_SLIP != 0 {
+                let integrations = if i.tangents & ASPERITY_FRICTION_TANGENT_SLIP != 0 {
                     3.0
                 } else {
                     1.0
@@ -186,38 +192,58 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             let mut buf = old.clone();
             buf.resize(shift + m, f64::from_bits(SENTINEL));
             let before = buf.clone();
-            let mut out: DynamicResponse = zeroed();
-            std::ptr::write_bytes(&mut out as *mut DynamicResponse as *mut u8, 0xa5, 1);
+            let mut out: FrictionResponse = zeroed();
+            std::ptr::write_bytes(&mut out as *mut FrictionResponse as *mut u8, 0xa5, 1);
             let out_before = bytes_of(&out).to_vec();
             let base = buf.as_mut_ptr();
-            let s = asperity_dynamic_friction_step(
-                d,
-                cp(&i, nulls.at(0)),
-                if nulls.at(1) { null() } else { base },
-                if nulls.at(2) {
-                    null_mut()
-                } else {
-                    base.add(shift)
-                },
-                mp(&mut out, nulls.at(3)),
-            );
-            if ok(s, "dynamic_friction_step") {
+            // A work of the model's own (made and freed here) for odd
+            // `reserved`, none (NULL) otherwise.
+            let mut work = null_mut();
+            if reserved.0 & 1 == 1 {
+                assert!(ok(asperity_friction_work_new(d, &mut work), "work_new") || d.is_null());
+            }
+            // In place: old == new, or `asperity_friction_step_in_place`.
+            let s = if shift == 0 && reserved.0 & 2 == 2 && !nulls.at(1) {
+                asperity_friction_step_in_place(
+                    d,
+                    cp(&i, nulls.at(0)),
+                    if nulls.at(2) { null_mut() } else { base },
+                    work,
+                    mp(&mut out, nulls.at(3)),
+                )
+            } else {
+                asperity_friction_step(
+                    d,
+                    cp(&i, nulls.at(0)),
+                    if nulls.at(1) { null() } else { base },
+                    if nulls.at(2) {
+                        null_mut()
+                    } else {
+                        base.add(shift)
+                    },
+                    work,
+                    mp(&mut out, nulls.at(3)),
+                )
+            };
+            asperity_friction_work_free(work);
+            if ok(s, "friction_step (dynamic)") {
                 ctx.dynamic_state = buf[shift..shift + m].to_vec();
                 assert!(
                     out.dissipated.is_nan() || out.dissipated >= 0.0,
-                    "dynamic_friction_step: OK with dissipated = {} < 0",
+                    "friction_step: OK with dissipated = {} < 0",
                     out.dissipated
                 );
             } else {
-                // Documented: on failure `new_state` and `*out` are untouched.
+                // Documented: on failure the new state and `*out` are
+                // untouched.
                 assert!(
                     bits(&buf) == bits(&before),
-                    "dynamic_friction_step failed ({}) but wrote the state",
+                    "friction_step failed ({}) but wrote the state",
                     last_message()
                 );
                 assert!(
                     bytes_of(&out) == out_before.as_slice(),
-                    "dynamic_friction_step failed ({}) but wrote *out",
+                    "friction_step failed ({}) but wrote *out",
                     last_message()
                 );
             }
@@ -235,6 +261,7 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 return;
             }
             let dt = dt.map_or(1e-3, |f| f.0);
+            let separate = *n / 9 % 2 == 1;
             let n = *n as usize % 9;
             let m = dynamic_state_len(d);
             let val = |i: usize, d: f64| inc.get(i).map_or(d, |f| f.0);
@@ -250,28 +277,49 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 }
             }
             let mut states: Vec<f64> = (0..n).flat_map(|_| one.iter().copied()).collect();
+            let mut new = vec![0.0; n * m];
             let mut force = vec![0.0; 2 * n];
             let mut diss = vec![0.0; n];
-            let s = asperity_dynamic_friction_step_block(
-                d,
-                n,
-                bufp(&normal, nulls.at(0)),
-                bufp(&slip, nulls.at(1)),
-                dt,
-                bufm(&mut states, nulls.at(2)),
-                bufm(&mut force, nulls.at(3)),
-                bufm(&mut diss, nulls.at(4)),
-            );
-            if ok(s, "dynamic_friction_step_block") && n > 0 {
-                ctx.dynamic_state = states[(n - 1) * m..].to_vec();
+            let area = vec![0.0; n];
+            let s = if separate {
+                asperity_friction_step_block(
+                    d,
+                    n,
+                    bufp(&normal, nulls.at(0)),
+                    bufp(&area, nulls.at(5)),
+                    bufp(&slip, nulls.at(1)),
+                    dt,
+                    bufp(&states, nulls.at(2)),
+                    bufm(&mut new, nulls.at(6)),
+                    bufm(&mut force, nulls.at(3)),
+                    bufm(&mut diss, nulls.at(4)),
+                    null_mut(),
+                )
+            } else {
+                asperity_friction_step_block_in_place(
+                    d,
+                    n,
+                    bufp(&normal, nulls.at(0)),
+                    bufp(&area, nulls.at(5)),
+                    bufp(&slip, nulls.at(1)),
+                    dt,
+                    bufm(&mut states, nulls.at(2)),
+                    bufm(&mut force, nulls.at(3)),
+                    bufm(&mut diss, nulls.at(4)),
+                    null_mut(),
+                )
+            };
+            if ok(s, "friction_step_block (dynamic)") && n > 0 {
+                let last = if separate { &new } else { &states };
+                ctx.dynamic_state = last[(n - 1) * m..].to_vec();
             }
         }
         Op::DynFree { model } => {
             if ctx.dynamics.is_empty() {
-                asperity_dynamic_friction_free(null_mut());
+                asperity_friction_free(null_mut());
             } else {
                 let i = *model as usize % ctx.dynamics.len();
-                asperity_dynamic_friction_free(ctx.dynamics.swap_remove(i).model);
+                asperity_friction_free(ctx.dynamics.swap_remove(i).model);
             }
         }
         _ => unreachable!("not a dynamic operation: {op:?}"),
@@ -453,7 +501,7 @@ pub enum Placement {
 /// A dynamic friction model the input made, and for a Prandtl–Tomlinson tip
 /// what bounds the cost of its steps.
 pub(super) struct Dynamic {
-    pub(super) model: *mut AsperityDynamicFriction,
+    pub(super) model: *mut AsperityFriction,
     /// Prandtl–Tomlinson: its parameters (U0, a, k, m, gamma, tolerance),
     /// for [`pt_substeps`]; `None` for the other models (cheap steps).
     pub(super) pt: Option<[f64; 6]>,
@@ -478,10 +526,7 @@ pub(super) fn bytes_of<T>(x: &T) -> &[u8] {
 
 /// The dynamic model `sel` (NULL for 255 or none) and its
 /// Prandtl–Tomlinson parameters.
-pub(super) fn pick_dynamic(
-    ctx: &Ctx,
-    sel: u8,
-) -> (*mut AsperityDynamicFriction, Option<[f64; 6]>, bool) {
+pub(super) fn pick_dynamic(ctx: &Ctx, sel: u8) -> (*mut AsperityFriction, Option<[f64; 6]>, bool) {
     if sel == 255 || ctx.dynamics.is_empty() {
         (null_mut(), None, false)
     } else {
@@ -491,9 +536,9 @@ pub(super) fn pick_dynamic(
 }
 
 /// The state size of `model`, or 4 for NULL (the call then fails).
-pub(super) unsafe fn dynamic_state_len(model: *const AsperityDynamicFriction) -> usize {
+pub(super) unsafe fn dynamic_state_len(model: *const AsperityFriction) -> usize {
     let mut m = 0usize;
-    if model.is_null() || asperity_dynamic_friction_state_size(model, &mut m) != ASPERITY_OK {
+    if model.is_null() || asperity_friction_state_size(model, &mut m) != ASPERITY_OK {
         4
     } else {
         m
@@ -520,10 +565,10 @@ pub(super) fn pt_substeps(p: &[f64; 6], state: &[f64], dt: f64, ds: &[f64]) -> f
     let wl = tau * (u0 / m).sqrt() / a;
     let (rel, v) = (
         state
-            .get(ASPERITY_DYNAMIC_STATE_MODEL)
+            .get(ASPERITY_FRICTION_STATE_MODEL)
             .map_or(0.0, |x| x.abs()),
         state
-            .get(ASPERITY_DYNAMIC_STATE_MODEL + 1)
+            .get(ASPERITY_FRICTION_STATE_MODEL + 1)
             .map_or(0.0, |x| x.abs()),
     );
     let tol_factor = (1e-9 / tol).powf(0.2).max(1.0);

@@ -1,15 +1,27 @@
-//! Homogenised friction (`src/ffi/homogenised.rs`): construction from
-//! samples and JSON, steps, blocks, freeing.
+//! Homogenised friction (`src/ffi/homogenised.rs`, and its law through the
+//! one friction handle of `src/ffi/friction_law.rs`): construction from
+//! samples and JSON, the law of a table at a stick stiffness, steps,
+//! blocks (separate, old == new, in place), state sizes, freeing.
 
 use super::common::*;
 use super::{pick, take, Ctx, Op};
 use arbitrary::Arbitrary;
+use asperity::ffi::friction_law::*;
 use asperity::ffi::homogenised::*;
-use asperity::friction::{
-    Dissipation, FrictionIncrement, FrictionPointState, FrictionResponse, HomogenisedSample,
-};
+use asperity::friction::{Dissipation, FrictionIncrement, FrictionResponse, HomogenisedSample};
 use std::ffi::c_char;
 use std::ptr::{null, null_mut};
+
+/// Doubles of a homogenised law's state.
+const M: usize = 9;
+
+/// The law of the table `table` at the stick stiffness `k` (through
+/// `asperity_friction_from_homogenised`), or NULL when refused.
+unsafe fn law_of(table: *const AsperityHomogenisedFriction, k: f64) -> *mut AsperityFriction {
+    let mut law = null_mut();
+    let s = asperity_friction_from_homogenised(table, k, &mut law);
+    made(s, law, true, "friction_from_homogenised").unwrap_or(null_mut())
+}
 
 /// Runs one operation of this domain; `super::call` routes each variant
 /// to the module of its `src/ffi/` file.
@@ -115,34 +127,38 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
         } => {
             let f = pick(&ctx.frictions, *friction);
             let v = fs(*inc);
+            // The stick stiffness is the law's (v[5]).
+            let law = law_of(f, v[5]);
             let i = FrictionIncrement {
                 normal_force: v[0],
                 area: v[1],
                 slip: [v[2], v[3]],
                 dt: v[4],
-                stick_stiffness: v[5],
+                ..Default::default()
             };
             let (mut s0, old_null) = old_point(ctx, *old);
-            let mut new = FrictionPointState::default();
+            let mut new = vec![0.0; M];
             let mut out: FrictionResponse = zeroed();
-            let sp: *mut FrictionPointState = &mut s0;
+            let sp = s0.as_mut_ptr();
             let new_p = if nulls.at(2) {
                 null_mut()
             } else if *alias {
                 sp
             } else {
-                &mut new
+                new.as_mut_ptr()
             };
-            let s = asperity_homogenised_friction_step(
-                f,
+            let s = asperity_friction_step(
+                law,
                 cp(&i, nulls.at(0)),
                 if old_null { null() } else { sp },
                 new_p,
+                null_mut(),
                 mp(&mut out, nulls.at(1)),
             );
-            if ok(s, "homogenised_friction_step") && !nulls.at(2) {
+            if ok(s, "friction_step (homogenised)") && !nulls.at(2) {
                 ctx.point = if *alias { s0 } else { new };
             }
+            asperity_friction_free(law);
         }
         Op::HomBlock {
             friction,
@@ -155,6 +171,8 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             alias,
         } => {
             let f = pick(&ctx.frictions, *friction);
+            let law = law_of(f, k.0);
+            let form = *n / 9 % 2;
             let n = *n as usize % 9;
             let val = |i: usize, d: f64| inc.get(i).map_or(d, |f| f.0);
             let normal: Vec<f64> = (0..n).map(|i| val(4 * i, 1.0)).collect();
@@ -163,38 +181,59 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 .map(|i| val(4 * (i / 2) + 2 + i % 2, 1e-6))
                 .collect();
             let (s0, old_null) = old_point(ctx, *old);
-            let mut states = vec![s0; n];
-            let mut new_states = vec![FrictionPointState::default(); n];
+            let mut states: Vec<f64> = (0..n).flat_map(|_| s0.iter().copied()).collect();
+            let mut new_states = vec![0.0; n * M];
             let mut force = vec![0.0; 2 * n];
             let mut diss = vec![0.0; n];
             let sp = states.as_mut_ptr();
-            let new_p = if nulls.at(4) {
-                null_mut()
-            } else if *alias {
-                sp
+            let s = if *alias && form == 1 {
+                asperity_friction_step_block_in_place(
+                    law,
+                    n,
+                    bufp(&normal, nulls.at(0)),
+                    bufp(&area, nulls.at(1)),
+                    bufp(&slip, nulls.at(2)),
+                    dt.0,
+                    if old_null { null_mut() } else { sp },
+                    bufm(&mut force, nulls.at(3)),
+                    bufm(&mut diss, nulls.at(5)),
+                    null_mut(),
+                )
             } else {
-                new_states.as_mut_ptr()
+                let new_p = if nulls.at(4) {
+                    null_mut()
+                } else if *alias {
+                    sp
+                } else {
+                    new_states.as_mut_ptr()
+                };
+                asperity_friction_step_block(
+                    law,
+                    n,
+                    bufp(&normal, nulls.at(0)),
+                    bufp(&area, nulls.at(1)),
+                    bufp(&slip, nulls.at(2)),
+                    dt.0,
+                    if old_null { null() } else { sp },
+                    new_p,
+                    bufm(&mut force, nulls.at(3)),
+                    bufm(&mut diss, nulls.at(5)),
+                    null_mut(),
+                )
             };
-            let s = asperity_homogenised_friction_step_block(
-                f,
-                n,
-                bufp(&normal, nulls.at(0)),
-                bufp(&area, nulls.at(1)),
-                bufp(&slip, nulls.at(2)),
-                dt.0,
-                k.0,
-                if old_null { null() } else { sp },
-                new_p,
-                bufm(&mut force, nulls.at(3)),
-                bufm(&mut diss, nulls.at(5)),
-            );
-            ok(s, "homogenised_friction_step_block");
+            ok(s, "friction_step_block (homogenised)");
+            asperity_friction_free(law);
         }
         Op::HomStateSize => {
-            assert_eq!(
-                asperity_homogenised_friction_state_size(),
-                core::mem::size_of::<FrictionPointState>()
-            );
+            let law = law_of(pick(&ctx.frictions, 0), 0.0);
+            let mut n = 0usize;
+            if ok(
+                asperity_friction_state_size(law, &mut n),
+                "friction_state_size (homogenised)",
+            ) {
+                assert_eq!(n, M);
+            }
+            asperity_friction_free(law);
         }
         Op::HomFree { friction } => {
             if let Some(f) = take(&mut ctx.frictions, *friction) {
@@ -216,19 +255,21 @@ pub struct PointState {
 }
 
 impl PointState {
-    fn get(&self) -> FrictionPointState {
+    /// The state `[D, S, F_x, F_y, plastic slip path, dissipation by
+    /// mechanism]`: D the sum of the mechanisms, S and the plastic path the
+    /// given slip path, F the force. (`steps`, a field of the former state
+    /// struct, keeps the input encoding: with an odd count the total
+    /// dissipation is set to the path instead, an inconsistent state.)
+    fn get(&self) -> Vec<f64> {
         let d = fs(self.dissipation);
-        FrictionPointState {
-            force: fs(self.force),
-            slip_path: self.slip_path.0,
-            dissipation: Dissipation {
-                chemical: d[0],
-                van_der_waals: d[1],
-                elastic: d[2],
-                plastic: d[3],
-            },
-            steps: self.steps,
-        }
+        let f = fs(self.force);
+        let path = self.slip_path.0;
+        let total = if self.steps % 2 == 1 {
+            path
+        } else {
+            d.iter().sum()
+        };
+        vec![total, path, f[0], f[1], path, d[0], d[1], d[2], d[3]]
     }
 }
 
@@ -285,11 +326,13 @@ impl SampleSpec {
     }
 }
 
-pub(super) fn old_point(ctx: &Ctx, old: OldPoint) -> (FrictionPointState, bool) {
+/// An old state of a homogenised law (NULL when the flag is set).
+pub(super) fn old_point(ctx: &Ctx, old: OldPoint) -> (Vec<f64>, bool) {
     match old {
-        OldPoint::Null => (FrictionPointState::default(), true),
-        OldPoint::Fresh => (FrictionPointState::default(), false),
-        OldPoint::Carried => (ctx.point, false),
+        OldPoint::Null => (vec![0.0; M], true),
+        OldPoint::Fresh => (vec![0.0; M], false),
+        OldPoint::Carried if ctx.point.len() == M => (ctx.point.clone(), false),
+        OldPoint::Carried => (vec![0.0; M], false),
         OldPoint::Given(s) => (s.get(), false),
     }
 }

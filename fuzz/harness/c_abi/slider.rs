@@ -1,15 +1,18 @@
 //! Sliders (`src/ffi/slider.rs`): from scene JSON and from structs (with
-//! geometries of `friction`), their work buffers, steps, blocks, options
-//! and material presets.
+//! geometries of `friction`), options and material presets; and the slider
+//! as a patch friction law through the one friction handle
+//! (`src/ffi/friction_law.rs`): its work buffers, steps (separate, old ==
+//! new, in place), blocks.
 
 use super::common::*;
 use super::friction::geometry_rods;
 use super::{pick, take, Ctx, Op};
 use arbitrary::Arbitrary;
 use asperity::ffi::friction::*;
+use asperity::ffi::friction_law::*;
 use asperity::ffi::slider::*;
 use asperity::ffi::ASPERITY_OK;
-use asperity::friction::{FrictionMaterial, SliderResponse};
+use asperity::friction::{FrictionIncrement, FrictionMaterial, FrictionResponse};
 use std::ffi::c_char;
 use std::ptr::{null, null_mut};
 
@@ -55,10 +58,10 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             which,
             null,
         } => {
-            let sl = pick(&ctx.sliders, *slider);
+            let (sl, law) = pick_slider(ctx, *slider);
             let s = if which % 2 == 0 {
                 let mut n = 0usize;
-                asperity_slider_state_size(sl, mp(&mut n, *null))
+                asperity_friction_state_size(law, mp(&mut n, *null))
             } else {
                 let mut info: AsperitySliderInfo = zeroed();
                 asperity_slider_info(sl, mp(&mut info, *null))
@@ -66,10 +69,10 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             ok(s, "slider query");
         }
         Op::WorkNew { slider, null } => {
-            let sl = pick(&ctx.sliders, *slider);
+            let (_, law) = pick_slider(ctx, *slider);
             let mut out = null_mut();
-            let s = asperity_slider_work_new(sl, mp(&mut out, *null));
-            if let Some(w) = made(s, out, !*null, "slider_work_new") {
+            let s = asperity_friction_work_new(law, mp(&mut out, *null));
+            if let Some(w) = made(s, out, !*null, "friction_work_new") {
                 ctx.works.push(w);
             }
         }
@@ -83,37 +86,58 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             in_place,
             nulls,
         } => {
-            let sl = pick(&ctx.sliders, *slider);
+            let (_, law) = pick_slider(ctx, *slider);
             let w = pick(&ctx.works, *work);
             let v = fs(*inc);
-            let i = AsperitySliderIncrement {
+            // (The former per-increment gap is the area now, the former
+            // loading control the reserved field.)
+            let i = FrictionIncrement {
                 normal_force: v[0],
-                gap: v[1],
+                area: v[1],
                 slip: [v[2], v[3]],
                 dt: v[4],
-                control: control.0,
                 tangents: tangents.0,
+                reserved: control.0,
             };
-            let m = slider_state_len(sl);
+            let m = slider_state_len(law);
             let mut old = make_slider_state(ctx, state, m);
             let mut new = vec![0.0; m];
-            let mut out: SliderResponse = zeroed();
+            let mut out: FrictionResponse = zeroed();
             let op = bufm(&mut old, nulls.at(2));
-            let np = if *in_place {
-                op
+            let s = if *in_place && nulls.at(4) {
+                asperity_friction_step_in_place(
+                    law,
+                    cp(&i, nulls.at(0)),
+                    op,
+                    w,
+                    mp(&mut out, nulls.at(1)),
+                )
             } else {
-                bufm(&mut new, nulls.at(3))
+                let np = if *in_place {
+                    op
+                } else {
+                    bufm(&mut new, nulls.at(3))
+                };
+                asperity_friction_step(
+                    law,
+                    cp(&i, nulls.at(0)),
+                    op,
+                    np,
+                    w,
+                    mp(&mut out, nulls.at(1)),
+                )
             };
-            let s = asperity_slider_step(
-                sl,
-                w,
-                cp(&i, nulls.at(0)),
-                op,
-                np,
-                mp(&mut out, nulls.at(1)),
-            );
-            if ok(s, "slider_step") {
+            if ok(s, "friction_step (slider)") {
                 ctx.slider_state = if *in_place { old } else { new };
+            }
+            // The record of the work's last step (a slider work, or NULL).
+            let mut rec: AsperitySliderRecord = zeroed();
+            if ok(
+                asperity_slider_record(w, mp(&mut rec, nulls.at(5))),
+                "slider_record",
+            ) {
+                assert!(rec.seated == 0 || rec.seated == 1, "{rec:?}");
+                assert_eq!(rec.reserved, 0, "{rec:?}");
             }
         }
         Op::SliderBlock {
@@ -126,52 +150,73 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             in_place,
             nulls,
         } => {
-            let sl = pick(&ctx.sliders, *slider);
+            let (_, law) = pick_slider(ctx, *slider);
             let w = pick(&ctx.works, *work);
+            let form = *n / 5 % 2;
             let n = *n as usize % 5;
-            let m = slider_state_len(sl);
+            let m = slider_state_len(law);
             let val = |i: usize, d: f64| inc.get(i).map_or(d, |f| f.0);
             let normal: Vec<f64> = (0..n).map(|i| val(3 * i, 0.05)).collect();
             let slip: Vec<f64> = (0..2 * n)
                 .map(|i| val(3 * (i / 2) + 1 + i % 2, 1e-7))
                 .collect();
+            let area = vec![0.0; n];
             let one = make_slider_state(ctx, state, m);
             let mut old: Vec<f64> = (0..n).flat_map(|_| one.iter().copied()).collect();
             let mut new = vec![0.0; n * m];
             let mut force = vec![0.0; 2 * n];
             let mut diss = vec![0.0; n];
             let op = bufm(&mut old, nulls.at(2));
-            let np = if *in_place {
-                op
+            let s = if *in_place && form == 1 {
+                asperity_friction_step_block_in_place(
+                    law,
+                    n,
+                    bufp(&normal, nulls.at(0)),
+                    bufp(&area, nulls.at(6)),
+                    bufp(&slip, nulls.at(1)),
+                    dt.0,
+                    op,
+                    bufm(&mut force, nulls.at(4)),
+                    bufm(&mut diss, nulls.at(5)),
+                    w,
+                )
             } else {
-                bufm(&mut new, nulls.at(3))
+                let np = if *in_place {
+                    op
+                } else {
+                    bufm(&mut new, nulls.at(3))
+                };
+                asperity_friction_step_block(
+                    law,
+                    n,
+                    bufp(&normal, nulls.at(0)),
+                    bufp(&area, nulls.at(6)),
+                    bufp(&slip, nulls.at(1)),
+                    dt.0,
+                    op,
+                    np,
+                    bufm(&mut force, nulls.at(4)),
+                    bufm(&mut diss, nulls.at(5)),
+                    w,
+                )
             };
-            let s = asperity_slider_step_block(
-                sl,
-                w,
-                n,
-                bufp(&normal, nulls.at(0)),
-                bufp(&slip, nulls.at(1)),
-                dt.0,
-                op,
-                np,
-                bufm(&mut force, nulls.at(4)),
-                bufm(&mut diss, nulls.at(5)),
-            );
-            ok(s, "slider_step_block");
+            ok(s, "friction_step_block (slider)");
         }
         Op::SliderFree { slider } => {
-            if let Some(s) = take(&mut ctx.sliders, *slider) {
-                asperity_slider_free(s);
-            } else {
+            if ctx.sliders.is_empty() {
                 asperity_slider_free(null_mut());
+                asperity_friction_free(null_mut());
+            } else {
+                let i = *slider as usize % ctx.sliders.len();
+                asperity_friction_free(ctx.slider_laws.swap_remove(i));
+                asperity_slider_free(ctx.sliders.swap_remove(i));
             }
         }
         Op::WorkFree { work } => {
             if let Some(w) = take(&mut ctx.works, *work) {
-                asperity_slider_work_free(w);
+                asperity_friction_work_free(w);
             } else {
-                asperity_slider_work_free(null_mut());
+                asperity_friction_work_free(null_mut());
             }
         }
         Op::SliderOptionsDefault { null } => {
@@ -496,22 +541,40 @@ pub(super) const MAX_SLIDER_RODS: usize = 256;
 /// per rod, `MAX_NANO_PER_ROD`).
 pub(super) const MAX_SLIDER_NANO: usize = 1 << 22;
 
-/// Keep `slider` for the steps, or free it at once when its steps would
-/// cost more than [`MAX_SLIDER_NANO`] (a harness cost bound).
+/// Keep `slider` and its friction law for the steps, or free it at once
+/// when its steps would cost more than [`MAX_SLIDER_NANO`] (a harness cost
+/// bound).
 pub(super) unsafe fn keep_slider(ctx: &mut Ctx, slider: *mut AsperitySlider) {
     let mut info: AsperitySliderInfo = zeroed();
     assert!(ok(asperity_slider_info(slider, &mut info), "slider_info"));
     if info.rods.saturating_mul(info.nano_per_rod) > MAX_SLIDER_NANO {
         asperity_slider_free(slider);
     } else {
+        let mut law = null_mut();
+        let s = asperity_friction_from_slider(slider, &mut law);
+        let law = made(s, law, true, "friction_from_slider").expect("the law of a slider");
+        let mut m = 0usize;
+        assert!(ok(asperity_friction_state_size(law, &mut m), "state size"));
+        assert_eq!(m, info.state_size, "friction_state_size vs slider_info");
         ctx.sliders.push(slider);
+        ctx.slider_laws.push(law);
     }
 }
 
-/// The state size of `slider`, or 8 for NULL (the call then fails).
-pub(super) unsafe fn slider_state_len(slider: *const AsperitySlider) -> usize {
+/// The slider `sel` and its friction law (both NULL for 255 or none).
+pub(super) fn pick_slider(ctx: &Ctx, sel: u8) -> (*mut AsperitySlider, *mut AsperityFriction) {
+    if sel == 255 || ctx.sliders.is_empty() {
+        (null_mut(), null_mut())
+    } else {
+        let i = sel as usize % ctx.sliders.len();
+        (ctx.sliders[i], ctx.slider_laws[i])
+    }
+}
+
+/// The state size of the law `law`, or 8 for NULL (the call then fails).
+pub(super) unsafe fn slider_state_len(law: *const AsperityFriction) -> usize {
     let mut m = 0usize;
-    if slider.is_null() || asperity_slider_state_size(slider, &mut m) != ASPERITY_OK {
+    if law.is_null() || asperity_friction_state_size(law, &mut m) != ASPERITY_OK {
         8
     } else {
         m

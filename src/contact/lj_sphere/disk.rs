@@ -169,16 +169,17 @@ fn disk_column(x: &[f64], c: f64, out: &mut [f64]) {
 /// `[c_j, c_{j+1}]` at the nodes `x_i`, column-major `n×n` (`n = x.len()`,
 /// `c.len() = n + 1`, `c_0 = 0`): `A_ij = D(x_i, c_{j+1}) − D(x_i, c_j)`.
 pub(super) fn influence_matrix(x: &[f64], c: &[f64]) -> Vec<f64> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
-            // SAFETY: the target features were detected at run time.
-            return unsafe { influence_matrix_avx2(x, c) };
-        }
-    }
-    influence_matrix_generic(x, c)
+    crate::simd::dispatch!(
+        // SAFETY: AVX2 and FMA are present (checked by the dispatch).
+        avx2_fma => unsafe { influence_matrix_avx2(x, c) },
+        portable => influence_matrix_generic(x, c),
+    )
 }
 
+/// [`influence_matrix_generic`] compiled for AVX2+FMA (see `crate::simd`).
+///
+/// # Safety
+/// AVX2 and FMA must be available.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 unsafe fn influence_matrix_avx2(x: &[f64], c: &[f64]) -> Vec<f64> {

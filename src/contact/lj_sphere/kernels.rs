@@ -39,13 +39,6 @@ fn panel_plain<T: Elem>(a: &[T], lda: usize, x: &[T; PANEL], y: &mut [T]) {
     }
 }
 
-/// Whether the AVX2/FMA kernels may run (detected once, cached by std).
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-pub(super) fn has_avx2_fma() -> bool {
-    std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
-}
-
 macro_rules! avx2_panel {
     ($t:ty, $name:ident, $lanes:expr, $vec:ty, $set1:ident, $load:ident, $store:ident,
      $mul:ident, $fmadd:ident, $add:ident, $sub:ident) => {
@@ -93,13 +86,12 @@ macro_rules! avx2_panel {
         impl Elem for $t {
             #[inline(always)]
             fn panel(a: &[$t], lda: usize, x: &[$t; PANEL], y: &mut [$t]) {
-                #[cfg(target_arch = "x86_64")]
-                if has_avx2_fma() {
-                    // SAFETY: the features were detected at run time.
-                    unsafe { $name(a, lda, x, y) };
-                    return;
-                }
-                panel_plain(a, lda, x, y);
+                crate::simd::dispatch!(
+                    // SAFETY: AVX2 and FMA are present (checked by the
+                    // dispatch).
+                    avx2_fma => unsafe { $name(a, lda, x, y) },
+                    portable => panel_plain(a, lda, x, y),
+                )
             }
         }
     };

@@ -170,17 +170,17 @@ impl Lu32 {
 /// ([`kernels::update`]: one pass over the vector per block instead of one
 /// per column).
 fn substitute(lu: &[f32], linv: &[f32], uinv: &[f32], n: usize, x: &mut [f32]) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if kernels::has_avx2_fma() {
-            // SAFETY: the target features were detected at run time.
-            unsafe { substitute_avx2(lu, linv, uinv, n, x) };
-            return;
-        }
-    }
-    substitute_generic(lu, linv, uinv, n, x);
+    crate::simd::dispatch!(
+        // SAFETY: AVX2 and FMA are present (checked by the dispatch).
+        avx2_fma => unsafe { substitute_avx2(lu, linv, uinv, n, x) },
+        portable => substitute_generic(lu, linv, uinv, n, x),
+    )
 }
 
+/// [`substitute_generic`] compiled for AVX2+FMA (see `crate::simd`).
+///
+/// # Safety
+/// AVX2 and FMA must be available.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 unsafe fn substitute_avx2(lu: &[f32], linv: &[f32], uinv: &[f32], n: usize, x: &mut [f32]) {

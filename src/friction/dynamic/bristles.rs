@@ -41,8 +41,8 @@
 //!   friction", J. Dyn. Sys., Meas., Control 113 (1991) 354–362.
 
 use super::{
-    book, check_elements, respond, sealed::Advance, track_only, DynamicFriction, DynamicIncrement,
-    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book, check_elements, respond, track_only, FrictionIncrement, FrictionLaw, FrictionResponse,
+    FrictionWork, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Result};
 
@@ -90,12 +90,6 @@ impl Bristles {
     }
 }
 
-impl DynamicFriction for Bristles {
-    fn state_len(&self) -> usize {
-        STATE_MODEL + self.bristles()
-    }
-}
-
 /// One bristle of break deflection `delta` deflected from `d` by the slip
 /// `ds`: its new deflection and its number of snaps.
 #[inline]
@@ -113,12 +107,16 @@ fn bristle(d: f64, ds: f64, delta: f64) -> (f64, f64) {
 /// every bristle snapped. Tangents: dF/dN = −Σkᵢdᵢ; dF/dΔs = −N Σkᵢ −
 /// σ₂/Δt (exact between snaps: a bristle's deflection follows the slip;
 /// the force jumps where one snaps).
-impl Advance for Bristles {
+impl FrictionLaw for Bristles {
+    fn state_len(&self) -> usize {
+        STATE_MODEL + self.bristles()
+    }
+
     fn rate_dependent(&self) -> bool {
         false
     }
 
-    fn check(&self, increment: &DynamicIncrement) -> Result<()> {
+    fn check(&self, increment: &FrictionIncrement) -> Result<()> {
         track_only(increment)
     }
 
@@ -126,8 +124,9 @@ impl Advance for Bristles {
         &self,
         old: Option<&[f64]>,
         new: &mut [f64],
-        inc: &DynamicIncrement,
-    ) -> Result<DynamicResponse> {
+        inc: &FrictionIncrement,
+        _work: &mut FrictionWork,
+    ) -> Result<FrictionResponse> {
         let (n, ds) = (inc.normal_force, inc.slip[0]);
         let (mut spring, mut energy, mut released) = (0.0, 0.0, 0.0);
         let mut snapped = 0usize;

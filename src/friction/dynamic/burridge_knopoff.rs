@@ -92,8 +92,8 @@
 use super::dormand_prince::{factor, Stages, System};
 use super::prandtl_tomlinson::MAX_SUBSTEPS;
 use super::{
-    book, read, respond, sealed::Advance, track_only, DynamicFriction, DynamicIncrement,
-    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book, read, respond, track_only, FrictionIncrement, FrictionLaw, FrictionResponse,
+    FrictionWork, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 
@@ -372,8 +372,8 @@ impl BurridgeKnopoff {
         &self,
         old: Option<&[f64]>,
         state: &mut [f64],
-        inc: &DynamicIncrement,
-    ) -> Result<DynamicResponse> {
+        inc: &FrictionIncrement,
+    ) -> Result<FrictionResponse> {
         let m = self.blocks;
         let mut y0 = [0.0; N];
         for (c, v) in y0.iter_mut().enumerate().take(2 * m + 1).skip(1) {
@@ -628,12 +628,6 @@ impl<const B: usize, const N: usize> System<N> for Chain<'_, B> {
     }
 }
 
-impl DynamicFriction for BurridgeKnopoff {
-    fn state_len(&self) -> usize {
-        STATE_MODEL + 2 * self.blocks + 1
-    }
-}
-
 /// One increment (module docs). Regime: 0 when no block slid during the
 /// increment, 2 when every block did, 1 when some did. The stored energy is
 /// the springs' and the blocks' kinetic energy. dF/dN and dF/dΔs by central
@@ -641,12 +635,16 @@ impl DynamicFriction for BurridgeKnopoff {
 /// one-sided dF/dN at N = 0; not smooth across stick-slip events). Errors:
 /// `slip` with a non-zero second component; the sub-step budget exhausted
 /// ([`Error::NotConverged`] naming `dt`; the state untouched).
-impl Advance for BurridgeKnopoff {
+impl FrictionLaw for BurridgeKnopoff {
+    fn state_len(&self) -> usize {
+        STATE_MODEL + 2 * self.blocks + 1
+    }
+
     fn rate_dependent(&self) -> bool {
         true
     }
 
-    fn check(&self, increment: &DynamicIncrement) -> Result<()> {
+    fn check(&self, increment: &FrictionIncrement) -> Result<()> {
         track_only(increment)
     }
 
@@ -654,8 +652,9 @@ impl Advance for BurridgeKnopoff {
         &self,
         old: Option<&[f64]>,
         state: &mut [f64],
-        inc: &DynamicIncrement,
-    ) -> Result<DynamicResponse> {
+        inc: &FrictionIncrement,
+        _work: &mut FrictionWork,
+    ) -> Result<FrictionResponse> {
         // Size classes of the fixed-size integration arrays.
         match self.blocks {
             1 => self.advance_in::<1, 3>(old, state, inc),

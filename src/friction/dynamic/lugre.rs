@@ -58,8 +58,8 @@
 //!   45 (2000) 830–832.
 
 use super::{
-    book_path, norm, read, respond, sealed::Advance, DynamicFriction, DynamicIncrement,
-    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book_path, norm, read, respond, FrictionIncrement, FrictionLaw, FrictionResponse, FrictionWork,
+    STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 
@@ -323,17 +323,15 @@ impl Increment {
     }
 }
 
-impl DynamicFriction for LuGre {
-    fn state_len(&self) -> usize {
-        STATE_LEN
-    }
-}
-
 /// One increment (module docs). Regime: 0 when Δs = 0 (the bristles hold),
 /// 2 otherwise. Tangents: dF/dN = −(σ₀z + σ₁ż) exactly (z does not depend
 /// on N); dF/dΔs by central differences of the exact increment (4 more
 /// evaluations; 0 when Δt = 0).
-impl Advance for LuGre {
+impl FrictionLaw for LuGre {
+    fn state_len(&self) -> usize {
+        STATE_LEN
+    }
+
     fn rate_dependent(&self) -> bool {
         true
     }
@@ -342,11 +340,19 @@ impl Advance for LuGre {
         &self,
         old: Option<&[f64]>,
         state: &mut [f64],
-        inc: &DynamicIncrement,
-    ) -> Result<DynamicResponse> {
+        inc: &FrictionIncrement,
+        _work: &mut FrictionWork,
+    ) -> Result<FrictionResponse> {
         let z0 = [read(old, state, STATE_Z), read(old, state, STATE_Z + 1)];
         let n = inc.normal_force;
         let step = self.increment(z0, n, inc.slip, inc.dt);
+        if !step.dissipated.is_finite() {
+            return Err(crate::error::Error::OutOfDomain {
+                name: "slip",
+                value: inc.slip[0].abs().max(inc.slip[1].abs()),
+                reason: "the dissipated energy overflows f64",
+            });
+        }
         state[STATE_Z] = step.z[0];
         state[STATE_Z + 1] = step.z[1];
         book_path(old, state, step.dissipated, step.path);

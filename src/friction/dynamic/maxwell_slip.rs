@@ -43,8 +43,8 @@
 //!   Int. Congress of Applied Mechanics (1926) 332–335.
 
 use super::{
-    book, check_elements, norm, respond, sealed::Advance, DynamicFriction, DynamicIncrement,
-    DynamicResponse, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book, check_elements, norm, respond, FrictionIncrement, FrictionLaw, FrictionResponse,
+    FrictionWork, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Result};
 
@@ -105,12 +105,6 @@ impl MaxwellSlip {
                 .zip(&self.capacity)
                 .map(|(k, m)| (k * x).min(*m))
                 .sum::<f64>()
-    }
-}
-
-impl DynamicFriction for MaxwellSlip {
-    fn state_len(&self) -> usize {
-        STATE_MODEL + 2 * self.elements()
     }
 }
 
@@ -180,7 +174,11 @@ fn element(
 /// Tangents are the consistent tangents of the radial return: dF/dN =
 /// −Σ kᵢδᵢ, dF/dΔs = −N Σ kᵢ ∂δᵢ/∂Δs (kᵢ I sticking, kᵢ rᵢ/|tᵢ| (I − nᵢnᵢᵀ)
 /// slipping) − σ₂/Δt I.
-impl Advance for MaxwellSlip {
+impl FrictionLaw for MaxwellSlip {
+    fn state_len(&self) -> usize {
+        STATE_MODEL + 2 * self.elements()
+    }
+
     fn rate_dependent(&self) -> bool {
         false
     }
@@ -189,8 +187,9 @@ impl Advance for MaxwellSlip {
         &self,
         old: Option<&[f64]>,
         new: &mut [f64],
-        inc: &DynamicIncrement,
-    ) -> Result<DynamicResponse> {
+        inc: &FrictionIncrement,
+        _work: &mut FrictionWork,
+    ) -> Result<FrictionResponse> {
         let n = inc.normal_force;
         let ds = inc.slip;
         let want_slip = inc.tangents & TANGENT_SLIP != 0;

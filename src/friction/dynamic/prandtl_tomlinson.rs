@@ -71,8 +71,8 @@
 
 use super::dormand_prince::{integrate, System};
 use super::{
-    book, read, respond, sealed::Advance, track_only, DynamicFriction, DynamicIncrement,
-    DynamicResponse, STATE_MODEL, TANGENT_SLIP,
+    book, read, respond, track_only, FrictionIncrement, FrictionLaw, FrictionResponse,
+    FrictionWork, STATE_MODEL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 use core::f64::consts::PI;
@@ -417,16 +417,6 @@ impl System<5> for Drive<'_> {
     }
 }
 
-impl DynamicFriction for PrandtlTomlinson {
-    fn state_len(&self) -> usize {
-        if self.cantilever.is_some() {
-            STATE_MODEL + 5
-        } else {
-            STATE_MODEL + 3
-        }
-    }
-}
-
 /// The sub-step budget error.
 fn budget_error() -> Error {
     Error::NotConverged {
@@ -445,12 +435,20 @@ fn budget_error() -> Error {
 /// Δt = 0). Errors: `slip` with a non-zero second component; the sub-step
 /// budget [`MAX_SUBSTEPS`] exhausted ([`Error::NotConverged`] naming `dt`,
 /// the state untouched).
-impl Advance for PrandtlTomlinson {
+impl FrictionLaw for PrandtlTomlinson {
+    fn state_len(&self) -> usize {
+        if self.cantilever.is_some() {
+            STATE_MODEL + 5
+        } else {
+            STATE_MODEL + 3
+        }
+    }
+
     fn rate_dependent(&self) -> bool {
         true
     }
 
-    fn check(&self, increment: &DynamicIncrement) -> Result<()> {
+    fn check(&self, increment: &FrictionIncrement) -> Result<()> {
         track_only(increment)
     }
 
@@ -458,8 +456,9 @@ impl Advance for PrandtlTomlinson {
         &self,
         old: Option<&[f64]>,
         state: &mut [f64],
-        inc: &DynamicIncrement,
-    ) -> Result<DynamicResponse> {
+        inc: &FrictionIncrement,
+        _work: &mut FrictionWork,
+    ) -> Result<FrictionResponse> {
         let ds = inc.slip[0];
         let v_s = if inc.dt > 0.0 { ds / inc.dt } else { 0.0 };
         let xs0 = read(old, state, STATE_SUPPORT);
@@ -529,7 +528,7 @@ impl PrandtlTomlinson {
     /// dF/dΔs by central differences of `force_at(support velocity)` when
     /// asked for and Δt > 0; 0 otherwise (or when a perturbed integration
     /// runs out of sub-steps).
-    fn tangent(&self, inc: &DynamicIncrement, force_at: impl Fn(f64) -> Option<f64>) -> f64 {
+    fn tangent(&self, inc: &FrictionIncrement, force_at: impl Fn(f64) -> Option<f64>) -> f64 {
         if inc.tangents & TANGENT_SLIP == 0 || inc.dt <= 0.0 {
             return 0.0;
         }

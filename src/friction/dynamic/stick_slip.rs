@@ -5,7 +5,7 @@
 //! # Definition
 //!
 //! The history is a sequence of samples i (one per increment): the friction
-//! force F_i resisting the motion (N; for a [`super::DynamicResponse`] along
+//! force F_i resisting the motion (N; for a [`super::FrictionResponse`] along
 //! +x, `-force[0]`) and the slip increment s_i that led to it (m). The slip
 //! path is p_i = Σ_{j≤i} |s_j|.
 //!
