@@ -317,9 +317,115 @@ where
                 })
                 .map_err(|(i, e)| Error::new_err(format!("element {i}: {e}")))?;
             for (j, k) in keys.iter().enumerate() {
-                d.set_item(k, PyArray1::from_vec(py, rows.iter().map(|r| r[j]).collect()))?;
+                d.set_item(
+                    k,
+                    PyArray1::from_vec(py, rows.iter().map(|r| r[j]).collect()),
+                )?;
             }
         }
     }
     Ok(d.into_any().unbind())
+}
+
+/// A serde-serialisable Rust value as Python objects, with the exact-float
+/// strings of the library's serde form (`"2.5e-7"`, used by `Dissipation`
+/// and the tables so that JSON round trips are exact) turned back into
+/// floats. For values whose string fields are never numbers.
+pub fn to_py_numbers<T: serde::Serialize>(py: Python<'_>, v: &T) -> PyResult<Py<PyAny>> {
+    fn fix(v: &mut serde_json::Value) {
+        match v {
+            serde_json::Value::String(s) => {
+                if let Ok(x) = s.parse::<f64>() {
+                    if let Some(n) = serde_json::Number::from_f64(x) {
+                        *v = serde_json::Value::Number(n);
+                    }
+                }
+            }
+            serde_json::Value::Array(a) => a.iter_mut().for_each(fix),
+            serde_json::Value::Object(o) => o.values_mut().for_each(fix),
+            _ => {}
+        }
+    }
+    let mut j = serde_json::to_value(v).map_err(any_err)?;
+    fix(&mut j);
+    json_value(py, &j.to_string())
+}
+
+/// A Python object (dict, list, tuple, float, int, str, bool, None, numpy
+/// scalars and 1-D arrays) as a `serde_json::Value` built in memory: floats
+/// go in as their exact f64 (a JSON text would be re-parsed by serde_json's
+/// fast float parser, which can land one ulp away).
+pub fn py_to_value(obj: &Bound<'_, PyAny>) -> PyResult<serde_json::Value> {
+    use pyo3::types::{PyBool, PyDict, PyInt, PyString};
+    use serde_json::Value;
+    if obj.is_none() {
+        return Ok(Value::Null);
+    }
+    if let Ok(b) = obj.cast::<PyBool>() {
+        return Ok(Value::Bool(b.is_true()));
+    }
+    if obj.is_instance_of::<PyInt>() {
+        if let Ok(i) = obj.extract::<i64>() {
+            return Ok(Value::from(i));
+        }
+        if let Ok(u) = obj.extract::<u64>() {
+            return Ok(Value::from(u));
+        }
+    }
+    if let Ok(f) = obj.cast::<PyFloat>() {
+        return serde_json::Number::from_f64(f.value())
+            .map(Value::Number)
+            .ok_or_else(|| {
+                Error::new_err(format!(
+                    "a non-finite number ({}) cannot be a parameter",
+                    f.value()
+                ))
+            });
+    }
+    if let Ok(s) = obj.cast::<PyString>() {
+        return Ok(Value::String(s.to_string_lossy().into_owned()));
+    }
+    if let Ok(d) = obj.cast::<PyDict>() {
+        let mut m = serde_json::Map::new();
+        for (k, v) in d.iter() {
+            let key: String = k
+                .extract()
+                .map_err(|_| Error::new_err("dict keys must be strings"))?;
+            m.insert(key, py_to_value(&v)?);
+        }
+        return Ok(Value::Object(m));
+    }
+    if obj.is_instance_of::<PyList>()
+        || obj.is_instance_of::<PyTuple>()
+        || obj.cast::<PyUntypedArray>().is_ok()
+    {
+        let mut v = Vec::new();
+        for x in obj.try_iter()? {
+            v.push(py_to_value(&x?)?);
+        }
+        return Ok(Value::Array(v));
+    }
+    if let Ok(f) = obj.extract::<f64>() {
+        return serde_json::Number::from_f64(f)
+            .map(Value::Number)
+            .ok_or_else(|| {
+                Error::new_err(format!("a non-finite number ({f}) cannot be a parameter"))
+            });
+    }
+    Err(Error::new_err(format!(
+        "cannot use a {} as a parameter",
+        type_name(obj)
+    )))
+}
+
+/// A Rust value deserialised from a Python object through [`py_to_value`];
+/// serde's messages name the field (`missing field \`x\``), and the error
+/// names it as the argument (or `what` when serde names none).
+pub fn from_py<T: serde::de::DeserializeOwned>(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<T> {
+    let v = py_to_value(obj)?;
+    serde_json::from_value(v).map_err(|e| {
+        let m = e.to_string();
+        let name = m.split('`').nth(1).unwrap_or(what).to_string();
+        arg_error(&name, m)
+    })
 }

@@ -865,7 +865,7 @@ macro_rules! normal_law {
                 $(#[$gm])*
                 #[getter]
                 fn $g(&self) -> f64 {
-                    self.inner.$g
+                    self.inner.params().$g
                 }
             )*
 
@@ -874,7 +874,11 @@ macro_rules! normal_law {
     };
 }
 
-fn point_dict<'py>(py: Python<'py>, md: &c::MaugisDugdale, p: c::maugis_dugdale::CurvePoint) -> PyResult<Bound<'py, PyDict>> {
+fn point_dict<'py>(
+    py: Python<'py>,
+    md: &c::MaugisDugdale,
+    p: c::maugis_dugdale::CurvePoint,
+) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     for (k, v) in point_values(md, &p).iter().zip(POINT_KEYS) {
         d.set_item(v, *k)?;
@@ -884,15 +888,39 @@ fn point_dict<'py>(py: Python<'py>, md: &c::MaugisDugdale, p: c::maugis_dugdale:
 
 /// Keys of a Maugis–Dugdale curve point: SI, then reduced.
 const POINT_KEYS: [&str; 12] = [
-    "contact_radius", "cohesive_radius", "force", "delta", "stiffness",
-    "a_bar", "c_bar", "p_bar", "delta_bar", "dp_bar", "ddelta_bar", "stiffness_bar",
+    "contact_radius",
+    "cohesive_radius",
+    "force",
+    "delta",
+    "stiffness",
+    "a_bar",
+    "c_bar",
+    "p_bar",
+    "delta_bar",
+    "dp_bar",
+    "ddelta_bar",
+    "stiffness_bar",
 ];
 
 fn point_values(md: &c::MaugisDugdale, p: &c::maugis_dugdale::CurvePoint) -> [f64; 12] {
-    let (rs_, fs, ds) = (md.radius_scale(), md.force_scale(), asperity::NormalContact::length_scale(md));
+    let (rs_, fs, ds) = (
+        md.radius_scale(),
+        md.force_scale(),
+        asperity::NormalContact::length_scale(md),
+    );
     [
-        p.a_bar * rs_, p.c_bar * rs_, p.p_bar * fs, p.delta_bar * ds, p.stiffness_bar() * fs / ds,
-        p.a_bar, p.c_bar, p.p_bar, p.delta_bar, p.dp_bar, p.ddelta_bar, p.stiffness_bar(),
+        p.a_bar * rs_,
+        p.c_bar * rs_,
+        p.p_bar * fs,
+        p.delta_bar * ds,
+        p.stiffness_bar() * fs / ds,
+        p.a_bar,
+        p.c_bar,
+        p.p_bar,
+        p.delta_bar,
+        p.dp_bar,
+        p.ddelta_bar,
+        p.stiffness_bar(),
     ]
 }
 
@@ -905,7 +933,9 @@ fn points_any(
     name: &str,
     f: impl Fn(f64) -> asperity::Result<c::maugis_dugdale::CurvePoint> + Send + Sync,
 ) -> PyResult<Py<PyAny>> {
-    crate::common::vectorize_record(py, x, name, POINT_KEYS, |v| f(v).map(|p| point_values(md, &p)))
+    crate::common::vectorize_record(py, x, name, POINT_KEYS, |v| {
+        f(v).map(|p| point_values(md, &p))
+    })
 }
 
 normal_law!(
@@ -946,7 +976,7 @@ normal_law!(
             self.inner.peak_pressure(real(force, "force")?).map_err(rs)
         }
         fn __repr__(&self) -> String {
-            format!("Hertz(radius={:e}, e_star={:e})", self.inner.radius, self.inner.e_star)
+            format!("Hertz(radius={:e}, e_star={:e})", self.inner.params().radius, self.inner.params().e_star)
         }
     }
 );
@@ -977,7 +1007,7 @@ normal_law!(
             self.inner.adhesive_force()
         }
         fn __repr__(&self) -> String {
-            format!("Dmt(radius={:e}, e_star={:e}, work_of_adhesion={:e})", self.inner.radius, self.inner.e_star, self.inner.work_of_adhesion)
+            format!("Dmt(radius={:e}, e_star={:e}, work_of_adhesion={:e})", self.inner.params().radius, self.inner.params().e_star, self.inner.params().work_of_adhesion)
         }
     }
 );
@@ -996,16 +1026,18 @@ normal_law!(
         e_star,
         /// Work of adhesion w (J/m²).
         work_of_adhesion,
-        /// The critical (jump-out) overlap δ_c (m, < 0).
-        critical_delta,
-        /// Force scale πwR (N).
-        force_scale,
-        /// Radius scale (m).
-        radius_scale,
-        /// Overlap scale (m).
-        delta_scale,
     }
     {
+        /// The critical (jump-out) overlap δ_c (m, < 0) under displacement control.
+        #[getter]
+        fn critical_delta(&self) -> f64 {
+            self.inner.critical_delta()
+        }
+        /// Overlap scale (π²w²R/E*²)^(1/3) (m).
+        #[getter]
+        fn delta_scale(&self) -> f64 {
+            self.inner.delta_scale()
+        }
         #[new]
         fn new(radius: &Bound<'_, PyAny>, e_star: &Bound<'_, PyAny>, work_of_adhesion: &Bound<'_, PyAny>) -> PyResult<Self> {
             Ok(Self { inner: c::Jkr::new(real(radius, "radius")?, real(e_star, "e_star")?, real(work_of_adhesion, "work_of_adhesion")?).map_err(rs)? })
@@ -1030,7 +1062,7 @@ normal_law!(
             Ok(self.inner.contact_radius_at_delta(real(delta, "delta")?))
         }
         fn __repr__(&self) -> String {
-            format!("Jkr(radius={:e}, e_star={:e}, work_of_adhesion={:e})", self.inner.radius, self.inner.e_star, self.inner.work_of_adhesion)
+            format!("Jkr(radius={:e}, e_star={:e}, work_of_adhesion={:e})", self.inner.params().radius, self.inner.params().e_star, self.inner.params().work_of_adhesion)
         }
     }
 );
@@ -1155,7 +1187,7 @@ normal_law!(
             points_any(py, &md, c_bar, "c_bar", |v| md.non_contact_point(v))
         }
         fn __repr__(&self) -> String {
-            format!("MaugisDugdale(radius={:e}, e_star={:e}, work_of_adhesion={:e}, sigma0={:e})", self.inner.radius, self.inner.e_star, self.inner.work_of_adhesion, self.inner.cohesive_stress)
+            format!("MaugisDugdale(radius={:e}, e_star={:e}, work_of_adhesion={:e}, sigma0={:e})", self.inner.params().radius, self.inner.params().e_star, self.inner.params().work_of_adhesion, self.inner.params().cohesive_stress)
         }
     }
 );
@@ -1174,16 +1206,25 @@ normal_law!(
         e_star,
         /// Work of adhesion w (J/m²).
         work_of_adhesion,
-        /// No-slip factor C_NS (dimensionless, 1 frictionless).
-        no_slip_factor,
-        /// Stiffness 2E* C_NS a (N/m).
-        stiffness,
-        /// Pull-off force (N, < 0).
-        pull_off,
-        /// Critical (jump-out) overlap (m, < 0).
-        critical_delta,
+        /// Poisson's ratio ν of the bonded punch (0 when frictionless).
+        nu,
     }
     {
+        /// Stiffness 2E* C_NS a (N/m).
+        #[getter]
+        fn stiffness(&self) -> f64 {
+            self.inner.stiffness()
+        }
+        /// Critical (jump-out) overlap (m, < 0).
+        #[getter]
+        fn critical_delta(&self) -> f64 {
+            self.inner.critical_delta()
+        }
+        /// Whether the punch is bonded (no slip).
+        #[getter]
+        fn bonded(&self) -> bool {
+            self.inner.params().no_slip != 0
+        }
         #[new]
         fn new(radius: &Bound<'_, PyAny>, e_star: &Bound<'_, PyAny>, work_of_adhesion: &Bound<'_, PyAny>) -> PyResult<Self> {
             Ok(Self { inner: c::Kendall::new(real(radius, "radius")?, real(e_star, "e_star")?, real(work_of_adhesion, "work_of_adhesion")?).map_err(rs)? })
@@ -1196,7 +1237,7 @@ normal_law!(
             Ok(Self { inner: c::Kendall::no_slip(real(radius, "radius")?, real(e_star, "e_star")?, real(work_of_adhesion, "work_of_adhesion")?, real(nu, "nu")?).map_err(rs)? })
         }
         fn __repr__(&self) -> String {
-            format!("Kendall(radius={:e}, e_star={:e}, work_of_adhesion={:e})", self.inner.radius, self.inner.e_star, self.inner.work_of_adhesion)
+            format!("Kendall(radius={:e}, e_star={:e}, work_of_adhesion={:e})", self.inner.params().radius, self.inner.params().e_star, self.inner.params().work_of_adhesion)
         }
     }
 );
@@ -1212,10 +1253,20 @@ normal_law!(
         radius,
         /// Contact modulus E* (Pa).
         e_star,
-        /// Stiffness 2E* a (N/m), times C_NS when bonded.
-        stiffness,
+        /// Poisson's ratio ν of the bonded punch (0 when frictionless).
+        nu,
     }
     {
+        /// Stiffness 2E* a (N/m), times C_NS when bonded.
+        #[getter]
+        fn stiffness(&self) -> f64 {
+            self.inner.stiffness()
+        }
+        /// Whether the punch is bonded (no slip).
+        #[getter]
+        fn bonded(&self) -> bool {
+            self.inner.params().no_slip != 0
+        }
         #[new]
         fn new(radius: &Bound<'_, PyAny>, e_star: &Bound<'_, PyAny>) -> PyResult<Self> {
             Ok(Self { inner: c::FlatPunch::new(real(radius, "radius")?, real(e_star, "e_star")?).map_err(rs)? })
@@ -1228,7 +1279,7 @@ normal_law!(
             Ok(Self { inner: c::FlatPunch::no_slip(real(radius, "radius")?, real(e_star, "e_star")?, real(nu, "nu")?).map_err(rs)? })
         }
         fn __repr__(&self) -> String {
-            format!("FlatPunch(radius={:e}, e_star={:e})", self.inner.radius, self.inner.e_star)
+            format!("FlatPunch(radius={:e}, e_star={:e})", self.inner.params().radius, self.inner.params().e_star)
         }
     }
 );
@@ -1287,7 +1338,7 @@ normal_law!(
             Ok(self.inner.radius_at_delta(real(delta, "delta")?))
         }
         fn __repr__(&self) -> String {
-            format!("PowerPunch(b={:e}, d={}, e_star={:e})", self.inner.b, self.inner.d, self.inner.e_star)
+            format!("PowerPunch(b={:e}, d={}, e_star={:e})", self.inner.params().b, self.inner.params().d, self.inner.params().e_star)
         }
     }
 );
@@ -1309,18 +1360,20 @@ normal_law!(
         e_star,
         /// Work of adhesion w (J/m²).
         work_of_adhesion,
-        /// No-slip factor (dimensionless).
-        no_slip_factor,
-        /// Critical (jump-out) overlap (m).
-        critical_delta,
-        /// Force scale (N).
-        force_scale,
-        /// Radius scale (m).
-        radius_scale,
-        /// Overlap scale (m).
-        delta_scale,
+        /// Poisson's ratio ν of the bonded punch (0 when frictionless).
+        nu,
     }
     {
+        /// Critical (jump-out) overlap (m).
+        #[getter]
+        fn critical_delta(&self) -> f64 {
+            self.inner.critical_delta()
+        }
+        /// Borodich's no-slip shape factor k*(d, ν) (1 frictionless).
+        #[getter]
+        fn k_star(&self) -> f64 {
+            self.inner.k_star()
+        }
         #[new]
         fn new(b: &Bound<'_, PyAny>, d: &Bound<'_, PyAny>, e_star: &Bound<'_, PyAny>, work_of_adhesion: &Bound<'_, PyAny>) -> PyResult<Self> {
             Ok(Self { inner: c::JkrPowerPunch::new(real(b, "b")?, real(d, "d")?, real(e_star, "e_star")?, real(work_of_adhesion, "work_of_adhesion")?).map_err(rs)? })
@@ -1345,7 +1398,7 @@ normal_law!(
             Ok(self.inner.delta_at_radius(real(a, "a")?))
         }
         fn __repr__(&self) -> String {
-            format!("JkrPowerPunch(b={:e}, d={}, e_star={:e}, work_of_adhesion={:e})", self.inner.b, self.inner.d, self.inner.e_star, self.inner.work_of_adhesion)
+            format!("JkrPowerPunch(b={:e}, d={}, e_star={:e}, work_of_adhesion={:e})", self.inner.params().b, self.inner.params().d, self.inner.params().e_star, self.inner.params().work_of_adhesion)
         }
     }
 );
@@ -1458,10 +1511,13 @@ normal_law!(
         radius,
         /// Work of adhesion w (J/m²).
         work_of_adhesion,
-        /// The surface law's range (m).
-        range,
     }
     {
+        /// The surface law's range (m): z0, h0 or ℓ.
+        #[getter]
+        fn range(&self) -> f64 {
+            self.inner.surface_law().range()
+        }
         #[new]
         fn new(radius: &Bound<'_, PyAny>, surface_law: &Bound<'_, SurfaceLaw>) -> PyResult<Self> {
             Ok(Self { inner: c::Derjaguin::new(real(radius, "radius")?, surface_law.get().inner).map_err(rs)? })
@@ -1484,7 +1540,7 @@ normal_law!(
             self.inner.force_at_gap(real(gap, "gap")?).map_err(rs)
         }
         fn __repr__(&self) -> String {
-            format!("Derjaguin(radius={:e}, surface_law={:?})", self.inner.radius, self.inner.surface_law())
+            format!("Derjaguin(radius={:e}, surface_law={:?})", self.inner.params().radius, self.inner.surface_law())
         }
     }
 );

@@ -3,7 +3,7 @@
 //! scenes (the hierarchical slider and the dynamic models along its track)
 //! with their results as arrays per step.
 
-use crate::common::{any_err, arg_error, count, json_value, py_to_json, real, rs, string, to_py_value};
+use crate::common::{any_err, arg_error, count, json_value, py_to_json, real, rs, string};
 use asperity::friction as fr;
 use asperity::scene::Scene;
 use numpy::PyArray1;
@@ -89,8 +89,7 @@ material_getters!(
     /// A material from a dict with every field of ``to_dict()`` (SI).
     #[staticmethod]
     fn from_dict(d: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let text = py_to_json(d)?;
-        let inner: fr::FrictionMaterial = serde_json::from_str(&text).map_err(|e| arg_error("d", e))?;
+        let inner: fr::FrictionMaterial = crate::common::from_py(d, "d")?;
         inner.validate().map_err(rs)?;
         Ok(Self { inner })
     }
@@ -98,7 +97,7 @@ material_getters!(
     ///
     /// Every field (SI).
     fn to_dict(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        to_py_value(py, &self.inner)
+        crate::common::to_py_numbers(py, &self.inner)
     }
     /// e_star() -> float
     ///
@@ -129,7 +128,13 @@ pub struct NanoAsperities {
 #[pymethods]
 impl NanoAsperities {
     #[new]
-    fn new(h_vdw: &Bound<'_, PyAny>, w_vdw: &Bound<'_, PyAny>, h_chem: &Bound<'_, PyAny>, w_chem: &Bound<'_, PyAny>, spacing: &Bound<'_, PyAny>) -> PyResult<Self> {
+    fn new(
+        h_vdw: &Bound<'_, PyAny>,
+        w_vdw: &Bound<'_, PyAny>,
+        h_chem: &Bound<'_, PyAny>,
+        w_chem: &Bound<'_, PyAny>,
+        spacing: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
         let inner = fr::NanoAsperities {
             h_vdw: real(h_vdw, "h_vdw")?,
             w_vdw: real(w_vdw, "w_vdw")?,
@@ -144,7 +149,7 @@ impl NanoAsperities {
     ///
     /// The five lengths (m).
     fn to_dict(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        to_py_value(py, &self.inner)
+        crate::common::to_py_numbers(py, &self.inner)
     }
     /// height() -> float
     ///
@@ -163,12 +168,17 @@ crate::scalar_fn!(released_elastic_energy, fr::mechanisms::released_elastic_ener
 crate::scalar_fn!(plastic_work, fr::mechanisms::plastic_work, "plastic_work(yield_stress, plastic_strain, deformed_volume) -> float\n\nPlastic work σ_y ε_p V (J): yield stress (Pa), plastic strain, deformed volume (m³).", (yield_stress, plastic_strain, deformed_volume));
 
 fn cof_form(obj: Option<&Bound<'_, PyAny>>) -> PyResult<fr::CofForm> {
-    let Some(o) = obj else { return Ok(fr::CofForm::default()) };
+    let Some(o) = obj else {
+        return Ok(fr::CofForm::default());
+    };
     match string(o, "form")?.as_str() {
         "amontons" => Ok(fr::CofForm::Amontons),
         "coulomb" => Ok(fr::CofForm::Coulomb),
         "derjaguin" => Ok(fr::CofForm::Derjaguin),
-        x => Err(arg_error("form", format!("must be \"amontons\", \"coulomb\" or \"derjaguin\", got {x:?}"))),
+        x => Err(arg_error(
+            "form",
+            format!("must be \"amontons\", \"coulomb\" or \"derjaguin\", got {x:?}"),
+        )),
     }
 }
 
@@ -178,7 +188,12 @@ fn cof_form(obj: Option<&Bound<'_, PyAny>>) -> PyResult<fr::CofForm> {
 /// ``"amontons"`` F/N, ``"coulomb"`` (F - A)/N, ``"derjaguin"`` F/(N + A).
 #[pyfunction]
 #[pyo3(signature = (friction_force, normal_load, adhesion=None, form=None))]
-fn coefficient_of_friction(friction_force: &Bound<'_, PyAny>, normal_load: &Bound<'_, PyAny>, adhesion: Option<&Bound<'_, PyAny>>, form: Option<&Bound<'_, PyAny>>) -> PyResult<f64> {
+fn coefficient_of_friction(
+    friction_force: &Bound<'_, PyAny>,
+    normal_load: &Bound<'_, PyAny>,
+    adhesion: Option<&Bound<'_, PyAny>>,
+    form: Option<&Bound<'_, PyAny>>,
+) -> PyResult<f64> {
     fr::coefficient_of_friction(
         cof_form(form)?,
         real(friction_force, "friction_force")?,
@@ -189,8 +204,15 @@ fn coefficient_of_friction(friction_force: &Bound<'_, PyAny>, normal_load: &Boun
 }
 
 fn mechanisms(obj: Option<&Bound<'_, PyAny>>) -> PyResult<fr::Mechanisms> {
-    let Some(o) = obj else { return Ok(fr::Mechanisms::all()) };
-    let names: Vec<String> = o.extract().map_err(|_| arg_error("mechanisms", "must be a list of \"chemical\", \"van_der_waals\", \"elastic\", \"plastic\""))?;
+    let Some(o) = obj else {
+        return Ok(fr::Mechanisms::all());
+    };
+    let names: Vec<String> = o.extract().map_err(|_| {
+        arg_error(
+            "mechanisms",
+            "must be a list of \"chemical\", \"van_der_waals\", \"elastic\", \"plastic\"",
+        )
+    })?;
     let mut m = fr::Mechanisms::none();
     for n in names {
         match n.as_str() {
@@ -235,7 +257,7 @@ fn ledger_step(
         crate::common::real_opt(released_elastic, "released_elastic")?.unwrap_or(0.0),
     )
     .map_err(rs)?;
-    to_py_value(py, &s)
+    crate::common::to_py_numbers(py, &s)
 }
 
 /// apparent_friction(material, nano, nano_count, external_force) -> dict
@@ -244,9 +266,21 @@ fn ledger_step(
 /// ``external_force`` (N) (thesis 4.4): bond counts, holding forces (N),
 /// chemical and van der Waals forces (N), friction force (N), ``cof``, shares.
 #[pyfunction]
-fn apparent_friction(py: Python<'_>, material: &FrictionMaterial, nano: &NanoAsperities, nano_count: &Bound<'_, PyAny>, external_force: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-    let a = fr::apparent_friction(&material.inner, &nano.inner, count(nano_count, "nano_count")?, real(external_force, "external_force")?).map_err(rs)?;
-    to_py_value(py, &a)
+fn apparent_friction(
+    py: Python<'_>,
+    material: &FrictionMaterial,
+    nano: &NanoAsperities,
+    nano_count: &Bound<'_, PyAny>,
+    external_force: &Bound<'_, PyAny>,
+) -> PyResult<Py<PyAny>> {
+    let a = fr::apparent_friction(
+        &material.inner,
+        &nano.inner,
+        count(nano_count, "nano_count")?,
+        real(external_force, "external_force")?,
+    )
+    .map_err(rs)?;
+    crate::common::to_py_numbers(py, &a)
 }
 
 /// single_rod(material, nano) -> dict
@@ -254,8 +288,15 @@ fn apparent_friction(py: Python<'_>, material: &FrictionMaterial, nano: &NanoAsp
 /// ``apparent_friction`` of one nano-asperity under the single-rod load of
 /// the thesis (4.4).
 #[pyfunction]
-fn single_rod(py: Python<'_>, material: &FrictionMaterial, nano: &NanoAsperities) -> PyResult<Py<PyAny>> {
-    to_py_value(py, &fr::single_rod(&material.inner, &nano.inner).map_err(rs)?)
+fn single_rod(
+    py: Python<'_>,
+    material: &FrictionMaterial,
+    nano: &NanoAsperities,
+) -> PyResult<Py<PyAny>> {
+    crate::common::to_py_numbers(
+        py,
+        &fr::single_rod(&material.inner, &nano.inner).map_err(rs)?,
+    )
 }
 
 // --------------------------------------------------------------------------
@@ -284,11 +325,24 @@ pub struct SceneRun {
 #[pymethods]
 impl SceneRun {
     fn __repr__(&self, py: Python<'_>) -> String {
-        format!("SceneRun(<{} steps>, {} models)", self.steps.bind(py).get_item("cof").ok().flatten().map(|a| a.len().unwrap_or(0)).unwrap_or(0), self.models.bind(py).len())
+        format!(
+            "SceneRun(<{} steps>, {} models)",
+            self.steps
+                .bind(py)
+                .get_item("cof")
+                .ok()
+                .flatten()
+                .map(|a| a.len().unwrap_or(0))
+                .unwrap_or(0),
+            self.models.bind(py).len()
+        )
     }
 }
 
-fn load_scene(scene: &Bound<'_, PyAny>, base: Option<std::path::PathBuf>) -> PyResult<Scene> {
+pub(crate) fn load_scene(
+    scene: &Bound<'_, PyAny>,
+    base: Option<std::path::PathBuf>,
+) -> PyResult<Scene> {
     if scene.is_instance_of::<PyDict>() {
         let text = py_to_json(scene)?;
         let base = base.unwrap_or_else(|| std::path::PathBuf::from("."));
@@ -297,12 +351,19 @@ fn load_scene(scene: &Bound<'_, PyAny>, base: Option<std::path::PathBuf>) -> PyR
     if let Ok(p) = scene.extract::<std::path::PathBuf>() {
         return Scene::from_file(&p).map_err(any_err);
     }
-    Err(arg_error("scene", "must be a path to a JSON scene or a dict"))
+    Err(arg_error(
+        "scene",
+        "must be a path to a JSON scene or a dict",
+    ))
 }
 
 /// The CLI's `--json` summary (src/bin/asperity/slide.rs `summary_json`)
 /// without the plots' `area_load` (written only with `--out`).
-fn summary_json(scene: &Scene, run: &fr::SlideRun, tracks: &[asperity::scene::TrackRun]) -> serde_json::Value {
+fn summary_json(
+    scene: &Scene,
+    run: &fr::SlideRun,
+    tracks: &[asperity::scene::TrackRun],
+) -> serde_json::Value {
     let s = &run.summary;
     let d = s.dissipation;
     let mut v = serde_json::json!({
@@ -356,27 +417,62 @@ fn summary_json(scene: &Scene, run: &fr::SlideRun, tracks: &[asperity::scene::Tr
 /// same track. The GIL is released during the run.
 #[pyfunction]
 #[pyo3(signature = (scene, base=None))]
-fn run_scene(py: Python<'_>, scene: &Bound<'_, PyAny>, base: Option<std::path::PathBuf>) -> PyResult<SceneRun> {
+fn run_scene(
+    py: Python<'_>,
+    scene: &Bound<'_, PyAny>,
+    base: Option<std::path::PathBuf>,
+) -> PyResult<SceneRun> {
     let scene = load_scene(scene, base)?;
     let (run, tracks) = py
         .detach(|| -> Result<_, String> {
             let slider = scene.build().map_err(|e| e.to_string())?;
-            let run = slider.slide(scene.sliding.distance, scene.sliding.step).map_err(|e| e.to_string())?;
+            let run = slider
+                .slide(scene.sliding.distance, scene.sliding.step)
+                .map_err(|e| e.to_string())?;
             let tracks = scene.run_friction_models(&run).map_err(|e| e.to_string())?;
             Ok((run, tracks))
         })
         .map_err(any_err)?;
     let summary = json_value(py, &summary_json(&scene, &run, &tracks).to_string())?;
+    let steps = step_columns(py, &run.steps)?;
+    let models = PyList::empty(py);
+    for (spec, t) in scene.friction_models.iter().zip(&tracks) {
+        let m = PyDict::new(py);
+        m.set_item("name", &spec.name)?;
+        m.set_item("model", spec.model.key())?;
+        m.set_item("summary", crate::common::to_py_numbers(py, &t.summary)?)?;
+        m.set_item(
+            "steps",
+            columns(py, &serde_json::to_value(&t.steps).map_err(any_err)?)?,
+        )?;
+        models.append(m)?;
+    }
+    Ok(SceneRun {
+        summary,
+        steps: steps.unbind(),
+        models: models.unbind(),
+    })
+}
+
+/// The records of a slide as a dict of arrays (the columns of the CLI's CSV).
+pub(crate) fn step_columns<'py>(
+    py: Python<'py>,
+    st: &[fr::SlideStep],
+) -> PyResult<Bound<'py, PyDict>> {
     let steps = PyDict::new(py);
-    let st = &run.steps;
-    let col = |f: &dyn Fn(&fr::SlideStep) -> f64| PyArray1::from_vec(py, st.iter().map(f).collect());
-    let icol = |f: &dyn Fn(&fr::SlideStep) -> i64| PyArray1::from_vec(py, st.iter().map(f).collect());
+    let col =
+        |f: &dyn Fn(&fr::SlideStep) -> f64| PyArray1::from_vec(py, st.iter().map(f).collect());
+    let icol =
+        |f: &dyn Fn(&fr::SlideStep) -> i64| PyArray1::from_vec(py, st.iter().map(f).collect());
     steps.set_item("position", col(&|r| r.position))?;
     steps.set_item("rod_position", col(&|r| r.rod_position))?;
     steps.set_item("normal_load", col(&|r| r.normal_load))?;
     steps.set_item("friction_force", col(&|r| r.friction_force))?;
     steps.set_item("cof", col(&|r| r.cof))?;
-    steps.set_item("no_contact", PyArray1::from_vec(py, st.iter().map(|r| r.no_contact).collect()))?;
+    steps.set_item(
+        "no_contact",
+        PyArray1::from_vec(py, st.iter().map(|r| r.no_contact).collect()),
+    )?;
     steps.set_item("adhesion", col(&|r| r.adhesion))?;
     steps.set_item("chemical", col(&|r| r.dissipation.chemical))?;
     steps.set_item("van_der_waals", col(&|r| r.dissipation.van_der_waals))?;
@@ -388,30 +484,39 @@ fn run_scene(py: Python<'_>, scene: &Bound<'_, PyAny>, base: Option<std::path::P
     steps.set_item("adhesive_contacts", icol(&|r| r.adhesive_contacts as i64))?;
     steps.set_item("rods_in_contact", icol(&|r| r.rods_in_contact as i64))?;
     steps.set_item("yielded_rods", icol(&|r| r.yielded_rods as i64))?;
-    let models = PyList::empty(py);
-    for (spec, t) in scene.friction_models.iter().zip(&tracks) {
-        let m = PyDict::new(py);
-        m.set_item("name", &spec.name)?;
-        m.set_item("model", spec.model.key())?;
-        m.set_item("summary", to_py_value(py, &t.summary)?)?;
-        m.set_item("steps", columns(py, &serde_json::to_value(&t.steps).map_err(any_err)?)?)?;
-        models.append(m)?;
-    }
-    Ok(SceneRun { summary, steps: steps.unbind(), models: models.unbind() })
+    Ok(steps)
 }
 
 /// A JSON array of flat objects as a dict of numpy arrays (numbers) or
 /// lists (anything else), one entry per key.
 fn columns<'py>(py: Python<'py>, v: &serde_json::Value) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    let Some(rows) = v.as_array() else { return Ok(d) };
-    let Some(first) = rows.first().and_then(|r| r.as_object()) else { return Ok(d) };
+    let Some(rows) = v.as_array() else {
+        return Ok(d);
+    };
+    let Some(first) = rows.first().and_then(|r| r.as_object()) else {
+        return Ok(d);
+    };
     for key in first.keys() {
         let vals: Vec<&serde_json::Value> = rows.iter().map(|r| &r[key]).collect();
         if vals.iter().all(|x| x.is_number()) {
-            d.set_item(key, PyArray1::from_vec(py, vals.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect()))?;
+            d.set_item(
+                key,
+                PyArray1::from_vec(
+                    py,
+                    vals.iter()
+                        .map(|x| x.as_f64().unwrap_or(f64::NAN))
+                        .collect(),
+                ),
+            )?;
         } else if vals.iter().all(|x| x.is_boolean()) {
-            d.set_item(key, PyArray1::from_vec(py, vals.iter().map(|x| x.as_bool().unwrap_or(false)).collect()))?;
+            d.set_item(
+                key,
+                PyArray1::from_vec(
+                    py,
+                    vals.iter().map(|x| x.as_bool().unwrap_or(false)).collect(),
+                ),
+            )?;
         } else {
             let l = PyList::empty(py);
             for x in vals {

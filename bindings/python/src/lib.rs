@@ -8,6 +8,7 @@ mod bench;
 mod common;
 mod contact;
 mod friction;
+mod friction_law;
 mod lj_sphere;
 mod materials;
 mod rescaling;
@@ -28,5 +29,6 @@ fn _asperity(m: &Bound<'_, PyModule>) -> PyResult<()> {
     surface::register(m)?;
     statistics::register(m)?;
     friction::register(m)?;
+    friction_law::register(m)?;
     Ok(())
 }

@@ -44,7 +44,7 @@ fn point<'py>(py: Python<'py>, lj: &RsLj, p: &LjPoint) -> PyResult<Bound<'py, Py
 /// ``pull_off_load`` (dict); ``pull_off_displacement`` (N or None),
 /// ``hysteresis_energy`` (J), solver report ``iterations``,
 /// ``factorizations``, ``max_residual`` (units of z0), ``n_grid``.
-#[pyclass(module = "asperity", frozen, get_all)]
+#[pyclass(module = "asperity", frozen, get_all, name = "LjCurve")]
 pub struct LjCurveResult {
     approach: Py<PyArray1<f64>>,
     force: Py<PyArray1<f64>>,
@@ -70,10 +70,11 @@ pub struct LjCurveResult {
 impl LjCurveResult {
     fn __repr__(&self, py: Python<'_>) -> String {
         format!(
-            "LjCurve(<{} points>, n_grid={}, pull_off_displacement={:?})",
+            "LjCurve(<{} points>, n_grid={}, pull_off_displacement={})",
             numpy::PyUntypedArrayMethods::len(self.force.bind(py)),
             self.n_grid,
             self.pull_off_displacement
+                .map_or("None".to_string(), |p| format!("{p:e}"))
         )
     }
 }

@@ -127,8 +127,6 @@ class Jkr(_NormalLaw):
     e_star: float
     work_of_adhesion: float
     critical_delta: float
-    force_scale: float
-    radius_scale: float
     delta_scale: float
     def __init__(self, radius: Real, e_star: Real, work_of_adhesion: Real) -> None: ...
     def force_at_radius(self, a: Real) -> float: ...
@@ -152,16 +150,16 @@ class MaugisDugdale(_NormalLaw):
     def has_contact_jump(self) -> bool: ...
     def jump_out_point(self) -> Dict[str, float]: ...
     def load_pull_off_point(self) -> Dict[str, float]: ...
-    def contact_point(self, s: Real) -> Dict[str, float]: ...
-    def non_contact_point(self, c_bar: Real) -> Dict[str, float]: ...
+    def contact_point(self, s: Reals) -> Dict[str, Any]: ...
+    def non_contact_point(self, c_bar: Reals) -> Dict[str, Any]: ...
 
 class Kendall(_NormalLaw):
     radius: float
     e_star: float
     work_of_adhesion: float
-    no_slip_factor: float
+    nu: float
+    bonded: bool
     stiffness: float
-    pull_off: float
     critical_delta: float
     def __init__(self, radius: Real, e_star: Real, work_of_adhesion: Real) -> None: ...
     @staticmethod
@@ -170,6 +168,8 @@ class Kendall(_NormalLaw):
 class FlatPunch(_NormalLaw):
     radius: float
     e_star: float
+    nu: float
+    bonded: bool
     stiffness: float
     def __init__(self, radius: Real, e_star: Real) -> None: ...
     @staticmethod
@@ -193,11 +193,9 @@ class JkrPowerPunch(_NormalLaw):
     d: float
     e_star: float
     work_of_adhesion: float
-    no_slip_factor: float
+    nu: float
     critical_delta: float
-    force_scale: float
-    radius_scale: float
-    delta_scale: float
+    k_star: float
     def __init__(self, b: Real, d: Real, e_star: Real, work_of_adhesion: Real) -> None: ...
     @staticmethod
     def no_slip(b: Real, d: Real, e_star: Real, work_of_adhesion: Real, nu: Real) -> JkrPowerPunch: ...
@@ -492,3 +490,98 @@ class SceneRun:
     models: List[Dict[str, Any]]
 
 def run_scene(scene: Union[Path, Dict[str, Any]], base: Optional[Path] = None) -> SceneRun: ...
+
+# --- friction laws (one contract: asperity::friction::FrictionLaw) ----------
+
+STATE_DISSIPATION: int
+STATE_SLIP_PATH: int
+STATE_MODEL: int
+TANGENT_NORMAL: int
+TANGENT_SLIP: int
+
+class FrictionResponse:
+    force: Array
+    force_magnitude: float
+    normal_force: float
+    cof: float
+    adhesion: float
+    true_contact_area: float
+    dissipated: float
+    dissipation: Dict[str, float]
+    stored_energy: float
+    dforce_dnormal: Array
+    dforce_dslip: npt.NDArray[np.float64]
+    regime: int
+    regime_name: Literal["stick", "partial_slip", "slip", "no_contact"]
+    tangents: int
+    record: Optional[Dict[str, Any]]
+
+class FrictionBlockResponse:
+    tangential_force: npt.NDArray[np.float64]
+    dissipation: Array
+    state: npt.NDArray[np.float64]
+
+Slip = Union[float, Tuple[float, float], ArrayLike]
+
+class FrictionLaw:
+    """A friction law stepped once per increment; states are float64 arrays of ``state_len``."""
+    state_len: int
+    rate_dependent: bool
+    def fresh_state(self, n: Optional[int] = None) -> npt.NDArray[np.float64]: ...
+    def step(
+        self,
+        old_state: Optional[ArrayLike] = None,
+        *,
+        normal_force: Real,
+        slip: Slip = 0.0,
+        dt: Real = 0.0,
+        area: Real = 0.0,
+        tangents: int = 0,
+    ) -> Tuple[FrictionResponse, Array]: ...
+    def step_in_place(
+        self, state: Array, *, normal_force: Real, slip: Slip = 0.0, dt: Real = 0.0, area: Real = 0.0, tangents: int = 0
+    ) -> FrictionResponse: ...
+    def step_block(
+        self,
+        states: npt.NDArray[np.float64],
+        normal_force: ArrayLike,
+        slip: npt.NDArray[np.float64],
+        dt: Real,
+        area: Optional[ArrayLike] = None,
+        in_place: bool = False,
+    ) -> FrictionBlockResponse: ...
+
+class HomogenisedFriction(FrictionLaw):
+    stick_stiffness: float
+    def __init__(self, samples: List[Dict[str, Any]], form: Literal["derjaguin", "amontons", "coulomb"] = "derjaguin", stick_stiffness: Real = 0.0) -> None: ...
+    @staticmethod
+    def from_json(text: str, stick_stiffness: Real = 0.0) -> HomogenisedFriction: ...
+    def to_json(self) -> str: ...
+    def sample_at(self, pressure: Real) -> Dict[str, Any]: ...
+    def samples(self) -> List[Dict[str, Any]]: ...
+
+class Slider(FrictionLaw):
+    @staticmethod
+    def from_scene(scene: Union[Path, Dict[str, Any]], base: Optional[Path] = None) -> Slider: ...
+    def slide(self, distance: Real, step: Real) -> Dict[str, Any]: ...
+
+class LuGre(FrictionLaw):
+    def __init__(self, **parameters: Any) -> None: ...
+
+class MaxwellSlip(FrictionLaw):
+    def __init__(self, **parameters: Any) -> None: ...
+
+class PrandtlTomlinson(FrictionLaw):
+    def __init__(self, **parameters: Any) -> None: ...
+
+class PrandtlTomlinsonTwoSpring(FrictionLaw):
+    def __init__(self, **parameters: Any) -> None: ...
+
+class BurridgeKnopoff(FrictionLaw):
+    def __init__(self, **parameters: Any) -> None: ...
+
+class Bristles(FrictionLaw):
+    def __init__(self, **parameters: Any) -> None: ...
+
+def friction_model(spec: Dict[str, Any]) -> FrictionLaw: ...
+def stick_slip(forces: ArrayLike, slips: ArrayLike, min_drop: Real) -> Dict[str, Any]: ...
