@@ -8,17 +8,27 @@
 //! and the benches skip the C-kernel rows (cfg `asperity_c_kernels` unset).
 //!
 //! On Linux it also gives the shared library its soname,
-//! `libasperity.so.MAJOR`.
+//! `libasperity.so.ABI`, where the ABI version is `MAJOR` from 1.0 on and
+//! `0.MINOR` before (semver: a 0.x minor release may break).
 
 fn main() {
     println!("cargo::rerun-if-changed=build.rs");
-    // The shared library's ELF soname carries the ABI major version, so host
-    // codes linked against it refuse an incompatible release
+    // The shared library's ELF soname carries the ABI version, so host codes
+    // linked against it refuse an incompatible release: MAJOR for MAJOR >= 1,
+    // 0.MINOR for 0.x, where a minor release may break (semver): a host
+    // linked against 0.2 asks the loader for libasperity.so.0.2, which no
+    // 0.3 or 1.x library provides.
     // (scripts/install.sh installs libasperity.so.MAJOR.MINOR.PATCH with the
-    // .so.MAJOR and .so links; tests/abi.rs guards the ABI).
+    // .so.ABI and .so links; tests/abi.rs guards the ABI per ABI version.)
     if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
-        let major = std::env::var("CARGO_PKG_VERSION_MAJOR").unwrap_or_else(|_| "0".into());
-        println!("cargo::rustc-cdylib-link-arg=-Wl,-soname,libasperity.so.{major}");
+        let major = std::env::var("CARGO_PKG_VERSION_MAJOR").expect("CARGO_PKG_VERSION_MAJOR");
+        let minor = std::env::var("CARGO_PKG_VERSION_MINOR").expect("CARGO_PKG_VERSION_MINOR");
+        let abi = if major == "0" {
+            format!("0.{minor}")
+        } else {
+            major
+        };
+        println!("cargo::rustc-cdylib-link-arg=-Wl,-soname,libasperity.so.{abi}");
     }
     println!("cargo::rerun-if-changed=benches/c/kernels.c");
     println!("cargo::rerun-if-changed=benches/c/kernels.h");

@@ -13,7 +13,7 @@
 //! rough (±0.5 µm, most rods in contact have yielded: small dense systems)
 //! and smooth (±20 nm, most rods elastic: the dense system is n × n).
 
-use asperity::friction::{CoupledRodBed, RodBed, RodOptions, RodSolver, RodState};
+use asperity::friction::{CoupledRodBed, Loading, RodBed, RodOptions, RodSolver, RodState};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::time::Instant;
@@ -76,34 +76,69 @@ fn main() {
         };
         // Warm state: the equilibrium at P(1 + 1e-3).
         let mut warm_state: RodState = fresh.clone();
-        bed.solve_load(&fresh, &mut new, &g, p * 1.001, &cold, &mut out)
-            .unwrap();
+        bed.solve(
+            &fresh,
+            &mut new,
+            &g,
+            Loading::FixedLoad { load: p * 1.001 },
+            &cold,
+            &mut out,
+        )
+        .unwrap();
         warm_state.position = new.position;
 
         let mut rc = Default::default();
         let t_cold = median(201, || {
             rc = bed
-                .solve_load(&fresh, &mut new, &g, p, &cold, &mut out)
+                .solve(
+                    &fresh,
+                    &mut new,
+                    &g,
+                    Loading::FixedLoad { load: p },
+                    &cold,
+                    &mut out,
+                )
                 .unwrap();
         });
         let mut rw = Default::default();
         let t_warm = median(201, || {
             rw = bed
-                .solve_load(&warm_state, &mut new, &g, p, &warm, &mut out)
+                .solve(
+                    &warm_state,
+                    &mut new,
+                    &g,
+                    Loading::FixedLoad { load: p },
+                    &warm,
+                    &mut out,
+                )
                 .unwrap();
         });
         let mut rd = Default::default();
         let reps = if n > 200 { 3 } else { 21 };
         let t_dense = median(reps, || {
             rd = bed
-                .solve_load(&fresh, &mut new, &g, p, &dense, &mut out)
+                .solve(
+                    &fresh,
+                    &mut new,
+                    &g,
+                    Loading::FixedLoad { load: p },
+                    &dense,
+                    &mut out,
+                )
                 .unwrap();
         });
         let coupled = CoupledRodBed::new(bed.clone(), 68.65e9 / (1.0 - 0.355f64.powi(2))).unwrap();
         let mut rk = Default::default();
         let t_coupled = median(reps, || {
             rk = coupled
-                .solve_load(&fresh, &mut new, &g, p, &cold, &mut out)
+                .solve(
+                    &fresh,
+                    &mut new,
+                    &g,
+                    Loading::FixedLoad { load: p },
+                    &cold,
+                    &mut out,
+                )
                 .unwrap();
         });
         let row = |name: &str, t: f64, r: &asperity::friction::RodReport| {

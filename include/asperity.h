@@ -39,7 +39,7 @@
 #include <stdint.h>
 
 #define ASPERITY_VERSION_MAJOR 0
-#define ASPERITY_VERSION_MINOR 1
+#define ASPERITY_VERSION_MINOR 2
 #define ASPERITY_VERSION_PATCH 0
 
 

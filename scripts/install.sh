@@ -5,8 +5,8 @@
 #
 # builds the library in release mode and installs
 #   PREFIX/include/asperity.h, asperity.hpp       C and C++ headers
-#   PREFIX/lib/libasperity.so.MAJOR.MINOR.PATCH   shared library, soname libasperity.so.MAJOR,
-#   PREFIX/lib/libasperity.so.MAJOR, .so          and the two usual links
+#   PREFIX/lib/libasperity.so.MAJOR.MINOR.PATCH   shared library, soname libasperity.so.ABI,
+#   PREFIX/lib/libasperity.so.ABI, .so            and the two usual links
 #   PREFIX/lib/libasperity.a                      static library
 #   PREFIX/lib/pkgconfig/asperity.pc              pkg-config (static: pkg-config --static)
 #   PREFIX/lib/cmake/asperity/                    CMake package: find_package(asperity) gives
@@ -14,6 +14,9 @@
 #                                                 asperity::asperity_static
 #   PREFIX/share/asperity/fortran/asperity.f90    Fortran module source (compile it with
 #                                                 your compiler: .mod files are compiler-specific)
+#
+# ABI is the ABI version: MAJOR for MAJOR >= 1, and 0.MINOR for 0.x (semver: a
+# 0.x minor release may break), e.g. libasperity.so.0.2 for 0.2.0 (build.rs).
 #
 # Options:
 #   --prefix DIR       installation prefix (default /usr/local)
@@ -42,7 +45,7 @@ while [ $# -gt 0 ]; do
     --target-dir) target_dir="$2"; shift 2 ;;
     --no-build) build=0; shift ;;
     --destdir) destdir="$2"; shift 2 ;;
-    -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,/^# Linux only/p' "$0"; exit 0 ;;
     *) echo "install.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -64,6 +67,8 @@ if [ -z "$version" ] || [ -z "$major" ] || [ -z "$minor" ]; then
   echo "install.sh: cannot read the version from Cargo.toml" >&2
   exit 1
 fi
+# The ABI version (the soname's suffix): MAJOR, or 0.MINOR before 1.0.
+if [ "$major" = 0 ]; then abi="0.$minor"; else abi="$major"; fi
 
 if [ "$build" = 1 ]; then
   (cd "$root" && cargo build --lib --profile "$profile" --target-dir "$target_dir")
@@ -80,8 +85,8 @@ for f in libasperity.so libasperity.a; do
   fi
 done
 soname="$(readelf -d "$artifacts/libasperity.so" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\].*/\1/p')"
-if [ -n "$soname" ] && [ "$soname" != "libasperity.so.$major" ]; then
-  echo "install.sh: built soname '$soname' differs from libasperity.so.$major" >&2
+if [ -n "$soname" ] && [ "$soname" != "libasperity.so.$abi" ]; then
+  echo "install.sh: built soname '$soname' differs from libasperity.so.$abi" >&2
   exit 1
 fi
 
@@ -97,13 +102,14 @@ install -m 644 "$root/include/asperity.h" "$inc/asperity.h"
 
 real="libasperity.so.$version"
 install -m 755 "$artifacts/libasperity.so" "$lib/$real"
-ln -sf "$real" "$lib/libasperity.so.$major"
-ln -sf "libasperity.so.$major" "$lib/libasperity.so"
+ln -sf "$real" "$lib/libasperity.so.$abi"
+ln -sf "libasperity.so.$abi" "$lib/libasperity.so"
 install -m 644 "$artifacts/libasperity.a" "$lib/libasperity.a"
 
 subst() {
   sed -e "s|@PREFIX@|$prefix|g" -e "s|@LIBDIR@|$libdir_name|g" \
-      -e "s|@VERSION@|$version|g" -e "s|@MAJOR@|$major|g" -e "s|@MINOR@|$minor|g" "$1"
+      -e "s|@VERSION@|$version|g" -e "s|@MAJOR@|$major|g" -e "s|@MINOR@|$minor|g" \
+      -e "s|@ABI@|$abi|g" "$1"
 }
 subst "$root/packaging/asperity.pc.in" > "$lib/pkgconfig/asperity.pc"
 subst "$root/packaging/asperityConfig.cmake.in" > "$cmake_dir/asperityConfig.cmake"

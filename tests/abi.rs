@@ -1,23 +1,25 @@
 //! ABI stability. `abi/asperity.abi` is the committed record of the C ABI of
-//! the current major version: every function of `include/asperity.h`, every
+//! the current ABI version: every function of `include/asperity.h`, every
 //! `#define` constant with its value, and the size and alignment of every
 //! `repr(C)` type (from `asperity_type_layout`, i.e. `size_of`/`align_of` of
 //! the Rust types the header is generated from).
 //!
-//! Within one major version (the record's `major` equals Cargo's), the ABI
+//! The ABI version is `MAJOR` for `MAJOR >= 1`, and `0.MINOR` for 0.x (semver:
+//! a 0.x minor release may break); it is the soname's suffix,
+//! `libasperity.so.<ABI>` (build.rs, `common::abi_version`). Within one ABI
+//! version (the record's `abi` equals the one of Cargo's version), the ABI
 //! may only grow: a recorded function or constant that disappears, a
 //! constant whose value changes, or a type whose size or alignment changes
-//! fails this test ("bump the major version"). Additions fail too until they
-//! are recorded with `ASPERITY_BLESS=1 cargo test --test abi`, so the record
-//! always lists what a later change must keep. After a major version bump
-//! (which also changes the soname, `libasperity.so.MAJOR`), the same command
-//! rewrites the record from scratch.
-//!
-//! Before 1.0 (major version 0) an intended break can be acknowledged
-//! instead: `ASPERITY_BLESS=1 ASPERITY_ABI_BREAK=1 cargo test --test abi`
-//! prints what breaks and rewrites the record, so the removal shows in the
-//! record's diff and its commit says why (issue 30 §1 replaced the three
-//! friction step contracts by one `AsperityFriction` handle this way).
+//! fails this test, with no way to acknowledge it but a new ABI version.
+//! Additions fail too until they are recorded with
+//! `ASPERITY_BLESS=1 cargo test --test abi`, so the record always lists what
+//! a later change must keep. An intended break bumps the ABI version in
+//! `Cargo.toml` (the major version, or the minor one before 1.0), which also
+//! changes the soname so that hosts built against the old ABI refuse the new
+//! library; the same command then rewrites the record from scratch, and the
+//! record's diff shows what broke.
+
+mod common;
 
 use asperity::ffi::abi::{asperity_type_count, asperity_type_layout, asperity_type_name};
 use std::collections::BTreeMap;
@@ -26,7 +28,8 @@ use std::path::PathBuf;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
 struct Abi {
-    major: u64,
+    /// The ABI version, `MAJOR` or `0.MINOR` (`common::abi_version`).
+    abi: String,
     functions: BTreeMap<String, ()>,
     constants: BTreeMap<String, String>,
     types: BTreeMap<String, (usize, usize)>,
@@ -91,7 +94,7 @@ fn current() -> Abi {
         functions.len()
     );
     Abi {
-        major: env!("CARGO_PKG_VERSION_MAJOR").parse().unwrap(),
+        abi: common::abi_version(),
         functions,
         constants,
         types,
@@ -100,11 +103,12 @@ fn current() -> Abi {
 
 fn render(a: &Abi) -> String {
     let mut s = format!(
-        "# The C ABI of asperity, major version {} (tests/abi.rs).\n\
-         # Within a major version entries may be added, never removed or changed.\n\
+        "# The C ABI of asperity, ABI version {} (soname libasperity.so.{}; tests/abi.rs).\n\
+         # The ABI version is MAJOR, or 0.MINOR before 1.0. Within an ABI version\n\
+         # entries may be added, never removed or changed.\n\
          # Record additions: ASPERITY_BLESS=1 cargo test --test abi\n\
-         major {}\n",
-        a.major, a.major
+         abi {}\n",
+        a.abi, a.abi, a.abi
     );
     for f in a.functions.keys() {
         s += &format!("function {f}\n");
@@ -120,7 +124,7 @@ fn render(a: &Abi) -> String {
 
 fn parse(text: &str) -> Result<Abi, String> {
     let mut a = Abi {
-        major: u64::MAX,
+        abi: String::new(),
         functions: BTreeMap::new(),
         constants: BTreeMap::new(),
         types: BTreeMap::new(),
@@ -131,7 +135,7 @@ fn parse(text: &str) -> Result<Abi, String> {
         match w.as_slice() {
             [] => {}
             [c, ..] if c.starts_with('#') => {}
-            ["major", m] => a.major = m.parse().map_err(|_| bad())?,
+            ["abi", v] => a.abi = v.to_string(),
             ["function", f] => {
                 a.functions.insert(f.to_string(), ());
             }
@@ -150,13 +154,13 @@ fn parse(text: &str) -> Result<Abi, String> {
             _ => return Err(bad()),
         }
     }
-    if a.major == u64::MAX {
-        return Err("abi/asperity.abi has no `major` line".into());
+    if a.abi.is_empty() {
+        return Err("abi/asperity.abi has no `abi` line (the ABI version it records)".into());
     }
     Ok(a)
 }
 
-/// What `now` breaks of `recorded` (same major version).
+/// What `now` breaks of `recorded` (same ABI version).
 fn breaks(recorded: &Abi, now: &Abi) -> Vec<String> {
     let mut out = Vec::new();
     for f in recorded.functions.keys() {
@@ -209,7 +213,7 @@ fn additions(recorded: &Abi, now: &Abi) -> Vec<String> {
 }
 
 #[test]
-fn the_abi_only_grows_within_a_major_version() {
+fn the_abi_only_grows_within_an_abi_version() {
     let path = root().join("abi/asperity.abi");
     let now = current();
     let bless = std::env::var_os("ASPERITY_BLESS").is_some_and(|v| v == "1");
@@ -221,33 +225,34 @@ fn the_abi_only_grows_within_a_major_version() {
             path.display()
         ),
     };
-    // Before 1.0 an intended break may be acknowledged and recorded.
-    let acknowledged =
-        bless && now.major == 0 && std::env::var_os("ASPERITY_ABI_BREAK").is_some_and(|v| v == "1");
     if let Some(rec) = &recorded {
-        if rec.major == now.major {
+        if rec.abi == now.abi {
             let b = breaks(rec, &now);
-            if acknowledged && !b.is_empty() {
+            assert!(
+                b.is_empty(),
+                "the C ABI of ABI version {} (soname libasperity.so.{}) changed incompatibly; \
+                 keep it, or bump the ABI version in Cargo.toml (the major version, or the \
+                 minor one before 1.0) and re-record with ASPERITY_BLESS=1 cargo test --test \
+                 abi:\n  {}",
+                now.abi,
+                now.abi,
+                b.join("\n  ")
+            );
+        } else if bless {
+            let b = breaks(rec, &now);
+            if !b.is_empty() {
                 eprintln!(
-                    "recording an acknowledged break of the pre-1.0 C ABI:\n  {}",
-                    b.join("\n  ")
-                );
-            } else {
-                assert!(
-                    b.is_empty(),
-                    "the C ABI of major version {} changed incompatibly; keep it, or bump the \
-                     major version in Cargo.toml (soname libasperity.so.MAJOR) and re-record \
-                     (before 1.0, an intended break: ASPERITY_BLESS=1 ASPERITY_ABI_BREAK=1 \
-                     cargo test --test abi):\n  {}",
-                    now.major,
+                    "recording ABI version {} from scratch; it breaks ABI version {}:\n  {}",
+                    now.abi,
+                    rec.abi,
                     b.join("\n  ")
                 );
             }
-        } else if !bless {
+        } else {
             panic!(
-                "abi/asperity.abi records major version {}, Cargo.toml says {}: record the new \
-                 ABI with ASPERITY_BLESS=1 cargo test --test abi",
-                rec.major, now.major
+                "abi/asperity.abi records ABI version {}, Cargo.toml's version has {}: record \
+                 the new ABI with ASPERITY_BLESS=1 cargo test --test abi",
+                rec.abi, now.abi
             );
         }
     }
@@ -262,6 +267,18 @@ fn the_abi_only_grows_within_a_major_version() {
         "the C ABI grew; record the additions with ASPERITY_BLESS=1 cargo test --test abi:\n  {}",
         add.join("\n  ")
     );
+}
+
+/// The ABI version rule: `MAJOR` from 1.0 on, `0.MINOR` before, so that
+/// 0.1 and 0.2 differ (semver lets a 0.x minor release break) while 1.3
+/// and 1.4 agree.
+#[test]
+fn the_abi_version_is_major_or_zero_minor() {
+    assert_eq!(common::abi_version_of(0, 1), "0.1");
+    assert_eq!(common::abi_version_of(0, 2), "0.2");
+    assert_eq!(common::abi_version_of(1, 3), "1");
+    assert_eq!(common::abi_version_of(1, 4), "1");
+    assert_eq!(common::abi_version_of(2, 0), "2");
 }
 
 /// The checker itself: a removal, a changed constant and a changed layout are

@@ -4,7 +4,8 @@
 //! the substrate-coupled model.
 
 use asperity::friction::{
-    square_influence, CoupledRodBed, PlasticUpdate, RodBed, RodOptions, RodSolver, RodState,
+    square_influence, CoupledRodBed, Loading, PlasticUpdate, RodBed, RodOptions, RodSolver,
+    RodState,
 };
 use asperity::Error;
 use faer::linalg::solvers::Llt;
@@ -38,7 +39,14 @@ fn load(
     let mut out = bed.solution();
     let mut new = state.clone();
     let r = bed
-        .solve_load(state, &mut new, counter, p, opts, &mut out)
+        .solve(
+            state,
+            &mut new,
+            counter,
+            Loading::FixedLoad { load: p },
+            opts,
+            &mut out,
+        )
         .unwrap();
     (r, out, new)
 }
@@ -118,7 +126,14 @@ fn hand_fixed_gap() {
     let mut out = bed.solution();
     let mut new = s.clone();
     let r = bed
-        .solve_gap(&s, &mut new, &g, -2e-6, &o, &mut out)
+        .solve(
+            &s,
+            &mut new,
+            &g,
+            Loading::FixedGap { position: -2e-6 },
+            &o,
+            &mut out,
+        )
         .unwrap();
     assert_eq!(r.position, -2e-6);
     assert!(close(out.forces()[0], 3.0, 1e-9) && close(out.forces()[1], 2.0, 1e-9));
@@ -128,14 +143,32 @@ fn hand_fixed_gap() {
     let bed = hand_bed(2).with_bulk(1e9, 1e-6, 1e-3).unwrap();
     for solver in [RodSolver::Sweep, RodSolver::Dense] {
         let o = RodOptions { solver, ..o };
-        let r = bed.solve_gap(&s, &mut new, &g, 0.0, &o, &mut out).unwrap();
+        let r = bed
+            .solve(
+                &s,
+                &mut new,
+                &g,
+                Loading::FixedGap { position: 0.0 },
+                &o,
+                &mut out,
+            )
+            .unwrap();
         assert!(close(r.position, 5e-7, 1e-18), "{solver:?} {}", r.position);
         assert!(close(r.bulk_compression, 5e-7, 1e-18));
         assert!(close(r.total_force, 0.5, 1e-9));
         assert!(r.residual < 1e-9);
     }
     // No contact: b₀ above every rod: no force, b = b₀.
-    let r = bed.solve_gap(&s, &mut new, &g, 1e-5, &o, &mut out).unwrap();
+    let r = bed
+        .solve(
+            &s,
+            &mut new,
+            &g,
+            Loading::FixedGap { position: 1e-5 },
+            &o,
+            &mut out,
+        )
+        .unwrap();
     assert!(close(r.position, 1e-5, 1e-20));
     assert_eq!((r.total_force, r.in_contact), (0.0, 0));
 }
@@ -163,7 +196,14 @@ fn zero_load_capacity_and_overload() {
         let mut out = bed.solution();
         let mut new = s.clone();
         let e = bed
-            .solve_load(&s, &mut new, &g, 20.1, &o, &mut out)
+            .solve(
+                &s,
+                &mut new,
+                &g,
+                Loading::FixedLoad { load: 20.1 },
+                &o,
+                &mut out,
+            )
             .unwrap_err();
         assert!(
             matches!(e, Error::OutOfDomain { name: "load", .. }),
@@ -263,10 +303,24 @@ fn exact_sweep_matches_dense_reference() {
         let mut out = bed.solution();
         let mut new = s.clone();
         let r1 = bed
-            .solve_gap(&s, &mut new, &g, b0, &sweep, &mut out)
+            .solve(
+                &s,
+                &mut new,
+                &g,
+                Loading::FixedGap { position: b0 },
+                &sweep,
+                &mut out,
+            )
             .unwrap();
         let r2 = bed
-            .solve_gap(&s, &mut new, &g, b0, &dense, &mut out)
+            .solve(
+                &s,
+                &mut new,
+                &g,
+                Loading::FixedGap { position: b0 },
+                &dense,
+                &mut out,
+            )
             .unwrap();
         assert!(
             (r1.position - r2.position).abs() < 1e-12 * 1e-6,
@@ -391,12 +445,26 @@ fn warm_start_matches_cold() {
             .collect();
         let p = bed.capacity() * (0.3 + 0.05 * ((step as f64) * 0.7).sin());
         let rc = bed
-            .solve_load(&s_cold, &mut tmp, &gs, p, &cold, &mut out)
+            .solve(
+                &s_cold,
+                &mut tmp,
+                &gs,
+                Loading::FixedLoad { load: p },
+                &cold,
+                &mut out,
+            )
             .unwrap();
         std::mem::swap(&mut s_cold, &mut tmp);
         let fc = out.forces().to_vec();
         let rw = bed
-            .solve_load(&s_warm, &mut tmp, &gs, p, &warm, &mut out)
+            .solve(
+                &s_warm,
+                &mut tmp,
+                &gs,
+                Loading::FixedLoad { load: p },
+                &warm,
+                &mut out,
+            )
             .unwrap();
         std::mem::swap(&mut s_warm, &mut tmp);
         if rw.warm_started {
@@ -429,11 +497,13 @@ fn energies_non_negative_and_release_on_unloading() {
     let mut released_any = false;
     for &f in &loads {
         let r = bed
-            .solve_load(
+            .solve(
                 &s,
                 &mut new,
                 &g,
-                f * bed.capacity(),
+                Loading::FixedLoad {
+                    load: f * bed.capacity(),
+                },
                 &RodOptions::default(),
                 &mut out,
             )
@@ -513,7 +583,10 @@ fn named_errors() {
     let mut nw = s.clone();
     let g = [0.0, 0.0];
     let mut err = |s: &RodState, g: &[f64], p: f64, o: &RodOptions| {
-        name(bed.solve_load(s, &mut nw, g, p, o, &mut out).unwrap_err())
+        name(
+            bed.solve(s, &mut nw, g, Loading::FixedLoad { load: p }, o, &mut out)
+                .unwrap_err(),
+        )
     };
     assert_eq!(err(&s, &g, -1.0, &o), "load");
     assert_eq!(err(&s, &g, f64::NAN, &o), "load");
@@ -539,23 +612,44 @@ fn named_errors() {
     let mut small = hand_bed(3).solution();
     assert_eq!(
         name(
-            bed.solve_load(&s, &mut nw, &g, 1.0, &o, &mut small)
-                .unwrap_err()
+            bed.solve(
+                &s,
+                &mut nw,
+                &g,
+                Loading::FixedLoad { load: 1.0 },
+                &o,
+                &mut small
+            )
+            .unwrap_err()
         ),
         "solution.len()"
     );
     assert_eq!(
         name(
-            bed.solve_gap(&s, &mut nw, &g, f64::NAN, &o, &mut out)
-                .unwrap_err()
+            bed.solve(
+                &s,
+                &mut nw,
+                &g,
+                Loading::FixedGap { position: f64::NAN },
+                &o,
+                &mut out
+            )
+            .unwrap_err()
         ),
         "position"
     );
     // A fixed gap that would crush a rod through its root.
     assert_eq!(
         name(
-            bed.solve_gap(&s, &mut nw, &g, -2e-3, &o, &mut out)
-                .unwrap_err()
+            bed.solve(
+                &s,
+                &mut nw,
+                &g,
+                Loading::FixedGap { position: -2e-3 },
+                &o,
+                &mut out
+            )
+            .unwrap_err()
         ),
         "position"
     );
@@ -624,7 +718,14 @@ fn coupled_reduces_to_uncoupled_when_stiff() {
     let mut out = bed.solution();
     let mut new = s.clone();
     let r1 = cb
-        .solve_load(&s, &mut new, &g, p, &RodOptions::default(), &mut out)
+        .solve(
+            &s,
+            &mut new,
+            &g,
+            Loading::FixedLoad { load: p },
+            &RodOptions::default(),
+            &mut out,
+        )
         .unwrap();
     assert!((r1.position - r0.position).abs() < 1e-9 * 1e-6);
     for (a, b) in o0.forces().iter().zip(out.forces()) {
@@ -644,14 +745,32 @@ fn coupled_gap_and_load_consistent() {
     let o = RodOptions::default();
     for frac in [0.05, 0.3, 0.7] {
         let p = frac * bed.capacity();
-        let rl = cb.solve_load(&s, &mut new, &g, p, &o, &mut out).unwrap();
+        let rl = cb
+            .solve(
+                &s,
+                &mut new,
+                &g,
+                Loading::FixedLoad { load: p },
+                &o,
+                &mut out,
+            )
+            .unwrap();
         assert!(rl.residual <= 1e-11 * p, "residual {:e}", rl.residual);
         // Substrate compliance lowers the slider further than the rigid bed.
         let (r0, _, _) = load(&bed, &s, &g, p, &o);
         assert!(rl.position < r0.position);
         // The same position under fixed gap (rigid bulk) carries P.
         let rg = cb
-            .solve_gap(&s, &mut new, &g, rl.position, &o, &mut out)
+            .solve(
+                &s,
+                &mut new,
+                &g,
+                Loading::FixedGap {
+                    position: rl.position,
+                },
+                &o,
+                &mut out,
+            )
             .unwrap();
         assert!(
             (rg.total_force - p).abs() <= 1e-9 * p,
@@ -671,12 +790,28 @@ fn coupled_gap_and_load_consistent() {
         assert!(rl.elastic_energy > 0.0 && rl.released_energy >= 0.0);
     }
     // Zero load: first contact, no force.
-    let r = cb.solve_load(&s, &mut new, &g, 0.0, &o, &mut out).unwrap();
+    let r = cb
+        .solve(
+            &s,
+            &mut new,
+            &g,
+            Loading::FixedLoad { load: 0.0 },
+            &o,
+            &mut out,
+        )
+        .unwrap();
     assert_eq!(r.total_force, 0.0);
     // Elastic bulk at fixed gap.
     let cbb = CoupledRodBed::new(bed.with_bulk_stiffness(1e6).unwrap(), 1e11).unwrap();
     let r = cbb
-        .solve_gap(&s, &mut new, &g, -0.5e-6, &o, &mut out)
+        .solve(
+            &s,
+            &mut new,
+            &g,
+            Loading::FixedGap { position: -0.5e-6 },
+            &o,
+            &mut out,
+        )
         .unwrap();
     assert!(r.residual <= 1e-9 * r.total_force.max(1e-12));
     assert!(r.bulk_compression >= 0.0);

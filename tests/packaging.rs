@@ -2,8 +2,10 @@
 //! temporary prefix, and host programs build against the installed copy only:
 //! a C program through pkg-config (shared and static), and a CMake consumer
 //! through `find_package(asperity)` (both imported targets). The installed
-//! shared library carries the soname `libasperity.so.MAJOR`, and a version
-//! request of another major version is refused by the CMake package.
+//! shared library carries the soname `libasperity.so.<ABI>` (the ABI version:
+//! `MAJOR`, or `0.MINOR` before 1.0; `common::abi_version`), and a version
+//! request of another ABI version (the next one, and the previous one) is
+//! refused by the CMake package.
 //!
 //! Linux only (ELF sonames). pkg-config and cmake are optional: without them
 //! the test skips that part (`common::skip`: a printed reason, and a failure
@@ -17,8 +19,15 @@ use common::native::{self, run_ok};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-const MAJOR: &str = env!("CARGO_PKG_VERSION_MAJOR");
 const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// `MAJOR.MINOR` of this crate's version.
+fn major_minor() -> (u64, u64) {
+    (
+        env!("CARGO_PKG_VERSION_MAJOR").parse().unwrap(),
+        env!("CARGO_PKG_VERSION_MINOR").parse().unwrap(),
+    )
+}
 
 fn have(tool: &str) -> bool {
     Command::new(tool)
@@ -75,9 +84,10 @@ fn needs_from_prefix(bin: &Path, lib: &Path, label: &str) {
         .lines()
         .find(|l| l.contains("libasperity"))
         .unwrap_or_else(|| panic!("{label}: does not need libasperity:\n{text}"));
+    let abi = common::abi_version();
     let want = format!(
-        "libasperity.so.{MAJOR} => {}",
-        lib.join(format!("libasperity.so.{MAJOR}")).display()
+        "libasperity.so.{abi} => {}",
+        lib.join(format!("libasperity.so.{abi}")).display()
     );
     assert!(line.contains(&want), "{label}: `{line}` is not `{want}`");
 }
@@ -103,10 +113,11 @@ fn install_then_build_consumers_against_the_prefix() {
     )
     .unwrap();
     let lib = prefix.join("lib");
+    let abi = common::abi_version();
     for f in [
         "include/asperity.h".to_string(),
         format!("lib/libasperity.so.{VERSION}"),
-        format!("lib/libasperity.so.{MAJOR}"),
+        format!("lib/libasperity.so.{abi}"),
         "lib/libasperity.so".to_string(),
         "lib/libasperity.a".to_string(),
         "lib/pkgconfig/asperity.pc".to_string(),
@@ -117,12 +128,12 @@ fn install_then_build_consumers_against_the_prefix() {
     }
     for (link, to) in [
         (
-            format!("libasperity.so.{MAJOR}"),
+            format!("libasperity.so.{abi}"),
             format!("libasperity.so.{VERSION}"),
         ),
         (
             "libasperity.so".to_string(),
-            format!("libasperity.so.{MAJOR}"),
+            format!("libasperity.so.{abi}"),
         ),
     ] {
         let t = std::fs::read_link(lib.join(&link)).unwrap_or_else(|e| panic!("{link}: {e}"));
@@ -135,8 +146,8 @@ fn install_then_build_consumers_against_the_prefix() {
     {
         let text = String::from_utf8_lossy(&o.stdout);
         assert!(
-            text.contains(&format!("Library soname: [libasperity.so.{MAJOR}]")),
-            "the installed library lacks the soname libasperity.so.{MAJOR}:\n{text}"
+            text.contains(&format!("Library soname: [libasperity.so.{abi}]")),
+            "the installed library lacks the soname libasperity.so.{abi}:\n{text}"
         );
     }
 
@@ -199,9 +210,15 @@ fn install_then_build_consumers_against_the_prefix() {
         common::skip("pkg-config consumer: pkg-config not found (apt-get install pkg-config)");
     }
 
-    // CMake: find_package with both imported targets, then a request for
-    // the next major version, which must be refused.
+    // CMake: find_package of the oldest version of this ABI version with
+    // both imported targets, then requests the package must refuse.
     if have("cmake") {
+        let (major, minor) = major_minor();
+        let oldest = if major == 0 {
+            format!("0.{minor}")
+        } else {
+            format!("{major}.0")
+        };
         let src = out.join("cmake_src");
         std::fs::create_dir_all(&src).unwrap();
         std::fs::write(
@@ -209,7 +226,7 @@ fn install_then_build_consumers_against_the_prefix() {
             format!(
                 "cmake_minimum_required(VERSION 3.13)\n\
                  project(asperity_consumer C)\n\
-                 find_package(asperity {MAJOR}.0 REQUIRED)\n\
+                 find_package(asperity {oldest} REQUIRED)\n\
                  add_executable(consumer_shared \"{ex}\")\n\
                  target_link_libraries(consumer_shared PRIVATE asperity::asperity m)\n\
                  add_executable(consumer_static \"{ex}\")\n\
@@ -242,28 +259,62 @@ fn install_then_build_consumers_against_the_prefix() {
             "cmake asperity::asperity_static",
         );
 
-        let next = MAJOR.parse::<u32>().unwrap() + 1;
-        let src2 = out.join("cmake_next_major");
-        std::fs::create_dir_all(&src2).unwrap();
-        std::fs::write(
-            src2.join("CMakeLists.txt"),
-            format!(
-                "cmake_minimum_required(VERSION 3.13)\nproject(next C)\nfind_package(asperity {next}.0 REQUIRED)\n"
-            ),
-        )
-        .unwrap();
-        let o = Command::new("cmake")
-            .arg("-S")
-            .arg(&src2)
-            .arg("-B")
-            .arg(out.join("cmake_next_build"))
-            .arg(format!("-DCMAKE_PREFIX_PATH={}", prefix.display()))
-            .output()
+        // Refused: the next ABI version, the previous one (a host built
+        // against 0.1 must not take 0.2), a bare `0` (0.0; CMake's `if()`
+        // reads "0" as no version at all), and a newer release of this ABI
+        // version. The projects enable C: without a language
+        // CMAKE_SIZEOF_VOID_P is unset and the package refuses any request
+        // as not 64-bit, which would hide the version check.
+        let mut refused = vec![if major == 0 {
+            format!("0.{}", minor + 1)
+        } else {
+            format!("{}.0", major + 1)
+        }];
+        if major > 0 {
+            refused.push(format!("{}.0", major - 1));
+        } else if minor > 0 {
+            refused.push(format!("0.{}", minor - 1));
+        }
+        if abi != "0.0" {
+            refused.push("0".to_string());
+        }
+        refused.push(format!(
+            "{major}.{minor}.{}",
+            env!("CARGO_PKG_VERSION_PATCH").parse::<u64>().unwrap() + 1
+        ));
+        for (k, request) in refused.iter().enumerate() {
+            let src2 = out.join(format!("cmake_refused_{k}"));
+            std::fs::create_dir_all(&src2).unwrap();
+            std::fs::write(
+                src2.join("CMakeLists.txt"),
+                format!(
+                    "cmake_minimum_required(VERSION 3.13)\nproject(refused C)\n\
+                     find_package(asperity {request} REQUIRED)\n"
+                ),
+            )
             .unwrap();
-        assert!(
-            !o.status.success(),
-            "find_package(asperity {next}.0) accepted version {VERSION}"
-        );
+            let o = Command::new("cmake")
+                .arg("-S")
+                .arg(&src2)
+                .arg("-B")
+                .arg(out.join(format!("cmake_refused_{k}_build")))
+                .arg(format!("-DCMAKE_PREFIX_PATH={}", prefix.display()))
+                .arg(format!("-DCMAKE_C_COMPILER={}", cc.path().display()))
+                .output()
+                .unwrap();
+            let err = String::from_utf8_lossy(&o.stderr);
+            assert!(
+                !o.status.success(),
+                "find_package(asperity {request}) accepted version {VERSION} (ABI version {abi})"
+            );
+            // CMake lists the package it considered; "version: X (64-bit)"
+            // would be a refusal as unsuitable, not for the version.
+            let considered = format!("version: {VERSION}");
+            assert!(
+                err.lines().any(|l| l.trim_end().ends_with(&considered)),
+                "find_package(asperity {request}) failed, but not for the version:\n{err}"
+            );
+        }
     } else {
         common::skip("CMake consumer: cmake not found (apt-get install cmake)");
     }

@@ -81,7 +81,7 @@ module asperity
   ! Constants: every `#define ASPERITY_*` of the header.
 
   integer(c_int32_t), parameter, public :: ASPERITY_VERSION_MAJOR = 0
-  integer(c_int32_t), parameter, public :: ASPERITY_VERSION_MINOR = 1
+  integer(c_int32_t), parameter, public :: ASPERITY_VERSION_MINOR = 2
   integer(c_int32_t), parameter, public :: ASPERITY_VERSION_PATCH = 0
   ! The law kinds `ASPERITY_LAW_<NAME>` of the header are `ASPERITY_LAW_KIND_<NAME>` here:
   ! Fortran names are case-insensitive, and `ASPERITY_LAW_JKR` would be the

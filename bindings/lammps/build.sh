@@ -34,8 +34,8 @@ done
 (cd "$root" && cargo build --release --lib --quiet)
 lib="$root/target/release"
 [ -f "$lib/libasperity.so" ] || { echo "build.sh: $lib/libasperity.so missing after cargo build" >&2; exit 1; }
-# The library's soname is libasperity.so.MAJOR (build.rs); the loader looks
-# for that name in the rpath.
+# The library's soname is libasperity.so.ABI (build.rs: MAJOR, or 0.MINOR
+# before 1.0); the loader looks for that name in the rpath.
 soname=$(readelf -d "$lib/libasperity.so" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\].*/\1/p')
 if [ -n "$soname" ] && [ "$soname" != "libasperity.so" ]; then
   ln -sf libasperity.so "$lib/$soname"

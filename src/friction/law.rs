@@ -549,31 +549,33 @@ pub(crate) fn book_path(old: Option<&[f64]>, new: &mut [f64], dissipated: f64, p
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::all_finite;
+
+    /// Special values for the finiteness and norm tests.
+    pub(crate) const SPECIALS: [f64; 13] = [
+        0.0,
+        -0.0,
+        f64::MIN_POSITIVE,
+        5e-324,
+        -5e-324,
+        1.0,
+        -1.0,
+        f64::MAX,
+        f64::MIN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        -f64::NAN,
+    ];
 
     /// The branch-free finiteness test agrees with `is_finite` for every
     /// special value at every position.
     #[test]
     fn all_finite_agrees_with_std() {
-        let specials = [
-            0.0,
-            -0.0,
-            f64::MIN_POSITIVE,
-            5e-324,
-            -5e-324,
-            1.0,
-            -1.0,
-            f64::MAX,
-            f64::MIN,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            -f64::NAN,
-        ];
         for len in 0..6 {
             for pos in 0..len {
-                for &v in &specials {
+                for &v in &SPECIALS {
                     let mut xs = vec![1.5; len];
                     xs[pos] = v;
                     assert_eq!(all_finite(&xs), v.is_finite(), "{v} at {pos} of {len}");

@@ -1,8 +1,9 @@
 //! Shared by the integration tests that run programs or need what the project
 //! does not hold (`mod common;` in each): where the crate is, the `asperity`
 //! binary the command-line tests run, how a check that cannot run here skips
-//! (`skip`), and (`native`) the helpers of the tests that compile C, C++ and
-//! Fortran programs against the library.
+//! (`skip`), the ABI version rule (`abi_version`: the soname's suffix), and
+//! (`native`) the helpers of the tests that compile C, C++ and Fortran
+//! programs against the library.
 
 pub mod c_errors;
 pub mod counting;
@@ -23,6 +24,29 @@ pub fn skip(reason: impl std::fmt::Display) {
     println!("SKIPPED: {reason}");
     if std::env::var_os("ASPERITY_REQUIRE_ALL").is_some_and(|v| v == "1") {
         panic!("this check could not run ({reason}), and ASPERITY_REQUIRE_ALL=1 forbids skipping");
+    }
+}
+
+/// The ABI version of this crate's version (build.rs): `MAJOR` for
+/// `MAJOR >= 1`, and `0.MINOR` for 0.x (semver: a 0.x minor release may
+/// break). It names the soname, `libasperity.so.<ABI>`, and the ABI record
+/// (`abi/asperity.abi`); the CMake package accepts a request of this ABI
+/// version only.
+#[allow(dead_code)]
+pub fn abi_version() -> String {
+    abi_version_of(
+        env!("CARGO_PKG_VERSION_MAJOR").parse().unwrap(),
+        env!("CARGO_PKG_VERSION_MINOR").parse().unwrap(),
+    )
+}
+
+/// The ABI version of version `major.minor.*` (see [`abi_version`]).
+#[allow(dead_code)]
+pub fn abi_version_of(major: u64, minor: u64) -> String {
+    if major == 0 {
+        format!("0.{minor}")
+    } else {
+        major.to_string()
     }
 }
 

@@ -224,13 +224,14 @@ fn uplift(built: &Path, dest: &Path) -> Result<(), String> {
         .map_err(|e| format!("moving {} to {}: {e}", tmp.display(), dest.display()))
 }
 
-/// The shared library's soname is `libasperity.so.MAJOR` (build.rs): a
-/// program linked against `libasperity.so` asks the loader for that name, so
-/// it must exist next to the library (scripts/install.sh makes the same link).
+/// The shared library's soname is `libasperity.so.<ABI>` (build.rs,
+/// [`super::abi_version`]): a program linked against `libasperity.so` asks
+/// the loader for that name, so it must exist next to the library
+/// (scripts/install.sh makes the same link).
 pub fn soname_link(dir: &Path) -> Result<(), String> {
     #[cfg(target_os = "linux")]
     {
-        let link = dir.join(format!("{SHARED_LIB}.{}", env!("CARGO_PKG_VERSION_MAJOR")));
+        let link = dir.join(format!("{SHARED_LIB}.{}", super::abi_version()));
         let _ = std::fs::remove_file(&link);
         match std::os::unix::fs::symlink(SHARED_LIB, &link) {
             // Another test made it between the two calls.

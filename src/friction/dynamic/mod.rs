@@ -217,21 +217,7 @@ mod tests {
     /// pair of special values.
     #[test]
     fn norm_agrees_with_hypot() {
-        let specials = [
-            0.0,
-            -0.0,
-            f64::MIN_POSITIVE,
-            5e-324,
-            -5e-324,
-            1.0,
-            -1.0,
-            f64::MAX,
-            f64::MIN,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            -f64::NAN,
-        ];
+        let specials = crate::friction::law::tests::SPECIALS;
         for &x in &specials {
             for &y in &specials {
                 let (got, want) = (norm(x, y), x.hypot(y));

@@ -219,7 +219,7 @@ impl RodBed {
 
     /// Total rod force F(b) = Σ min(k_i max(o_i, 0), F_y) (N) at position
     /// `position` b (m), heights from `state`, counter-surface `counter` (m).
-    /// Errors as [`Self::solve_load`].
+    /// Errors as [`Self::solve`].
     pub fn total_force(&self, state: &RodState, counter: &[f64], position: f64) -> Result<f64> {
         check::finite("position", position)?;
         self.check_inputs(state, counter)?;
@@ -233,52 +233,36 @@ impl RodBed {
             .sum())
     }
 
-    /// Fixed gap, thesis (6-9)..(6-12): the equilibrium when the slider's
-    /// mean line is prescribed at `position` b₀ (m) for an undeformed bulk
-    /// (b = b₀ + δ_B, δ_B = F/k_B; b = b₀ for a rigid bulk). Reads `old`,
-    /// writes per-rod results into `out` and the updated heights and energies
-    /// into `new` (which may be a copy of `old`).
+    /// The rod equilibrium under `loading`: a reading of `old`, per-rod
+    /// results into `out`, the updated heights and energies into `new`
+    /// (which may be a copy of `old`).
     ///
-    /// Errors (named): `position` not finite; the input errors of
-    /// [`Self::solve_load`]; a dense solve that does not converge.
-    pub fn solve_gap(
-        &self,
-        old: &RodState,
-        new: &mut RodState,
-        counter: &[f64],
-        position: f64,
-        options: &RodOptions,
-        out: &mut RodSolution,
-    ) -> Result<RodReport> {
-        check::finite("position", position)?;
-        let loading = Loading::FixedGap { position };
-        self.solve(old, new, counter, loading, options, out)
-    }
-
-    /// Fixed load, thesis (6-13)..(6-16): the position b at which the rods
-    /// carry `load` P (N). See the module docs for P = 0, P = capacity and
-    /// the warm start.
+    /// * [`Loading::FixedGap`], thesis (6-9)..(6-12): the slider's mean line
+    ///   prescribed at `position` b₀ (m) for an undeformed bulk (b = b₀ +
+    ///   δ_B, δ_B = F/k_B; b = b₀ for a rigid bulk).
+    /// * [`Loading::FixedLoad`], thesis (6-13)..(6-16): the position b at
+    ///   which the rods carry `load` P (N). See the module docs for P = 0,
+    ///   P = capacity and the warm start.
     ///
-    /// Errors (named): `load` not finite and ≥ 0; `load` above
-    /// [`Self::capacity`] ([`Error::OutOfDomain`]); `counter.len()`,
-    /// `state.heights.len()`, `state.energy.len()` ≠ n; a non-finite
-    /// `counter`; a state height non-finite or with H_i + d ≤ 0
+    /// Errors (named): `position` not finite; `load` not finite and ≥ 0;
+    /// `load` above [`Self::capacity`] ([`Error::OutOfDomain`]);
+    /// `counter.len()`, `state.heights.len()`, `state.energy.len()` ≠ n; a
+    /// non-finite `counter`; a state height non-finite or with H_i + d ≤ 0
     /// (`state.heights`); a negative or non-finite `state.energy`; a
     /// non-finite `state.position`; `solution.len()` ≠ n; a Gaussian
     /// `width` not finite and > 0; a dense solve that does not converge
     /// ([`Error::NotConverged`]).
-    pub fn solve_load(
+    pub fn solve(
         &self,
         old: &RodState,
         new: &mut RodState,
         counter: &[f64],
-        load: f64,
+        loading: Loading,
         options: &RodOptions,
         out: &mut RodSolution,
     ) -> Result<RodReport> {
-        check::non_negative("load", load)?;
-        let loading = Loading::FixedLoad { load };
-        self.solve(old, new, counter, loading, options, out)
+        check_loading(loading)?;
+        self.solve_checked(old, new, counter, loading, options, out)
     }
 
     fn check_inputs(&self, state: &RodState, counter: &[f64]) -> Result<()> {
@@ -292,7 +276,7 @@ impl RodBed {
     }
 
     /// Every input check of a solve (the errors listed at
-    /// [`Self::solve_load`]).
+    /// [`Self::solve`]).
     pub(super) fn check_all(
         &self,
         old: &RodState,
@@ -348,7 +332,7 @@ impl RodBed {
         }
     }
 
-    fn solve(
+    fn solve_checked(
         &self,
         old: &RodState,
         new: &mut RodState,
@@ -668,5 +652,13 @@ mod tests {
             &mut h,
         );
         assert_eq!(h, vec![1.0, 1.0, 1.0]);
+    }
+}
+
+/// The value checks of a loading: a finite position, a finite load ≥ 0.
+pub(super) fn check_loading(loading: Loading) -> Result<()> {
+    match loading {
+        Loading::FixedGap { position } => check::finite("position", position).map(|_| ()),
+        Loading::FixedLoad { load } => check::non_negative("load", load).map(|_| ()),
     }
 }

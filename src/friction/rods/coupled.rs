@@ -9,7 +9,7 @@
 // Rod arrays and the column-major influence matrix are indexed in lockstep.
 #![allow(clippy::needless_range_loop)]
 
-use super::bed::RodBed;
+use super::bed::{check_loading, RodBed};
 use super::equilibrium::{Balance, Problem};
 use super::influence::influence_unchecked;
 use super::{Loading, RodOptions, RodReport, RodSolution, RodState, ACTIVE_SET_MAX_ITERATIONS};
@@ -67,41 +67,23 @@ impl CoupledRodBed {
         MatRef::from_column_major_slice(&self.influence, n, n)
     }
 
-    /// Fixed gap: as [`RodBed::solve_gap`], with substrate coupling.
-    /// Errors as [`RodBed::solve_gap`]; [`Error::NotConverged`] when the
-    /// active-set iteration fails.
-    pub fn solve_gap(
+    /// The equilibrium under `loading`: as [`RodBed::solve`], with
+    /// substrate coupling. Errors as [`RodBed::solve`];
+    /// [`Error::NotConverged`] when the active-set iteration fails.
+    pub fn solve(
         &self,
         old: &RodState,
         new: &mut RodState,
         counter: &[f64],
-        position: f64,
+        loading: Loading,
         options: &RodOptions,
         out: &mut RodSolution,
     ) -> Result<RodReport> {
-        check::finite("position", position)?;
-        let loading = Loading::FixedGap { position };
-        self.solve(old, new, counter, loading, options, out)
+        check_loading(loading)?;
+        self.solve_checked(old, new, counter, loading, options, out)
     }
 
-    /// Fixed load: as [`RodBed::solve_load`], with substrate coupling.
-    /// Errors as [`RodBed::solve_load`]; [`Error::NotConverged`] when the
-    /// active-set iteration fails.
-    pub fn solve_load(
-        &self,
-        old: &RodState,
-        new: &mut RodState,
-        counter: &[f64],
-        load: f64,
-        options: &RodOptions,
-        out: &mut RodSolution,
-    ) -> Result<RodReport> {
-        check::non_negative("load", load)?;
-        let loading = Loading::FixedLoad { load };
-        self.solve(old, new, counter, loading, options, out)
-    }
-
-    fn solve(
+    fn solve_checked(
         &self,
         old: &RodState,
         new: &mut RodState,

@@ -57,7 +57,7 @@
 //! Compatibility (6-11) for a rod in contact: (H_B − δ_B) + (H_i − δ_i) + h_i
 //! = G, i.e. δ_i = o_i with b = b₀ + δ_B, where b₀ = G − H_B − d is the
 //! position the slider's mean line would have with an undeformed bulk: the
-//! **prescribed position** of [`RodBed::solve_gap`] ([`Loading::FixedGap`]).
+//! **prescribed position** of [`RodBed::solve`] ([`Loading::FixedGap`]).
 //! The matrix form (6-12)
 //! reads, for the rods in elastic contact (unknowns δ_B, δ_1, δ_2, …):
 //!
@@ -74,7 +74,7 @@
 //!
 //! ## Fixed load, thesis (6-13)..(6-16)
 //!
-//! Equilibrium (6-13), (6-14): P = Σ f_i ([`RodBed::solve_load`],
+//! Equilibrium (6-13), (6-14): P = Σ f_i ([`RodBed::solve`] with [`Loading::FixedLoad`],
 //! [`Loading::FixedLoad`]). Compatibility (6-15) as (6-11), now with the gap
 //! unknown. The bulk compression δ_B = P/k_B is known and
 //! only shifts G. The matrix form (6-16), unknowns (b, δ_1, δ_2, …):

@@ -15,8 +15,8 @@
 //!    [`TrackEnd`] option decides: an error naming `position`
 //!    ([`TrackEnd::Error`], the default) or a periodic counter-surface of
 //!    period n·dx ([`TrackEnd::Periodic`], sample n wraps to sample 0);
-//! 2. solves the rod equilibrium ([`RodBed::solve_gap`] /
-//!    [`RodBed::solve_load`], thesis (6-9)..(6-16)), warm-started from the
+//! 2. solves the rod equilibrium ([`RodBed::solve`] under the increment's
+//!    [`Loading`], thesis (6-9)..(6-16)), warm-started from the
 //!    old state's position, with volume-conserving plasticity (6.2.3);
 //! 3. counts the nano-asperities in contact (thesis 4.2, 4.3.1 and 6.3: "we
 //!    determine which of the nano-asperities are within the adhesive layer
@@ -625,14 +625,22 @@ impl Slider {
         }
         let opts = &self.options.rod;
         let report: RodReport = match loading {
-            Loading::FixedGap { position: b0 } => {
-                self.bed
-                    .solve_gap(&old.rod, &mut new.rod, counter, b0, opts, solution)?
-            }
-            Loading::FixedLoad { load } => {
-                self.bed
-                    .solve_load(&old.rod, &mut new.rod, counter, load, opts, solution)?
-            }
+            Loading::FixedGap { position: b0 } => self.bed.solve(
+                &old.rod,
+                &mut new.rod,
+                counter,
+                Loading::FixedGap { position: b0 },
+                opts,
+                solution,
+            )?,
+            Loading::FixedLoad { load } => self.bed.solve(
+                &old.rod,
+                &mut new.rod,
+                counter,
+                Loading::FixedLoad { load: load },
+                opts,
+                solution,
+            )?,
         };
         new.position = position;
 

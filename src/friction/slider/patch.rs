@@ -333,7 +333,7 @@ impl Slider {
 /// Beyond the common ones: `normal_force` above the capacity; `old.flag`
 /// not 0 or 1; `old.position`, `old.rod_position` (finite, or NaN for
 /// none), `old.mechanisms` (≥ 0) (`state.…` in place); rod heights and
-/// energies ([`RodBed::solve_load`](crate::friction::RodBed::solve_load)); `position` past the counter profile
+/// energies ([`RodBed::solve`](crate::friction::RodBed::solve)); `position` past the counter profile
 /// with [`TrackEnd::Error`](super::TrackEnd::Error).
 impl FrictionLaw for Slider {
     fn state_len(&self) -> usize {
