@@ -199,11 +199,6 @@ pub fn control(obj: &Bound<'_, PyAny>) -> PyResult<asperity::Control> {
     }
 }
 
-/// A Rust vector as a new numpy array.
-pub fn vec_array(py: Python<'_>, v: Vec<f64>) -> Bound<'_, PyArray1<f64>> {
-    PyArray1::from_vec(py, v)
-}
-
 /// A JSON text (from the Rust API's serde output) as Python objects
 /// (dicts, lists, floats; `null` as None).
 pub fn json_value(py: Python<'_>, text: &str) -> PyResult<Py<PyAny>> {

@@ -28,7 +28,11 @@ def laws():
 
 
 def test_version_and_error_class():
-    assert asperity.__version__ == "0.1.0"
+    # The package's version is the Rust crate's it wraps.
+    from conftest import ROOT
+    import re
+    crate = re.search(r'^version = "([^"]+)"', (ROOT / "Cargo.toml").read_text(), re.M).group(1)
+    assert asperity.__version__ == crate
     assert issubclass(asperity.Error, ValueError)
 
 
