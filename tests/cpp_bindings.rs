@@ -691,8 +691,7 @@ const SLIDER_STEP: &str = "the slider step (src/friction/slider/, src/ffi/slider
 /// Rust step's `SliderWork::record()` from the same history, and the record
 /// of the first two blocks (patch 3, from 0) with the track positions.
 fn check_slider_patch(linkage: Linkage) {
-    use asperity::friction::law::{TANGENT_NORMAL, TANGENT_SLIP};
-    use asperity::friction::{FrictionIncrement, FrictionLaw, Slider, SliderWork};
+    use asperity::friction::Slider;
     use asperity::scene::Scene;
     let Some(r) = run("slider_patch", linkage) else {
         return;
@@ -704,78 +703,25 @@ fn check_slider_patch(linkage: Linkage) {
             .unwrap()
             .build()
             .unwrap();
+    // The blocks' record (patch 3, from 0), and patch 0: 60 increments of
+    // 1.5 um along +x at 5 % of the capacity, then one with both tangents
+    // from that state.
     let step = 1.5e-6;
-    c.close(SLIDER_STEP, "record_block0_seated", 1.0, 0.0);
-    c.close(SLIDER_STEP, "record_block0_position", step, 0.0);
-    c.close(SLIDER_STEP, "record_block1_seated", 0.0, 0.0);
-    c.close(SLIDER_STEP, "record_block1_position", 2.0 * step, 0.0);
-    c.close(SLIDER_STEP, "record_seated_ok", 1.0, 0.0);
-    c.close(FFI, "record_position_matches_state", 1.0, 0.0);
-    c.within(SLIDER_STEP, "record_max_advance_diff", 0.0, 1e-18);
-    c.close(SLIDER_STEP, "record_counts_consistent", 1.0, 0.0);
-    // Patch 0: 60 increments of 1.5 um along +x at 5 % of the capacity,
-    // then one with both tangents from that state.
-    let mut w = slider.work();
-    let mut st = vec![0.0; slider.state_len()];
-    let mut inc = FrictionIncrement {
-        normal_force: 0.05 * slider.capacity(),
-        slip: [step, 0.0],
-        dt: 1e-5,
-        ..FrictionIncrement::default()
-    };
-    for _ in 0..60 {
-        slider.step_in_place(&mut st, &inc, &mut w).unwrap();
-    }
-    inc.tangents = TANGENT_NORMAL | TANGENT_SLIP;
-    let mut new = vec![0.0; slider.state_len()];
-    slider.step(&st, &mut new, &inc, &mut w).unwrap();
-    let sw = w.get::<SliderWork>().unwrap();
-    let rec = sw.record();
-    assert!(
-        rec.nano_contacts > 0 && rec.rods_in_contact > 0,
-        "the check must see a contact"
+    let (_, position) = native::check_slider_record(
+        &mut c,
+        (SLIDER_STEP, FFI),
+        ["block0", "block1"],
+        &slider,
+        0.05 * slider.capacity(),
+        (60, step),
     );
-    c.close(SLIDER_STEP, "tangent_record_position", rec.position, 1e-15);
     c.close(
         SLIDER_STEP,
         "tangent_record_position",
-        st[Slider::STATE_POSITION] + step,
+        position + step,
         1e-15,
     );
     c.close(CPP, "tangent_record_matches_state", 1.0, 0.0);
-    c.close(
-        SLIDER_STEP,
-        "tangent_record_rod_position",
-        rec.rod_position,
-        1e-10 * rec.rod_position.abs(),
-    );
-    c.close(
-        SLIDER_STEP,
-        "tangent_record_adhesion_area_share",
-        rec.adhesion_area_share,
-        1e-10,
-    );
-    for (name, n) in [
-        ("nano_contacts", rec.nano_contacts),
-        ("adhesive_contacts", rec.adhesive_contacts),
-        ("rods_in_contact", rec.rods_in_contact),
-        ("yielded_rods", rec.yielded_rods),
-    ] {
-        c.close(
-            SLIDER_STEP,
-            &format!("tangent_record_{name}"),
-            n as f64,
-            0.0,
-        );
-    }
-    c.close(
-        SLIDER_STEP,
-        "tangent_record_seated",
-        sw.seated() as i32 as f64,
-        0.0,
-    );
-    c.close(SLIDER_STEP, "zero_slip_record_advance", 0.0, 0.0);
-    c.close(SLIDER_STEP, "zero_slip_record_seated", 0.0, 0.0);
     c.close(CPP, "reevaluation_identical", 1.0, 0.0);
     c.close(FFI, "record_null_work_status", -1.0, 0.0);
     c.finish();

@@ -19,25 +19,12 @@ use asperity::friction::dynamic::{
 use asperity::friction::{BlockStates, FrictionBlock};
 use std::ptr::{null, null_mut};
 
-fn params() -> AsperityLugreParams {
-    AsperityLugreParams {
-        mu_coulomb: 0.3,
-        mu_static: 0.5,
-        stribeck_velocity: 1e-3,
-        stribeck_exponent: 2.0,
-        sigma0: 1e5,
-        sigma1: 1000.0,
-        damping_velocity: 1e-3,
-        sigma2: 0.4,
-    }
-}
-
 const K: [f64; 3] = [2e5, 5e4, 1e4];
 const MU: [f64; 3] = [0.2, 0.2, 0.1];
 
 /// The two models through C, and the same through Rust.
 fn models() -> Vec<(*mut AsperityFriction, Box<dyn FrictionLaw>)> {
-    let p = params();
+    let p = laws::lugre_params();
     let mut a = null_mut();
     assert_eq!(
         unsafe { asperity_friction_lugre_new(&p, &mut a) },
@@ -146,7 +133,7 @@ fn steps_equal_the_rust_api_bit_for_bit() {
 
 #[test]
 fn errors_name_the_argument_and_leave_outputs_untouched() {
-    let mut p = params();
+    let mut p = laws::lugre_params();
     p.sigma1 = 1e6;
     let mut h = 1usize as *mut AsperityFriction;
     expect_error(
@@ -320,29 +307,8 @@ fn prandtl_tomlinson_through_c_equals_rust() {
 
 #[test]
 fn two_spring_and_burridge_knopoff_through_c_equal_rust() {
-    use asperity::friction::dynamic::{BurridgeKnopoff, PrandtlTomlinson};
-    let t = AsperityPrandtlTomlinsonTwoSpringParams {
-        amplitude: 2e-21,
-        period: 3e-10,
-        tip_stiffness: 2.0,
-        tip_mass: 1e-12,
-        tip_damping: 1e-6,
-        cantilever_stiffness: 3.0,
-        cantilever_mass: 2e-12,
-        cantilever_damping: 2e-6,
-        tolerance: 1e-9,
-    };
-    let b = AsperityBurridgeKnopoffParams {
-        blocks: 6,
-        mass: 1e-5,
-        coupling_stiffness: 1e4,
-        pulling_stiffness: 1e3,
-        mu_static: 0.5,
-        mu_kinetic: 0.3,
-        weakening_velocity: 0.05,
-        damping: 0.01,
-        tolerance: 1e-9,
-    };
+    let t = laws::two_spring_params();
+    let b = laws::burridge_knopoff_params(6);
     let (mut ht, mut hb) = (null_mut(), null_mut());
     assert_eq!(
         unsafe { asperity_friction_prandtl_tomlinson_two_spring_new(&t, &mut ht) },
@@ -352,10 +318,7 @@ fn two_spring_and_burridge_knopoff_through_c_equal_rust() {
         unsafe { asperity_friction_burridge_knopoff_new(&b, &mut hb) },
         ASPERITY_OK
     );
-    let rust_t =
-        PrandtlTomlinson::two_spring(2e-21, 3e-10, 2.0, 1e-12, 1e-6, 3.0, 2e-12, 2e-6, 1e-9)
-            .unwrap();
-    let rust_b = BurridgeKnopoff::new(6, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-9).unwrap();
+    let (rust_t, rust_b) = (laws::two_spring(), laws::burridge_knopoff());
     let cases: [(_, &dyn FrictionLaw, usize, f64); 2] =
         [(ht, &rust_t, 7, 1e-11), (hb, &rust_b, 15, 2e-5)];
     for (h, rust, len, scale) in cases {
@@ -483,7 +446,7 @@ fn c_model(case: &laws::Case) -> *mut AsperityFriction {
     let mut h = null_mut();
     let st = unsafe {
         match case.name {
-            "lugre" => asperity_friction_lugre_new(&params(), &mut h),
+            "lugre" => asperity_friction_lugre_new(&laws::lugre_params(), &mut h),
             "maxwell_slip" => asperity_friction_maxwell_slip_new(
                 laws::MAXWELL_K.as_ptr(),
                 laws::MAXWELL_MU.as_ptr(),
@@ -501,33 +464,12 @@ fn c_model(case: &laws::Case) -> *mut AsperityFriction {
             "prandtl_tomlinson" => asperity_friction_prandtl_tomlinson_new(
                 2e-21, 3e-10, 1.0, 1e-12, 1e-6, 1e-9, &mut h,
             ),
-            "prandtl_tomlinson_two_spring" => {
-                let t = AsperityPrandtlTomlinsonTwoSpringParams {
-                    amplitude: 2e-21,
-                    period: 3e-10,
-                    tip_stiffness: 2.0,
-                    tip_mass: 1e-12,
-                    tip_damping: 1e-6,
-                    cantilever_stiffness: 3.0,
-                    cantilever_mass: 2e-12,
-                    cantilever_damping: 2e-6,
-                    tolerance: 1e-9,
-                };
-                asperity_friction_prandtl_tomlinson_two_spring_new(&t, &mut h)
-            }
+            "prandtl_tomlinson_two_spring" => asperity_friction_prandtl_tomlinson_two_spring_new(
+                &laws::two_spring_params(),
+                &mut h,
+            ),
             "burridge_knopoff" => {
-                let b = AsperityBurridgeKnopoffParams {
-                    blocks: 6,
-                    mass: 1e-5,
-                    coupling_stiffness: 1e4,
-                    pulling_stiffness: 1e3,
-                    mu_static: 0.5,
-                    mu_kinetic: 0.3,
-                    weakening_velocity: 0.05,
-                    damping: 0.01,
-                    tolerance: 1e-9,
-                };
-                asperity_friction_burridge_knopoff_new(&b, &mut h)
+                asperity_friction_burridge_knopoff_new(&laws::burridge_knopoff_params(6), &mut h)
             }
             other => panic!("no C constructor for {other}"),
         }

@@ -507,19 +507,26 @@ fn block_equals_the_rust_api_and_reports_the_element() {
         let fresh = vec![0.0; n * M];
         let mut new = vec![0.0; n * M];
         let mut f = vec![0.0; 2 * n];
-        let st = asperity_friction_step_block(
-            l.0,
-            n,
-            nf.as_ptr(),
-            a.as_ptr(),
-            sl.as_ptr(),
-            1e-6,
-            fresh.as_ptr(),
-            new.as_mut_ptr(),
-            f.as_mut_ptr(),
-            null_mut(),
-            null_mut(),
-        );
+        // The block from these states into `new` and the forces into `f`,
+        // no dissipation, no work; the law, the areas and Δt as each check
+        // has them.
+        let new_p = new.as_mut_ptr();
+        let block = |law: *const AsperityFriction, areas: *const f64, dt: f64, f: &mut [f64]| {
+            asperity_friction_step_block(
+                law,
+                n,
+                nf.as_ptr(),
+                areas,
+                sl.as_ptr(),
+                dt,
+                fresh.as_ptr(),
+                new_p,
+                f.as_mut_ptr(),
+                null_mut(),
+                null_mut(),
+            )
+        };
+        let st = block(l.0, a.as_ptr(), 1e-6, &mut f);
         assert_eq!(st, ASPERITY_OK);
         let mut s2 = fresh.clone();
         let mut f2 = vec![0.0; 2 * n];
@@ -582,68 +589,20 @@ fn block_equals_the_rust_api_and_reports_the_element() {
             expect_error(st, ASPERITY_ERR_NULL_POINTER, name);
         }
         // NULL areas: 0 for every point, which this law refuses (element 0).
-        let st = asperity_friction_step_block(
-            l.0,
-            n,
-            nf.as_ptr(),
-            null(),
-            sl.as_ptr(),
-            1e-6,
-            fresh.as_ptr(),
-            new.as_mut_ptr(),
-            f.as_mut_ptr(),
-            null_mut(),
-            null_mut(),
-        );
+        let st = block(l.0, null(), 1e-6, &mut f);
         expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "element 0");
         expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "`area`");
         // A bad element: the message names it, earlier ones are written.
         let mut a_bad = a.clone();
         a_bad[7] = -1.0;
         let mut f = vec![-99.0; 2 * n];
-        let st = asperity_friction_step_block(
-            l.0,
-            n,
-            nf.as_ptr(),
-            a_bad.as_ptr(),
-            sl.as_ptr(),
-            1e-6,
-            fresh.as_ptr(),
-            new.as_mut_ptr(),
-            f.as_mut_ptr(),
-            null_mut(),
-            null_mut(),
-        );
+        let st = block(l.0, a_bad.as_ptr(), 1e-6, &mut f);
         expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "element 7");
         expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "`area`");
         assert!(f[..14].iter().all(|&x| x != -99.0) && f[14..].iter().all(|&x| x == -99.0));
-        let st = asperity_friction_step_block(
-            l.0,
-            n,
-            nf.as_ptr(),
-            a.as_ptr(),
-            sl.as_ptr(),
-            f64::NAN,
-            fresh.as_ptr(),
-            new.as_mut_ptr(),
-            f.as_mut_ptr(),
-            null_mut(),
-            null_mut(),
-        );
+        let st = block(l.0, a.as_ptr(), f64::NAN, &mut f);
         expect_error(st, ASPERITY_ERR_INVALID_ARGUMENT, "`dt`");
-        let st = asperity_friction_step_block(
-            null(),
-            n,
-            nf.as_ptr(),
-            a.as_ptr(),
-            sl.as_ptr(),
-            0.0,
-            fresh.as_ptr(),
-            new.as_mut_ptr(),
-            f.as_mut_ptr(),
-            null_mut(),
-            null_mut(),
-        );
+        let st = block(null(), a.as_ptr(), 0.0, &mut f);
         expect_error(st, ASPERITY_ERR_NULL_POINTER, "`law`");
     }
 }

@@ -11,8 +11,8 @@ mod common;
 #[path = "common/laws.rs"]
 mod laws;
 use common::c_errors::{expect_error, last_message};
+use laws::{c_scene_slider, c_slider_law, scene_path, scene_slider};
 
-use asperity::ffi::dynamic::AsperityLugreParams;
 use asperity::ffi::friction_law::*;
 use asperity::ffi::slider::*;
 use asperity::ffi::*;
@@ -21,44 +21,11 @@ use asperity::friction::{
 };
 use asperity::scene::Scene;
 use std::ffi::CString;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::ptr::{null, null_mut};
-
-fn scene_path() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/chapter6_copper.json")
-}
 
 fn scene_text() -> String {
     std::fs::read_to_string(scene_path()).unwrap()
-}
-
-/// A slider, its friction law and a work for the law.
-struct Handles {
-    slider: *mut AsperitySlider,
-    law: *mut AsperityFriction,
-    work: *mut AsperityFrictionWork,
-}
-
-impl Drop for Handles {
-    fn drop(&mut self) {
-        unsafe {
-            asperity_friction_work_free(self.work);
-            asperity_friction_free(self.law);
-            asperity_slider_free(self.slider);
-        }
-    }
-}
-
-/// The friction law of `slider` and a work for it.
-fn law_of(slider: *const AsperitySlider) -> (*mut AsperityFriction, *mut AsperityFrictionWork) {
-    let mut law = null_mut();
-    let st = unsafe { asperity_friction_from_slider(slider, &mut law) };
-    assert_eq!(st, ASPERITY_OK, "{}", last_message());
-    assert!(!law.is_null());
-    let mut work = null_mut();
-    let st = unsafe { asperity_friction_work_new(law, &mut work) };
-    assert_eq!(st, ASPERITY_OK, "{}", last_message());
-    (law, work)
 }
 
 fn from_json(text: &str, base: Option<&Path>) -> (i32, *mut AsperitySlider) {
@@ -75,18 +42,6 @@ fn from_json(text: &str, base: Option<&Path>) -> (i32, *mut AsperitySlider) {
     (st, h)
 }
 
-fn handles() -> Handles {
-    let (st, slider) = from_json(&scene_text(), None);
-    assert_eq!(st, ASPERITY_OK, "{}", last_message());
-    assert!(!slider.is_null());
-    let (law, work) = law_of(slider);
-    Handles { slider, law, work }
-}
-
-fn rust_slider() -> Slider {
-    Scene::from_file(scene_path()).unwrap().build().unwrap()
-}
-
 fn same(a: &FrictionResponse, b: &FrictionResponse) -> bool {
     format!("{a:?}") == format!("{b:?}")
 }
@@ -97,8 +52,8 @@ fn bits(v: &[f64]) -> Vec<u64> {
 
 #[test]
 fn sizes_and_info_match_the_rust_slider() {
-    let h = handles();
-    let rs = rust_slider();
+    let h = c_scene_slider();
+    let rs = scene_slider();
     let mut n = 0usize;
     assert_eq!(
         unsafe { asperity_friction_state_size(h.law, &mut n) },
@@ -144,8 +99,8 @@ fn sizes_and_info_match_the_rust_slider() {
 
 #[test]
 fn scalar_step_equals_the_rust_api_bit_for_bit() {
-    let h = handles();
-    let rs = rust_slider();
+    let h = c_scene_slider();
+    let rs = scene_slider();
     let m = rs.state_len();
     let mut w = rs.work();
     let mut c_state = vec![0.0; m];
@@ -218,7 +173,7 @@ fn scalar_step_equals_the_rust_api_bit_for_bit() {
 /// bit for bit against the Rust slider.
 #[test]
 fn the_friction_handle_keeps_the_contract() {
-    let h = handles();
+    let h = c_scene_slider();
     let case = laws::slider_case();
     unsafe { laws::c_contract(h.law, &case, 10) };
 }
@@ -227,8 +182,8 @@ fn the_friction_handle_keeps_the_contract() {
 /// the Rust `SliderWork::record` does, whatever the form of the step.
 #[test]
 fn record_of_the_last_step_equals_the_rust_record() {
-    let h = handles();
-    let rs = rust_slider();
+    let h = c_scene_slider();
+    let rs = scene_slider();
     let m = rs.state_len();
     let mut w = rs.work();
     let (mut c_state, mut r_state) = (vec![0.0; m], vec![0.0; m]);
@@ -248,30 +203,14 @@ fn record_of_the_last_step_equals_the_rust_record() {
         };
         assert_eq!(st, ASPERITY_OK, "{}", last_message());
         rs.step_in_place(&mut r_state, &inc, &mut w).unwrap();
-        let want = w.get::<asperity::friction::SliderWork>().unwrap();
-        let r = want.record();
         let mut rec = AsperitySliderRecord {
             reserved: 7,
             ..Default::default()
         };
         let st = unsafe { asperity_slider_record(h.work, &mut rec) };
         assert_eq!(st, ASPERITY_OK, "{}", last_message());
-        assert_eq!(
-            rec,
-            AsperitySliderRecord {
-                position: r.position,
-                rod_position: r.rod_position,
-                adhesion_area_share: r.adhesion_area_share,
-                nano_contacts: r.nano_contacts as u64,
-                adhesive_contacts: r.adhesive_contacts as u64,
-                rods_in_contact: r.rods_in_contact as u64,
-                yielded_rods: r.yielded_rods as u64,
-                seated: (k == 0) as i32,
-                reserved: 0,
-            },
-            "{k}"
-        );
-        assert_eq!(want.seated(), k == 0);
+        assert_eq!(rec, laws::slider_record(&w), "{k}");
+        assert_eq!(rec.seated, (k == 0) as i32, "{k}");
         assert_eq!(rec.position, c_state[ASPERITY_SLIDER_STATE_POSITION]);
         assert_eq!(
             rec.rod_position,
@@ -280,16 +219,7 @@ fn record_of_the_last_step_equals_the_rust_record() {
     }
     // A work that belongs to no slider, NULL pointers: named.
     let mut lugre = null_mut();
-    let p = AsperityLugreParams {
-        mu_coulomb: 0.3,
-        mu_static: 0.5,
-        stribeck_velocity: 1e-3,
-        stribeck_exponent: 2.0,
-        sigma0: 1e5,
-        sigma1: 1000.0,
-        damping_velocity: 1e-3,
-        sigma2: 0.4,
-    };
+    let p = laws::lugre_params();
     assert_eq!(
         unsafe { asperity::ffi::dynamic::asperity_friction_lugre_new(&p, &mut lugre) },
         ASPERITY_OK
@@ -323,8 +253,8 @@ fn record_of_the_last_step_equals_the_rust_record() {
 
 #[test]
 fn block_step_equals_the_rust_block_and_steps_in_place() {
-    let h = handles();
-    let rs = rust_slider();
+    let h = c_scene_slider();
+    let rs = scene_slider();
     let m = rs.state_len();
     let n = 3;
     let normal = [0.03, 0.12, 0.25];
@@ -407,8 +337,8 @@ fn block_step_equals_the_rust_block_and_steps_in_place() {
 
 #[test]
 fn errors_name_the_argument_and_leave_outputs_untouched() {
-    let h = handles();
-    let m = rust_slider().state_len();
+    let h = c_scene_slider();
+    let m = scene_slider().state_len();
     let old = vec![0.0; m];
     let mut new = vec![-3.0; m];
     let mut out = FrictionResponse {
@@ -766,7 +696,7 @@ fn c_defaults() -> AsperitySliderOptions {
 /// 90 flat rods of 1.5 µm with the chapter-6 nano-asperities (one across
 /// a tip), through C and through Rust.
 fn uniform_geometry() -> (*mut AsperitySliderGeometry, SliderGeometry) {
-    let rs = rust_slider();
+    let rs = scene_slider();
     let n = rs.geometry().nano();
     let nano = AsperityNanoAsperities {
         h_vdw: n.h_vdw,
@@ -795,7 +725,7 @@ fn uniform_geometry() -> (*mut AsperitySliderGeometry, SliderGeometry) {
 #[test]
 fn slider_from_structs_equals_the_rust_slider() {
     let (g, geometry) = uniform_geometry();
-    let rs = rust_slider();
+    let rs = scene_slider();
     let counter = rs.counter().to_vec();
     let dx = rs.counter_dx();
     let mut material = c_copper();
@@ -879,7 +809,7 @@ fn slider_from_structs_equals_the_rust_slider() {
             info.periodic,
             (r_opts.track_end == TrackEnd::Periodic) as i32
         );
-        let (law, work) = law_of(h);
+        let (law, work) = c_slider_law(h);
         let m = want.state_len();
         let (mut c_state, mut r_state) = (vec![0.0; m], vec![0.0; m]);
         let mut w = want.work();
@@ -927,7 +857,7 @@ fn slider_from_structs_equals_the_rust_slider() {
 #[test]
 fn slider_from_structs_errors_name_the_argument() {
     let (g, _) = uniform_geometry();
-    let rs = rust_slider();
+    let rs = scene_slider();
     let counter = rs.counter().to_vec();
     let dx = rs.counter_dx();
     let material = c_copper();

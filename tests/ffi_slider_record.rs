@@ -7,58 +7,17 @@
 //! and for NULL; NULL `out`.
 
 mod common;
+#[path = "common/laws.rs"]
+mod laws;
 use common::c_errors::{expect_error, last_message};
+use laws::{c_scene_slider, scene_slider, slider_record as expected};
 
 use asperity::ffi::dynamic::*;
 use asperity::ffi::friction_law::*;
 use asperity::ffi::slider::*;
 use asperity::ffi::*;
-use asperity::friction::{
-    FrictionIncrement, FrictionLaw, FrictionResponse, FrictionWork, SlideStep, Slider, SliderWork,
-};
-use asperity::scene::Scene;
+use asperity::friction::{FrictionIncrement, FrictionLaw, FrictionResponse, Slider};
 use std::ptr::{null, null_mut};
-
-fn scene_path() -> std::path::PathBuf {
-    common::manifest().join("examples/scenes/chapter6_copper.json")
-}
-
-/// The chapter-6 slider through C: the slider, its law and a work.
-struct Handles {
-    slider: *mut AsperitySlider,
-    law: *mut AsperityFriction,
-    work: *mut AsperityFrictionWork,
-}
-
-impl Drop for Handles {
-    fn drop(&mut self) {
-        unsafe {
-            asperity_friction_work_free(self.work);
-            asperity_friction_free(self.law);
-            asperity_slider_free(self.slider);
-        }
-    }
-}
-
-fn handles() -> Handles {
-    let text = std::fs::read_to_string(scene_path()).unwrap();
-    let mut slider = null_mut();
-    let st = unsafe {
-        asperity_slider_from_scene_json(text.as_ptr().cast(), text.len(), null(), &mut slider)
-    };
-    assert_eq!(st, ASPERITY_OK, "{}", last_message());
-    let mut law = null_mut();
-    let st = unsafe { asperity_friction_from_slider(slider, &mut law) };
-    assert_eq!(st, ASPERITY_OK, "{}", last_message());
-    let mut work = null_mut();
-    let st = unsafe { asperity_friction_work_new(law, &mut work) };
-    assert_eq!(st, ASPERITY_OK, "{}", last_message());
-    Handles { slider, law, work }
-}
-
-fn rust_slider() -> Slider {
-    Scene::from_file(scene_path()).unwrap().build().unwrap()
-}
 
 /// The record of `work` through C.
 fn c_record(work: *const AsperityFrictionWork) -> AsperitySliderRecord {
@@ -77,23 +36,6 @@ fn c_record(work: *const AsperityFrictionWork) -> AsperitySliderRecord {
     let st = unsafe { asperity_slider_record(work, &mut out) };
     assert_eq!(st, ASPERITY_OK, "{}", last_message());
     out
-}
-
-/// The record of the Rust work, as the C ABI should give it.
-fn expected(work: &FrictionWork) -> AsperitySliderRecord {
-    let w = work.get::<SliderWork>().expect("a slider's work");
-    let r: &SlideStep = w.record();
-    AsperitySliderRecord {
-        position: r.position,
-        rod_position: r.rod_position,
-        adhesion_area_share: r.adhesion_area_share,
-        nano_contacts: r.nano_contacts as u64,
-        adhesive_contacts: r.adhesive_contacts as u64,
-        rods_in_contact: r.rods_in_contact as u64,
-        yielded_rods: r.yielded_rods as u64,
-        seated: w.seated() as i32,
-        reserved: 0,
-    }
 }
 
 /// Field by field, the doubles bit for bit.
@@ -130,8 +72,8 @@ fn assert_consistent(r: &AsperitySliderRecord, rods: u64, what: &str) {
 
 #[test]
 fn the_record_equals_the_rust_record_step_by_step() {
-    let h = handles();
-    let rs = rust_slider();
+    let h = c_scene_slider();
+    let rs = scene_slider();
     let mut rw = rs.work();
     let m = rs.state_len();
     let rods = rs.rods() as u64;
@@ -233,18 +175,18 @@ const TANGENT_BOTH: i32 = ASPERITY_FRICTION_TANGENT_NORMAL | ASPERITY_FRICTION_T
 
 #[test]
 fn a_slider_work_that_has_not_stepped_gives_zeros() {
-    let h = handles();
+    let h = c_scene_slider();
     let c = c_record(h.work);
     assert_eq!(c, AsperitySliderRecord::default());
     assert_eq!(c.position.to_bits(), 0, "+0, not -0");
     // As the Rust work of the same law says.
-    assert_same(&c, &expected(&rust_slider().work()), "fresh work");
+    assert_same(&c, &expected(&scene_slider().work()), "fresh work");
 }
 
 #[test]
 fn a_block_leaves_the_last_points_record() {
-    let h = handles();
-    let rs = rust_slider();
+    let h = c_scene_slider();
+    let rs = scene_slider();
     let m = rs.state_len();
     let loads = [0.05 * rs.capacity(), 0.35 * rs.capacity()];
     let step = 1.5e-6;
@@ -289,16 +231,7 @@ fn a_block_leaves_the_last_points_record() {
 #[test]
 fn errors_name_work() {
     // A fresh work of a non-slider law (LuGre): no slider record.
-    let p = AsperityLugreParams {
-        mu_coulomb: 0.3,
-        mu_static: 0.5,
-        stribeck_velocity: 1e-3,
-        stribeck_exponent: 2.0,
-        sigma0: 1e5,
-        sigma1: 1000.0,
-        damping_velocity: 1e-3,
-        sigma2: 0.4,
-    };
+    let p = laws::lugre_params();
     let mut lugre = null_mut();
     assert_eq!(
         unsafe { asperity_friction_lugre_new(&p, &mut lugre) },
@@ -343,8 +276,8 @@ fn errors_name_work() {
     assert_eq!(out, before, "out untouched on failure");
 
     // A NULL out, with a work that has a record.
-    let h = handles();
-    let rs = rust_slider();
+    let h = c_scene_slider();
+    let rs = scene_slider();
     let mut s = vec![0.0; rs.state_len()];
     let inc = FrictionIncrement {
         normal_force: 0.1 * rs.capacity(),

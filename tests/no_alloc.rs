@@ -15,6 +15,8 @@ use asperity::ffi::tabulated::*;
 use asperity::ffi::ASPERITY_OK;
 
 mod common;
+#[path = "common/laws.rs"]
+mod laws;
 
 use common::counting::allocations as count;
 
@@ -170,16 +172,7 @@ fn friction_steps_allocate_nothing() {
     use asperity::friction::{FrictionIncrement, FrictionResponse};
     // (handle, slip scale m, area m², normal force scale N)
     let mut models = vec![];
-    let p = AsperityLugreParams {
-        mu_coulomb: 0.3,
-        mu_static: 0.5,
-        stribeck_velocity: 1e-3,
-        stribeck_exponent: 2.0,
-        sigma0: 1e5,
-        sigma1: 1000.0,
-        damping_velocity: 1e-3,
-        sigma2: 0.4,
-    };
+    let p = laws::lugre_params();
     let mut h = core::ptr::null_mut();
     assert_eq!(
         unsafe { asperity_friction_lugre_new(&p, &mut h) },
@@ -220,17 +213,7 @@ fn friction_steps_allocate_nothing() {
     models.push((h, 1e-11, 0.0, 1.0));
     // Every size class of the chain's integration arrays.
     for blocks in [1, 3, 16, 64, 256] {
-        let b = AsperityBurridgeKnopoffParams {
-            blocks,
-            mass: 1e-5,
-            coupling_stiffness: 1e4,
-            pulling_stiffness: 1e3,
-            mu_static: 0.5,
-            mu_kinetic: 0.3,
-            weakening_velocity: 0.05,
-            damping: 0.01,
-            tolerance: 1e-9,
-        };
+        let b = laws::burridge_knopoff_params(blocks);
         let mut h = core::ptr::null_mut();
         assert_eq!(
             unsafe { asperity_friction_burridge_knopoff_new(&b, &mut h) },

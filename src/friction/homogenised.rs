@@ -720,20 +720,19 @@ impl FrictionLaw for HomogenisedFriction {
         Ok(())
     }
 
+    #[inline]
     fn check_state(&self, state: &[f64], what: &'static str) -> Result<()> {
-        let old = what == "old";
         let f = Self::STATE_FORCE;
-        let name = |o: &'static str, s: &'static str| if old { o } else { s };
-        check::finite(name("old.force", "state.force"), state[f])?;
-        check::finite(name("old.force", "state.force"), state[f + 1])?;
-        check::non_negative(
-            name("old.plastic_slip_path", "state.plastic_slip_path"),
-            state[Self::STATE_PLASTIC_SLIP_PATH],
-        )?;
-        for &v in &state[Self::STATE_MECHANISMS..Self::STATE_LEN] {
-            check::non_negative(name("old.mechanisms", "state.mechanisms"), v)?;
+        let valid = state[f].is_finite()
+            && state[f + 1].is_finite()
+            && state[Self::STATE_PLASTIC_SLIP_PATH..Self::STATE_LEN]
+                .iter()
+                .all(|v| (0.0..=f64::MAX).contains(v));
+        if valid {
+            Ok(())
+        } else {
+            state_error(state, what)
         }
-        Ok(())
     }
 
     #[inline]
@@ -763,6 +762,26 @@ impl FrictionLaw for HomogenisedFriction {
         }
         Ok(r)
     }
+}
+
+/// The error of a homogenised state that [`FrictionLaw::check_state`]
+/// refused, naming the field (`old.…` or `state.…`).
+#[cold]
+#[inline(never)]
+fn state_error(state: &[f64], what: &'static str) -> Result<()> {
+    let old = what == "old";
+    let f = HomogenisedFriction::STATE_FORCE;
+    let name = |o: &'static str, s: &'static str| if old { o } else { s };
+    check::finite(name("old.force", "state.force"), state[f])?;
+    check::finite(name("old.force", "state.force"), state[f + 1])?;
+    check::non_negative(
+        name("old.plastic_slip_path", "state.plastic_slip_path"),
+        state[HomogenisedFriction::STATE_PLASTIC_SLIP_PATH],
+    )?;
+    for &v in &state[HomogenisedFriction::STATE_MECHANISMS..HomogenisedFriction::STATE_LEN] {
+        check::non_negative(name("old.mechanisms", "state.mechanisms"), v)?;
+    }
+    Ok(())
 }
 
 #[cfg(test)]

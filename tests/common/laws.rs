@@ -17,23 +17,34 @@
 //!   point count whose states overflow `size_t`), equal to the Rust law bit
 //!   for bit.
 //!
+//! The laws are also made through C here ([`lugre_params`],
+//! [`two_spring_params`], [`burridge_knopoff_params`], [`c_scene_slider`]),
+//! with the same parameters as their Rust instances; [`slider_record`] is
+//! the record `asperity_slider_record` should give for a slider's work.
+//!
 //! Included with `#[path = "common/laws.rs"] mod laws;` by the friction
 //! tests that use it, so the other test binaries do not compile it.
 
 #![allow(dead_code)]
 
+use asperity::ffi::dynamic::{
+    AsperityBurridgeKnopoffParams, AsperityLugreParams, AsperityPrandtlTomlinsonTwoSpringParams,
+};
 use asperity::ffi::friction_law::*;
+use asperity::ffi::slider::{
+    asperity_slider_free, asperity_slider_from_scene_json, AsperitySlider, AsperitySliderRecord,
+};
 use asperity::ffi::{asperity_last_error_message, ASPERITY_OK};
 use asperity::friction::dynamic::{
     Bristles, BurridgeKnopoff, LuGre, MaxwellSlip, PrandtlTomlinson,
 };
 use asperity::friction::{
     BlockStates, CofForm, Dissipation, FrictionBlock, FrictionIncrement, FrictionLaw,
-    FrictionResponse, HomogenisedFriction, HomogenisedSample, Slider,
+    FrictionResponse, FrictionWork, HomogenisedFriction, HomogenisedSample, Slider, SliderWork,
 };
 use asperity::scene::Scene;
 use asperity::Error;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::ptr::{null, null_mut};
 
 // ------------------------------------------------------------ helpers
@@ -123,17 +134,108 @@ pub fn homogenised(k: f64) -> HomogenisedFriction {
         .unwrap()
 }
 
+/// The chapter-6 copper scene (examples/scenes/chapter6_copper.json).
+pub fn scene_path() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/chapter6_copper.json")
+}
+
 /// The chapter-6 copper scene's slider (90 rods of 1.5 µm, 10
 /// nano-asperities per rod, fixed load 0.18 N).
 pub fn scene_slider() -> Slider {
-    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/chapter6_copper.json");
-    Scene::from_file(p).unwrap().build().unwrap()
+    Scene::from_file(scene_path()).unwrap().build().unwrap()
+}
+
+/// A slider made through C, its friction law and a work for the law,
+/// freed on drop.
+pub struct CSlider {
+    pub slider: *mut AsperitySlider,
+    pub law: *mut AsperityFriction,
+    pub work: *mut AsperityFrictionWork,
+}
+
+impl Drop for CSlider {
+    fn drop(&mut self) {
+        // SAFETY: made by the constructors, freed once.
+        unsafe {
+            asperity_friction_work_free(self.work);
+            asperity_friction_free(self.law);
+            asperity_slider_free(self.slider);
+        }
+    }
+}
+
+/// The friction law of the C slider `slider`
+/// (`asperity_friction_from_slider`) and a work for it.
+pub fn c_slider_law(
+    slider: *const AsperitySlider,
+) -> (*mut AsperityFriction, *mut AsperityFrictionWork) {
+    let mut law = null_mut();
+    // SAFETY: `slider` is live; valid out-pointers.
+    c_ok(
+        unsafe { asperity_friction_from_slider(slider, &mut law) },
+        "slider law",
+    );
+    assert!(!law.is_null());
+    let mut work = null_mut();
+    c_ok(
+        unsafe { asperity_friction_work_new(law, &mut work) },
+        "slider work",
+    );
+    (law, work)
+}
+
+/// [`scene_slider`] made through C (`asperity_slider_from_scene_json`, no
+/// base directory), with its law and a work.
+pub fn c_scene_slider() -> CSlider {
+    let text = std::fs::read_to_string(scene_path()).unwrap();
+    let mut slider = null_mut();
+    // SAFETY: the text and its length; a valid out-pointer.
+    let st = unsafe {
+        asperity_slider_from_scene_json(text.as_ptr().cast(), text.len(), null(), &mut slider)
+    };
+    c_ok(st, "slider from the scene");
+    assert!(!slider.is_null());
+    let (law, work) = c_slider_law(slider);
+    CSlider { slider, law, work }
+}
+
+/// The record of a slider's Rust work (`SliderWork::record()`, whether
+/// the step seated a fresh state), as `asperity_slider_record` should give
+/// it.
+pub fn slider_record(work: &FrictionWork) -> AsperitySliderRecord {
+    let w = work.get::<SliderWork>().expect("a slider's work");
+    let r = w.record();
+    AsperitySliderRecord {
+        position: r.position,
+        rod_position: r.rod_position,
+        adhesion_area_share: r.adhesion_area_share,
+        nano_contacts: r.nano_contacts as u64,
+        adhesive_contacts: r.adhesive_contacts as u64,
+        rods_in_contact: r.rods_in_contact as u64,
+        yielded_rods: r.yielded_rods as u64,
+        seated: w.seated() as i32,
+        reserved: 0,
+    }
 }
 
 /// LuGre: μ_c = 0.3, μ_s = 0.5, v_s = 1 mm/s, σ₀ = 1e5 /m, σ₁ = 1000 s/m,
 /// v_d = 1 mm/s, σ₂ = 0.4 s/m.
 pub fn lugre() -> LuGre {
     LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4).unwrap()
+}
+
+/// [`lugre`] for `asperity_friction_lugre_new`.
+pub fn lugre_params() -> AsperityLugreParams {
+    AsperityLugreParams {
+        mu_coulomb: 0.3,
+        mu_static: 0.5,
+        stribeck_velocity: 1e-3,
+        stribeck_exponent: 2.0,
+        sigma0: 1e5,
+        sigma1: 1000.0,
+        damping_velocity: 1e-3,
+        sigma2: 0.4,
+    }
 }
 
 /// Three Maxwell-slip elements.
@@ -165,9 +267,40 @@ pub fn two_spring() -> PrandtlTomlinson {
     PrandtlTomlinson::two_spring(2e-21, 3e-10, 2.0, 1e-12, 1e-6, 3.0, 2e-12, 2e-6, 1e-9).unwrap()
 }
 
+/// [`two_spring`] for `asperity_friction_prandtl_tomlinson_two_spring_new`.
+pub fn two_spring_params() -> AsperityPrandtlTomlinsonTwoSpringParams {
+    AsperityPrandtlTomlinsonTwoSpringParams {
+        amplitude: 2e-21,
+        period: 3e-10,
+        tip_stiffness: 2.0,
+        tip_mass: 1e-12,
+        tip_damping: 1e-6,
+        cantilever_stiffness: 3.0,
+        cantilever_mass: 2e-12,
+        cantilever_damping: 2e-6,
+        tolerance: 1e-9,
+    }
+}
+
 /// Six blocks.
 pub fn burridge_knopoff() -> BurridgeKnopoff {
     BurridgeKnopoff::new(6, 1e-5, 1e4, 1e3, 0.5, 0.3, 0.05, 0.01, 1e-9).unwrap()
+}
+
+/// The chain of [`burridge_knopoff`] with `blocks` blocks, for
+/// `asperity_friction_burridge_knopoff_new`.
+pub fn burridge_knopoff_params(blocks: usize) -> AsperityBurridgeKnopoffParams {
+    AsperityBurridgeKnopoffParams {
+        blocks,
+        mass: 1e-5,
+        coupling_stiffness: 1e4,
+        pulling_stiffness: 1e3,
+        mu_static: 0.5,
+        mu_kinetic: 0.3,
+        weakening_velocity: 0.05,
+        damping: 0.01,
+        tolerance: 1e-9,
+    }
 }
 
 /// A law with the increments it is stepped along (one Δt for all, so a
@@ -400,14 +533,52 @@ pub fn point_inc(case: &Case, k: usize, i: usize) -> FrictionIncrement {
     case.incs[(k + 5 * i) % case.incs.len()]
 }
 
-/// The block arrays of round `k`: normal forces, areas, slips.
-pub fn block_inputs(case: &Case, k: usize, points: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+/// The arrays of a block and its one Δt.
+pub struct BlockInputs {
+    /// Normal forces, one a point.
+    pub nf: Vec<f64>,
+    /// Areas, one a point.
+    pub area: Vec<f64>,
+    /// Slips, x and y a point.
+    pub slip: Vec<f64>,
+    pub dt: f64,
+}
+
+impl BlockInputs {
+    /// The arrays of `incs` (one a point) at `dt`.
+    pub fn of(incs: &[FrictionIncrement], dt: f64) -> Self {
+        Self {
+            nf: incs.iter().map(|i| i.normal_force).collect(),
+            area: incs.iter().map(|i| i.area).collect(),
+            slip: incs.iter().flat_map(|i| i.slip).collect(),
+            dt,
+        }
+    }
+
+    /// The Rust block of these arrays (every area given) over `states`,
+    /// the forces into `f` and the dissipations into `d` when given.
+    pub fn block<'a>(
+        &'a self,
+        states: BlockStates<'a>,
+        f: &'a mut [f64],
+        d: Option<&'a mut [f64]>,
+    ) -> FrictionBlock<'a> {
+        FrictionBlock {
+            normal_force: &self.nf,
+            area: Some(&self.area),
+            slip: &self.slip,
+            dt: self.dt,
+            states,
+            tangential_force: f,
+            dissipation: d,
+        }
+    }
+}
+
+/// The block arrays of round `k` (at the Δt of the case's increments).
+pub fn block_inputs(case: &Case, k: usize, points: usize) -> BlockInputs {
     let incs: Vec<_> = (0..points).map(|i| point_inc(case, k, i)).collect();
-    (
-        incs.iter().map(|i| i.normal_force).collect(),
-        incs.iter().map(|i| i.area).collect(),
-        incs.iter().flat_map(|i| i.slip).collect(),
-    )
+    BlockInputs::of(&incs, case.incs[0].dt)
 }
 
 /// The path a law books for the slip `s`: |Δs| rounded once, as
@@ -454,7 +625,6 @@ pub fn check_forms(case: &Case, rounds: usize) {
     let m = law.state_len();
     let p = POINTS;
     let mut w = law.work();
-    let dt = case.incs[0].dt;
     let mut sep = vec![0.0; p * m];
     let mut inp = vec![0.0; p * m];
     let mut bsep = vec![0.0; p * m];
@@ -508,39 +678,19 @@ pub fn check_forms(case: &Case, rounds: usize) {
         }
         assert_eq!(bits(&sep), bits(&inp), "{name} round {k}");
         // The block, both forms.
-        let (nf, area, slip) = block_inputs(case, k, p);
+        let b = block_inputs(case, k, p);
         let (mut f1, mut d1) = (sentinels(2 * p), sentinels(p));
-        law.step_block(
-            FrictionBlock {
-                normal_force: &nf,
-                area: Some(&area),
-                slip: &slip,
-                dt,
-                states: BlockStates::Separate {
-                    old: &bsep,
-                    new: &mut bnext,
-                },
-                tangential_force: &mut f1,
-                dissipation: Some(&mut d1),
-            },
-            &mut w,
-        )
-        .unwrap();
+        let separate = BlockStates::Separate {
+            old: &bsep,
+            new: &mut bnext,
+        };
+        law.step_block(b.block(separate, &mut f1, Some(&mut d1)), &mut w)
+            .unwrap();
         std::mem::swap(&mut bsep, &mut bnext);
         let (mut f2, mut d2) = (sentinels(2 * p), sentinels(p));
-        law.step_block(
-            FrictionBlock {
-                normal_force: &nf,
-                area: Some(&area),
-                slip: &slip,
-                dt,
-                states: BlockStates::InPlace(&mut binp),
-                tangential_force: &mut f2,
-                dissipation: Some(&mut d2),
-            },
-            &mut w,
-        )
-        .unwrap();
+        let in_place = BlockStates::InPlace(&mut binp);
+        law.step_block(b.block(in_place, &mut f2, Some(&mut d2)), &mut w)
+            .unwrap();
         for (what, ff, dd, ss) in [
             ("separate block", &f1, &d1, &bsep),
             ("in-place block", &f2, &d2, &binp),
@@ -603,30 +753,17 @@ pub fn check_rejections(case: &Case) {
             continue;
         }
         // A block whose point 1 fails: point 0 written, 1 and 2 untouched.
-        let incs = [good, inc, good];
-        let nf: Vec<f64> = incs.iter().map(|i| i.normal_force).collect();
-        let area: Vec<f64> = incs.iter().map(|i| i.area).collect();
-        let slip: Vec<f64> = incs.iter().flat_map(|i| i.slip).collect();
+        let b = BlockInputs::of(&[good, inc, good], good.dt);
         let olds: Vec<f64> = [&old, &from, &old].into_iter().flatten().copied().collect();
         let mut news = sentinels(3 * m);
         let mut f = sentinels(6);
         let mut d = sentinels(3);
+        let separate = BlockStates::Separate {
+            old: &olds,
+            new: &mut news,
+        };
         let e = law
-            .step_block(
-                FrictionBlock {
-                    normal_force: &nf,
-                    area: Some(&area),
-                    slip: &slip,
-                    dt: good.dt,
-                    states: BlockStates::Separate {
-                        old: &olds,
-                        new: &mut news,
-                    },
-                    tangential_force: &mut f,
-                    dissipation: Some(&mut d),
-                },
-                &mut w,
-            )
+            .step_block(b.block(separate, &mut f, Some(&mut d)), &mut w)
             .unwrap_err();
         assert_eq!(
             (e.index, arg_name(&e.error)),
@@ -646,15 +783,7 @@ pub fn check_rejections(case: &Case) {
         let mut f = sentinels(6);
         let e = law
             .step_block(
-                FrictionBlock {
-                    normal_force: &nf,
-                    area: Some(&area),
-                    slip: &slip,
-                    dt: good.dt,
-                    states: BlockStates::InPlace(&mut states),
-                    tangential_force: &mut f,
-                    dissipation: None,
-                },
+                b.block(BlockStates::InPlace(&mut states), &mut f, None),
                 &mut w,
             )
             .unwrap_err();
@@ -788,7 +917,8 @@ pub unsafe fn c_contract(h: *const AsperityFriction, case: &Case, rounds: usize)
     let mut same_ptr = vec![0.0; p * m];
     let mut in_place = vec![0.0; p * m];
     for k in 0..rounds {
-        let (nf, area, slip) = block_inputs(case, k, p);
+        let b = block_inputs(case, k, p);
+        let BlockInputs { nf, area, slip, .. } = &b;
         // NULL areas (0 for every point) every other round, when 0 is
         // what the points have.
         let ap = if k % 2 == 1 && area.iter().all(|&a| a == 0.0) {
@@ -797,19 +927,9 @@ pub unsafe fn c_contract(h: *const AsperityFriction, case: &Case, rounds: usize)
             area.as_ptr()
         };
         let (mut rf, mut rd) = (vec![0.0; 2 * p], vec![0.0; p]);
-        law.step_block(
-            FrictionBlock {
-                normal_force: &nf,
-                area: Some(&area),
-                slip: &slip,
-                dt,
-                states: BlockStates::InPlace(&mut rust),
-                tangential_force: &mut rf,
-                dissipation: Some(&mut rd),
-            },
-            &mut rw,
-        )
-        .unwrap();
+        let states = BlockStates::InPlace(&mut rust);
+        law.step_block(b.block(states, &mut rf, Some(&mut rd)), &mut rw)
+            .unwrap();
         // Separate (NULL work every other round).
         let mut next = sentinels(p * m);
         let (mut f, mut d) = (sentinels(2 * p), sentinels(p));
@@ -889,7 +1009,7 @@ pub unsafe fn c_contract(h: *const AsperityFriction, case: &Case, rounds: usize)
     }
     // A partial overlap of old and new: refused, naming `new_states`,
     // nothing written.
-    let (nf, area, slip) = block_inputs(case, 0, p);
+    let BlockInputs { nf, area, slip, .. } = block_inputs(case, 0, p);
     let mut both = vec![0.0; 2 * p * m];
     let before = bits(&both);
     let q = both.as_mut_ptr();

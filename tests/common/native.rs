@@ -5,8 +5,9 @@
 //! shared library with that profile, finding the `cc` crate's C or C++
 //! compiler, the link lines (static and shared), running a compiler or other
 //! tool, running a program with a time limit, parsing its
-//! `CHECK <name> <value>` lines, and reporting failed checks grouped by the
-//! part of the library they depend on.
+//! `CHECK <name> <value>` lines, reporting failed checks grouped by the
+//! part of the library they depend on, and the Rust side of the checks the
+//! C, C++ and Fortran examples share (the FE-strip law, the slider record).
 //!
 //! Reached as `common::native` (`mod common;` in the test crate); each test
 //! crate uses a subset.
@@ -603,4 +604,93 @@ pub fn fe_strip_steady_force() -> f64 {
             s.cof * (p * area + s.adhesion_pressure * area)
         })
         .sum()
+}
+
+/// The Rust side of the slider record of the `slider_patch` examples
+/// (`examples/c/slider_patch.c`, `examples/cpp/slider_patch.cpp`,
+/// `examples/fortran/slider_patch.f90`), their `CHECK` lines checked in `c`:
+///
+/// * the record of the first two blocks of a block call from fresh states
+///   (`blocks` names them in the `CHECK` lines): the first seats its fresh
+///   state, then the slider advances by `step` per block, to the state's
+///   position; the counts nest;
+/// * the record of patch 0's tangent step against the Rust step's
+///   `SliderWork::record()` from the same history: `steps` increments of
+///   `step` along +x at `normal_force` from a fresh state, then one with
+///   both tangents;
+/// * the record of a zero slip: no advance, nothing seated.
+///
+/// `needs` tags the slider's checks, `ffi` those of the C ABI. Returns the
+/// tangent step's response and the state's position before it, for the
+/// checks a program makes on its own.
+pub fn check_slider_record(
+    c: &mut Report,
+    (needs, ffi): (&'static str, &'static str),
+    blocks: [&str; 2],
+    slider: &asperity::friction::Slider,
+    normal_force: f64,
+    (steps, step): (usize, f64),
+) -> (asperity::friction::FrictionResponse, f64) {
+    use asperity::friction::{
+        FrictionIncrement, FrictionLaw, Slider, SliderWork, TANGENT_NORMAL, TANGENT_SLIP,
+    };
+    let [first, second] = blocks;
+    c.close(needs, &format!("record_{first}_seated"), 1.0, 0.0);
+    c.close(needs, &format!("record_{first}_position"), step, 0.0);
+    c.close(needs, &format!("record_{second}_seated"), 0.0, 0.0);
+    c.close(needs, &format!("record_{second}_position"), 2.0 * step, 0.0);
+    c.close(needs, "record_seated_ok", 1.0, 0.0);
+    c.close(ffi, "record_position_matches_state", 1.0, 0.0);
+    c.within(needs, "record_max_advance_diff", 0.0, 1e-18);
+    c.close(needs, "record_counts_consistent", 1.0, 0.0);
+    let mut w = slider.work();
+    let mut st = vec![0.0; slider.state_len()];
+    let mut inc = FrictionIncrement {
+        normal_force,
+        slip: [step, 0.0],
+        dt: 1e-5,
+        ..FrictionIncrement::default()
+    };
+    for _ in 0..steps {
+        slider.step_in_place(&mut st, &inc, &mut w).unwrap();
+    }
+    inc.tangents = TANGENT_NORMAL | TANGENT_SLIP;
+    let mut new = vec![0.0; slider.state_len()];
+    let t = slider.step(&st, &mut new, &inc, &mut w).unwrap();
+    let sw = w.get::<SliderWork>().unwrap();
+    let rec = sw.record();
+    assert!(
+        rec.nano_contacts > 0 && rec.rods_in_contact > 0,
+        "the check must see a contact"
+    );
+    c.close(needs, "tangent_record_position", rec.position, 1e-15);
+    c.close(
+        needs,
+        "tangent_record_rod_position",
+        rec.rod_position,
+        1e-10 * rec.rod_position.abs(),
+    );
+    c.close(
+        needs,
+        "tangent_record_adhesion_area_share",
+        rec.adhesion_area_share,
+        1e-10,
+    );
+    for (name, n) in [
+        ("nano_contacts", rec.nano_contacts),
+        ("adhesive_contacts", rec.adhesive_contacts),
+        ("rods_in_contact", rec.rods_in_contact),
+        ("yielded_rods", rec.yielded_rods),
+    ] {
+        c.close(needs, &format!("tangent_record_{name}"), n as f64, 0.0);
+    }
+    c.close(
+        needs,
+        "tangent_record_seated",
+        sw.seated() as i32 as f64,
+        0.0,
+    );
+    c.close(needs, "zero_slip_record_advance", 0.0, 0.0);
+    c.close(needs, "zero_slip_record_seated", 0.0, 0.0);
+    (t, st[Slider::STATE_POSITION])
 }

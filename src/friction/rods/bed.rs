@@ -611,6 +611,14 @@ fn redistribute(
     }
 }
 
+/// The value checks of a loading: a finite position, a finite load ≥ 0.
+pub(super) fn check_loading(loading: Loading) -> Result<()> {
+    match loading {
+        Loading::FixedGap { position } => check::finite("position", position).map(|_| ()),
+        Loading::FixedLoad { load } => check::non_negative("load", load).map(|_| ()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::redistribute;
@@ -652,13 +660,5 @@ mod tests {
             &mut h,
         );
         assert_eq!(h, vec![1.0, 1.0, 1.0]);
-    }
-}
-
-/// The value checks of a loading: a finite position, a finite load ≥ 0.
-pub(super) fn check_loading(loading: Loading) -> Result<()> {
-    match loading {
-        Loading::FixedGap { position } => check::finite("position", position).map(|_| ()),
-        Loading::FixedLoad { load } => check::non_negative("load", load).map(|_| ()),
     }
 }

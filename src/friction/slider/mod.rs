@@ -624,24 +624,9 @@ impl Slider {
             counter[i] = self.counter_at(centers[i] + position)?;
         }
         let opts = &self.options.rod;
-        let report: RodReport = match loading {
-            Loading::FixedGap { position: b0 } => self.bed.solve(
-                &old.rod,
-                &mut new.rod,
-                counter,
-                Loading::FixedGap { position: b0 },
-                opts,
-                solution,
-            )?,
-            Loading::FixedLoad { load } => self.bed.solve(
-                &old.rod,
-                &mut new.rod,
-                counter,
-                Loading::FixedLoad { load: load },
-                opts,
-                solution,
-            )?,
-        };
+        let report: RodReport =
+            self.bed
+                .solve(&old.rod, &mut new.rod, counter, loading, opts, solution)?;
         new.position = position;
 
         // Nano-asperities in contact (module docs).
