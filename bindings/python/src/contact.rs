@@ -316,8 +316,8 @@ fn finite(r: &asperity::NormalResponse) -> bool {
 }
 
 /// Borrow the old states for an array call of `n` contacts.
-fn old_states<'a, 'py>(
-    state: Option<&'a Bound<'py, ContactState>>,
+fn old_states<'py>(
+    state: Option<&Bound<'py, ContactState>>,
     n: usize,
 ) -> PyResult<Option<PyRef<'py, ContactState>>> {
     match state {
