@@ -50,6 +50,7 @@ fn quick_starts_are_the_tested_examples() {
         "examples/cpp/quick_start.cpp",
         "examples/fortran/quick_start.f90",
         "examples/quick_start.rs",
+        "examples/python/quick_start.py",
     ] {
         assert!(
             seen.iter().any(|s| s == want),

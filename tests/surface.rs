@@ -715,3 +715,43 @@ fn hurst_fit_band_beyond_f64_is_an_error() {
     // 1e-150 .. 1e150: 300 decades, finite; any outcome but a panic.
     let _ = hurst_fit(&z, 1e-6, Some((1e-150, 1e150)));
 }
+
+/// A profile from position and height columns is the one `parse_profile`
+/// reads from the same numbers as text (the Python package's
+/// `profile_parameters(x, z)` builds its profiles this way), and bad columns
+/// are refused naming `x` or `z`.
+#[test]
+fn profile_from_positions_equals_parse_profile() {
+    // Positions rounded as an instrument writes them, off the uniform grid.
+    let x: Vec<f64> = (0..64)
+        .map(|j| (j as f64 * 0.15625e-6 * 1e7).round() / 1e7)
+        .collect();
+    let z: Vec<f64> = (0..64).map(|j| (j as f64 * 0.7).sin() * 1e-7).collect();
+    let text: String = x
+        .iter()
+        .zip(&z)
+        .map(|(x, z)| format!("{x:e},{z:e}\n"))
+        .collect();
+    let read = parse_profile(&text, Spacing::Tolerant).unwrap();
+    let built = profile_from_positions(&x, z.clone(), Spacing::Tolerant).unwrap();
+    assert_eq!(read, built);
+    assert!(built.spacing_deviation() > 0.1);
+    let name = |e: Error| match e {
+        Error::InvalidArgument { name, .. } => name,
+        other => panic!("{other}"),
+    };
+    assert_eq!(
+        name(profile_from_positions(&x, z[..63].to_vec(), Spacing::Tolerant).unwrap_err()),
+        "z"
+    );
+    let mut back = x.clone();
+    back.swap(3, 4);
+    assert_eq!(
+        name(profile_from_positions(&back, z.clone(), Spacing::Tolerant).unwrap_err()),
+        "x"
+    );
+    assert_eq!(
+        name(profile_from_positions(&x, z, Spacing::Strict).unwrap_err()),
+        "x"
+    );
+}

@@ -77,7 +77,9 @@ pub use iso::{
 pub use pattern::{ks_statistics, ks_two_sample, representative_pattern, RepresentativePattern};
 pub use peaks::{peaks, summits, summits_grid, Peak, PeakStatistics, Summit};
 pub use profile::{remove_form, Form, MapForm, Profile, Topography};
-pub use read::{parse_profile, parse_topography, read_profile, read_topography, Spacing};
+pub use read::{
+    parse_profile, parse_topography, profile_from_positions, read_profile, read_topography, Spacing,
+};
 pub use spectral::{
     acf, default_fit_band, hurst_fit, psd, psd_hurst_exponent, psd_windowed, Acf, HurstFit, Psd,
     PsdPlan, SpectralMoments, Window,

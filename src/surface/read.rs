@@ -178,6 +178,52 @@ fn uniform_grid(x: &[f64], lines: &[u64], spacing: Spacing) -> Result<(f64, f64,
     Ok((x0, dx, dev))
 }
 
+/// A [`Profile`] from measured positions `x` (m, strictly increasing) and
+/// heights `z` (m), as [`parse_profile`] builds one from a file: origin and
+/// spacing of the least-squares grid through `x`, the deviation from it
+/// checked per `spacing` and kept in [`Profile::spacing_deviation`]. For
+/// callers that hold the columns already (the Python package).
+///
+/// Errors: [`Error::InvalidArgument`] `z` when the lengths differ or fewer
+/// than two points are given, `x` for a non-finite, non-increasing or
+/// non-uniform position (the bound says which); what [`Profile::new`]
+/// rejects in `z`.
+pub fn profile_from_positions(x: &[f64], z: Vec<f64>, spacing: Spacing) -> Result<Profile> {
+    if x.len() != z.len() {
+        return Err(Error::InvalidArgument {
+            name: "z",
+            value: z.len() as f64,
+            bound: "of the same length as x",
+        });
+    }
+    if x.len() < 2 {
+        return Err(Error::InvalidArgument {
+            name: "x",
+            value: x.len() as f64,
+            bound: "at least 2 positions",
+        });
+    }
+    if let Some(&v) = x.iter().find(|v| !v.is_finite()) {
+        return Err(Error::InvalidArgument {
+            name: "x",
+            value: v,
+            bound: "finite",
+        });
+    }
+    if let Some(w) = x.windows(2).find(|w| w[1] <= w[0]) {
+        return Err(Error::InvalidArgument {
+            name: "x",
+            value: w[1],
+            bound: "strictly increasing",
+        });
+    }
+    let lines: Vec<u64> = (1..=x.len() as u64).collect();
+    let (x0, dx, dev) = uniform_grid(x, &lines, spacing)?;
+    Ok(Profile::new(dx, z)?
+        .with_origin(x0)?
+        .with_spacing_deviation(dev))
+}
+
 /// A [`Profile`] from two-column `x z` text (m); see the module docs for the
 /// accepted text. Origin and spacing are those of the least-squares grid
 /// through the positions; the deviation from it is checked per `spacing` and

@@ -1,0 +1,651 @@
+//! Statistical multi-asperity models (`asperity::statistics`): height
+//! distributions, Greenwood–Williamson, Kragelsky rods and bearing curve,
+//! Zhuravlev, power-law asperities; every response on a float or an array of
+//! separations.
+
+use crate::common::{array, real, real_opt, rs, vectorize, vectorize_record};
+use crate::rescaling::{KnownSolution, Rescaling};
+use asperity::statistics as st;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+const RESPONSE: [&str; 4] = ["load", "area", "contacts", "mean_pressure"];
+
+fn record(r: st::MultiAsperityResponse) -> [f64; 4] {
+    [r.load, r.area, r.contacts, r.mean_pressure()]
+}
+
+fn separation<'py>(py: Python<'py>, s: st::SeparationSolution) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("separation", s.separation)?;
+    d.set_item("iterations", s.iterations)?;
+    d.set_item("relative_residual", s.relative_residual)?;
+    Ok(d)
+}
+
+/// The summit-height distribution of a statistical model:
+/// ``HeightDistribution.gaussian(sigma)``, ``.exponential(sigma)`` (σ in m)
+/// or ``.empirical(heights, radii=None)`` (a measured list, m).
+#[pyclass(module = "asperity", frozen)]
+pub struct HeightDistribution {
+    pub inner: st::HeightDistribution,
+}
+
+#[pymethods]
+impl HeightDistribution {
+    /// gaussian(sigma) -> HeightDistribution
+    ///
+    /// Zero-mean normal heights of standard deviation σ (m).
+    #[staticmethod]
+    fn gaussian(sigma: &Bound<'_, PyAny>) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::HeightDistribution::gaussian(real(sigma, "sigma")?).map_err(rs)?,
+        })
+    }
+    /// exponential(sigma) -> HeightDistribution
+    ///
+    /// Zero-mean exponential heights of standard deviation σ (m).
+    #[staticmethod]
+    fn exponential(sigma: &Bound<'_, PyAny>) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::HeightDistribution::exponential(real(sigma, "sigma")?).map_err(rs)?,
+        })
+    }
+    /// empirical(heights, radii=None) -> HeightDistribution
+    ///
+    /// A measured list of summit heights (m), with per-summit radii (m) if given.
+    #[staticmethod]
+    #[pyo3(signature = (heights, radii=None))]
+    fn empirical(heights: &Bound<'_, PyAny>, radii: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
+        let h = array(heights, "heights")?.as_slice()?.to_vec();
+        let inner = match radii {
+            None => st::HeightDistribution::empirical(h).map_err(rs)?,
+            Some(r) => st::HeightDistribution::Empirical(
+                st::EmpiricalHeights::with_radii(h, array(r, "radii")?.as_slice()?.to_vec())
+                    .map_err(rs)?,
+            ),
+        };
+        Ok(Self { inner })
+    }
+    /// std_dev() -> float
+    ///
+    /// Standard deviation of the heights (m).
+    fn std_dev(&self) -> f64 {
+        self.inner.std_dev()
+    }
+    /// exceedance(d) -> float | numpy.ndarray
+    ///
+    /// Probability that a height exceeds d (m).
+    fn exceedance(&self, py: Python<'_>, d: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let h = &self.inner;
+        vectorize(py, d, "d", |x| h.exceedance(x))
+    }
+    /// tail_moment(q, d) -> float | numpy.ndarray
+    ///
+    /// ∫_d^∞ (z - d)^q φ(z) dz (m^q) at separation d (m).
+    fn tail_moment(
+        &self,
+        py: Python<'_>,
+        q: &Bound<'_, PyAny>,
+        d: &Bound<'_, PyAny>,
+    ) -> PyResult<Py<PyAny>> {
+        let q = real(q, "q")?;
+        let h = &self.inner;
+        vectorize(py, d, "d", |x| h.tail_moment(q, x))
+    }
+    fn __repr__(&self) -> String {
+        match &self.inner {
+            st::HeightDistribution::Gaussian { sigma } => {
+                format!("HeightDistribution.gaussian({sigma:e})")
+            }
+            st::HeightDistribution::Exponential { sigma } => {
+                format!("HeightDistribution.exponential({sigma:e})")
+            }
+            st::HeightDistribution::Empirical(e) => {
+                format!("HeightDistribution.empirical(<{} heights>)", e.len())
+            }
+        }
+    }
+}
+
+/// GreenwoodWilliamson(summit_count, radius, e_star, heights)
+///
+/// Greenwood & Williamson (1966): N (summit_count) Hertzian summits of radius
+/// R (m) on contact modulus E* (Pa) with heights from a
+/// ``HeightDistribution``; responses at the separation d (m) of the mean
+/// planes, on a float or an array.
+#[pyclass(module = "asperity", frozen)]
+pub struct GreenwoodWilliamson {
+    pub inner: st::GreenwoodWilliamson,
+}
+
+#[pymethods]
+impl GreenwoodWilliamson {
+    #[new]
+    fn new(
+        summit_count: &Bound<'_, PyAny>,
+        radius: &Bound<'_, PyAny>,
+        e_star: &Bound<'_, PyAny>,
+        heights: &HeightDistribution,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::GreenwoodWilliamson::new(
+                real(summit_count, "summit_count")?,
+                real(radius, "radius")?,
+                real(e_star, "e_star")?,
+                heights.inner.clone(),
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// load(separation) -> float | numpy.ndarray
+    ///
+    /// Total load P (N) at separation d (m).
+    fn load(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.load(d))
+    }
+    /// area(separation) -> float | numpy.ndarray
+    ///
+    /// Real contact area A (m²) at separation d (m).
+    fn area(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.area(d))
+    }
+    /// contacts(separation) -> float | numpy.ndarray
+    ///
+    /// Expected number of summits in contact at separation d (m).
+    fn contacts(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.contacts(d))
+    }
+    /// stiffness(separation) -> float | numpy.ndarray
+    ///
+    /// Normal contact stiffness -dP/dd (N/m) at separation d (m).
+    fn stiffness(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.stiffness(d))
+    }
+    /// mean_pressure(separation) -> float | numpy.ndarray
+    ///
+    /// Mean real contact pressure P/A (Pa) at separation d (m).
+    fn mean_pressure(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.mean_pressure(d))
+    }
+    /// response(separation) -> dict
+    ///
+    /// ``load`` (N), ``area`` (m²), ``contacts``, ``mean_pressure`` (Pa) at
+    /// separation d (m): floats, or arrays for an array of separations.
+    fn response(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize_record(py, separation, "separation", RESPONSE, |d| {
+            g.response(d).map(record)
+        })
+    }
+    /// separation_at_load(load) -> dict
+    ///
+    /// The separation (m) that carries ``load`` (N), with ``iterations`` and
+    /// ``relative_residual``.
+    fn separation_at_load<'py>(
+        &self,
+        py: Python<'py>,
+        load: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        separation(
+            py,
+            self.inner
+                .separation_at_load(real(load, "load")?)
+                .map_err(rs)?,
+        )
+    }
+    /// plasticity_index(hardness) -> float
+    ///
+    /// ψ = (E*/H)√(σ/R) for hardness H (Pa).
+    fn plasticity_index(&self, hardness: &Bound<'_, PyAny>) -> PyResult<f64> {
+        self.inner
+            .plasticity_index(real(hardness, "hardness")?)
+            .map_err(rs)
+    }
+}
+
+/// KragelskyRods(rod_count, rod_area, rod_stiffness, heights)
+///
+/// Kragelsky's elastic rods: N rods of cross-section A (m²) and axial
+/// stiffness k (N/m) with top heights from a ``HeightDistribution``;
+/// ``KragelskyRods.from_material(rod_count, rod_area, rod_length,
+/// youngs_modulus, heights)`` with k = E A/L.
+#[pyclass(module = "asperity", frozen)]
+pub struct KragelskyRods {
+    pub inner: st::KragelskyRods,
+}
+
+#[pymethods]
+impl KragelskyRods {
+    #[new]
+    fn new(
+        rod_count: &Bound<'_, PyAny>,
+        rod_area: &Bound<'_, PyAny>,
+        rod_stiffness: &Bound<'_, PyAny>,
+        heights: &HeightDistribution,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::KragelskyRods::new(
+                real(rod_count, "rod_count")?,
+                real(rod_area, "rod_area")?,
+                real(rod_stiffness, "rod_stiffness")?,
+                heights.inner.clone(),
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// from_material(rod_count, rod_area, rod_length, youngs_modulus, heights) -> KragelskyRods
+    ///
+    /// Rods of Young's modulus E (Pa) and length L (m): k = E A/L.
+    #[staticmethod]
+    fn from_material(
+        rod_count: &Bound<'_, PyAny>,
+        rod_area: &Bound<'_, PyAny>,
+        rod_length: &Bound<'_, PyAny>,
+        youngs_modulus: &Bound<'_, PyAny>,
+        heights: &HeightDistribution,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::KragelskyRods::from_material(
+                real(rod_count, "rod_count")?,
+                real(rod_area, "rod_area")?,
+                real(rod_length, "rod_length")?,
+                real(youngs_modulus, "youngs_modulus")?,
+                heights.inner.clone(),
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// Axial stiffness k of one rod (N/m).
+    #[getter]
+    fn rod_stiffness(&self) -> f64 {
+        self.inner.rod_stiffness()
+    }
+    /// load(separation) -> float | numpy.ndarray
+    ///
+    /// Total load (N) at separation d (m).
+    fn load(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.load(d))
+    }
+    /// response(separation) -> dict
+    ///
+    /// ``load`` (N), ``area`` (m²), ``contacts``, ``mean_pressure`` (Pa).
+    fn response(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize_record(py, separation, "separation", RESPONSE, |d| {
+            g.response(d).map(record)
+        })
+    }
+    /// separation_at_load(load) -> dict
+    ///
+    /// The separation (m) that carries ``load`` (N).
+    fn separation_at_load<'py>(
+        &self,
+        py: Python<'py>,
+        load: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        separation(
+            py,
+            self.inner
+                .separation_at_load(real(load, "load")?)
+                .map_err(rs)?,
+        )
+    }
+}
+
+/// BearingCurveRods(contour_area, stiffness_per_area, b, nu, max_height, rod_area)
+///
+/// Kragelsky's rods under a bearing curve η = b (x/max_height)^ν: contour
+/// area (m²), stiffness per unit area (N/m³), b, ν (dimensionless), maximum
+/// height (m), rod cross-section (m²); responses at the approach x (m).
+#[pyclass(module = "asperity", frozen)]
+pub struct BearingCurveRods {
+    pub inner: st::BearingCurveRods,
+}
+
+#[pymethods]
+impl BearingCurveRods {
+    #[new]
+    fn new(
+        contour_area: &Bound<'_, PyAny>,
+        stiffness_per_area: &Bound<'_, PyAny>,
+        b: &Bound<'_, PyAny>,
+        nu: &Bound<'_, PyAny>,
+        max_height: &Bound<'_, PyAny>,
+        rod_area: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::BearingCurveRods::new(
+                real(contour_area, "contour_area")?,
+                real(stiffness_per_area, "stiffness_per_area")?,
+                real(b, "b")?,
+                real(nu, "nu")?,
+                real(max_height, "max_height")?,
+                real(rod_area, "rod_area")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// response(approach) -> dict
+    ///
+    /// ``load`` (N), ``area`` (m²), ``contacts``, ``mean_pressure`` (Pa) at
+    /// approach x (m).
+    fn response(&self, py: Python<'_>, approach: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize_record(py, approach, "approach", RESPONSE, |d| {
+            g.response(d).map(record)
+        })
+    }
+    /// approach_at_load(load) -> float | numpy.ndarray
+    ///
+    /// The approach x (m) that carries ``load`` (N).
+    fn approach_at_load(&self, py: Python<'_>, load: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, load, "load", |p| g.approach_at_load(p))
+    }
+}
+
+/// Zhuravlev(cap_radius, e_star, summit_count)
+///
+/// Zhuravlev's model (1940): both surfaces carry spherical caps of radius R
+/// (m), so a pair has R_eff = R/2; contact modulus E* (Pa), N summits.
+/// ``Zhuravlev.with_effective_radius(effective_radius, e_star,
+/// summit_count)`` gives R_eff directly.
+#[pyclass(module = "asperity", frozen)]
+pub struct Zhuravlev {
+    pub inner: st::Zhuravlev,
+}
+
+#[pymethods]
+impl Zhuravlev {
+    #[new]
+    fn new(
+        cap_radius: &Bound<'_, PyAny>,
+        e_star: &Bound<'_, PyAny>,
+        summit_count: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::Zhuravlev::new(
+                real(cap_radius, "cap_radius")?,
+                real(e_star, "e_star")?,
+                real(summit_count, "summit_count")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// with_effective_radius(effective_radius, e_star, summit_count) -> Zhuravlev
+    ///
+    /// The model with the pair's effective radius (m) given directly.
+    #[staticmethod]
+    fn with_effective_radius(
+        effective_radius: &Bound<'_, PyAny>,
+        e_star: &Bound<'_, PyAny>,
+        summit_count: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::Zhuravlev::with_effective_radius(
+                real(effective_radius, "effective_radius")?,
+                real(e_star, "e_star")?,
+                real(summit_count, "summit_count")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// Effective radius of a pair of caps (m).
+    #[getter]
+    fn effective_radius(&self) -> f64 {
+        self.inner.effective_radius()
+    }
+    /// linear(alpha1, alpha2, approach) -> dict
+    ///
+    /// The response (``load`` N, ``area`` m², ``contacts``,
+    /// ``mean_pressure`` Pa) for linear summit densities α1 ξ, α2 ξ (1/m²)
+    /// at approach x (m; float or array).
+    fn linear(
+        &self,
+        py: Python<'_>,
+        alpha1: &Bound<'_, PyAny>,
+        alpha2: &Bound<'_, PyAny>,
+        approach: &Bound<'_, PyAny>,
+    ) -> PyResult<Py<PyAny>> {
+        let (a1, a2) = (real(alpha1, "alpha1")?, real(alpha2, "alpha2")?);
+        let g = &self.inner;
+        vectorize_record(py, approach, "approach", RESPONSE, |x| {
+            g.linear(a1, a2, x).map(record)
+        })
+    }
+    /// approach_at_load_linear(alpha1, alpha2, load) -> float
+    ///
+    /// The approach x (m) that carries ``load`` (N) with linear densities.
+    fn approach_at_load_linear(
+        &self,
+        alpha1: &Bound<'_, PyAny>,
+        alpha2: &Bound<'_, PyAny>,
+        load: &Bound<'_, PyAny>,
+    ) -> PyResult<f64> {
+        self.inner
+            .approach_at_load_linear(
+                real(alpha1, "alpha1")?,
+                real(alpha2, "alpha2")?,
+                real(load, "load")?,
+            )
+            .map_err(rs)
+    }
+    /// friction_linear(alpha1, alpha2, load, shear_strength) -> dict
+    ///
+    /// Zhuravlev's friction F = τ S at ``load`` (N) with shear strength τ
+    /// (Pa): the dict of ``ZhuravlevFriction`` (friction force N, area m²,
+    /// coefficient of friction, …).
+    fn friction_linear(
+        &self,
+        py: Python<'_>,
+        alpha1: &Bound<'_, PyAny>,
+        alpha2: &Bound<'_, PyAny>,
+        load: &Bound<'_, PyAny>,
+        shear_strength: &Bound<'_, PyAny>,
+    ) -> PyResult<Py<PyAny>> {
+        let f = self
+            .inner
+            .friction_linear(
+                real(alpha1, "alpha1")?,
+                real(alpha2, "alpha2")?,
+                real(load, "load")?,
+                real(shear_strength, "shear_strength")?,
+            )
+            .map_err(rs)?;
+        crate::common::to_py_value(py, &f)
+    }
+}
+
+/// PowerLawAsperities(rescaling, lambda_, known)
+///
+/// Asperities of shape B r^d on a material of hardening index κ through
+/// Borodich's rescaling (``Rescaling``, shape scale λ, a ``KnownSolution``);
+/// ``PowerLawAsperities.elastic(b, d, e_star)`` and
+/// ``PowerLawAsperities.sphere(radius, e_star)`` for elastic ones.
+#[pyclass(module = "asperity", frozen)]
+pub struct PowerLawAsperities {
+    pub inner: st::PowerLawAsperities,
+}
+
+#[pymethods]
+impl PowerLawAsperities {
+    #[new]
+    fn new(
+        rescaling: &Rescaling,
+        lambda_: &Bound<'_, PyAny>,
+        known: &KnownSolution,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::PowerLawAsperities::new(
+                rescaling.inner,
+                real(lambda_, "lambda")?,
+                known.inner,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// elastic(b, d, e_star) -> PowerLawAsperities
+    ///
+    /// Elastic Galin punches B r^d (B in m^(1-d)) on contact modulus E* (Pa).
+    #[staticmethod]
+    fn elastic(
+        b: &Bound<'_, PyAny>,
+        d: &Bound<'_, PyAny>,
+        e_star: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::PowerLawAsperities::elastic(
+                real(b, "b")?,
+                real(d, "d")?,
+                real(e_star, "e_star")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// sphere(radius, e_star) -> PowerLawAsperities
+    ///
+    /// Hertzian spheres of radius R (m) on contact modulus E* (Pa).
+    #[staticmethod]
+    fn sphere(radius: &Bound<'_, PyAny>, e_star: &Bound<'_, PyAny>) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::PowerLawAsperities::sphere(real(radius, "radius")?, real(e_star, "e_star")?)
+                .map_err(rs)?,
+        })
+    }
+    /// exponent() -> float
+    ///
+    /// Load-depth exponent q of one asperity.
+    fn exponent(&self) -> f64 {
+        self.inner.exponent()
+    }
+    /// area_exponent() -> float
+    ///
+    /// Area-depth exponent of one asperity.
+    fn area_exponent(&self) -> f64 {
+        self.inner.area_exponent()
+    }
+    /// asperity_load(depth) -> float | numpy.ndarray
+    ///
+    /// Load (N) of one asperity at depth (m).
+    fn asperity_load(&self, py: Python<'_>, depth: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, depth, "depth", |x| g.asperity_load(x))
+    }
+    /// asperity_contact_radius(depth) -> float | numpy.ndarray
+    ///
+    /// Contact radius (m) of one asperity at depth (m).
+    fn asperity_contact_radius(
+        &self,
+        py: Python<'_>,
+        depth: &Bound<'_, PyAny>,
+    ) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, depth, "depth", |x| g.asperity_contact_radius(x))
+    }
+    /// greenwood_williamson(summit_count, heights, separation) -> dict
+    ///
+    /// The GW sum of these asperities: response at separation d (m).
+    fn greenwood_williamson(
+        &self,
+        py: Python<'_>,
+        summit_count: &Bound<'_, PyAny>,
+        heights: &HeightDistribution,
+        separation: &Bound<'_, PyAny>,
+    ) -> PyResult<Py<PyAny>> {
+        let n = real(summit_count, "summit_count")?;
+        let (g, h) = (&self.inner, &heights.inner);
+        vectorize_record(py, separation, "separation", RESPONSE, |d| {
+            g.greenwood_williamson(n, h, d).map(record)
+        })
+    }
+    /// zhuravlev_linear(summit_count, alpha1, alpha2, approach) -> dict
+    ///
+    /// The Zhuravlev sum with linear densities (1/m²) at approach x (m).
+    fn zhuravlev_linear(
+        &self,
+        py: Python<'_>,
+        summit_count: &Bound<'_, PyAny>,
+        alpha1: &Bound<'_, PyAny>,
+        alpha2: &Bound<'_, PyAny>,
+        approach: &Bound<'_, PyAny>,
+    ) -> PyResult<Py<PyAny>> {
+        let (n, a1, a2) = (
+            real(summit_count, "summit_count")?,
+            real(alpha1, "alpha1")?,
+            real(alpha2, "alpha2")?,
+        );
+        let g = &self.inner;
+        vectorize_record(py, approach, "approach", RESPONSE, |x| {
+            g.zhuravlev_linear(n, a1, a2, x).map(record)
+        })
+    }
+}
+
+/// plasticity_index(e_star, hardness, sigma, radius) -> float
+///
+/// Greenwood–Williamson plasticity index ψ = (E*/H)√(σ/R): contact modulus
+/// E* (Pa), hardness H (Pa), summit-height deviation σ (m), summit radius R (m).
+#[pyfunction]
+fn plasticity_index(
+    e_star: &Bound<'_, PyAny>,
+    hardness: &Bound<'_, PyAny>,
+    sigma: &Bound<'_, PyAny>,
+    radius: &Bound<'_, PyAny>,
+) -> PyResult<f64> {
+    st::plasticity_index(
+        real(e_star, "e_star")?,
+        real(hardness, "hardness")?,
+        real(sigma, "sigma")?,
+        real(radius, "radius")?,
+    )
+    .map_err(rs)
+}
+
+/// deformation_regime(plasticity_index) -> str
+///
+/// ``"elastic"`` (ψ < 0.6), ``"transitional"`` or ``"plastic"`` (ψ > 1).
+#[pyfunction]
+fn deformation_regime(plasticity_index: &Bound<'_, PyAny>) -> PyResult<&'static str> {
+    Ok(
+        match st::DeformationRegime::of(real(plasticity_index, "plasticity_index")?).map_err(rs)? {
+            st::DeformationRegime::Elastic => "elastic",
+            st::DeformationRegime::Transitional => "transitional",
+            st::DeformationRegime::Plastic => "plastic",
+        },
+    )
+}
+
+/// gaussian_tail_moment(q, h) -> float | numpy.ndarray
+///
+/// F_q(h) = ∫_h^∞ (s - h)^q φ(s) ds of the standard normal density
+/// (dimensionless; GW's F_0, F_1, F_3/2 …), h a float or an array.
+#[pyfunction]
+fn gaussian_tail_moment(
+    py: Python<'_>,
+    q: &Bound<'_, PyAny>,
+    h: &Bound<'_, PyAny>,
+) -> PyResult<Py<PyAny>> {
+    let q = real(q, "q")?;
+    vectorize(py, h, "h", |x| st::gaussian::tail_moment(q, x))
+}
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<HeightDistribution>()?;
+    m.add_class::<GreenwoodWilliamson>()?;
+    m.add_class::<KragelskyRods>()?;
+    m.add_class::<BearingCurveRods>()?;
+    m.add_class::<Zhuravlev>()?;
+    m.add_class::<PowerLawAsperities>()?;
+    m.add_function(wrap_pyfunction!(plasticity_index, m)?)?;
+    m.add_function(wrap_pyfunction!(deformation_regime, m)?)?;
+    m.add_function(wrap_pyfunction!(gaussian_tail_moment, m)?)?;
+    let _ = real_opt;
+    Ok(())
+}
