@@ -20,7 +20,12 @@ fn main() {
     // 0.3 or 1.x library provides.
     // (scripts/install.sh installs libasperity.so.MAJOR.MINOR.PATCH with the
     // .so.ABI and .so links; tests/abi.rs guards the ABI per ABI version.)
-    if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
+    // Cargo hands this flag to every cdylib that depends on the crate too;
+    // a dependent that is not this library (the Python extension) sets
+    // ASPERITY_NO_SONAME in its .cargo/config.toml.
+    println!("cargo::rerun-if-env-changed=ASPERITY_NO_SONAME");
+    let own = std::env::var_os("ASPERITY_NO_SONAME").is_none();
+    if own && std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
         let major = std::env::var("CARGO_PKG_VERSION_MAJOR").expect("CARGO_PKG_VERSION_MAJOR");
         let minor = std::env::var("CARGO_PKG_VERSION_MINOR").expect("CARGO_PKG_VERSION_MINOR");
         let abi = if major == "0" {
