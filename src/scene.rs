@@ -591,6 +591,58 @@ impl Scene {
             .collect()
     }
 
+    /// The `asperity slide SCENE --json` summary of `run` (this scene's
+    /// slider run) and `tracks` (its [`Self::run_friction_models`]): the
+    /// run's [`SlideSummary`](crate::friction::slider::SlideSummary) in the
+    /// CLI's keys (`mean_cof`, `dissipation`, …, `steps`), `files` an empty
+    /// list, and `friction_models` (name, model key and track summary per
+    /// model) when `tracks` is not empty. The CLI fills in `files` and adds
+    /// the plots' `area_load`; the Python package's `run_scene` returns it
+    /// as is.
+    pub fn summary_json(&self, run: &SlideRun, tracks: &[TrackRun]) -> serde_json::Value {
+        let s = &run.summary;
+        let d = s.dissipation;
+        let mut v = serde_json::json!({
+            "mean_cof": s.mean_cof,
+            "mean_friction_force": s.mean_friction_force,
+            "normal_load": s.normal_load,
+            "dissipation": {
+                "chemical": d.chemical,
+                "van_der_waals": d.van_der_waals,
+                "elastic": d.elastic,
+                "plastic": d.plastic,
+            },
+            "mean_true_contact_area": s.mean_true_contact_area,
+            "mean_adhesion_area_share": s.mean_adhesion_area_share,
+            "mean_nano_contacts": s.mean_nano_contacts,
+            "max_yielded_rods": s.max_yielded_rods,
+            "no_contact_steps": s.no_contact_steps,
+            "distance": s.distance,
+            "steps": s.steps,
+            "files": Vec::<String>::new(),
+        });
+        if !tracks.is_empty() {
+            v["friction_models"] = self
+                .friction_models
+                .iter()
+                .zip(tracks)
+                .map(|(spec, t)| {
+                    let m = &t.summary;
+                    serde_json::json!({
+                        "name": spec.name,
+                        "model": spec.model.key(),
+                        "mean_cof": m.mean_cof,
+                        "static_cof": m.static_cof,
+                        "mean_friction_force": m.mean_friction_force,
+                        "dissipation": m.dissipation,
+                        "stick_slip_events": m.stick_slip_events,
+                    })
+                })
+                .collect();
+        }
+        v
+    }
+
     /// The loads (N) of the scene's load sweep for `slider` (fractions are
     /// of its capacity σ_y A_n, [`Slider::capacity`]); `None` without a
     /// sweep. The loads are validated against the capacity by

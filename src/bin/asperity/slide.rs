@@ -282,27 +282,12 @@ fn summary_json(
     written: &[PathBuf],
     area_load: Option<&AreaLoad>,
 ) -> String {
-    let s = &run.summary;
-    let d = s.dissipation;
-    let mut v = serde_json::json!({
-        "mean_cof": s.mean_cof,
-        "mean_friction_force": s.mean_friction_force,
-        "normal_load": s.normal_load,
-        "dissipation": {
-            "chemical": d.chemical,
-            "van_der_waals": d.van_der_waals,
-            "elastic": d.elastic,
-            "plastic": d.plastic,
-        },
-        "mean_true_contact_area": s.mean_true_contact_area,
-        "mean_adhesion_area_share": s.mean_adhesion_area_share,
-        "mean_nano_contacts": s.mean_nano_contacts,
-        "max_yielded_rods": s.max_yielded_rods,
-        "no_contact_steps": s.no_contact_steps,
-        "distance": s.distance,
-        "steps": s.steps,
-        "files": written.iter().map(|p| p.display().to_string()).collect::<Vec<_>>(),
-    });
+    let mut v = scene.summary_json(run, tracks);
+    v["files"] = written
+        .iter()
+        .map(|p| p.display().to_string())
+        .collect::<Vec<_>>()
+        .into();
     if let Some(a) = area_load {
         v["area_load"] = serde_json::json!({
             "source": if a.sweep { "load_sweep" } else { "steps" },
@@ -312,25 +297,6 @@ fn summary_json(
             "intercept": a.fit.intercept,
             "r_squared": a.fit.r_squared,
         });
-    }
-    if !tracks.is_empty() {
-        v["friction_models"] = scene
-            .friction_models
-            .iter()
-            .zip(tracks)
-            .map(|(spec, t)| {
-                let m = &t.summary;
-                serde_json::json!({
-                    "name": spec.name,
-                    "model": spec.model.key(),
-                    "mean_cof": m.mean_cof,
-                    "static_cof": m.static_cof,
-                    "mean_friction_force": m.mean_friction_force,
-                    "dissipation": m.dissipation,
-                    "stick_slip_events": m.stick_slip_events,
-                })
-            })
-            .collect();
     }
     v.to_string()
 }
