@@ -256,6 +256,22 @@ macro_rules! scalar_fn {
     };
 }
 
+/// `f` element by element on `xs` with the GIL released; a failing
+/// element's error starts with `element i:`.
+fn elementwise<T, F>(py: Python<'_>, xs: &[f64], f: F) -> PyResult<Vec<T>>
+where
+    T: Send,
+    F: Fn(f64) -> asperity::Result<T> + Send + Sync,
+{
+    py.detach(|| {
+        xs.iter()
+            .enumerate()
+            .map(|(i, &v)| f(v).map_err(|e| (i, e)))
+            .collect::<Result<Vec<T>, _>>()
+    })
+    .map_err(|(i, e)| Error::new_err(format!("element {i}: {e}")))
+}
+
 /// `f` on a float (-> float) or element by element on a 1-D array
 /// (-> array; the GIL released; a failing element's error starts with
 /// `element i:`).
@@ -267,15 +283,7 @@ where
     match real_or_array(x, name)? {
         RealOrArray::Scalar(v) => f(v).map_err(rs)?.into_py_any(py),
         RealOrArray::Array(a) => {
-            let xs = a.as_slice()?;
-            let out = py
-                .detach(|| {
-                    xs.iter()
-                        .enumerate()
-                        .map(|(i, &v)| f(v).map_err(|e| (i, e)))
-                        .collect::<Result<Vec<f64>, _>>()
-                })
-                .map_err(|(i, e)| Error::new_err(format!("element {i}: {e}")))?;
+            let out = elementwise(py, a.as_slice()?, f)?;
             Ok(PyArray1::from_vec(py, out).into_any().unbind())
         }
     }
@@ -302,15 +310,7 @@ where
             }
         }
         RealOrArray::Array(a) => {
-            let xs = a.as_slice()?;
-            let rows = py
-                .detach(|| {
-                    xs.iter()
-                        .enumerate()
-                        .map(|(i, &v)| f(v).map_err(|e| (i, e)))
-                        .collect::<Result<Vec<[f64; K]>, _>>()
-                })
-                .map_err(|(i, e)| Error::new_err(format!("element {i}: {e}")))?;
+            let rows = elementwise(py, a.as_slice()?, f)?;
             for (j, k) in keys.iter().enumerate() {
                 d.set_item(
                     k,

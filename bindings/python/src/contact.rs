@@ -1414,6 +1414,14 @@ pub struct SurfaceLaw {
     pub inner: c::SurfaceLaw,
 }
 
+impl SurfaceLaw {
+    fn validated(l: c::SurfaceLaw) -> PyResult<Self> {
+        Ok(Self {
+            inner: l.validate().map_err(rs)?,
+        })
+    }
+}
+
 #[pymethods]
 impl SurfaceLaw {
     /// lennard_jones(work_of_adhesion, equilibrium_separation) -> SurfaceLaw
@@ -1428,9 +1436,7 @@ impl SurfaceLaw {
             work_of_adhesion: real(work_of_adhesion, "work_of_adhesion")?,
             equilibrium_separation: real(equilibrium_separation, "equilibrium_separation")?,
         };
-        Ok(Self {
-            inner: l.validate().map_err(rs)?,
-        })
+        Self::validated(l)
     }
     /// dugdale(work_of_adhesion, cohesive_stress) -> SurfaceLaw
     ///
@@ -1444,9 +1450,7 @@ impl SurfaceLaw {
             work_of_adhesion: real(work_of_adhesion, "work_of_adhesion")?,
             cohesive_stress: real(cohesive_stress, "cohesive_stress")?,
         };
-        Ok(Self {
-            inner: l.validate().map_err(rs)?,
-        })
+        Self::validated(l)
     }
     /// exponential(work_of_adhesion, decay_length) -> SurfaceLaw
     ///
@@ -1460,9 +1464,7 @@ impl SurfaceLaw {
             work_of_adhesion: real(work_of_adhesion, "work_of_adhesion")?,
             decay_length: real(decay_length, "decay_length")?,
         };
-        Ok(Self {
-            inner: l.validate().map_err(rs)?,
-        })
+        Self::validated(l)
     }
     /// work_of_adhesion() -> float
     ///

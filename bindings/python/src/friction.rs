@@ -167,7 +167,7 @@ crate::scalar_fn!(elastic_strain_energy, fr::mechanisms::elastic_strain_energy, 
 crate::scalar_fn!(released_elastic_energy, fr::mechanisms::released_elastic_energy, "released_elastic_energy(youngs_modulus, area, length, before, after) -> float\n\nElastic energy released (J) when a rod's compression falls from ``before`` to ``after`` (m).", (youngs_modulus, area, length, before, after));
 crate::scalar_fn!(plastic_work, fr::mechanisms::plastic_work, "plastic_work(yield_stress, plastic_strain, deformed_volume) -> float\n\nPlastic work σ_y ε_p V (J): yield stress (Pa), plastic strain, deformed volume (m³).", (yield_stress, plastic_strain, deformed_volume));
 
-fn cof_form(obj: Option<&Bound<'_, PyAny>>) -> PyResult<fr::CofForm> {
+pub(crate) fn cof_form(obj: Option<&Bound<'_, PyAny>>) -> PyResult<fr::CofForm> {
     let Some(o) = obj else {
         return Ok(fr::CofForm::default());
     };
@@ -357,56 +357,6 @@ pub(crate) fn load_scene(
     ))
 }
 
-/// The CLI's `--json` summary (src/bin/asperity/slide.rs `summary_json`)
-/// without the plots' `area_load` (written only with `--out`).
-fn summary_json(
-    scene: &Scene,
-    run: &fr::SlideRun,
-    tracks: &[asperity::scene::TrackRun],
-) -> serde_json::Value {
-    let s = &run.summary;
-    let d = s.dissipation;
-    let mut v = serde_json::json!({
-        "mean_cof": s.mean_cof,
-        "mean_friction_force": s.mean_friction_force,
-        "normal_load": s.normal_load,
-        "dissipation": {
-            "chemical": d.chemical,
-            "van_der_waals": d.van_der_waals,
-            "elastic": d.elastic,
-            "plastic": d.plastic,
-        },
-        "mean_true_contact_area": s.mean_true_contact_area,
-        "mean_adhesion_area_share": s.mean_adhesion_area_share,
-        "mean_nano_contacts": s.mean_nano_contacts,
-        "max_yielded_rods": s.max_yielded_rods,
-        "no_contact_steps": s.no_contact_steps,
-        "distance": s.distance,
-        "steps": s.steps,
-        "files": Vec::<String>::new(),
-    });
-    if !tracks.is_empty() {
-        v["friction_models"] = scene
-            .friction_models
-            .iter()
-            .zip(tracks)
-            .map(|(spec, t)| {
-                let m = &t.summary;
-                serde_json::json!({
-                    "name": spec.name,
-                    "model": spec.model.key(),
-                    "mean_cof": m.mean_cof,
-                    "static_cof": m.static_cof,
-                    "mean_friction_force": m.mean_friction_force,
-                    "dissipation": m.dissipation,
-                    "stick_slip_events": m.stick_slip_events,
-                })
-            })
-            .collect();
-    }
-    v
-}
-
 /// run_scene(scene, base=None) -> SceneRun
 ///
 /// Run a sliding scene as ``asperity slide SCENE --json`` does: ``scene`` is
@@ -433,7 +383,7 @@ fn run_scene(
             Ok((run, tracks))
         })
         .map_err(any_err)?;
-    let summary = json_value(py, &summary_json(&scene, &run, &tracks).to_string())?;
+    let summary = json_value(py, &scene.summary_json(&run, &tracks).to_string())?;
     let steps = step_columns(py, &run.steps)?;
     let models = PyList::empty(py);
     for (spec, t) in scene.friction_models.iter().zip(&tracks) {

@@ -565,21 +565,6 @@ fn rename_block(mut e: asperity::contact::BatchError) -> asperity::contact::Batc
 #[pyclass(module = "asperity", frozen, extends = PyFrictionLaw)]
 pub struct HomogenisedFriction;
 
-fn cof_form(obj: Option<&Bound<'_, PyAny>>) -> PyResult<fr::CofForm> {
-    let Some(o) = obj else {
-        return Ok(fr::CofForm::Derjaguin);
-    };
-    match crate::common::string(o, "form")?.as_str() {
-        "amontons" => Ok(fr::CofForm::Amontons),
-        "coulomb" => Ok(fr::CofForm::Coulomb),
-        "derjaguin" => Ok(fr::CofForm::Derjaguin),
-        x => Err(arg_error(
-            "form",
-            format!("must be \"amontons\", \"coulomb\" or \"derjaguin\", got {x:?}"),
-        )),
-    }
-}
-
 fn homogenised(h: fr::HomogenisedFriction) -> PyClassInitializer<HomogenisedFriction> {
     let a = Arc::new(h);
     PyClassInitializer::from(PyFrictionLaw::new(a.clone(), Concrete::Homogenised(a)))
@@ -603,7 +588,8 @@ impl HomogenisedFriction {
         stick_stiffness: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyClassInitializer<Self>> {
         let s: Vec<fr::HomogenisedSample> = crate::common::from_py(samples, "samples")?;
-        let mut h = fr::HomogenisedFriction::from_samples(&s, cof_form(form)?).map_err(rs)?;
+        let mut h = fr::HomogenisedFriction::from_samples(&s, crate::friction::cof_form(form)?)
+            .map_err(rs)?;
         if let Some(k) = real_opt(stick_stiffness, "stick_stiffness")? {
             h = h.with_stick_stiffness(k).map_err(rs)?;
         }

@@ -23,6 +23,27 @@ fn separation<'py>(py: Python<'py>, s: st::SeparationSolution) -> PyResult<Bound
     Ok(d)
 }
 
+/// `f`'s response as the dict ``load``, ``area``, ``contacts``,
+/// ``mean_pressure`` at `x` (named `name`): floats, or arrays for an array.
+fn responses<F>(py: Python<'_>, x: &Bound<'_, PyAny>, name: &str, f: F) -> PyResult<Py<PyAny>>
+where
+    F: Fn(f64) -> asperity::Result<st::MultiAsperityResponse> + Send + Sync,
+{
+    vectorize_record(py, x, name, RESPONSE, |v| f(v).map(record))
+}
+
+/// The separation dict of `f` at the float argument `load`.
+fn separation_at<'py, F>(
+    py: Python<'py>,
+    load: &Bound<'_, PyAny>,
+    f: F,
+) -> PyResult<Bound<'py, PyDict>>
+where
+    F: FnOnce(f64) -> asperity::Result<st::SeparationSolution>,
+{
+    separation(py, f(real(load, "load")?).map_err(rs)?)
+}
+
 /// The summit-height distribution of a statistical model:
 /// ``HeightDistribution.gaussian(sigma)``, ``.exponential(sigma)`` (σ in m)
 /// or ``.empirical(heights, radii=None)`` (a measured list, m).
@@ -179,9 +200,7 @@ impl GreenwoodWilliamson {
     /// separation d (m): floats, or arrays for an array of separations.
     fn response(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
         let g = &self.inner;
-        vectorize_record(py, separation, "separation", RESPONSE, |d| {
-            g.response(d).map(record)
-        })
+        responses(py, separation, "separation", |d| g.response(d))
     }
     /// separation_at_load(load) -> dict
     ///
@@ -192,12 +211,7 @@ impl GreenwoodWilliamson {
         py: Python<'py>,
         load: &Bound<'_, PyAny>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        separation(
-            py,
-            self.inner
-                .separation_at_load(real(load, "load")?)
-                .map_err(rs)?,
-        )
+        separation_at(py, load, |p| self.inner.separation_at_load(p))
     }
     /// plasticity_index(hardness) -> float
     ///
@@ -278,9 +292,7 @@ impl KragelskyRods {
     /// ``load`` (N), ``area`` (m²), ``contacts``, ``mean_pressure`` (Pa).
     fn response(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
         let g = &self.inner;
-        vectorize_record(py, separation, "separation", RESPONSE, |d| {
-            g.response(d).map(record)
-        })
+        responses(py, separation, "separation", |d| g.response(d))
     }
     /// separation_at_load(load) -> dict
     ///
@@ -290,12 +302,7 @@ impl KragelskyRods {
         py: Python<'py>,
         load: &Bound<'_, PyAny>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        separation(
-            py,
-            self.inner
-                .separation_at_load(real(load, "load")?)
-                .map_err(rs)?,
-        )
+        separation_at(py, load, |p| self.inner.separation_at_load(p))
     }
 }
 
@@ -338,9 +345,7 @@ impl BearingCurveRods {
     /// approach x (m).
     fn response(&self, py: Python<'_>, approach: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
         let g = &self.inner;
-        vectorize_record(py, approach, "approach", RESPONSE, |d| {
-            g.response(d).map(record)
-        })
+        responses(py, approach, "approach", |d| g.response(d))
     }
     /// approach_at_load(load) -> float | numpy.ndarray
     ///
@@ -416,9 +421,7 @@ impl Zhuravlev {
     ) -> PyResult<Py<PyAny>> {
         let (a1, a2) = (real(alpha1, "alpha1")?, real(alpha2, "alpha2")?);
         let g = &self.inner;
-        vectorize_record(py, approach, "approach", RESPONSE, |x| {
-            g.linear(a1, a2, x).map(record)
-        })
+        responses(py, approach, "approach", |x| g.linear(a1, a2, x))
     }
     /// approach_at_load_linear(alpha1, alpha2, load) -> float
     ///
@@ -561,8 +564,8 @@ impl PowerLawAsperities {
     ) -> PyResult<Py<PyAny>> {
         let n = real(summit_count, "summit_count")?;
         let (g, h) = (&self.inner, &heights.inner);
-        vectorize_record(py, separation, "separation", RESPONSE, |d| {
-            g.greenwood_williamson(n, h, d).map(record)
+        responses(py, separation, "separation", |d| {
+            g.greenwood_williamson(n, h, d)
         })
     }
     /// zhuravlev_linear(summit_count, alpha1, alpha2, approach) -> dict
@@ -582,8 +585,8 @@ impl PowerLawAsperities {
             real(alpha2, "alpha2")?,
         );
         let g = &self.inner;
-        vectorize_record(py, approach, "approach", RESPONSE, |x| {
-            g.zhuravlev_linear(n, a1, a2, x).map(record)
+        responses(py, approach, "approach", |x| {
+            g.zhuravlev_linear(n, a1, a2, x)
         })
     }
 }

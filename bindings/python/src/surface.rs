@@ -510,6 +510,15 @@ fn gaussian_filter<'py>(
     Ok(d)
 }
 
+/// `f` of each item of `items` as a numpy array.
+fn column<'py, T, U: numpy::Element>(
+    py: Python<'py>,
+    items: &[T],
+    f: impl Fn(&T) -> U,
+) -> Bound<'py, PyArray1<U>> {
+    PyArray1::from_vec(py, items.iter().map(f).collect())
+}
+
 /// peaks(z, dx) -> dict
 ///
 /// Local maxima of heights ``z`` (m, every ``dx`` m): arrays ``index``,
@@ -523,22 +532,10 @@ fn peaks<'py>(
     let h = heights(z)?;
     let p = s::peaks(h.as_slice()?, real(dx, "dx")?).map_err(rz)?;
     let d = PyDict::new(py);
-    d.set_item(
-        "index",
-        PyArray1::from_vec(py, p.iter().map(|q| q.index as i64).collect::<Vec<_>>()),
-    )?;
-    d.set_item(
-        "x",
-        PyArray1::from_vec(py, p.iter().map(|q| q.x).collect::<Vec<_>>()),
-    )?;
-    d.set_item(
-        "height",
-        PyArray1::from_vec(py, p.iter().map(|q| q.height).collect::<Vec<_>>()),
-    )?;
-    d.set_item(
-        "curvature",
-        PyArray1::from_vec(py, p.iter().map(|q| q.curvature).collect::<Vec<_>>()),
-    )?;
+    d.set_item("index", column(py, &p, |q| q.index as i64))?;
+    d.set_item("x", column(py, &p, |q| q.x))?;
+    d.set_item("height", column(py, &p, |q| q.height))?;
+    d.set_item("curvature", column(py, &p, |q| q.curvature))?;
     Ok(d)
 }
 
@@ -561,14 +558,8 @@ fn material_ratio_curve<'py>(
     let c = s::MaterialRatioCurve::new(h.as_slice()?).map_err(rz)?;
     let pts = c.curve(n);
     let d = PyDict::new(py);
-    d.set_item(
-        "ratio",
-        PyArray1::from_vec(py, pts.iter().map(|p| p.0).collect::<Vec<_>>()),
-    )?;
-    d.set_item(
-        "level",
-        PyArray1::from_vec(py, pts.iter().map(|p| p.1).collect::<Vec<_>>()),
-    )?;
+    d.set_item("ratio", column(py, &pts, |p| p.0))?;
+    d.set_item("level", column(py, &pts, |p| p.1))?;
     Ok(d)
 }
 

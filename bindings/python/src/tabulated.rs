@@ -124,6 +124,18 @@ fn assessment<'py>(py: Python<'py>, a: &fidelity::Assessment) -> PyResult<Bound<
     Ok(d)
 }
 
+/// The speed–accuracy table as a list of ``assessment`` dicts.
+fn assessments<'py>(
+    py: Python<'py>,
+    list: &[fidelity::Assessment],
+) -> PyResult<Bound<'py, PyList>> {
+    let l = PyList::empty(py);
+    for a in list {
+        l.append(assessment(py, a)?)?;
+    }
+    Ok(l)
+}
+
 /// assess(radius, e_star, work_of_adhesion, z0) -> dict
 ///
 /// The speed–accuracy table of the adhesive-sphere models (DMT, tabulated
@@ -150,11 +162,7 @@ fn assess<'py>(
     );
     let (list, p_ref, grid) = py.detach(|| fidelity::assess(r, e, w, z)).map_err(rs)?;
     let d = PyDict::new(py);
-    let l = PyList::empty(py);
-    for a in &list {
-        l.append(assessment(py, a)?)?;
-    }
-    d.set_item("assessments", l)?;
+    d.set_item("assessments", assessments(py, &list)?)?;
     d.set_item("reference_pull_off", p_ref)?;
     d.set_item("reference_grid", grid)?;
     Ok(d)
@@ -187,11 +195,7 @@ fn advise<'py>(
     let d = PyDict::new(py);
     d.set_item("choice", a.choice.name())?;
     d.set_item("chosen", assessment(py, &a.chosen)?)?;
-    let l = PyList::empty(py);
-    for x in &a.assessments {
-        l.append(assessment(py, x)?)?;
-    }
-    d.set_item("assessments", l)?;
+    d.set_item("assessments", assessments(py, &a.assessments)?)?;
     d.set_item("tabor", a.tabor)?;
     d.set_item("reference_pull_off", a.reference_pull_off)?;
     d.set_item("reference_grid", a.reference_grid)?;
