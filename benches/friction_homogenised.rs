@@ -97,12 +97,14 @@ fn inputs(law: &HomogenisedFriction) -> Inputs {
             area: Some(&area),
             slip: &slip,
             dt: DT,
+            tangents: 0,
             states: BlockStates::Separate {
                 old: &fresh,
                 new: &mut old,
             },
             tangential_force: &mut f,
             dissipation: Some(&mut d),
+            responses: None,
         },
         &mut law.work(),
     )
@@ -236,12 +238,14 @@ fn main() {
                 area: Some(&inp.area),
                 slip: &inp.slip,
                 dt: DT,
+                tangents: 0,
                 states: BlockStates::Separate {
                     old: &inp.old,
                     new: &mut new,
                 },
                 tangential_force: &mut f,
                 dissipation: Some(&mut d),
+                responses: None,
             },
             &mut block_work,
         )

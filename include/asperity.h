@@ -1754,9 +1754,10 @@ int32_t asperity_friction_step_in_place(const struct AsperityFriction *law,
 // `asperity_friction_state_size`; `new_states` may equal `old_states`,
 // must not partially overlap it), tangential forces out in
 // `tangential_forces[2i]`, `[2i+1]` (N) and the dissipated energy of the
-// increment in `dissipation[i]` (J; may be NULL). No tangents. `work` may
-// be NULL. On an error at point i, the points before i are written, those
-// from i on untouched, and the message names i.
+// increment in `dissipation[i]` (J; may be NULL). No tangents (see
+// `asperity_friction_step_block_responses`). `work` may be NULL. On an
+// error at point i, the points before i are written, those from i on
+// untouched, and the message names i.
 int32_t asperity_friction_step_block(const struct AsperityFriction *law,
                                      size_t n,
                                      const double *normal_forces,
@@ -1781,6 +1782,35 @@ int32_t asperity_friction_step_block_in_place(const struct AsperityFriction *law
                                               double *tangential_forces,
                                               double *dissipation,
                                               struct AsperityFrictionWork *work);
+
+// `asperity_friction_step_block` with each point's full response: the
+// states `old_states[i*m .. (i+1)*m]` -> `new_states[...]` (m =
+// `asperity_friction_state_size`; `new_states` may equal `old_states`,
+// must not partially overlap it) of the points with normal forces
+// `normal_forces[i]` (N), nominal areas `areas[i]` (m^2; NULL: 0 for every
+// point, refused by laws that need them), slip increments
+// `slip_increments[2i]`, `[2i+1]` (m, interleaved) and one `dt` (s), and
+// `responses[i]` (n, required) as `asperity_friction_step` gives it for
+// the increment of point i with `tangents` (0, or
+// `ASPERITY_FRICTION_TANGENT_NORMAL` | `ASPERITY_FRICTION_TANGENT_SLIP`,
+// for every point): the tangential force (N), the dissipated energy (J),
+// the stored energy (J), the regime, and the tangents dF/dN
+// (dimensionless) and dF/d(slip) (N/m) an implicit host needs for its
+// Jacobian. `work` may be NULL; n = 0 reads and writes nothing. Unknown
+// tangent bits are refused first (even with n = 0), NULL `responses`
+// with the other pointers. On an error at point i, the points before i
+// are written, those from i on untouched, and the message names i.
+int32_t asperity_friction_step_block_responses(const struct AsperityFriction *law,
+                                               size_t n,
+                                               const double *normal_forces,
+                                               const double *areas,
+                                               const double *slip_increments,
+                                               double dt,
+                                               int32_t tangents,
+                                               const double *old_states,
+                                               double *new_states,
+                                               struct AsperityFrictionResponse *responses,
+                                               struct AsperityFrictionWork *work);
 
 // Build the law from `n` >= 1 samples at strictly increasing nominal
 // pressures (Pa), their `cof` read as the Derjaguin coefficient

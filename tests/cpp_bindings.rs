@@ -1056,6 +1056,30 @@ fn every_function_dynamic(c: &mut Report) {
     // Point 1 (N = 2) slid 1 µm on the first element in the first
     // increment and nothing in the second (the reversal is elastic).
     c.close(DYN, "maxwell_dissipation_1", 0.0, 0.0);
+    // Loaded 3 µm from rest with responses (N = 2): element 1 slid (at its
+    // reach 2 µm, no radial stiffness left), element 2 sticks: partial
+    // slip, F = −N (μ₁ + k₂·3 µm), dF/dΔs = −N k₂, dF/dN = −(μ₁ + k₂·3 µm),
+    // E = ½N (k₁(2 µm)² + k₂(3 µm)²).
+    c.close(
+        DYN,
+        "maxwell_responses_force_1",
+        -2.0 * (0.2 + 2e4 * 3e-6),
+        1e-15,
+    );
+    c.close(DYN, "maxwell_responses_regime_1", 1.0, 0.0);
+    c.close(DYN, "maxwell_responses_dslip_1", -2.0 * 2e4, 1e-9);
+    c.close(
+        DYN,
+        "maxwell_responses_dnormal_1",
+        -(0.2 + 2e4 * 3e-6),
+        1e-15,
+    );
+    c.rel(
+        DYN,
+        "maxwell_responses_stored_1",
+        0.5 * 2.0 * (1e5 * 4e-12 + 2e4 * 9e-12),
+        1e-12,
+    );
     c.close(CPP, "maxwell_bad_threw", 1.0, 0.0);
     c.close(FFI, "maxwell_bad_status", -2.0, 0.0);
     c.close(FFI, "maxwell_bad_names_argument", 1.0, 0.0);

@@ -117,9 +117,11 @@ fn steps_equal_the_rust_api_bit_for_bit() {
                 area: None,
                 slip: &slip,
                 dt: 1e-3,
+                tangents: 0,
                 states: BlockStates::InPlace(&mut rs),
                 tangential_force: &mut rf,
                 dissipation: Some(&mut rd),
+                responses: None,
             };
             rust.step_block(block, &mut rust.work()).unwrap();
             assert_eq!((&cs, &cf, &cd), (&rs, &rf, &rd));

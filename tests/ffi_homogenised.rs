@@ -467,12 +467,14 @@ fn block_equals_the_rust_api_and_reports_the_element() {
                 area: Some(&a),
                 slip: &sl,
                 dt: 1e-6,
+                tangents: 0,
                 states: BlockStates::Separate {
                     old: &rold,
                     new: &mut rnew,
                 },
                 tangential_force: &mut rf,
                 dissipation: Some(&mut rd),
+                responses: None,
             },
             &mut rw,
         )
@@ -536,9 +538,11 @@ fn block_equals_the_rust_api_and_reports_the_element() {
                 area: Some(&a),
                 slip: &sl,
                 dt: 1e-6,
+                tangents: 0,
                 states: BlockStates::InPlace(&mut s2),
                 tangential_force: &mut f2,
                 dissipation: None,
+                responses: None,
             },
             &mut rw,
         )

@@ -305,9 +305,11 @@ fn block_step_equals_the_rust_block_and_steps_in_place() {
             area: None,
             slip: &slip,
             dt: 1e-4,
+            tangents: 0,
             states: BlockStates::InPlace(&mut r_states),
             tangential_force: &mut rf,
             dissipation: Some(&mut rd),
+            responses: None,
         };
         rs.step_block(block, &mut w).unwrap();
         assert_eq!(bits(&cf), bits(&rf));

@@ -14,6 +14,9 @@ use asperity::friction::dynamic::{
 use asperity::friction::{BlockStates, FrictionBlock};
 use asperity::Error;
 
+#[path = "common/tangents.rs"]
+mod tangents;
+
 fn name(e: Error) -> &'static str {
     match e {
         Error::InvalidArgument { name, .. }
@@ -441,7 +444,7 @@ fn lugre_bad_input_names_the_argument() {
 // -------------------------------------------------------- Maxwell-slip
 
 fn maxwell() -> MaxwellSlip {
-    // Five elements, reaches 1, 2, 4, 8, 16 µm.
+    // Five elements, reaches μᵢ/kᵢ = 1, 2, 4, 4, 8 µm.
     let k = [2e5, 1e5, 5e4, 2.5e4, 1.25e4];
     let mu = [0.2, 0.2, 0.2, 0.1, 0.1];
     MaxwellSlip::new(&k, &mu, 0.0).unwrap()
@@ -557,51 +560,163 @@ fn maxwell_slip_work_equals_dissipation_plus_stored_energy() {
 }
 
 #[test]
-fn maxwell_slip_random_increments_and_tangents() {
+fn maxwell_slip_random_increments() {
     random_increments(&maxwell(), 4, false);
     let viscous = MaxwellSlip::new(&[1e5, 3e4], &[0.25, 0.35], 0.8).unwrap();
     random_increments(&viscous, 5, false);
-    // Consistent tangents against finite differences, in 2-D, with some
-    // elements slipping and some sticking.
-    let m = maxwell();
-    let mut s = vec![0.0; m.state_len()];
-    let mut t = s.clone();
-    m.step(&s, &mut t, &inc(1.0, [5e-6, 1e-6], 1.0), &mut m.work())
-        .unwrap();
-    s.copy_from_slice(&t);
-    let i = FrictionIncrement {
-        normal_force: 4.0,
-        slip: [1.5e-6, -2e-6],
-        dt: 0.5,
-        tangents: TANGENT_NORMAL | TANGENT_SLIP,
-        ..Default::default()
-    };
-    let r = m.step(&s, &mut t, &i, &mut m.work()).unwrap();
-    assert_eq!(r.regime, 1, "partial slip");
-    let f = |n: f64, ds: [f64; 2]| {
-        let mut t = s.clone();
-        m.step(&s, &mut t, &inc(n, ds, 0.5), &mut m.work())
-            .unwrap()
-            .force
-    };
-    let (fp, fm) = (f(4.001, i.slip), f(3.999, i.slip));
-    for c in 0..2 {
-        assert!((r.dforce_dnormal[c] - (fp[c] - fm[c]) / 0.002).abs() <= 1e-9);
+}
+
+/// The element deflections δᵢ (m, 2-D) of a Maxwell-slip state.
+fn deflections(s: &[f64]) -> Vec<[f64; 2]> {
+    s[STATE_MODEL..].chunks(2).map(|d| [d[0], d[1]]).collect()
+}
+
+/// The regime the trial deflections tᵢ = δᵢ + Δs predict (elements of
+/// reach `reach`), and how close (relative to rᵢ) the nearest element is to
+/// its stick–slip switch |tᵢ| = rᵢ.
+fn maxwell_trial(old: &[f64], reach: &[f64], ds: [f64; 2]) -> (i32, f64) {
+    let mut slipping = 0;
+    let mut nearest = f64::INFINITY;
+    for (d, &r) in deflections(old).iter().zip(reach) {
+        let t = (d[0] + ds[0]).hypot(d[1] + ds[1]);
+        slipping += (t > r) as usize;
+        nearest = nearest.min((t - r).abs() / r);
     }
-    for j in 0..2 {
-        let h = 1e-12;
-        let (mut p, mut q) = (i.slip, i.slip);
-        p[j] += h;
-        q[j] -= h;
-        let (fp, fq) = (f(4.0, p), f(4.0, q));
-        for c in 0..2 {
-            let d = (fp[c] - fq[c]) / (2.0 * h);
-            assert!(
-                (r.dforce_dslip[c][j] - d).abs() <= 1e-5 * d.abs().max(1e3),
-                "[{c}][{j}]: {} vs {d}",
-                r.dforce_dslip[c][j]
-            );
+    let regime = match slipping {
+        0 => 0,
+        s if s == reach.len() => 2,
+        _ => 1,
+    };
+    (regime, nearest)
+}
+
+/// Maxwell-slip's consistent tangents (the radial return of five elements
+/// of reach 1–8 µm, σ₂ = 0 and 0.8 N·s/m) against central differences of
+/// the step (`common/tangents.rs`), to 1e-6: stick, partial slip, gross
+/// slip and either side of each element's stick–slip switch (1e-5 of its
+/// reach away), in 2-D, from a fresh and a loaded state; N = 0 (no
+/// contact: dF/dN from above, dF/dΔs = −σ₂/Δt I); elements without
+/// break-away force (μᵢ = 0) neither slip nor stiffen.
+#[test]
+fn maxwell_slip_tangents_match_finite_differences() {
+    let (k, mu) = ([2e5, 1e5, 5e4, 2.5e4, 1.25e4], [0.2, 0.2, 0.2, 0.1, 0.1]);
+    let reach = [0, 1, 2, 3, 4].map(|e| mu[e] / k[e]);
+    let dirs = [[1.0, 0.0], [0.6, -0.8], [-0.28, 0.96]];
+    let dt = 0.5;
+    let mut checked = 0;
+    let mut seen = [false; 3];
+    for sigma2 in [0.0, 0.8] {
+        let m = MaxwellSlip::new(&k, &mu, sigma2).unwrap();
+        let fresh = vec![0.0; m.state_len()];
+        let mut loaded = fresh.clone();
+        for ds in [[9e-6, 1e-6], [-3e-6, 5e-6], [5e-7, -2e-6]] {
+            m.step_in_place(&mut loaded, &inc(1.0, ds, dt), &mut m.work())
+                .unwrap();
         }
+        for old in [&fresh, &loaded] {
+            for n in [4.0, 0.5] {
+                let mut points: Vec<(String, [f64; 2])> = vec![];
+                for d in dirs {
+                    for size in [1e-8, 2e-6, 6e-6, 4e-5] {
+                        points.push((format!("{size:e}"), [size * d[0], size * d[1]]));
+                    }
+                    // Either side of element e's switch |δₑ + s u| = rₑ(1 ± 1e-5).
+                    for (e, de) in deflections(old).into_iter().enumerate() {
+                        for f in [1.0 - 1e-5, 1.0 + 1e-5] {
+                            let du = de[0] * d[0] + de[1] * d[1];
+                            let rr = reach[e] * f;
+                            let s =
+                                -du + (du * du - (de[0] * de[0] + de[1] * de[1]) + rr * rr).sqrt();
+                            if s.is_finite() {
+                                points.push((
+                                    format!("element {e} at {f} of its reach"),
+                                    [s * d[0], s * d[1]],
+                                ));
+                            }
+                        }
+                    }
+                }
+                for (what, ds) in points {
+                    let i = inc(n, ds, dt);
+                    let label = format!("σ₂ = {sigma2}, N = {n}, {what}, Δs = {ds:?}");
+                    let fd = tangents::fd_check(&m, old, &i, 1e-7 * n, 1e-13, &label);
+                    let (regime, nearest) = maxwell_trial(old, &reach, ds);
+                    assert_eq!(fd.response.regime, regime, "{label}");
+                    seen[regime as usize] = true;
+                    if nearest > 1e-6 {
+                        // No switch within the steps (1e-13 m ≤ 1e-7 of
+                        // every reach).
+                        assert!(fd.both(), "{label}: a kink within the steps? {fd:?}");
+                    }
+                    checked += fd.both() as usize;
+                }
+            }
+        }
+        // N = 0: no contact. F = σ₂Δs/Δt; dF/dN = −Σ kᵢδᵢ (from above, the
+        // springs' pull per unit load), dF/dΔs = −σ₂/Δt I.
+        for ds in [[2e-6, -1e-6], [0.0, 0.0], [-3e-5, 1e-5]] {
+            let i = inc(0.0, ds, dt);
+            let label = format!("σ₂ = {sigma2}, N = 0, Δs = {ds:?}");
+            let fd = tangents::fd_check(&m, &loaded, &i, 1e-7, 1e-13, &label);
+            let r = fd.response;
+            assert_eq!(r.regime, 3, "{label}: no contact");
+            assert_eq!(
+                r.force,
+                [-sigma2 * ds[0] / dt, -sigma2 * ds[1] / dt],
+                "{label}"
+            );
+            assert_eq!(r.stored_energy, 0.0);
+            let viscous = sigma2 * (ds[0] * ds[0] + ds[1] * ds[1]) / dt;
+            assert!((r.dissipated - viscous).abs() <= 1e-15 * viscous, "{label}");
+            let c = sigma2 / dt;
+            assert_eq!(r.dforce_dslip, [[-c, 0.0], [0.0, -c]], "{label}");
+            let (mut t, mut spring) = (loaded.clone(), [0.0; 2]);
+            m.step_in_place(&mut t, &i, &mut m.work()).unwrap();
+            for (e, d) in deflections(&t).into_iter().enumerate() {
+                spring[0] += k[e] * d[0];
+                spring[1] += k[e] * d[1];
+            }
+            assert!(spring[0] != 0.0 && spring[1] != 0.0);
+            assert_eq!(r.dforce_dnormal, [-spring[0], -spring[1]], "{label}");
+            assert!(fd.both(), "{label}: {fd:?}");
+        }
+    }
+    assert_eq!(
+        seen, [true; 3],
+        "stick, partial slip and gross slip all met"
+    );
+    assert!(checked > 200, "{checked} points checked");
+    // An element without break-away force (μ = 0) never deflects: no
+    // stiffness, no slip (the other element's stick is stick), and alone
+    // it slides freely (gross slip whenever Δs ≠ 0).
+    let m = MaxwellSlip::new(&[2e5, 5e4], &[0.2, 0.0], 0.0).unwrap();
+    let fresh = vec![0.0; m.state_len()];
+    for ds in [[0.0, 0.0], [1e-8, -2e-8]] {
+        let fd = tangents::fd_check(&m, &fresh, &inc(3.0, ds, dt), 3e-7, 1e-13, "μ = 0 element");
+        let r = fd.response;
+        assert_eq!(r.regime, 0, "{r:?}");
+        assert_eq!(r.dforce_dslip, [[-3.0 * 2e5, 0.0], [0.0, -3.0 * 2e5]]);
+        assert!(fd.both(), "{fd:?}");
+    }
+    let free = MaxwellSlip::new(&[1e5], &[0.0], 0.0).unwrap();
+    let mut new = vec![0.0; free.state_len()];
+    for (ds, regime) in [([0.0, 0.0], 0), ([1e-8, 0.0], 2)] {
+        let r = free
+            .step(
+                &[0.0; 4],
+                &mut new,
+                &FrictionIncrement {
+                    tangents: TANGENT_SLIP,
+                    ..inc(3.0, ds, dt)
+                },
+                &mut free.work(),
+            )
+            .unwrap();
+        assert_eq!(
+            (r.regime, r.force, r.dforce_dslip),
+            (regime, [-0.0, -0.0], [[-0.0; 2]; 2])
+        );
+        assert_eq!(new[STATE_MODEL..], [0.0; 2], "never deflects");
     }
 }
 
@@ -662,9 +777,11 @@ fn in_place<'a>(
         area: None,
         slip,
         dt,
+        tangents: 0,
         states: BlockStates::InPlace(states),
         tangential_force: forces,
         dissipation,
+        responses: None,
     }
 }
 

@@ -11,11 +11,12 @@
 //! never taken from the code.
 
 mod common;
+#[path = "common/tangents.rs"]
+mod tangents;
 
 use approx::assert_relative_eq;
 use asperity::contact::BatchError;
 use asperity::error::Error;
-use asperity::friction::law::{TANGENT_NORMAL, TANGENT_SLIP};
 use asperity::friction::*;
 
 // ------------------------------------------------- allocation counting
@@ -450,87 +451,173 @@ fn energy_balance_of_the_regularised_law() {
     );
 }
 
-/// Central differences of the force in N and in the slip components.
-fn fd_check(h: &HomogenisedFriction, old: &State, i: &FrictionIncrement) {
-    let (_, r) = step(h, old, i);
-    // Tangents are always computed.
-    assert_eq!(r.tangents, TANGENT_NORMAL | TANGENT_SLIP);
-    let en = 1e-6 * i.normal_force;
-    let mut ip = *i;
-    let mut im = *i;
-    ip.normal_force += en;
-    im.normal_force -= en;
-    let (fp, fm) = (step(h, old, &ip).1.force, step(h, old, &im).1.force);
-    for c in 0..2 {
-        let fd = (fp[c] - fm[c]) / (2.0 * en);
-        assert!(
-            (fd - r.dforce_dnormal[c]).abs() <= 1e-6 * (1.0 + fd.abs()),
-            "dF{c}/dN: fd {fd}, analytic {} ({:?})",
-            r.dforce_dnormal[c],
-            r.regime()
-        );
-    }
-    let es = 1e-6 * norm(i.slip).max(1e-9);
-    for j in 0..2 {
-        let mut ip = *i;
-        let mut im = *i;
-        ip.slip[j] += es;
-        im.slip[j] -= es;
-        let (fp, fm) = (step(h, old, &ip).1.force, step(h, old, &im).1.force);
-        for c in 0..2 {
-            let fd = (fp[c] - fm[c]) / (2.0 * es);
-            let scale = r.dforce_dslip[0][0]
-                .abs()
-                .max(r.dforce_dslip[1][1].abs())
-                .max(1.0);
-            assert!(
-                (fd - r.dforce_dslip[c][j]).abs() <= 1e-6 * scale,
-                "dF{c}/ds{j}: fd {fd}, analytic {} ({:?})",
-                r.dforce_dslip[c][j],
-                r.regime()
-            );
-        }
-    }
+/// The slip Δs of size along `dir` (a unit vector) at which the trial
+/// force F_old − kΔs of `old` reaches `radius` (the larger root: moving
+/// out of the cone).
+fn slip_to_radius(old: &State, dir: [f64; 2], k: f64, radius: f64) -> [f64; 2] {
+    let f = force(old);
+    let fu = f[0] * dir[0] + f[1] * dir[1];
+    let s = (fu + (fu * fu - norm(f).powi(2) + radius * radius).sqrt()) / k;
+    [s * dir[0], s * dir[1]]
 }
 
+/// FD step sizes of the increment `i` from `old`: 1e-7 of N, and 1e-7 of
+/// the slip over which the force turns (max(|F_tr|, F_lim)/k with a
+/// stick stiffness, |Δs| rigid–plastic).
+fn fd_steps(h: &HomogenisedFriction, old: &State, i: &FrictionIncrement) -> (f64, f64) {
+    let k = h.stick_stiffness();
+    let lim = step(h, &FRESH, &inc(i.normal_force, 1.0, 0.0))
+        .1
+        .force_magnitude;
+    let hs = if k > 0.0 {
+        let f = force(old);
+        let tr = norm([f[0] - k * i.slip[0], f[1] - k * i.slip[1]]);
+        1e-7 * tr.max(lim) / k
+    } else {
+        1e-7 * norm(i.slip)
+    };
+    (1e-7 * i.normal_force.max(1e-3), hs)
+}
+
+/// The consistent tangents (stick, gross slip, on both sides of the
+/// stick–slip switch, either side of the table's ends, in every COF form,
+/// regularised and rigid–plastic, in 2-D, from a loaded and a fresh state;
+/// N = 0 with and without contact) against central differences of the step
+/// (`common/tangents.rs`), to 1e-6.
 #[test]
 fn tangents_match_finite_differences() {
-    let (h, rigid) = (law(K), law(0.0));
+    // Stick (k > 0): dF/dΔs = −k I, dF/dN = 0, exactly.
     let old = with_force([-30.0, 20.0]);
-    // Stick (k > 0): dF/dΔs = −k I, dF/dN = 0.
-    let i = inc(75.0, 1e-7, 2e-8);
-    let (_, r) = step(&h, &old, &i);
+    let (_, r) = step(&law(K), &old, &inc(75.0, 1e-7, 2e-8));
     assert_eq!(r.regime(), FrictionRegime::Stick);
     assert_eq!(r.dforce_dslip, [[-K, 0.0], [0.0, -K]]);
     assert_eq!(r.dforce_dnormal, [0.0, 0.0]);
-    fd_check(&h, &old, &i);
-    // Slip (k > 0), in the interior of table intervals, 2-D.
-    for (n, sx, sy) in [
-        (75.0, 1e-6, 2e-7),
-        (120.0, -3e-7, 2e-6),
-        (33.0, 2e-6, -2e-6),
-    ] {
-        let i = inc(n, sx, sy);
-        let (_, r) = step(&h, &old, &i);
-        assert_eq!(r.regime(), FrictionRegime::Slip);
-        fd_check(&h, &old, &i);
+    let dirs = [[1.0, 0.0], [0.6, -0.8], [-0.28, 0.96]];
+    // N inside table intervals, right next to the table's ends (p = 10 and
+    // 200 MPa, where μ' jumps to 0) on either side.
+    let loads = [
+        33.0,
+        75.0,
+        120.0,
+        170.0,
+        10.0 * (1.0 - 1e-5),
+        10.0 * (1.0 + 1e-5),
+        200.0 * (1.0 - 1e-5),
+        200.0 * (1.0 + 1e-5),
+    ];
+    let mut checked = 0;
+    for form in [CofForm::Derjaguin, CofForm::Amontons, CofForm::Coulomb] {
+        let table = HomogenisedFriction::from_samples(&copper_samples(), form).unwrap();
+        for k in [K, 0.0] {
+            let h = table.clone().with_stick_stiffness(k).unwrap();
+            for old in [with_force([-30.0, 20.0]), FRESH] {
+                for &n in &loads {
+                    let lim = step(&h, &FRESH, &inc(n, 1.0, 0.0)).1.force_magnitude;
+                    let mut points: Vec<(&str, [f64; 2], bool)> = vec![];
+                    for d in dirs {
+                        // Gross slip.
+                        points.push(("slip", [2e-6 * d[0], 2e-6 * d[1]], true));
+                        if k > 0.0 {
+                            // Stick, and either side of the switch |F_tr| =
+                            // F_lim (1e-5 of F_lim away; the steps move
+                            // |F_tr| and F_lim by 1e-7).
+                            points.push(("stick", [1e-8 * d[0], 1e-8 * d[1]], true));
+                            for (what, f) in
+                                [("below switch", 1.0 - 1e-5), ("above switch", 1.0 + 1e-5)]
+                            {
+                                points.push((what, slip_to_radius(&old, d, k, lim * f), true));
+                            }
+                        }
+                    }
+                    if k == 0.0 {
+                        // Rigid stick without slip: dF/dΔs has no meaning
+                        // (any slip jumps to the rim); dF/dN is checked
+                        // where the old force is capped by the cone.
+                        points.push(("rigid stick", [0.0, 0.0], false));
+                    }
+                    for (what, slip, both) in points {
+                        if !(slip[0].is_finite() && slip[1].is_finite()) {
+                            // The trial force never crosses that radius.
+                            continue;
+                        }
+                        let i = inc(n, slip[0], slip[1]);
+                        let (hn, hs) = fd_steps(&h, &old, &i);
+                        let label = format!("{form:?} k = {k:e} N = {n} {what} {slip:?}");
+                        let fd = tangents::fd_check(
+                            &h,
+                            &old,
+                            &i,
+                            hn,
+                            if hs > 0.0 { hs } else { 1e-12 },
+                            &label,
+                        );
+                        // The regime the trial force predicts.
+                        let f = force(&old);
+                        let tr = norm([f[0] - k * slip[0], f[1] - k * slip[1]]);
+                        let want = if (k > 0.0 && tr <= lim) || slip == [0.0, 0.0] {
+                            FrictionRegime::Stick
+                        } else {
+                            FrictionRegime::Slip
+                        };
+                        assert_eq!(fd.response.regime(), want, "{label}");
+                        match what {
+                            "below switch" => assert_eq!(want, FrictionRegime::Stick),
+                            "above switch" => assert_eq!(want, FrictionRegime::Slip),
+                            _ => {}
+                        }
+                        if both {
+                            assert!(fd.both(), "{label}: a kink within the steps {fd:?}");
+                        } else if norm(force(&old)) > lim {
+                            assert!(fd.normal.is_some(), "{label}");
+                        }
+                        checked += 1;
+                    }
+                }
+            }
+        }
     }
-    // Slip, rigid–plastic (k = 0).
-    for (n, sx, sy) in [(75.0, 1e-6, 2e-7), (170.0, -1e-7, -3e-7)] {
-        let i = inc(n, sx, sy);
-        let (_, r) = step(&rigid, &old, &i);
-        assert_eq!(r.regime(), FrictionRegime::Slip);
-        fd_check(&rigid, &old, &i);
-    }
-    // Amontons and Coulomb forms.
-    for form in [CofForm::Amontons, CofForm::Coulomb] {
-        let h = HomogenisedFriction::from_samples(&copper_samples(), form).unwrap();
-        fd_check(
-            &h.clone().with_stick_stiffness(K).unwrap(),
-            &old,
-            &inc(75.0, 1e-6, 2e-7),
-        );
-        fd_check(&h, &old, &inc(75.0, 1e-6, 2e-7));
+    assert!(checked > 300, "{checked}");
+    // N = 0: with adhesion at zero load (contact), the cone is μ(0)A; with
+    // none, no contact, and dF/dN is the derivative from above (the point
+    // slides on a cone that grows from 0).
+    let mut bare = copper_samples();
+    bare[0].pressure = 0.0;
+    bare[0].adhesion_pressure = 0.0;
+    for (samples, contact) in [(copper_samples(), true), (bare, false)] {
+        for form in [CofForm::Derjaguin, CofForm::Amontons, CofForm::Coulomb] {
+            let table = HomogenisedFriction::from_samples(&samples, form).unwrap();
+            for k in [K, 0.0] {
+                let h = table.clone().with_stick_stiffness(k).unwrap();
+                for (old, slip) in [
+                    (with_force([-30.0, 20.0]), [2e-6, -1e-6]),
+                    (with_force([-30.0, 20.0]), [0.0, 0.0]),
+                    (FRESH, [-1e-6, 3e-6]),
+                ] {
+                    let i = inc(0.0, slip[0], slip[1]);
+                    let label = format!("{form:?} k = {k:e} N = 0 {slip:?} contact {contact}");
+                    let hs = if k > 0.0 {
+                        1e-7 * 40.0 / k
+                    } else {
+                        1e-7 * norm(slip)
+                    };
+                    let fd = tangents::fd_check(&h, &old, &i, 1e-6, hs.max(1e-15), &label);
+                    let r = fd.response;
+                    if contact {
+                        assert_ne!(r.regime(), FrictionRegime::NoContact, "{label}");
+                    } else {
+                        assert_eq!(r.regime(), FrictionRegime::NoContact, "{label}");
+                        assert_eq!(r.force, [0.0, 0.0]);
+                        assert_eq!(r.dforce_dslip, [[0.0; 2]; 2], "{label}");
+                        assert!(norm(r.dforce_dnormal) > 0.0, "{label}: {r:?}");
+                        // Form by form, dF_lim/dN at 0: μ(0)(1 + p_adh'(0)),
+                        // μ(0), μ(0) + p_adh'(0).
+                        let mu = samples[0].cof;
+                        assert!(norm(r.dforce_dnormal) >= mu * (1.0 - 1e-12), "{label}");
+                    }
+                    assert!(fd.normal.is_some(), "{label}: {fd:?}");
+                }
+            }
+        }
     }
 }
 
@@ -714,9 +801,11 @@ fn block<'a>(
         area: Some(area),
         slip,
         dt: 1e-6,
+        tangents: 0,
         states,
         tangential_force,
         dissipation,
+        responses: None,
     }
 }
 

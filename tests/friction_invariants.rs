@@ -40,7 +40,10 @@
 //!   exactly ΔD and state[1] by exactly |Δs| each increment (so they are the
 //!   running sums of the responses, bit for bit); a refused increment or
 //!   state leaves the new state (the state stepped in place, the block's
-//!   points from the failing one on) untouched.
+//!   points from the failing one on) untouched; the block with `responses`
+//!   gives each point's full response, tangents included, bit for bit as
+//!   `step`, and refuses unknown tangent bits or a short `responses` slice
+//!   before writing anything.
 
 mod common;
 #[path = "common/laws.rs"]
@@ -677,5 +680,25 @@ fn every_law_accumulates_dissipation_and_slip_path() {
 fn every_law_refuses_without_writing() {
     for case in laws::all_cases() {
         laws::check_rejections(&case);
+    }
+}
+
+/// The block with `responses` gives each point's full response (forces,
+/// energies, regime, the tangents asked) bit for bit as `step` with the
+/// same tangent bits, states separate and in place (issue 32).
+#[test]
+fn every_law_block_responses_equal_the_scalar_steps() {
+    for case in laws::all_cases() {
+        laws::check_block_responses(&case, 12);
+    }
+}
+
+/// Unknown tangent bits, a `responses` slice of the wrong length, or no
+/// forces and no responses: the block is refused at index 0 before
+/// anything is written.
+#[test]
+fn every_law_block_refuses_bad_tangents_and_responses() {
+    for case in laws::all_cases() {
+        laws::check_block_rejections(&case);
     }
 }

@@ -1079,9 +1079,11 @@ fn block<'a>(
         area: None,
         slip,
         dt: 1e-3,
+        tangents: 0,
         states,
         tangential_force: forces,
         dissipation,
+        responses: None,
     }
 }
 

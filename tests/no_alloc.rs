@@ -164,7 +164,7 @@ fn laws_and_table_lookups_allocate_nothing() {
 /// Prandtl–Tomlinson with one and two springs, Burridge–Knopoff from 1 to
 /// 256 blocks, bristles, the homogenised law, the slider): scalar with
 /// tangents, old and new separate and the same (in place), in place, and
-/// the blocks, with the law's work.
+/// the blocks (with the responses and tangents too), with the law's work.
 #[test]
 fn friction_steps_allocate_nothing() {
     use asperity::ffi::dynamic::*;
@@ -305,6 +305,7 @@ fn friction_steps_allocate_nothing() {
         let slip = [scale, 0.0, -scale, 0.0, 2.0 * scale, 0.0, 0.5 * scale, 0.0];
         let (mut f, mut d) = ([0.0; 8], [0.0; 4]);
         let mut out = FrictionResponse::default();
+        let mut responses = [FrictionResponse::default(); 4];
         // Once, so that the work is at capacity.
         let first = FrictionIncrement {
             normal_force: 1.5 * load,
@@ -367,6 +368,22 @@ fn friction_steps_allocate_nothing() {
                         next.as_mut_ptr(),
                         f.as_mut_ptr(),
                         core::ptr::null_mut(),
+                        work,
+                    ),
+                    ASPERITY_OK
+                );
+                assert_eq!(
+                    asperity_friction_step_block_responses(
+                        h,
+                        4,
+                        normal.as_ptr(),
+                        areas.as_ptr(),
+                        slip.as_ptr(),
+                        1e-6,
+                        k % 4,
+                        next.as_ptr(),
+                        blocks.as_mut_ptr(),
+                        responses.as_mut_ptr(),
                         work,
                     ),
                     ASPERITY_OK

@@ -96,9 +96,11 @@ fn flat_step_does_not_allocate() {
                     area: None,
                     slip: &slip,
                     dt: 1e-3,
+                    tangents: 0,
                     states: BlockStates::InPlace(&mut states),
                     tangential_force: &mut force,
                     dissipation: Some(&mut diss),
+                    responses: None,
                 },
                 &mut work,
             )
@@ -110,12 +112,14 @@ fn flat_step_does_not_allocate() {
                     area: None,
                     slip: &slip,
                     dt: 1e-3,
+                    tangents: 0,
                     states: BlockStates::Separate {
                         old: &states,
                         new: &mut new,
                     },
                     tangential_force: &mut force,
                     dissipation: None,
+                    responses: None,
                 },
                 &mut work,
             )

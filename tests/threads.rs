@@ -318,12 +318,14 @@ fn homogenised_friction_step_and_block() {
                 area: Some(&ar),
                 slip: &sl,
                 dt: 1e-3,
+                tangents: 0,
                 states: BlockStates::Separate {
                     old: &old,
                     new: &mut new,
                 },
                 tangential_force: &mut f,
                 dissipation: Some(&mut d),
+                responses: None,
             };
             law.step_block(block, &mut work).unwrap();
             out.extend(f.iter().chain(&d).map(|x| x.to_bits()));
@@ -390,9 +392,11 @@ fn slider_step_and_block() {
                 area: None,
                 slip: &slips,
                 dt: 1e-3,
+                tangents: 0,
                 states: BlockStates::InPlace(&mut states),
                 tangential_force: &mut f,
                 dissipation: Some(&mut d),
+                responses: None,
             };
             slider.step_block(block, &mut work).unwrap();
             out.extend(f.iter().chain(&d).map(|x| x.to_bits()));
@@ -852,9 +856,11 @@ fn dynamic_friction_models_step_and_block() {
                     area: None,
                     slip: &sl,
                     dt: 1e-6,
+                    tangents: 0,
                     states: BlockStates::InPlace(&mut s),
                     tangential_force: &mut f,
                     dissipation: Some(&mut d),
+                    responses: None,
                 };
                 model.step_block(block, &mut work).unwrap();
                 out.extend(f.iter().chain(&d).chain(&s).map(|x| x.to_bits()));

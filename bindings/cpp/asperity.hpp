@@ -1166,7 +1166,7 @@ public:
     }
 
     /// `asperity_friction_step_block`: `normal_forces.size()` points at once
-    /// (Abaqus VFRIC shape), no tangents. `areas` is empty (0 for every
+    /// (Abaqus VFRIC shape), no tangents (`step_block_responses` gives them). `areas` is empty (0 for every
     /// point; refused by the homogenised law) or one per point (m^2);
     /// `slip_increments` and `tangential_forces` hold two values per point
     /// (x, y interleaved), `old_states` and `new_states` `state_size()` per
@@ -1192,6 +1192,34 @@ public:
         check(asperity_friction_step_block(get(), n, detail::required(normal_forces), area_p,
                                            slip_p, dt, old_p, new_p, force_p, diss_p,
                                            scratch(work)));
+    }
+
+    /// `asperity_friction_step_block_responses`: `step_block` with each
+    /// point's full response in `responses` (one per point: the force (N),
+    /// the dissipated and stored energies (J), the regime, and the tangents
+    /// asked by `tangents`, 0 or `ASPERITY_FRICTION_TANGENT_NORMAL` |
+    /// `ASPERITY_FRICTION_TANGENT_SLIP` for every point: dF/dN and
+    /// dF/d(slip) (N/m) for an implicit host's Jacobian), as `step` gives
+    /// them point by point. `old_states` and `new_states` may be the same
+    /// vector (in place). On an error at point i, the points before i are
+    /// written and the message names element i.
+    void step_block_responses(span<const double> normal_forces, span<const double> areas,
+                              span<const double> slip_increments, double dt,
+                              std::int32_t tangents, span<const double> old_states,
+                              span<double> new_states, span<AsperityFrictionResponse> responses,
+                              FrictionWork* work = nullptr) const
+    {
+        const char* f = "asperity::Friction::step_block_responses";
+        const std::size_t n = normal_forces.size();
+        const std::size_t m = state_size();
+        const double* area_p = detail::optional(areas, n, f, "areas");
+        const double* slip_p = detail::at_least(slip_increments, 2 * n, f, "slip_increments");
+        const double* old_p = detail::at_least(old_states, n * m, f, "old_states");
+        double* new_p = detail::at_least(new_states, n * m, f, "new_states");
+        AsperityFrictionResponse* resp_p = detail::at_least(responses, n, f, "responses");
+        check(asperity_friction_step_block_responses(get(), n, detail::required(normal_forces),
+                                                     area_p, slip_p, dt, tangents, old_p, new_p,
+                                                     resp_p, scratch(work)));
     }
 
     /// `asperity_friction_step_block_in_place`: `step_block` with the

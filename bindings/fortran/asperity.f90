@@ -2265,6 +2265,36 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_friction_step_block
 
+    !> `asperity_friction_step_block` with each point's full response: the states
+    !  `old_states[i*m .. (i+1)*m]` -> `new_states[...]` (m = `asperity_friction_state_size`;
+    !  `new_states` may equal `old_states`, must not partially overlap it) of the points with
+    !  normal forces `normal_forces[i]` (N), nominal areas `areas[i]` (m^2; NULL: 0 for every
+    !  point, refused by laws that need them), slip increments `slip_increments[2i]`,
+    !  `[2i+1]` (m, interleaved) and one `dt` (s), and `responses[i]` (n, required) as
+    !  `asperity_friction_step` gives it for the increment of point i with `tangents` (0, or
+    !  `ASPERITY_FRICTION_TANGENT_NORMAL` | `ASPERITY_FRICTION_TANGENT_SLIP`, for every point).
+    !  `work` may be NULL. On an error at point i, the points before i are written, those from
+    !  i on untouched, and the message names i. The states are addresses (`c_loc`), so that
+    !  one array may be passed as both.
+    function c_asperity_friction_step_block_responses(law, n, normal_forces, areas, &
+        slip_increments, dt, tangents, old_states, new_states, responses, work) result(r) &
+        bind(c, name="asperity_friction_step_block_responses")
+      import
+      implicit none
+      type(c_ptr), value :: law
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: normal_forces(*)
+      type(c_ptr), value :: areas
+      real(c_double), intent(in) :: slip_increments(*)
+      real(c_double), value :: dt
+      integer(c_int32_t), value :: tangents
+      type(c_ptr), value :: old_states
+      type(c_ptr), value :: new_states
+      type(asperity_friction_response), intent(inout) :: responses(*)
+      type(c_ptr), value :: work
+      integer(c_int32_t) :: r
+    end function c_asperity_friction_step_block_responses
+
     !> `asperity_friction_step_block` with the states `states` stepped in place.
     function c_asperity_friction_step_block_in_place(law, n, normal_forces, areas, &
         slip_increments, dt, states, tangential_forces, dissipation, work) result(r) &
@@ -3038,6 +3068,7 @@ module asperity
   public :: c_asperity_friction_step_in_place
   public :: c_asperity_friction_step_block
   public :: c_asperity_friction_step_block_in_place
+  public :: c_asperity_friction_step_block_responses
   public :: c_asperity_slider_options_default
   public :: c_asperity_friction_material_copper
   public :: c_asperity_slider_new
@@ -3129,6 +3160,7 @@ module asperity
   public :: asperity_friction_step_in_place
   public :: asperity_friction_step_block
   public :: asperity_friction_step_block_in_place
+  public :: asperity_friction_step_block_responses
   public :: asperity_slider_options_default
   public :: asperity_friction_material_copper
   public :: asperity_slider_new
@@ -4361,8 +4393,9 @@ contains
   !> opposing slip); when given, the nominal areas `areas(i)` (m^2; the
   !> homogenised law needs them) and the dissipated energy out in
   !> `dissipation(i)` (J); this thread's `work` (absent: a scratch per call).
-  !> No tangents. On an error at C's element i (Fortran's point i + 1), the
-  !> points before it are written and the rest untouched.
+  !> No tangents (`asperity_friction_step_block_responses` gives them). On
+  !> an error at C's element i (Fortran's point i + 1), the points before it
+  !> are written and the rest untouched.
   subroutine asperity_friction_step_block(law, normal_forces, slip_increments, dt, old_states, &
       new_states, tangential_forces, areas, dissipation, work, status)
     type(asperity_friction), intent(in) :: law
@@ -4395,6 +4428,62 @@ contains
         loc_d(areas), slip_increments, dt, p_old, p_new, tangential_forces, loc_d(dissipation), &
         loc_work(work)), what, status)
   end subroutine asperity_friction_step_block
+
+  !> `asperity_friction_step_block` with each point's full response (an
+  !> implicit host's call): the states `old_states(:, i)` to
+  !> `new_states(:, i)` of the points with normal forces `normal_forces(i)` (N), slip increments
+  !> `slip_increments(1:2, i)` (m) and one `dt` (s), and `responses(i)` as
+  !> `asperity_friction_step` gives it with the tangents `tangents` (0, or
+  !> `ASPERITY_FRICTION_TANGENT_NORMAL` + `ASPERITY_FRICTION_TANGENT_SLIP`,
+  !> for every point): the force (N), the dissipated and stored energies
+  !> (J), the regime, dF/dN and dF/d(slip) (N/m); when given, the nominal
+  !> areas `areas(i)` (m^2); this thread's `work` (absent: a scratch per
+  !> call). On an error at C's element i (Fortran's point i + 1), the points
+  !> before it are written and the rest untouched. In place: the raw
+  !> `c_asperity_friction_step_block_responses` with `c_loc` of one array
+  !> as both states (Fortran forbids one actual argument twice here).
+  subroutine asperity_friction_step_block_responses(law, normal_forces, slip_increments, dt, &
+      tangents, old_states, new_states, responses, areas, work, status)
+    type(asperity_friction), intent(in) :: law
+    real(c_double), intent(in) :: normal_forces(:), slip_increments(:, :)
+    real(c_double), intent(in) :: dt
+    integer(c_int32_t), intent(in) :: tangents
+    real(c_double), intent(in), target, contiguous :: old_states(:, :)
+    real(c_double), intent(inout), target, contiguous :: new_states(:, :)
+    type(asperity_friction_response), intent(inout) :: responses(:)
+    real(c_double), intent(in), optional, target, contiguous :: areas(:)
+    type(asperity_friction_work), intent(inout), optional :: work
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_friction_step_block_responses'
+    type(c_ptr) :: p_old, p_new
+    integer :: n, m
+    n = size(normal_forces)
+    if (present(areas)) then
+      if (too_small(what, 'areas', size(areas), n, 'the size of `normal_forces`', status)) return
+    end if
+    if (size(slip_increments, 1) /= 2) then
+      call local_error(what, 'invalid argument `slip_increments`: the first dimension must be '// &
+          '2 (x and y), not '//itoa(int(size(slip_increments, 1), c_int64_t)), status)
+      return
+    end if
+    if (too_small(what, 'slip_increments', size(slip_increments, 2), n, &
+        'columns, the size of `normal_forces`', status)) return
+    if (too_small(what, 'responses', size(responses), n, 'the size of `normal_forces`', status)) &
+        return
+    m = friction_state_len(law, what, status)
+    if (m < 0) return
+    if (bad_states(what, 'old_states', old_states, m, n, status)) return
+    if (bad_states(what, 'new_states', new_states, m, n, status)) return
+    p_old = c_null_ptr
+    p_new = c_null_ptr
+    if (n > 0) then
+      p_old = c_loc(old_states)
+      p_new = c_loc(new_states)
+    end if
+    call check(c_asperity_friction_step_block_responses(law%ptr, int(n, c_size_t), &
+        normal_forces, loc_d(areas), slip_increments, dt, tangents, p_old, p_new, responses, &
+        loc_work(work)), what, status)
+  end subroutine asperity_friction_step_block_responses
 
   !> `asperity_friction_step_block` with the states `states(:, i)` stepped in
   !> place.

@@ -397,6 +397,18 @@ void dynamic_friction()
     check("maxwell_force_0", forces[0]);
     check("maxwell_force_1", forces[2]);
     check("maxwell_dissipation_1", dissipation[1]);
+    // The loading again from rest, with every point's response and
+    // tangents (old == new: in place).
+    std::vector<double> again(states.size(), 0.0);
+    std::array<AsperityFrictionResponse, 2> responses{};
+    ms.step_block_responses(normal, {}, std::array<double, 4>{3e-6, 0.0, 3e-6, 0.0}, 0.0,
+                            ASPERITY_FRICTION_TANGENT_NORMAL | ASPERITY_FRICTION_TANGENT_SLIP,
+                            again, again, responses);
+    check("maxwell_responses_force_1", responses[1].force[0]);
+    check("maxwell_responses_regime_1", static_cast<double>(responses[1].regime));
+    check("maxwell_responses_dslip_1", responses[1].dforce_dslip[0][0]);
+    check("maxwell_responses_dnormal_1", responses[1].dforce_dnormal[0]);
+    check("maxwell_responses_stored_1", responses[1].stored_energy);
     expect_error("maxwell_bad", "`stiffness`", [] {
         const std::array<double, 1> k0{-1.0};
         const std::array<double, 1> m0{0.1};

@@ -36,15 +36,15 @@ program fe_strip_friction
   type(asperity_homogenised_friction) :: table, copy
   type(asperity_friction) :: law, copy_law
   type(asperity_friction_work) :: work
-  real(c_double), allocatable :: state(:, :), fresh(:), scratch(:)
+  real(c_double), allocatable :: state(:, :), fresh(:), scratch(:), next(:, :)
   type(asperity_friction_increment) :: inc
-  type(asperity_friction_response) :: r, r1, r2
+  type(asperity_friction_response) :: r, r1, r2, responses(np)
   real(c_double) :: normal(np), area(np), slip(2, np), force(2, np), diss(np)
   real(c_double) :: x(np), u(np), limit(np)
   real(c_double) :: expected, steady, d_steps, d_states, d_limit_path, min_diss, stick_balance
   real(c_double) :: c, base_old, total, d, sum_spring, p, path1
   integer :: first_slip, all_sliding_from, sliding, i, n, m, mech, plastic_path
-  logical :: stick_below_limit
+  logical :: stick_below_limit, same_responses
   integer(c_int32_t) :: st
   character(len=:), allocatable :: json, msg
 
@@ -171,6 +171,25 @@ program fe_strip_friction
   call copy_law%free()
   call copy%free()
 
+  ! An implicit host's call: every point's full response with both
+  ! tangents, bit-identical to the scalar steps of the same increments.
+  allocate (next(m, np))
+  call asperity_friction_step_block_responses(law, normal, slip, dt, &
+      ASPERITY_FRICTION_TANGENT_NORMAL + ASPERITY_FRICTION_TANGENT_SLIP, state, next, &
+      responses, areas=area, work=work)
+  same_responses = .true.
+  do i = 1, np
+    inc = asperity_friction_increment(normal_force=normal(i), area=area(i), slip=slip(:, i), &
+        dt=dt, tangents=ASPERITY_FRICTION_TANGENT_NORMAL + ASPERITY_FRICTION_TANGENT_SLIP)
+    call asperity_friction_step(law, inc, state(:, i), scratch, r, work)
+    if (any(transfer(r, [0_c_int64_t]) /= transfer(responses(i), [0_c_int64_t])) .or. &
+        any(transfer(scratch, [0_c_int64_t]) /= transfer(next(:, i), [0_c_int64_t]))) &
+        same_responses = .false.
+  end do
+  call check('block_responses_identical', flag(same_responses))
+  call check('block_responses_regime', real(responses(np)%regime, c_double))
+  call check('block_responses_tangents', real(responses(np)%tangents, c_double))
+
   ! Errors: a negative area in the block names the element (0-based, as the
   ! C ABI counts); an empty handle is a NULL pointer.
   area(10) = -1
@@ -197,6 +216,7 @@ program fe_strip_friction
   if (allocated(state)) deallocate (state)
   if (allocated(fresh)) deallocate (fresh)
   if (allocated(scratch)) deallocate (scratch)
+  if (allocated(next)) deallocate (next)
 
 contains
 

@@ -18,7 +18,9 @@
 //!   `asperity_friction_step_in_place` step one point with every output and
 //!   optional tangents; `asperity_friction_step_block` and
 //!   `asperity_friction_step_block_in_place` step n points in the shape of
-//!   Abaqus/Explicit VFRIC.
+//!   Abaqus/Explicit VFRIC (forces and dissipations), and
+//!   `asperity_friction_step_block_responses` steps n points with every
+//!   point's full response and tangents (implicit hosts).
 //!
 //! Sign convention (as VFRIC): the slip increment is the motion of the
 //! point relative to the counter-surface, the tangential force is the force
@@ -29,8 +31,9 @@ use super::slider::AsperitySlider;
 use super::{guard, input, output, partial_overlap, Failure};
 use crate::error::{Error, Result};
 use crate::friction::law::{
-    BlockStates, FrictionBlock, FrictionIncrement, FrictionLaw, FrictionRegime, FrictionResponse,
-    FrictionWork, STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
+    check_tangents, BlockStates, FrictionBlock, FrictionIncrement, FrictionLaw, FrictionRegime,
+    FrictionResponse, FrictionWork, STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH,
+    TANGENT_NORMAL, TANGENT_SLIP,
 };
 
 /// `AsperityFrictionIncrement.tangents` bit: compute dF/dN.
@@ -267,6 +270,16 @@ pub unsafe extern "C" fn asperity_friction_step_in_place(
     })
 }
 
+/// What a block call writes per point: the tangential forces (2n doubles)
+/// and the dissipations (n, or NULL), or the full responses (n).
+enum BlockOut {
+    Forces {
+        tangential_forces: *mut f64,
+        dissipation: *mut f64,
+    },
+    Responses(*mut FrictionResponse),
+}
+
 /// The pointers of a block call, before they become slices.
 struct RawBlock {
     n: usize,
@@ -274,12 +287,12 @@ struct RawBlock {
     areas: *const f64,
     slip_increments: *const f64,
     dt: f64,
-    tangential_forces: *mut f64,
-    dissipation: *mut f64,
+    tangents: i32,
+    out: BlockOut,
 }
 
-/// Steps a block: checks the pointers and sizes, makes the slices (the
-/// states by `states(total)`) and calls the law.
+/// Steps a block: checks the tangent bits, the pointers and sizes, makes
+/// the slices (the states by `states(total)`) and calls the law.
 unsafe fn step_block(
     law: *const AsperityFriction,
     b: RawBlock,
@@ -288,13 +301,23 @@ unsafe fn step_block(
 ) -> i32 {
     guard(|| {
         let l = &*input(law, "law")?.0;
+        check_tangents(b.tangents)?;
         let n = b.n;
         if n == 0 {
             return Ok(());
         }
         input(b.normal_forces, "normal_forces")?;
         input(b.slip_increments, "slip_increments")?;
-        output(b.tangential_forces, "tangential_forces")?;
+        match b.out {
+            BlockOut::Forces {
+                tangential_forces, ..
+            } => {
+                output(tangential_forces, "tangential_forces")?;
+            }
+            BlockOut::Responses(r) => {
+                output(r, "responses")?;
+            }
+        }
         let too_many = || Error::InvalidArgument {
             name: "n",
             value: n as f64,
@@ -304,18 +327,65 @@ unsafe fn step_block(
         let twice = n.checked_mul(2).ok_or_else(too_many)?;
         let states = states(total)?;
         // SAFETY: the caller provides n normal forces, n areas (or NULL),
-        // 2n slips, 2n tangential forces, n dissipations (or NULL).
+        // 2n slips, and either 2n tangential forces and n dissipations (or
+        // NULL), or n responses.
+        let (tangential_force, dissipation, responses) = match b.out {
+            BlockOut::Forces {
+                tangential_forces,
+                dissipation,
+            } => (
+                core::slice::from_raw_parts_mut(tangential_forces, twice),
+                (!dissipation.is_null()).then(|| core::slice::from_raw_parts_mut(dissipation, n)),
+                None,
+            ),
+            BlockOut::Responses(r) => (
+                &mut [][..],
+                None,
+                Some(core::slice::from_raw_parts_mut(r, n)),
+            ),
+        };
         let block = FrictionBlock {
             normal_force: core::slice::from_raw_parts(b.normal_forces, n),
             area: (!b.areas.is_null()).then(|| core::slice::from_raw_parts(b.areas, n)),
             slip: core::slice::from_raw_parts(b.slip_increments, twice),
             dt: b.dt,
+            tangents: b.tangents,
             states,
-            tangential_force: core::slice::from_raw_parts_mut(b.tangential_forces, twice),
-            dissipation: (!b.dissipation.is_null())
-                .then(|| core::slice::from_raw_parts_mut(b.dissipation, n)),
+            tangential_force,
+            dissipation,
+            responses,
         };
         with_work(l, work, |w| l.step_block(block, w)).map_err(|e| Failure::at(e.index, e.error))
+    })
+}
+
+/// The states of `asperity_friction_step_block` and
+/// `asperity_friction_step_block_responses`: `total` doubles at `old_states`
+/// into `new_states`, in place when they are equal.
+unsafe fn separate_or_in_place(
+    old_states: *const f64,
+    new_states: *mut f64,
+    total: usize,
+) -> core::result::Result<BlockStates<'static>, Failure> {
+    input(old_states, "old_states")?;
+    output(new_states, "new_states")?;
+    // SAFETY: the caller provides `total` doubles at each pointer; equal
+    // pointers are one mutable slice, otherwise they do not overlap.
+    if core::ptr::eq(old_states, new_states) {
+        return Ok(BlockStates::InPlace(core::slice::from_raw_parts_mut(
+            new_states, total,
+        )));
+    }
+    if partial_overlap(old_states, new_states, total) {
+        return Err(overlap_error(
+            "new_states",
+            "equal to old_states (in place) or not overlapping it",
+        )
+        .into());
+    }
+    Ok(BlockStates::Separate {
+        old: core::slice::from_raw_parts(old_states, total),
+        new: core::slice::from_raw_parts_mut(new_states, total),
     })
 }
 
@@ -327,9 +397,10 @@ unsafe fn step_block(
 /// `asperity_friction_state_size`; `new_states` may equal `old_states`,
 /// must not partially overlap it), tangential forces out in
 /// `tangential_forces[2i]`, `[2i+1]` (N) and the dissipated energy of the
-/// increment in `dissipation[i]` (J; may be NULL). No tangents. `work` may
-/// be NULL. On an error at point i, the points before i are written, those
-/// from i on untouched, and the message names i.
+/// increment in `dissipation[i]` (J; may be NULL). No tangents (see
+/// `asperity_friction_step_block_responses`). `work` may be NULL. On an
+/// error at point i, the points before i are written, those from i on
+/// untouched, and the message names i.
 #[no_mangle]
 pub unsafe extern "C" fn asperity_friction_step_block(
     law: *const AsperityFriction,
@@ -350,31 +421,14 @@ pub unsafe extern "C" fn asperity_friction_step_block(
         areas,
         slip_increments,
         dt,
-        tangential_forces,
-        dissipation,
+        tangents: 0,
+        out: BlockOut::Forces {
+            tangential_forces,
+            dissipation,
+        },
     };
     step_block(law, b, work, |total| {
-        input(old_states, "old_states")?;
-        output(new_states, "new_states")?;
-        // SAFETY: the caller provides `total` doubles at each pointer;
-        // equal pointers are one mutable slice, otherwise they do not
-        // overlap.
-        if core::ptr::eq(old_states, new_states) {
-            return Ok(BlockStates::InPlace(core::slice::from_raw_parts_mut(
-                new_states, total,
-            )));
-        }
-        if partial_overlap(old_states, new_states, total) {
-            return Err(overlap_error(
-                "new_states",
-                "equal to old_states (in place) or not overlapping it",
-            )
-            .into());
-        }
-        Ok(BlockStates::Separate {
-            old: core::slice::from_raw_parts(old_states, total),
-            new: core::slice::from_raw_parts_mut(new_states, total),
-        })
+        separate_or_in_place(old_states, new_states, total)
     })
 }
 
@@ -399,8 +453,11 @@ pub unsafe extern "C" fn asperity_friction_step_block_in_place(
         areas,
         slip_increments,
         dt,
-        tangential_forces,
-        dissipation,
+        tangents: 0,
+        out: BlockOut::Forces {
+            tangential_forces,
+            dissipation,
+        },
     };
     step_block(law, b, work, |total| {
         output(states, "states")?;
@@ -408,5 +465,50 @@ pub unsafe extern "C" fn asperity_friction_step_block_in_place(
         Ok(BlockStates::InPlace(core::slice::from_raw_parts_mut(
             states, total,
         )))
+    })
+}
+
+/// `asperity_friction_step_block` with each point's full response: the
+/// states `old_states[i*m .. (i+1)*m]` -> `new_states[...]` (m =
+/// `asperity_friction_state_size`; `new_states` may equal `old_states`,
+/// must not partially overlap it) of the points with normal forces
+/// `normal_forces[i]` (N), nominal areas `areas[i]` (m^2; NULL: 0 for every
+/// point, refused by laws that need them), slip increments
+/// `slip_increments[2i]`, `[2i+1]` (m, interleaved) and one `dt` (s), and
+/// `responses[i]` (n, required) as `asperity_friction_step` gives it for
+/// the increment of point i with `tangents` (0, or
+/// `ASPERITY_FRICTION_TANGENT_NORMAL` | `ASPERITY_FRICTION_TANGENT_SLIP`,
+/// for every point): the tangential force (N), the dissipated energy (J),
+/// the stored energy (J), the regime, and the tangents dF/dN
+/// (dimensionless) and dF/d(slip) (N/m) an implicit host needs for its
+/// Jacobian. `work` may be NULL; n = 0 reads and writes nothing. Unknown
+/// tangent bits are refused first (even with n = 0), NULL `responses`
+/// with the other pointers. On an error at point i, the points before i
+/// are written, those from i on untouched, and the message names i.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_friction_step_block_responses(
+    law: *const AsperityFriction,
+    n: usize,
+    normal_forces: *const f64,
+    areas: *const f64,
+    slip_increments: *const f64,
+    dt: f64,
+    tangents: i32,
+    old_states: *const f64,
+    new_states: *mut f64,
+    responses: *mut FrictionResponse,
+    work: *mut AsperityFrictionWork,
+) -> i32 {
+    let b = RawBlock {
+        n,
+        normal_forces,
+        areas,
+        slip_increments,
+        dt,
+        tangents,
+        out: BlockOut::Responses(responses),
+    };
+    step_block(law, b, work, |total| {
+        separate_or_in_place(old_states, new_states, total)
     })
 }

@@ -571,6 +571,22 @@ impl HomogenisedFriction {
         };
         if n + adhesion == 0.0 {
             r.regime = FrictionRegime::NoContact as i32;
+            // F = 0 here; under a load N → 0⁺ the point slides on a cone of
+            // radius F_lim(N) → 0 (or is held at its rim) along the unit
+            // direction of the trial force (k > 0), of −Δs (k = 0), or of
+            // the old force (k = 0, no slip): ∂F/∂N is that direction times
+            // dF_lim/dN, the derivative from above (N ≥ 0); ∂F/∂Δs → 0.
+            let (dx, dy) = if k > 0.0 {
+                (old_force[0] - k * dsx, old_force[1] - k * dsy)
+            } else if dsx != 0.0 || dsy != 0.0 {
+                (-dsx, -dsy)
+            } else {
+                (old_force[0], old_force[1])
+            };
+            let len = norm2(dx, dy);
+            if len > 0.0 && len.is_finite() {
+                r.dforce_dnormal = [dx / len * dlimit, dy / len * dlimit];
+            }
             return Ok((r, 0.0));
         }
 
@@ -708,7 +724,8 @@ impl HomogenisedFriction {
 /// `STATE_MECHANISMS`. Errors beyond the common ones: `area` not > 0;
 /// `old.force`, `old.plastic_slip_path`, `old.mechanisms` (finite, the
 /// accumulators ≥ 0); OutOfDomain when the force, the dissipation or a
-/// tangent overflows f64. Tangents are always computed (they cost nothing).
+/// tangent overflows f64. Tangents are always computed (they cost nothing);
+/// with no contact, ∂F/∂N is the derivative from above (N → 0⁺).
 /// Regimes: stick, slip, no contact (N + A = 0).
 impl FrictionLaw for HomogenisedFriction {
     fn state_len(&self) -> usize {

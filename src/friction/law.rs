@@ -217,6 +217,8 @@ pub enum BlockStates<'a> {
 }
 
 /// n points stepped at once, in the shape of Abaqus/Explicit VFRIC (SI).
+/// Point i is stepped as [`FrictionLaw::step`] would step the increment
+/// `normal_force[i]`, `area[i]`, `slip[2i..2i+2]`, `dt`, `tangents`.
 #[derive(Debug)]
 pub struct FrictionBlock<'a> {
     /// Normal forces N_i (N); n is its length.
@@ -227,13 +229,21 @@ pub struct FrictionBlock<'a> {
     pub slip: &'a [f64],
     /// One time increment Δt (s) for all points.
     pub dt: f64,
+    /// Tangents wanted at every point, as [`FrictionIncrement::tangents`]:
+    /// 0, or [`TANGENT_NORMAL`] | [`TANGENT_SLIP`]; they arrive in
+    /// `responses`.
+    pub tangents: i32,
     /// The states.
     pub states: BlockStates<'a>,
-    /// Tangential forces out, `tangential_force[2i]`, `[2i+1]` (N, 2n).
+    /// Tangential forces out, `tangential_force[2i]`, `[2i+1]` (N, 2n);
+    /// may be empty when `responses` is given (the forces are in them).
     pub tangential_force: &'a mut [f64],
     /// Energy dissipated in the increment per point (J, n values), when
     /// wanted.
     pub dissipation: Option<&'a mut [f64]>,
+    /// Each point's full response (n values: force, energies, regime,
+    /// the tangents asked), when wanted.
+    pub responses: Option<&'a mut [FrictionResponse]>,
 }
 
 /// A friction law stepped once per increment; see the module
@@ -322,9 +332,14 @@ pub trait FrictionLaw: Send + Sync {
     }
 
     /// n points at once ([`FrictionBlock`], the shape of Abaqus/Explicit
-    /// VFRIC), no tangents. Lengths are checked first (an error naming the
-    /// slice at index 0); on an error at point i, the points before i are
-    /// written and the error names i. No allocation once `work` exists.
+    /// VFRIC): the tangential forces and dissipations, and when
+    /// `responses` is given each point's full [`FrictionResponse`] (with
+    /// the tangents `block.tangents` asks), bit-identical to n calls of
+    /// [`Self::step`] (or [`Self::step_in_place`]). The tangent bits and
+    /// the lengths are checked first (an error naming `tangents` or the
+    /// slice, at index 0, nothing written); on an error at point i, the
+    /// points before i are written and the error names i. No allocation
+    /// once `work` exists.
     fn step_block(
         &self,
         block: FrictionBlock<'_>,
@@ -335,22 +350,32 @@ pub trait FrictionLaw: Send + Sync {
             area,
             slip,
             dt,
+            tangents,
             mut states,
             tangential_force,
             mut dissipation,
+            mut responses,
         } = block;
         let n = normal_force.len();
         let m = self.state_len();
         let at0 = |error| BatchError { index: 0, error };
+        check_tangents(tangents).map_err(at0)?;
         let twice = n.checked_mul(2);
         let all = n.checked_mul(m);
         block_len("slip.len()", slip.len(), twice).map_err(at0)?;
-        block_len("tangential_force.len()", tangential_force.len(), twice).map_err(at0)?;
+        // Without forces when the responses carry them.
+        let forces = !(responses.is_some() && tangential_force.is_empty());
+        if forces {
+            block_len("tangential_force.len()", tangential_force.len(), twice).map_err(at0)?;
+        }
         if let Some(a) = area {
             block_len("area.len()", a.len(), Some(n)).map_err(at0)?;
         }
         if let Some(d) = dissipation.as_deref() {
             block_len("dissipation.len()", d.len(), Some(n)).map_err(at0)?;
+        }
+        if let Some(r) = responses.as_deref() {
+            block_len("responses.len()", r.len(), Some(n)).map_err(at0)?;
         }
         match &states {
             BlockStates::Separate { old, new } => {
@@ -365,7 +390,8 @@ pub trait FrictionLaw: Send + Sync {
                 area: area.map_or(0.0, |a| a[i]),
                 slip: [slip[2 * i], slip[2 * i + 1]],
                 dt,
-                ..FrictionIncrement::default()
+                tangents,
+                reserved: 0,
             };
             let range = i * m..(i + 1) * m;
             let r = match &mut states {
@@ -375,10 +401,15 @@ pub trait FrictionLaw: Send + Sync {
                 BlockStates::InPlace(s) => self.step_in_place(&mut s[range], &inc, work),
             }
             .map_err(|error| BatchError { index: i, error })?;
-            tangential_force[2 * i] = r.force[0];
-            tangential_force[2 * i + 1] = r.force[1];
+            if forces {
+                tangential_force[2 * i] = r.force[0];
+                tangential_force[2 * i + 1] = r.force[1];
+            }
             if let Some(d) = dissipation.as_deref_mut() {
                 d[i] = r.dissipated;
+            }
+            if let Some(out) = responses.as_deref_mut() {
+                out[i] = r;
             }
         }
         Ok(())
@@ -440,6 +471,20 @@ fn check_increment(inc: &FrictionIncrement, rate_dependent: bool) -> Result<()> 
     }
 }
 
+/// Checks tangent bits: 0, or [`TANGENT_NORMAL`] | [`TANGENT_SLIP`]; the
+/// error names `tangents`.
+#[inline]
+pub(crate) fn check_tangents(tangents: i32) -> Result<()> {
+    if tangents & !(TANGENT_NORMAL | TANGENT_SLIP) == 0 {
+        Ok(())
+    } else {
+        Err(Error::UnknownSelector {
+            name: "tangents",
+            value: tangents as i64,
+        })
+    }
+}
+
 /// The error of an increment [`check_increment`] refused.
 #[cold]
 #[inline(never)]
@@ -489,7 +534,7 @@ fn length_error(name: &'static str, got: usize) -> Error {
     Error::InvalidArgument {
         name,
         value: got as f64,
-        bound: "equal to the law's state_len() (points times it for a block; areas and dissipations the points, slips and forces twice the points)",
+        bound: "equal to the law's state_len() (points times it for a block; areas, dissipations and responses the points, slips and forces twice the points)",
     }
 }
 

@@ -12,10 +12,15 @@
 //! * [`check_rejections`]: a refused increment or state leaves `new` (or
 //!   the state stepped in place, or the block's points from the failing one
 //!   on) untouched, the error naming the argument;
+//! * [`check_block_responses`], [`check_block_rejections`]: the block with
+//!   `responses` gives each point's response as `step` with the same
+//!   tangent bits, and refuses bad tangent bits or a short `responses`
+//!   slice before writing anything;
 //! * [`c_contract`]: the same through the C handle `AsperityFriction`
 //!   (old == new, NULL work, in place, the blocks, a partial overlap, a
 //!   point count whose states overflow `size_t`), equal to the Rust law bit
-//!   for bit.
+//!   for bit; [`c_block_responses`]: `asperity_friction_step_block_responses`
+//!   as `asperity_friction_step` point by point, its NULL and error cases.
 //!
 //! The laws are also made through C here ([`lugre_params`],
 //! [`two_spring_params`], [`burridge_knopoff_params`], [`c_scene_slider`]),
@@ -568,9 +573,11 @@ impl BlockInputs {
             area: Some(&self.area),
             slip: &self.slip,
             dt: self.dt,
+            tangents: 0,
             states,
             tangential_force: f,
             dissipation: d,
+            responses: None,
         }
     }
 }
@@ -704,6 +711,207 @@ pub fn check_forms(case: &Case, rounds: usize) {
     assert!(sep.chunks(m).all(|s| s[1] > 0.0), "{name}: no slip booked");
 }
 
+/// A response whose every field is a sentinel: shows what a call wrote.
+pub fn sentinel_response() -> FrictionResponse {
+    let x = f64::from_bits(SENTINEL);
+    FrictionResponse {
+        force: [x; 2],
+        force_magnitude: x,
+        normal_force: x,
+        cof: x,
+        adhesion: x,
+        true_contact_area: x,
+        dissipated: x,
+        dissipation: Dissipation {
+            chemical: x,
+            van_der_waals: x,
+            elastic: x,
+            plastic: x,
+        },
+        stored_energy: x,
+        dforce_dnormal: [x; 2],
+        dforce_dslip: [[x; 2]; 2],
+        regime: -7,
+        tangents: -7,
+    }
+}
+
+/// Responses equal bit for bit, slice by slice.
+#[track_caller]
+pub fn same_all(a: &[FrictionResponse], b: &[FrictionResponse], what: &str) {
+    assert_eq!(a.len(), b.len(), "{what}");
+    for (i, (x, y)) in a.iter().zip(b).enumerate() {
+        assert!(same(x, y), "{what}, point {i}:\n{x:?}\n{y:?}");
+    }
+}
+
+/// `step_block` with `responses` (issue 32) along `rounds` rounds of
+/// [`POINTS`] points, the tangents asked cycling through 0, ∂F/∂N, ∂F/∂Δs
+/// and both: every point's response is bit for bit the one `step` gives
+/// with the same tangent bits, and the forces, dissipations and states are
+/// those of the scalar steps, with old and new states separate (forces and
+/// dissipations asked too) and in place (responses only, no force slice).
+pub fn check_block_responses(case: &Case, rounds: usize) {
+    let law = &*case.law;
+    let m = law.state_len();
+    let p = POINTS;
+    let name = case.name;
+    let mut w = law.work();
+    let (mut scalar, mut sep, mut inp) = (vec![0.0; p * m], vec![0.0; p * m], vec![0.0; p * m]);
+    for k in 0..rounds {
+        let tangents = (k % 4) as i32;
+        let mut next = sentinels(p * m);
+        let want: Vec<FrictionResponse> = (0..p)
+            .map(|i| {
+                let inc = FrictionIncrement {
+                    tangents,
+                    ..point_inc(case, k, i)
+                };
+                let r = i * m..(i + 1) * m;
+                law.step(&scalar[r.clone()], &mut next[r], &inc, &mut w)
+                    .unwrap()
+            })
+            .collect();
+        let b = block_inputs(case, k, p);
+        // Separate, with the forces and dissipations.
+        let (mut f, mut d) = (sentinels(2 * p), sentinels(p));
+        let mut out = vec![sentinel_response(); p];
+        let mut new = sentinels(p * m);
+        let separate = BlockStates::Separate {
+            old: &sep,
+            new: &mut new,
+        };
+        law.step_block(
+            FrictionBlock {
+                tangents,
+                responses: Some(&mut out),
+                ..b.block(separate, &mut f, Some(&mut d))
+            },
+            &mut w,
+        )
+        .unwrap();
+        let what = format!("{name} round {k}, tangents {tangents}");
+        same_all(&out, &want, &format!("{what}, separate"));
+        let forces: Vec<f64> = want.iter().flat_map(|r| r.force).collect();
+        let dissipated: Vec<f64> = want.iter().map(|r| r.dissipated).collect();
+        assert_eq!(bits(&f), bits(&forces), "{what}");
+        assert_eq!(bits(&d), bits(&dissipated), "{what}");
+        assert_eq!(bits(&new), bits(&next), "{what}");
+        // In place, the responses only.
+        let mut out = vec![sentinel_response(); p];
+        law.step_block(
+            FrictionBlock {
+                tangents,
+                responses: Some(&mut out),
+                ..b.block(BlockStates::InPlace(&mut inp), &mut [], None)
+            },
+            &mut w,
+        )
+        .unwrap();
+        same_all(&out, &want, &format!("{what}, in place"));
+        assert_eq!(bits(&inp), bits(&next), "{what}, in place");
+        scalar = next;
+        sep = new;
+    }
+}
+
+/// A block whose arguments are wrong as a whole — unknown tangent bits, a
+/// `responses` slice of another length, no forces without responses — is
+/// refused at index 0, naming the argument, before anything is written
+/// (states separate and in place).
+pub fn check_block_rejections(case: &Case) {
+    let law = &*case.law;
+    let m = law.state_len();
+    let p = POINTS;
+    let name = case.name;
+    let mut w = law.work();
+    let b = block_inputs(case, 0, p);
+    let old = vec![0.0; p * m];
+    // (tangents, responses (None: not asked), forces, the name).
+    let faults: [(i32, Option<usize>, usize, &str); 7] = [
+        (4, Some(p), 2 * p, "tangents"),
+        (-1, Some(p), 0, "tangents"),
+        (8, None, 2 * p, "tangents"),
+        (3, Some(p - 1), 2 * p, "responses.len()"),
+        (0, Some(p + 1), 0, "responses.len()"),
+        (0, Some(0), 0, "responses.len()"),
+        (1, None, 0, "tangential_force.len()"),
+    ];
+    for (tangents, responses, forces, want) in faults {
+        for in_place in [false, true] {
+            let what = format!("{name}: tangents {tangents}, {responses:?} responses, {forces} forces, in place {in_place}");
+            let mut out = vec![sentinel_response(); responses.unwrap_or(0)];
+            let (mut f, mut d) = (sentinels(forces), sentinels(p));
+            let mut news = sentinels(p * m);
+            let mut states = old.clone();
+            let st = if in_place {
+                BlockStates::InPlace(&mut states)
+            } else {
+                BlockStates::Separate {
+                    old: &old,
+                    new: &mut news,
+                }
+            };
+            let e = law
+                .step_block(
+                    FrictionBlock {
+                        tangents,
+                        responses: responses.map(|_| &mut out[..]),
+                        ..b.block(st, &mut f, Some(&mut d))
+                    },
+                    &mut w,
+                )
+                .unwrap_err();
+            assert_eq!(
+                (e.index, arg_name(&e.error)),
+                (0, want),
+                "{what}: {}",
+                e.error
+            );
+            assert_eq!(bits(&news), bits(&sentinels(p * m)), "{what}");
+            assert_eq!(bits(&states), bits(&old), "{what}");
+            assert_eq!(bits(&f), bits(&sentinels(forces)), "{what}");
+            assert_eq!(bits(&d), bits(&sentinels(p)), "{what}");
+            let blank = vec![sentinel_response(); out.len()];
+            same_all(&out, &blank, &what);
+        }
+    }
+    // An empty block: nothing to step, but unknown tangent bits are still
+    // refused.
+    let e = law
+        .step_block(
+            FrictionBlock {
+                normal_force: &[],
+                area: None,
+                slip: &[],
+                dt: 0.0,
+                tangents: 5,
+                states: BlockStates::InPlace(&mut []),
+                tangential_force: &mut [],
+                dissipation: None,
+                responses: Some(&mut []),
+            },
+            &mut w,
+        )
+        .unwrap_err();
+    assert_eq!((e.index, arg_name(&e.error)), (0, "tangents"), "{name}");
+    law.step_block(
+        FrictionBlock {
+            normal_force: &[],
+            area: None,
+            slip: &[],
+            dt: 0.0,
+            tangents: 3,
+            states: BlockStates::InPlace(&mut []),
+            tangential_force: &mut [],
+            dissipation: None,
+            responses: Some(&mut []),
+        },
+        &mut w,
+    )
+    .unwrap();
+}
+
 /// Every increment of `case.bad` and two bad old states are refused,
 /// naming the argument, with `new` (the state stepped in place; the block's
 /// points from the failing one on) untouched; wrong state lengths too.
@@ -758,12 +966,19 @@ pub fn check_rejections(case: &Case) {
         let mut news = sentinels(3 * m);
         let mut f = sentinels(6);
         let mut d = sentinels(3);
+        let mut resp = vec![sentinel_response(); 3];
         let separate = BlockStates::Separate {
             old: &olds,
             new: &mut news,
         };
         let e = law
-            .step_block(b.block(separate, &mut f, Some(&mut d)), &mut w)
+            .step_block(
+                FrictionBlock {
+                    responses: Some(&mut resp),
+                    ..b.block(separate, &mut f, Some(&mut d))
+                },
+                &mut w,
+            )
             .unwrap_err();
         assert_eq!(
             (e.index, arg_name(&e.error)),
@@ -776,9 +991,15 @@ pub fn check_rejections(case: &Case) {
         assert_eq!(bits(&news[..m]), bits(&first), "{name}: point 0 ({want})");
         assert_eq!(bits(&f[..2]), bits(&r0.force), "{name}: point 0 ({want})");
         assert_eq!(d[0].to_bits(), r0.dissipated.to_bits());
+        assert!(same(&resp[0], &r0), "{name}: point 0 ({want})");
         assert_eq!(bits(&news[m..]), bits(&sentinels(2 * m)), "{name} ({want})");
         assert_eq!(bits(&f[2..]), bits(&sentinels(4)), "{name} ({want})");
         assert_eq!(bits(&d[1..]), bits(&sentinels(2)), "{name} ({want})");
+        same_all(
+            &resp[1..],
+            &[sentinel_response(); 2],
+            &format!("{name} ({want})"),
+        );
         let mut states = olds.clone();
         let mut f = sentinels(6);
         let e = law
@@ -1113,5 +1334,235 @@ pub unsafe fn c_contract(h: *const AsperityFriction, case: &Case, rounds: usize)
         "{name}: states written"
     );
     assert_eq!(bits(&f), bits(&sentinels(2 * p)), "{name}: forces written");
+    asperity_friction_work_free(work);
+    c_block_responses(h, case, rounds);
+}
+
+/// `asperity_friction_step_block_responses` through the handle `h` (made
+/// through C for `case.law`): every point's response and new state equal
+/// `asperity_friction_step`'s with the same tangent bits (cycling through
+/// 0..=3), old and new separate and equal, a work or NULL, NULL areas when
+/// they are all 0; n = 0 does nothing; NULL `responses` and unknown tangent
+/// bits are refused naming them, and a point count whose states overflow
+/// `size_t` naming `n`, nothing written; an error at point 1 names element
+/// 1, point 0 written, points 1 and 2 untouched.
+///
+/// # Safety
+/// `h` is a live handle.
+pub unsafe fn c_block_responses(h: *const AsperityFriction, case: &Case, rounds: usize) {
+    let name = case.name;
+    let m = case.law.state_len();
+    let p = POINTS;
+    let dt = case.incs[0].dt;
+    let mut work = null_mut();
+    c_ok(asperity_friction_work_new(h, &mut work), name);
+    let mut sep = vec![0.0; p * m];
+    let mut same_ptr = vec![0.0; p * m];
+    for k in 0..rounds {
+        let tangents = (k % 4) as i32;
+        let BlockInputs { nf, area, slip, .. } = block_inputs(case, k, p);
+        let ap = if k % 2 == 1 && area.iter().all(|&a| a == 0.0) {
+            null()
+        } else {
+            area.as_ptr()
+        };
+        // Point by point through asperity_friction_step.
+        let mut want = vec![FrictionResponse::default(); p];
+        let mut next = sentinels(p * m);
+        for i in 0..p {
+            let inc = FrictionIncrement {
+                tangents,
+                ..point_inc(case, k, i)
+            };
+            c_ok(
+                asperity_friction_step(
+                    h,
+                    &inc,
+                    sep[i * m..].as_ptr(),
+                    next[i * m..].as_mut_ptr(),
+                    work,
+                    &mut want[i],
+                ),
+                name,
+            );
+        }
+        let what = format!("{name} block responses {k} (tangents {tangents})");
+        // Separate, a work or NULL.
+        let w = if k % 2 == 0 { work } else { null_mut() };
+        let mut out = vec![sentinel_response(); p];
+        let mut new = sentinels(p * m);
+        c_ok(
+            asperity_friction_step_block_responses(
+                h,
+                p,
+                nf.as_ptr(),
+                ap,
+                slip.as_ptr(),
+                dt,
+                tangents,
+                sep.as_ptr(),
+                new.as_mut_ptr(),
+                out.as_mut_ptr(),
+                w,
+            ),
+            &what,
+        );
+        same_all(&out, &want, &what);
+        assert_eq!(bits(&new), bits(&next), "{what}");
+        // old == new.
+        let q = same_ptr.as_mut_ptr();
+        let mut out = vec![sentinel_response(); p];
+        c_ok(
+            asperity_friction_step_block_responses(
+                h,
+                p,
+                nf.as_ptr(),
+                ap,
+                slip.as_ptr(),
+                dt,
+                tangents,
+                q,
+                q,
+                out.as_mut_ptr(),
+                work,
+            ),
+            &what,
+        );
+        same_all(&out, &want, &format!("{what} (old == new)"));
+        assert_eq!(bits(&same_ptr), bits(&next), "{what} (old == new)");
+        sep = next;
+    }
+    let BlockInputs { nf, area, slip, .. } = block_inputs(case, 0, p);
+    // n = 0: nothing read, nothing written.
+    c_ok(
+        asperity_friction_step_block_responses(
+            h,
+            0,
+            null(),
+            null(),
+            null(),
+            dt,
+            3,
+            null(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+        ),
+        name,
+    );
+    // NULL responses, unknown tangent bits, n too large: refused naming
+    // them, nothing written.
+    let old = vec![0.0; p * m];
+    let mut news = sentinels(p * m);
+    let mut out = vec![sentinel_response(); p];
+    for (tangents, responses, n, want) in [
+        (3, null_mut(), p, "`responses`"),
+        (4, out.as_mut_ptr(), p, "`tangents`"),
+        (-2, out.as_mut_ptr(), 0, "`tangents`"),
+        (0, out.as_mut_ptr(), usize::MAX / m + 1, "`n`"),
+    ] {
+        c_err(
+            asperity_friction_step_block_responses(
+                h,
+                n,
+                nf.as_ptr(),
+                area.as_ptr(),
+                slip.as_ptr(),
+                dt,
+                tangents,
+                old.as_ptr(),
+                news.as_mut_ptr(),
+                responses,
+                work,
+            ),
+            want,
+        );
+        assert_eq!(bits(&news), bits(&sentinels(p * m)), "{name}: {want}");
+        same_all(
+            &out,
+            &vec![sentinel_response(); p],
+            &format!("{name}: {want}"),
+        );
+    }
+    // NULL old or new states; a partial overlap.
+    let mut both = vec![0.0; 2 * p * m];
+    let q = both.as_mut_ptr();
+    for (o, n, want) in [
+        (null(), news.as_mut_ptr(), "`old_states`"),
+        (old.as_ptr(), null_mut(), "`new_states`"),
+        (q.cast_const(), q.add(1), "`new_states`"),
+    ] {
+        c_err(
+            asperity_friction_step_block_responses(
+                h,
+                p,
+                nf.as_ptr(),
+                area.as_ptr(),
+                slip.as_ptr(),
+                dt,
+                0,
+                o,
+                n,
+                out.as_mut_ptr(),
+                work,
+            ),
+            want,
+        );
+        same_all(
+            &out,
+            &vec![sentinel_response(); p],
+            &format!("{name}: {want}"),
+        );
+    }
+    assert_eq!(bits(&both), bits(&vec![0.0; 2 * p * m]), "{name}");
+    // An error at point 1 (the first of the case's faults a block can
+    // carry): element 1 named, point 0 written, points 1 and 2 untouched.
+    let good = case.incs[0];
+    if let Some(&(bad, arg)) = case
+        .bad
+        .iter()
+        .find(|(i, _)| i.dt.to_bits() == good.dt.to_bits() && i.tangents == 0)
+    {
+        let b = BlockInputs::of(&[good, bad, good], good.dt);
+        let olds = vec![0.0; p * m];
+        let mut news = sentinels(p * m);
+        let mut out = vec![sentinel_response(); p];
+        c_err(
+            asperity_friction_step_block_responses(
+                h,
+                p,
+                b.nf.as_ptr(),
+                b.area.as_ptr(),
+                b.slip.as_ptr(),
+                dt,
+                3,
+                olds.as_ptr(),
+                news.as_mut_ptr(),
+                out.as_mut_ptr(),
+                work,
+            ),
+            &format!("`{arg}`"),
+        );
+        let msg = c_message();
+        assert!(msg.starts_with("element 1:"), "{name}: {msg}");
+        let mut first = sentinels(m);
+        let mut r0 = FrictionResponse::default();
+        let inc = FrictionIncrement {
+            tangents: 3,
+            ..good
+        };
+        c_ok(
+            asperity_friction_step(h, &inc, olds.as_ptr(), first.as_mut_ptr(), work, &mut r0),
+            name,
+        );
+        assert!(same(&out[0], &r0), "{name}: point 0 ({arg})");
+        assert_eq!(bits(&news[..m]), bits(&first), "{name}: point 0 ({arg})");
+        same_all(
+            &out[1..],
+            &[sentinel_response(); 2],
+            &format!("{name} ({arg})"),
+        );
+        assert_eq!(bits(&news[m..]), bits(&sentinels(2 * m)), "{name} ({arg})");
+    }
     asperity_friction_work_free(work);
 }

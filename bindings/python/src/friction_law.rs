@@ -9,7 +9,7 @@ use asperity::friction::{
     self as fr, BlockStates, FrictionBlock, FrictionIncrement, FrictionLaw as RsLaw, FrictionWork,
 };
 use asperity::scene::models::DynamicModelSpec;
-use numpy::{PyArray1, PyArray2, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods};
+use numpy::{PyArray1, PyArray2, PyArray3, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use std::sync::{Arc, Mutex};
@@ -181,13 +181,21 @@ impl FrictionResponse {
 }
 
 /// The arrays of a block step: ``tangential_force`` (n×2, N),
-/// ``dissipation`` (n, J, this increment) and ``state`` (n×state_len, the
-/// new states; the input array itself when stepped in place).
+/// ``dissipation`` (n, J, this increment), ``state`` (n×state_len, the
+/// new states; the input array itself when stepped in place), ``regime``
+/// (n, int32: 0 stick, 1 partial slip, 2 slip, 3 no contact),
+/// ``stored_energy`` (n, J), ``dforce_dslip`` (n×2×2, N/m,
+/// ``[i, a, b]`` = ∂F_a/∂Δs_b of point i) and ``dforce_dnormal`` (n×2,
+/// dimensionless); the tangents are zeros unless asked for (``tangents``).
 #[pyclass(module = "asperity", frozen, get_all)]
 pub struct FrictionBlockResponse {
     tangential_force: Py<PyArray2<f64>>,
     dissipation: Py<PyArray1<f64>>,
     state: Py<PyAny>,
+    regime: Py<PyArray1<i32>>,
+    stored_energy: Py<PyArray1<f64>>,
+    dforce_dslip: Py<PyArray3<f64>>,
+    dforce_dnormal: Py<PyArray2<f64>>,
 }
 
 fn slip_arg(obj: Option<&Bound<'_, PyAny>>) -> PyResult<[f64; 2]> {
@@ -410,18 +418,22 @@ impl PyFrictionLaw {
         let (r, record) = res.map_err(rs)?;
         Ok(FrictionResponse { r, record })
     }
-    /// step_block(states, normal_force, slip, dt, area=None, in_place=False) -> FrictionBlockResponse
+    /// step_block(states, normal_force, slip, dt, area=None, in_place=False, tangents=0) -> FrictionBlockResponse
     ///
-    /// n points at once (Abaqus/Explicit VFRIC's shape), no tangents:
-    /// ``states`` (n×state_len float64, C-contiguous; rows all zero = fresh),
+    /// n points at once (Abaqus/Explicit VFRIC's shape): ``states``
+    /// (n×state_len float64, C-contiguous; rows all zero = fresh),
     /// ``normal_force`` (n, N), ``slip`` (n×2 or 2n, m), one ``dt`` (s),
-    /// ``area`` (n, m², or None = 0). Returns the tangential forces (n×2, N),
-    /// the dissipation of the increment per point (n, J) and the new states
-    /// (a new array, or ``states`` itself with ``in_place=True``). The GIL
-    /// is released. On an error at point i the message starts with
+    /// ``area`` (n, m², or None = 0), ``tangents`` (0, or TANGENT_NORMAL |
+    /// TANGENT_SLIP, for every point). Returns the tangential forces (n×2,
+    /// N), the dissipation of the increment per point (n, J), the new
+    /// states (a new array, or ``states`` itself with ``in_place=True``),
+    /// and per point the regime, the stored energy (J) and the tangents
+    /// asked for (∂F/∂Δs n×2×2 N/m, ∂F/∂N n×2; zeros when not asked): what
+    /// ``step`` gives point by point, for an implicit host's Jacobian. The
+    /// GIL is released. On an error at point i the message starts with
     /// ``element i:``; without ``in_place`` nothing is returned, with it
     /// the points before i are stepped.
-    #[pyo3(signature = (states, normal_force, slip, dt, area=None, in_place=false))]
+    #[pyo3(signature = (states, normal_force, slip, dt, area=None, in_place=false, tangents=0))]
     #[allow(clippy::too_many_arguments)]
     fn step_block(
         &self,
@@ -432,6 +444,7 @@ impl PyFrictionLaw {
         dt: &Bound<'_, PyAny>,
         area: Option<&Bound<'_, PyAny>>,
         in_place: bool,
+        tangents: i32,
     ) -> PyResult<FrictionBlockResponse> {
         let nf = array(normal_force, "normal_force")?;
         let nfs = nf.as_slice()?;
@@ -462,6 +475,8 @@ impl PyFrictionLaw {
         let dt = real(dt, "dt")?;
         let force = PyArray2::<f64>::zeros(py, [n, 2], false);
         let diss = PyArray1::<f64>::zeros(py, n, false);
+        let mut responses = vec![fr::FrictionResponse::default(); n];
+        let rsp = responses.as_mut_slice();
         let mut w = self.take();
         let out_state: Py<PyAny>;
         {
@@ -478,9 +493,11 @@ impl PyFrictionLaw {
                             area: ars,
                             slip: sls,
                             dt,
+                            tangents,
                             states: BlockStates::InPlace(s),
                             tangential_force: fs,
                             dissipation: Some(ds),
+                            responses: Some(&mut *rsp),
                         },
                         &mut w,
                     )
@@ -499,9 +516,11 @@ impl PyFrictionLaw {
                             area: ars,
                             slip: sls,
                             dt,
+                            tangents,
                             states: BlockStates::Separate { old: os, new: ns },
                             tangential_force: fs,
                             dissipation: Some(ds),
+                            responses: Some(&mut *rsp),
                         },
                         &mut w,
                     )
@@ -512,10 +531,30 @@ impl PyFrictionLaw {
             self.put(w);
             out_state = res.map_err(|e| batch_err(rename_block(e)))?;
         }
+        // The tangents not asked for are zeros (some laws always compute
+        // them).
+        let normal = tangents & fr::TANGENT_NORMAL != 0;
+        let slips = tangents & fr::TANGENT_SLIP != 0;
+        let regime: Vec<i32> = responses.iter().map(|r| r.regime).collect();
+        let stored: Vec<f64> = responses.iter().map(|r| r.stored_energy).collect();
+        let dslip: Vec<f64> = responses
+            .iter()
+            .flat_map(|r| r.dforce_dslip.into_iter().flatten())
+            .map(|v| if slips { v } else { 0.0 })
+            .collect();
+        let dnormal: Vec<f64> = responses
+            .iter()
+            .flat_map(|r| r.dforce_dnormal)
+            .map(|v| if normal { v } else { 0.0 })
+            .collect();
         Ok(FrictionBlockResponse {
             tangential_force: force.unbind(),
             dissipation: diss.unbind(),
             state: out_state,
+            regime: PyArray1::from_vec(py, regime).unbind(),
+            stored_energy: PyArray1::from_vec(py, stored).unbind(),
+            dforce_dslip: PyArray1::from_vec(py, dslip).reshape([n, 2, 2])?.unbind(),
+            dforce_dnormal: PyArray1::from_vec(py, dnormal).reshape([n, 2])?.unbind(),
         })
     }
     fn __repr__(&self) -> String {

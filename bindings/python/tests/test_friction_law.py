@@ -106,6 +106,54 @@ def test_step_in_place_and_block_agree(name):
         states = block.state
 
 
+@pytest.mark.parametrize("name", ["lugre", "maxwell", "homogenised"])
+def test_block_responses_equal_the_steps(name):
+    # An implicit host's block (issue 32): per point the regime, the stored
+    # energy and the tangents, equal to step(..., tangents=3) point by point;
+    # without tangents asked, the tangent arrays are zeros.
+    law = laws()[name]
+    rng = np.random.default_rng(7)
+    n = 48
+    both = asperity.TANGENT_NORMAL | asperity.TANGENT_SLIP
+    normal = rng.uniform(0.1, 2.0, n)
+    normal[5] = 0.0
+    area = np.full(n, 1e-6)
+    dt = 1e-3
+    states = law.fresh_state(n)
+    regimes = set()
+    for k in range(4):
+        slip = rng.uniform(-2e-6, 2e-6, (n, 2)) * (1e-3 if k == 1 else 1.0)
+        slip[3] = 0.0
+        block = law.step_block(states, normal, slip, dt, area=area, tangents=both)
+        assert block.regime.dtype == np.int32 and block.regime.shape == (n,)
+        assert block.stored_energy.shape == (n,)
+        assert block.dforce_dslip.shape == (n, 2, 2) and block.dforce_dnormal.shape == (n, 2)
+        for i in range(n):
+            r, new = law.step(states[i], normal_force=normal[i], slip=slip[i], dt=dt, area=area[i], tangents=both)
+            assert block.regime[i] == r.regime
+            assert block.stored_energy[i] == r.stored_energy
+            assert np.array_equal(block.dforce_dslip[i], r.dforce_dslip)
+            assert np.array_equal(block.dforce_dnormal[i], r.dforce_dnormal)
+            assert np.array_equal(block.tangential_force[i], r.force)
+            assert block.dissipation[i] == r.dissipated
+            assert np.array_equal(block.state[i], new)
+            regimes.add(int(r.regime))
+        assert np.any(block.dforce_dslip != 0)
+        # In place: the same; no tangents asked: zeros (the rest unchanged).
+        in_place = states.copy()
+        b2 = law.step_block(in_place, normal, slip, dt, area=area, in_place=True, tangents=both)
+        assert b2.state is in_place and np.array_equal(in_place, block.state)
+        assert np.array_equal(b2.dforce_dslip, block.dforce_dslip) and np.array_equal(b2.regime, block.regime)
+        plain = law.step_block(states, normal, slip, dt, area=area)
+        assert not plain.dforce_dslip.any() and not plain.dforce_dnormal.any()
+        assert np.array_equal(plain.regime, block.regime) and np.array_equal(plain.stored_energy, block.stored_energy)
+        assert np.array_equal(plain.tangential_force, block.tangential_force)
+        states = block.state
+    assert len(regimes) >= 2, regimes
+    with pytest.raises(asperity.Error, match="`tangents`"):
+        law.step_block(states, normal, slip, dt, area=area, tangents=4)
+
+
 def test_same_old_state_gives_identical_results():
     m = asperity.LuGre(**LUGRE)
     r, s = m.step(None, normal_force=1.0, slip=1e-6, dt=1e-3)

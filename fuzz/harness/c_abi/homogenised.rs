@@ -1,7 +1,8 @@
 //! Homogenised friction (`src/ffi/homogenised.rs`, and its law through the
 //! one friction handle of `src/ffi/friction_law.rs`): construction from
 //! samples and JSON, the law of a table at a stick stiffness, steps,
-//! blocks (separate, old == new, in place), state sizes, freeing.
+//! blocks (separate, old == new, in place, with responses), state sizes,
+//! freeing.
 
 use super::common::*;
 use super::{pick, take, Ctx, Op};
@@ -173,6 +174,8 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             let f = pick(&ctx.frictions, *friction);
             let law = law_of(f, k.0);
             let form = *n / 9 % 2;
+            let with_responses = *n / 18 % 2 == 1;
+            let tangents = (*n / 36 % 5) as i32;
             let n = *n as usize % 9;
             let val = |i: usize, d: f64| inc.get(i).map_or(d, |f| f.0);
             let normal: Vec<f64> = (0..n).map(|i| val(4 * i, 1.0)).collect();
@@ -222,6 +225,38 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 )
             };
             ok(s, "friction_step_block (homogenised)");
+            // Every other input also steps the block with full responses,
+            // tangent bits 0..=4 (4 unknown), old == new when aliased.
+            if with_responses {
+                let mut responses: Vec<FrictionResponse> = (0..n).map(|_| zeroed()).collect();
+                let mut next = vec![0.0; n * M];
+                let sp = states.as_mut_ptr();
+                let new_p = if nulls.at(4) {
+                    null_mut()
+                } else if *alias {
+                    sp
+                } else {
+                    next.as_mut_ptr()
+                };
+                let s = asperity_friction_step_block_responses(
+                    law,
+                    n,
+                    bufp(&normal, nulls.at(0)),
+                    bufp(&area, nulls.at(1)),
+                    bufp(&slip, nulls.at(2)),
+                    dt.0,
+                    tangents,
+                    if old_null { null() } else { sp },
+                    new_p,
+                    if nulls.at(3) {
+                        null_mut()
+                    } else {
+                        responses.as_mut_ptr()
+                    },
+                    null_mut(),
+                );
+                ok(s, "friction_step_block_responses (homogenised)");
+            }
             asperity_friction_free(law);
         }
         Op::HomStateSize => {

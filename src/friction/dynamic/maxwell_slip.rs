@@ -47,6 +47,7 @@ use super::{
     FrictionWork, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Result};
+use crate::friction::law::FrictionRegime;
 
 /// The parameters of N Maxwell-slip elements (immutable; share between
 /// threads).
@@ -138,6 +139,11 @@ fn element(
     sums: &mut Sums,
 ) -> [f64; 2] {
     let t = [d[0] + ds[0], d[1] + ds[1]];
+    if m == 0.0 {
+        // No break-away force (r = 0): the spring never deflects, carries
+        // no force and has no stiffness; it neither sticks nor slips.
+        return [0.0, 0.0];
+    }
     // Stick when |t| ≤ r, decided on the squares (no square root for a
     // sticking element); a slipping element takes |t| exactly.
     let len2 = t[0] * t[0] + t[1] * t[1];
@@ -169,11 +175,15 @@ fn element(
     e
 }
 
-/// One increment (module docs). Regime: 0 every element sticks, 1 some slip
-/// (pre-sliding), 2 every element with μᵢ > 0 slips (gross sliding).
-/// Tangents are the consistent tangents of the radial return: dF/dN =
-/// −Σ kᵢδᵢ, dF/dΔs = −N Σ kᵢ ∂δᵢ/∂Δs (kᵢ I sticking, kᵢ rᵢ/|tᵢ| (I − nᵢnᵢᵀ)
-/// slipping) − σ₂/Δt I.
+/// One increment (module docs). Regime (counting the elements with μᵢ > 0;
+/// those with μᵢ = 0 never deflect): 0 every element sticks, 1 some slip
+/// (pre-sliding), 2 every element slips (gross sliding; without such
+/// elements, any non-zero slip), 3 no contact when N = 0 (the springs and
+/// blocks carry no force; the viscous term σ₂v remains and the deflections
+/// evolve as for N > 0). Tangents are the consistent tangents of the radial
+/// return: dF/dN = −Σ kᵢδᵢ (at N = 0 the derivative from above),
+/// dF/dΔs = −N Σ kᵢ ∂δᵢ/∂Δs (kᵢ I sticking, kᵢ rᵢ/|tᵢ| (I − nᵢnᵢᵀ)
+/// slipping, 0 for μᵢ = 0) − σ₂/Δt I.
 impl FrictionLaw for MaxwellSlip {
     fn state_len(&self) -> usize {
         STATE_MODEL + 2 * self.elements()
@@ -233,13 +243,16 @@ impl FrictionLaw for MaxwellSlip {
         let mut resp = respond([n * spring[0] + viscous[0], n * spring[1] + viscous[1]], n);
         resp.dissipated = dissipated;
         resp.stored_energy = 0.5 * n * energy;
-        resp.regime = if slipping == 0 {
-            0
-        } else if slipping >= active {
-            2
+        let moving = ds[0] != 0.0 || ds[1] != 0.0;
+        resp.regime = if n == 0.0 {
+            FrictionRegime::NoContact
+        } else if slipping == active && (active > 0 || moving) {
+            FrictionRegime::Slip
+        } else if slipping == 0 {
+            FrictionRegime::Stick
         } else {
-            1
-        };
+            FrictionRegime::PartialSlip
+        } as i32;
         if inc.tangents & TANGENT_NORMAL != 0 {
             resp.dforce_dnormal = [-spring[0], -spring[1]];
         }

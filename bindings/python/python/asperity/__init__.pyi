@@ -517,9 +517,14 @@ class FrictionResponse:
     record: Optional[Dict[str, Any]]
 
 class FrictionBlockResponse:
-    tangential_force: npt.NDArray[np.float64]
-    dissipation: Array
-    state: npt.NDArray[np.float64]
+    # FrictionLaw.step_block's arrays (n points, SI): what step() gives point by point.
+    tangential_force: npt.NDArray[np.float64]  # n×2, N, opposing slip
+    dissipation: Array  # n, J, this increment
+    state: npt.NDArray[np.float64]  # n×state_len, the new states (the input array with in_place=True)
+    regime: npt.NDArray[np.int32]  # n: 0 stick, 1 partial slip, 2 slip, 3 no contact
+    stored_energy: Array  # n, J, at the end of the increment
+    dforce_dslip: npt.NDArray[np.float64]  # n×2×2, N/m, [i, a, b] = dF_a/dΔs_b; zeros unless tangents has TANGENT_SLIP
+    dforce_dnormal: npt.NDArray[np.float64]  # n×2, dimensionless; zeros unless tangents has TANGENT_NORMAL
 
 Slip = Union[float, Tuple[float, float], ArrayLike]
 
@@ -549,6 +554,7 @@ class FrictionLaw:
         dt: Real,
         area: Optional[ArrayLike] = None,
         in_place: bool = False,
+        tangents: int = 0,  # 0, or TANGENT_NORMAL | TANGENT_SLIP for every point
     ) -> FrictionBlockResponse: ...
 
 class HomogenisedFriction(FrictionLaw):
