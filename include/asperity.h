@@ -786,8 +786,10 @@ typedef struct AsperityFrictionIncrement {
     // constant over the increment.
     double normal_force;
     // Nominal area A_n the point represents (m²), finite and ≥ 0; > 0 for
-    // laws that depend on the nominal pressure N/A_n (the homogenised law),
-    // unused by the others.
+    // laws that depend on the nominal pressure N/A_n (the homogenised law)
+    // unless N = 0 too: A_n = 0 with N = 0 is an open gap, no contact
+    // (the homogenised law then releases its stick force). Unused by the
+    // other laws, for which N = 0 is no contact.
     double area;
     // Slip increment Δs of the point relative to the counter-surface (m),
     // two finite components in the caller's tangent basis; a track uses

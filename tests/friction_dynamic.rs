@@ -1704,3 +1704,32 @@ fn bristles_bad_input_names_the_argument() {
     );
     assert!(s.iter().all(|&v| v == 0.0));
 }
+
+/// N = 0 is no contact for the LuGre and bristle models as for
+/// Maxwell-slip: regime 3 whether the point moves or not (the viscous σ₂
+/// term, which does not scale with N, may still act).
+#[test]
+fn zero_load_is_no_contact_for_lugre_and_bristles() {
+    let laws: [(&str, Box<dyn FrictionLaw>); 2] = [
+        ("lugre", Box::new(lugre())),
+        ("bristles", Box::new(brush())),
+    ];
+    for (label, law) in laws {
+        let mut s = vec![0.0; law.state_len()];
+        for (k, ds) in [[0.0, 0.0], [2e-7, 0.0], [-1e-7, 0.0]]
+            .into_iter()
+            .enumerate()
+        {
+            let r = law
+                .step_in_place(&mut s, &inc(0.0, ds, 1e-3), &mut law.work())
+                .unwrap();
+            assert_eq!(r.regime, 3, "{label}, increment {k}");
+            assert!(r.force.iter().all(|f| f.is_finite()), "{label}");
+        }
+        // Loaded again, the regime is a contact one.
+        let r = law
+            .step_in_place(&mut s, &inc(1.0, [1e-7, 0.0], 1e-3), &mut law.work())
+            .unwrap();
+        assert_ne!(r.regime, 3, "{label}");
+    }
+}

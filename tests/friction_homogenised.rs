@@ -709,6 +709,63 @@ fn zero_load_and_no_contact() {
     assert_eq!(r.dissipated, 0.0);
 }
 
+/// An open gap (A_n = 0 with N = 0), what an FE host passes for a node
+/// that is not touching: no contact even with the table's adhesive
+/// pressure (which holds a touching point under zero load), the stick
+/// force released without dissipation, no tangents; the slip path still
+/// counts the motion. N > 0 on no area stays an error.
+#[test]
+fn open_gap_is_no_contact() {
+    let h = law(K);
+    let mut old = with_force([-40.0, 12.0]);
+    old[0] = 0.5;
+    old[PLASTIC] = 2e-6;
+    for slip in [[0.0, 0.0], [3e-7, -1e-7]] {
+        let gap = FrictionIncrement {
+            normal_force: 0.0,
+            area: 0.0,
+            slip,
+            dt: 1e-6,
+            tangents: TANGENT_NORMAL | TANGENT_SLIP,
+            ..Default::default()
+        };
+        let (s, r) = step(&h, &old, &gap);
+        assert_eq!(r.regime(), FrictionRegime::NoContact);
+        assert_eq!(r.force, [0.0, 0.0]);
+        assert_eq!((r.adhesion, r.true_contact_area), (0.0, 0.0));
+        assert_eq!((r.dissipated, r.stored_energy), (0.0, 0.0));
+        assert_eq!(r.dforce_dslip, [[0.0; 2]; 2]);
+        assert_eq!(r.dforce_dnormal, [0.0; 2]);
+        assert_eq!(force(&s), [0.0, 0.0]);
+        assert_eq!(s[0], old[0]);
+        assert_eq!(s[1], old[1] + norm(slip));
+        assert_eq!(s[PLASTIC], old[PLASTIC]);
+    }
+    // The same zero load on a touching point (A_n > 0): adhesive contact.
+    let (_, r) = step(&h, &old, &inc(0.0, 0.0, 0.0));
+    assert_ne!(r.regime(), FrictionRegime::NoContact);
+    assert_eq!(r.adhesion, 0.9 * MPA * AREA);
+    assert_relative_eq!(
+        r.force_magnitude,
+        1.10 * 0.9 * MPA * AREA,
+        max_relative = 1e-15
+    );
+    // A load on no area has no pressure.
+    invalid(
+        h.step(
+            &old,
+            &mut FRESH.clone(),
+            &FrictionIncrement {
+                normal_force: 1.0,
+                area: 0.0,
+                ..Default::default()
+            },
+            &mut h.work(),
+        ),
+        "area",
+    );
+}
+
 #[test]
 fn slip_reversal_and_direction_changes() {
     let (h, rigid) = (law(K), law(0.0));

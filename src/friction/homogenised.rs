@@ -544,6 +544,16 @@ impl HomogenisedFriction {
         let (n, a_n) = (inc.normal_force, inc.area);
         let [dsx, dsy] = inc.slip;
         let k = self.stick_stiffness;
+        if a_n == 0.0 {
+            // An open gap (N = 0, checked): no contact, no adhesion, the
+            // stick force released without dissipation, no tangents.
+            let r = FrictionResponse {
+                regime: FrictionRegime::NoContact as i32,
+                tangents: TANGENT_NORMAL | TANGENT_SLIP,
+                ..FrictionResponse::default()
+            };
+            return Ok((r, 0.0));
+        }
 
         let p = n / a_n;
         let q = self.point(p);
@@ -726,15 +736,27 @@ impl HomogenisedFriction {
 /// accumulators ≥ 0); OutOfDomain when the force, the dissipation or a
 /// tangent overflows f64. Tangents are always computed (they cost nothing);
 /// with no contact, ∂F/∂N is the derivative from above (N → 0⁺).
-/// Regimes: stick, slip, no contact (N + A = 0).
+/// Regimes: stick, slip, no contact (N + A = 0, or an open gap: A_n = 0
+/// with N = 0, which releases the stick force; an FE host passes it for a
+/// node whose gap is open, since with A_n > 0 the table's adhesive
+/// pressure holds a point under zero load).
 impl FrictionLaw for HomogenisedFriction {
     fn state_len(&self) -> usize {
         Self::STATE_LEN
     }
 
     fn check(&self, increment: &FrictionIncrement) -> Result<()> {
-        check::positive("area", increment.area)?;
-        Ok(())
+        // A_n = 0 with N = 0 is an open gap (no contact); otherwise the
+        // nominal pressure N/A_n needs A_n > 0.
+        let a = increment.area;
+        if a > 0.0 || (a == 0.0 && increment.normal_force == 0.0) {
+            return Ok(());
+        }
+        Err(Error::InvalidArgument {
+            name: "area",
+            value: a,
+            bound: "finite and > 0 (0 only with normal_force = 0: an open gap)",
+        })
     }
 
     #[inline]

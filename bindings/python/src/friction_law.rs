@@ -738,6 +738,45 @@ impl Slider {
         out.set_item("summary", to_py_value(py, &run.summary)?)?;
         Ok(out.into_any().unbind())
     }
+    /// The nominal area of the slider n·w·D (m²).
+    #[getter]
+    fn nominal_area(self_: PyRef<'_, Self>) -> f64 {
+        as_slider(self_.as_super()).nominal_area()
+    }
+    /// The load capacity of its rods n·σ_y·w·D (N); a nominal pressure
+    /// above capacity/nominal_area cannot be carried.
+    #[getter]
+    fn capacity(self_: PyRef<'_, Self>) -> f64 {
+        as_slider(self_.as_super()).capacity()
+    }
+    /// homogenise(pressures, distance, step, stick_stiffness=0.0) -> HomogenisedFriction
+    ///
+    /// The homogenised friction law of this slider for FE integration
+    /// points: one fixed-load run over ``distance`` in increments of
+    /// ``step`` (m) at each nominal pressure of ``pressures`` (Pa,
+    /// increasing, each within capacity/nominal_area), tabulated in the
+    /// slider's COF form (Rust ``Slider::homogenise``), with the stick
+    /// stiffness ``stick_stiffness`` (N/m). The GIL is released.
+    #[pyo3(signature = (pressures, distance, step, stick_stiffness=None))]
+    fn homogenise(
+        self_: PyRef<'_, Self>,
+        py: Python<'_>,
+        pressures: &Bound<'_, PyAny>,
+        distance: &Bound<'_, PyAny>,
+        step: &Bound<'_, PyAny>,
+        stick_stiffness: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<HomogenisedFriction>> {
+        let p = array(pressures, "pressures")?;
+        let ps = p.as_slice()?.to_vec();
+        let (d, s) = (real(distance, "distance")?, real(step, "step")?);
+        let k = real_opt(stick_stiffness, "stick_stiffness")?;
+        let sl = as_slider(self_.as_super());
+        let mut h = py.detach(|| sl.homogenise(&ps, d, s)).map_err(rs)?;
+        if let Some(k) = k {
+            h = h.with_stick_stiffness(k).map_err(rs)?;
+        }
+        Py::new(py, homogenised(h))
+    }
 }
 
 macro_rules! dynamic_class {

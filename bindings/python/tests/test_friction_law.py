@@ -181,6 +181,30 @@ def test_slider_patch_law_equals_its_slide():
     assert whole["summary"]["mean_cof"] == full.summary["mean_cof"]
 
 
+def test_slider_homogenise_reproduces_a_run():
+    """The homogenised law built from the slider's runs (Rust
+    Slider::homogenise): at each sampled pressure its slip force equals the
+    mean friction force of a separate fixed-load run of the slider."""
+    path = example("scenes", "chapter6_copper.json")
+    slider = asperity.Slider.from_scene(path)
+    area, cap = slider.nominal_area, slider.capacity
+    assert area > 0 and cap > 0
+    pressures = [0.1 * cap / area, 0.3 * cap / area]
+    distance, step = 30e-6, 1.5e-6
+    law = slider.homogenise(pressures, distance, step, stick_stiffness=1e6)
+    assert law.stick_stiffness == 1e6
+    assert [s["pressure"] for s in law.samples()] == pressures
+    rigid = asperity.HomogenisedFriction(law.samples(), form="derjaguin")
+    for p in pressures:
+        scene = json.loads(path.read_text())
+        scene["loading"] = {"fixed_load": {"load": p * area}}
+        run = asperity.Slider.from_scene(scene, base=path.parent).slide(distance, step)
+        r, _ = rigid.step(None, normal_force=p * area, area=area, slip=1e-7)
+        assert r.force_magnitude == pytest.approx(run["summary"]["mean_friction_force"], rel=1e-12)
+    with pytest.raises(asperity.Error, match="capacity"):
+        slider.homogenise([2.0 * cap / area], distance, step)
+
+
 def test_dynamic_models_equal_the_scene_tracks():
     path = example("scenes", "dynamic_models.json")
     scene = json.loads(path.read_text())

@@ -41,8 +41,8 @@
 //!   friction", J. Dyn. Sys., Meas., Control 113 (1991) 354–362.
 
 use super::{
-    book, check_elements, respond, track_only, FrictionIncrement, FrictionLaw, FrictionResponse,
-    FrictionWork, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book, check_elements, respond, track_only, FrictionIncrement, FrictionLaw, FrictionRegime,
+    FrictionResponse, FrictionWork, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Result};
 
@@ -164,12 +164,14 @@ impl FrictionLaw for Bristles {
         let mut resp = respond([n * spring + viscous, 0.0], n);
         resp.dissipated = dissipated;
         resp.stored_energy = 0.5 * n * energy;
-        resp.regime = if snapped == 0 {
-            0
+        resp.regime = if n == 0.0 {
+            FrictionRegime::NoContact as i32
+        } else if snapped == 0 {
+            FrictionRegime::Stick as i32
         } else if snapped == self.bristles() {
-            2
+            FrictionRegime::Slip as i32
         } else {
-            1
+            FrictionRegime::PartialSlip as i32
         };
         if inc.tangents & TANGENT_NORMAL != 0 {
             resp.dforce_dnormal = [-spring, 0.0];

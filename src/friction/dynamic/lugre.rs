@@ -58,8 +58,8 @@
 //!   45 (2000) 830–832.
 
 use super::{
-    book_path, norm, read, respond, FrictionIncrement, FrictionLaw, FrictionResponse, FrictionWork,
-    STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
+    book_path, norm, read, respond, FrictionIncrement, FrictionLaw, FrictionRegime,
+    FrictionResponse, FrictionWork, STATE_MODEL, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 
@@ -359,7 +359,13 @@ impl FrictionLaw for LuGre {
         let mut r = respond(step.force(n), n);
         r.dissipated = step.dissipated;
         r.stored_energy = 0.5 * n * self.sigma0 * (step.z[0] * step.z[0] + step.z[1] * step.z[1]);
-        r.regime = if inc.slip == [0.0, 0.0] { 0 } else { 2 };
+        r.regime = if n == 0.0 {
+            FrictionRegime::NoContact as i32
+        } else if inc.slip == [0.0, 0.0] {
+            FrictionRegime::Stick as i32
+        } else {
+            FrictionRegime::Slip as i32
+        };
         if inc.tangents & TANGENT_NORMAL != 0 {
             r.dforce_dnormal = [-step.bristle[0], -step.bristle[1]];
         }

@@ -80,8 +80,8 @@ pub use stick_slip::{stick_slip, SlipEvent, StickSlip};
 
 pub(crate) use super::law::{book_path, read};
 pub use super::law::{
-    FrictionIncrement, FrictionLaw, FrictionResponse, FrictionWork, STATE_DISSIPATION, STATE_MODEL,
-    STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
+    FrictionIncrement, FrictionLaw, FrictionRegime, FrictionResponse, FrictionWork,
+    STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use crate::error::{check, Error, Result};
 
