@@ -179,9 +179,10 @@ fn element(
 /// those with μᵢ = 0 never deflect): 0 every element sticks, 1 some slip
 /// (pre-sliding), 2 every element slips (gross sliding; without such
 /// elements, any non-zero slip), 3 no contact when N = 0 (the springs and
-/// blocks carry no force; the viscous term σ₂v remains and the deflections
-/// evolve as for N > 0). Tangents are the consistent tangents of the radial
-/// return: dF/dN = −Σ kᵢδᵢ (at N = 0 the derivative from above),
+/// blocks carry no force; the viscous term σ₂v remains, and the elements
+/// are released to rest: no junction survives a separation). Tangents are
+/// the consistent tangents of the radial return: dF/dN = −Σ kᵢδᵢ (at N = 0
+/// the derivative from above, with the deflections the slip would give),
 /// dF/dΔs = −N Σ kᵢ ∂δᵢ/∂Δs (kᵢ I sticking, kᵢ rᵢ/|tᵢ| (I − nᵢnᵢᵀ)
 /// slipping, 0 for μᵢ = 0) − σ₂/Δt I.
 impl FrictionLaw for MaxwellSlip {
@@ -240,6 +241,14 @@ impl FrictionLaw for MaxwellSlip {
         };
         let dissipated = n * slipped + (viscous[0] * ds[0] + viscous[1] * ds[1]);
         book(old, new, dissipated, ds);
+        if n == 0.0 {
+            // No contact: no junctions, so nothing stays deflected (and
+            // nothing was stored: the springs are N kᵢ). A point that closes
+            // again starts from rest, not from where its motion while open
+            // dragged the elements. The tangents below are those from above
+            // (N → 0⁺), from the deflections before this release.
+            new[STATE_MODEL..].fill(0.0);
+        }
         let mut resp = respond([n * spring[0] + viscous[0], n * spring[1] + viscous[1]], n);
         resp.dissipated = dissipated;
         resp.stored_energy = 0.5 * n * energy;
