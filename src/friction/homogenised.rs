@@ -529,6 +529,37 @@ impl HomogenisedFriction {
         self.stick_stiffness
     }
 
+    /// Books into `r` the release of the stick force `old_force` when the
+    /// point loses contact (F → 0 at once): its stored energy |F|²/2k is
+    /// lost, so it is dissipated (split by `shares`); 0 when k = 0.
+    fn release(
+        &self,
+        old_force: [f64; 2],
+        shares: &[f64; 4],
+        r: &mut FrictionResponse,
+    ) -> Result<()> {
+        let k = self.stick_stiffness;
+        if k > 0.0 {
+            let f = norm2(old_force[0], old_force[1]);
+            let e = (0.5 * f / k) * f;
+            if !e.is_finite() {
+                return Err(Error::OutOfDomain {
+                    name: "stick_stiffness",
+                    value: k,
+                    reason: "the released stored energy |F|^2/(2k) overflows f64 (stick stiffness too small for the old force)",
+                });
+            }
+            r.dissipated = e;
+            r.dissipation = Dissipation {
+                chemical: e * shares[0],
+                van_der_waals: e * shares[1],
+                elastic: e * shares[2],
+                plastic: e * shares[3],
+            };
+        }
+        Ok(())
+    }
+
     /// The return mapping of one step (module documentation) from the old
     /// stick force `old_force` (N), on a checked increment with A_n > 0.
     /// Returns the response and the plastic slip length Δλ (m). Errors:
@@ -545,13 +576,15 @@ impl HomogenisedFriction {
         let [dsx, dsy] = inc.slip;
         let k = self.stick_stiffness;
         if a_n == 0.0 {
-            // An open gap (N = 0, checked): no contact, no adhesion, the
-            // stick force released without dissipation, no tangents.
-            let r = FrictionResponse {
+            // An open gap (N = 0, checked): no contact, no adhesion, no
+            // tangents; the stick force is released and its stored energy
+            // lost (booked as dissipated, split as at zero pressure).
+            let mut r = FrictionResponse {
                 regime: FrictionRegime::NoContact as i32,
                 tangents: TANGENT_NORMAL | TANGENT_SLIP,
                 ..FrictionResponse::default()
             };
+            self.release(old_force, &self.first.shares, &mut r)?;
             return Ok((r, 0.0));
         }
 
@@ -597,6 +630,7 @@ impl HomogenisedFriction {
             if len > 0.0 && len.is_finite() {
                 r.dforce_dnormal = [dx / len * dlimit, dy / len * dlimit];
             }
+            self.release(old_force, &q.shares, &mut r)?;
             return Ok((r, 0.0));
         }
 
@@ -737,9 +771,10 @@ impl HomogenisedFriction {
 /// tangent overflows f64. Tangents are always computed (they cost nothing);
 /// with no contact, ∂F/∂N is the derivative from above (N → 0⁺).
 /// Regimes: stick, slip, no contact (N + A = 0, or an open gap: A_n = 0
-/// with N = 0, which releases the stick force; an FE host passes it for a
-/// node whose gap is open, since with A_n > 0 the table's adhesive
-/// pressure holds a point under zero load).
+/// with N = 0; an FE host passes it for a node whose gap is open, since
+/// with A_n > 0 the table's adhesive pressure holds a point under zero
+/// load). No contact releases the stick force; its stored energy |F|²/2k
+/// is booked as dissipated, so the energy balance closes.
 impl FrictionLaw for HomogenisedFriction {
     fn state_len(&self) -> usize {
         Self::STATE_LEN
