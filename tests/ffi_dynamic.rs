@@ -119,7 +119,7 @@ fn steps_equal_the_rust_api_bit_for_bit() {
                 dt: 1e-3,
                 tangents: 0,
                 states: BlockStates::InPlace(&mut rs),
-                tangential_force: &mut rf,
+                tangential_force: Some(&mut rf),
                 dissipation: Some(&mut rd),
                 responses: None,
             };

@@ -307,7 +307,7 @@ fn block_step_equals_the_rust_block_and_steps_in_place() {
             dt: 1e-4,
             tangents: 0,
             states: BlockStates::InPlace(&mut r_states),
-            tangential_force: &mut rf,
+            tangential_force: Some(&mut rf),
             dissipation: Some(&mut rd),
             responses: None,
         };

@@ -788,7 +788,7 @@ fn in_place<'a>(
         dt,
         tangents: 0,
         states: BlockStates::InPlace(states),
-        tangential_force: forces,
+        tangential_force: Some(forces),
         dissipation,
         responses: None,
     }

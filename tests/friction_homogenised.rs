@@ -877,7 +877,7 @@ fn block<'a>(
         dt: 1e-6,
         tangents: 0,
         states,
-        tangential_force,
+        tangential_force: Some(tangential_force),
         dissipation,
         responses: None,
     }

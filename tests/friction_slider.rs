@@ -1081,7 +1081,7 @@ fn block<'a>(
         dt: 1e-3,
         tangents: 0,
         states,
-        tangential_force: forces,
+        tangential_force: Some(forces),
         dissipation,
         responses: None,
     }

@@ -323,7 +323,7 @@ fn homogenised_friction_step_and_block() {
                     old: &old,
                     new: &mut new,
                 },
-                tangential_force: &mut f,
+                tangential_force: Some(&mut f),
                 dissipation: Some(&mut d),
                 responses: None,
             };
@@ -394,7 +394,7 @@ fn slider_step_and_block() {
                 dt: 1e-3,
                 tangents: 0,
                 states: BlockStates::InPlace(&mut states),
-                tangential_force: &mut f,
+                tangential_force: Some(&mut f),
                 dissipation: Some(&mut d),
                 responses: None,
             };
@@ -858,7 +858,7 @@ fn dynamic_friction_models_step_and_block() {
                     dt: 1e-6,
                     tangents: 0,
                     states: BlockStates::InPlace(&mut s),
-                    tangential_force: &mut f,
+                    tangential_force: Some(&mut f),
                     dissipation: Some(&mut d),
                     responses: None,
                 };

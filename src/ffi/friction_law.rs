@@ -334,15 +334,11 @@ unsafe fn step_block(
                 tangential_forces,
                 dissipation,
             } => (
-                core::slice::from_raw_parts_mut(tangential_forces, twice),
+                Some(core::slice::from_raw_parts_mut(tangential_forces, twice)),
                 (!dissipation.is_null()).then(|| core::slice::from_raw_parts_mut(dissipation, n)),
                 None,
             ),
-            BlockOut::Responses(r) => (
-                &mut [][..],
-                None,
-                Some(core::slice::from_raw_parts_mut(r, n)),
-            ),
+            BlockOut::Responses(r) => (None, None, Some(core::slice::from_raw_parts_mut(r, n))),
         };
         let block = FrictionBlock {
             normal_force: core::slice::from_raw_parts(b.normal_forces, n),

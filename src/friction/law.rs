@@ -237,9 +237,9 @@ pub struct FrictionBlock<'a> {
     pub tangents: i32,
     /// The states.
     pub states: BlockStates<'a>,
-    /// Tangential forces out, `tangential_force[2i]`, `[2i+1]` (N, 2n);
-    /// may be empty when `responses` is given (the forces are in them).
-    pub tangential_force: &'a mut [f64],
+    /// Tangential forces out, `tangential_force[2i]`, `[2i+1]` (N, 2n),
+    /// when wanted (`responses` carry them too).
+    pub tangential_force: Option<&'a mut [f64]>,
     /// Energy dissipated in the increment per point (J, n values), when
     /// wanted.
     pub dissipation: Option<&'a mut [f64]>,
@@ -354,7 +354,7 @@ pub trait FrictionLaw: Send + Sync {
             dt,
             tangents,
             mut states,
-            tangential_force,
+            mut tangential_force,
             mut dissipation,
             mut responses,
         } = block;
@@ -365,10 +365,8 @@ pub trait FrictionLaw: Send + Sync {
         let twice = n.checked_mul(2);
         let all = n.checked_mul(m);
         block_len("slip.len()", slip.len(), twice).map_err(at0)?;
-        // Without forces when the responses carry them.
-        let forces = !(responses.is_some() && tangential_force.is_empty());
-        if forces {
-            block_len("tangential_force.len()", tangential_force.len(), twice).map_err(at0)?;
+        if let Some(f) = tangential_force.as_deref() {
+            block_len("tangential_force.len()", f.len(), twice).map_err(at0)?;
         }
         if let Some(a) = area {
             block_len("area.len()", a.len(), Some(n)).map_err(at0)?;
@@ -403,9 +401,9 @@ pub trait FrictionLaw: Send + Sync {
                 BlockStates::InPlace(s) => self.step_in_place(&mut s[range], &inc, work),
             }
             .map_err(|error| BatchError { index: i, error })?;
-            if forces {
-                tangential_force[2 * i] = r.force[0];
-                tangential_force[2 * i + 1] = r.force[1];
+            if let Some(f) = tangential_force.as_deref_mut() {
+                f[2 * i] = r.force[0];
+                f[2 * i + 1] = r.force[1];
             }
             if let Some(d) = dissipation.as_deref_mut() {
                 d[i] = r.dissipated;

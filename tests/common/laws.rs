@@ -565,7 +565,7 @@ impl BlockInputs {
     pub fn block<'a>(
         &'a self,
         states: BlockStates<'a>,
-        f: &'a mut [f64],
+        f: Option<&'a mut [f64]>,
         d: Option<&'a mut [f64]>,
     ) -> FrictionBlock<'a> {
         FrictionBlock {
@@ -691,12 +691,12 @@ pub fn check_forms(case: &Case, rounds: usize) {
             old: &bsep,
             new: &mut bnext,
         };
-        law.step_block(b.block(separate, &mut f1, Some(&mut d1)), &mut w)
+        law.step_block(b.block(separate, Some(&mut f1), Some(&mut d1)), &mut w)
             .unwrap();
         std::mem::swap(&mut bsep, &mut bnext);
         let (mut f2, mut d2) = (sentinels(2 * p), sentinels(p));
         let in_place = BlockStates::InPlace(&mut binp);
-        law.step_block(b.block(in_place, &mut f2, Some(&mut d2)), &mut w)
+        law.step_block(b.block(in_place, Some(&mut f2), Some(&mut d2)), &mut w)
             .unwrap();
         for (what, ff, dd, ss) in [
             ("separate block", &f1, &d1, &bsep),
@@ -785,7 +785,7 @@ pub fn check_block_responses(case: &Case, rounds: usize) {
             FrictionBlock {
                 tangents,
                 responses: Some(&mut out),
-                ..b.block(separate, &mut f, Some(&mut d))
+                ..b.block(separate, Some(&mut f), Some(&mut d))
             },
             &mut w,
         )
@@ -803,7 +803,7 @@ pub fn check_block_responses(case: &Case, rounds: usize) {
             FrictionBlock {
                 tangents,
                 responses: Some(&mut out),
-                ..b.block(BlockStates::InPlace(&mut inp), &mut [], None)
+                ..b.block(BlockStates::InPlace(&mut inp), None, None)
             },
             &mut w,
         )
@@ -816,7 +816,7 @@ pub fn check_block_responses(case: &Case, rounds: usize) {
 }
 
 /// A block whose arguments are wrong as a whole — unknown tangent bits, a
-/// `responses` slice of another length, no forces without responses — is
+/// `responses` slice of another length, forces of another length — is
 /// refused at index 0, naming the argument, before anything is written
 /// (states separate and in place).
 pub fn check_block_rejections(case: &Case) {
@@ -827,21 +827,21 @@ pub fn check_block_rejections(case: &Case) {
     let mut w = law.work();
     let b = block_inputs(case, 0, p);
     let old = vec![0.0; p * m];
-    // (tangents, responses (None: not asked), forces, the name).
-    let faults: [(i32, Option<usize>, usize, &str); 7] = [
-        (4, Some(p), 2 * p, "tangents"),
-        (-1, Some(p), 0, "tangents"),
-        (8, None, 2 * p, "tangents"),
-        (3, Some(p - 1), 2 * p, "responses.len()"),
-        (0, Some(p + 1), 0, "responses.len()"),
-        (0, Some(0), 0, "responses.len()"),
-        (1, None, 0, "tangential_force.len()"),
+    // (tangents, responses and forces (None: not asked), the name).
+    let faults: [(i32, Option<usize>, Option<usize>, &str); 7] = [
+        (4, Some(p), Some(2 * p), "tangents"),
+        (-1, Some(p), None, "tangents"),
+        (8, None, Some(2 * p), "tangents"),
+        (3, Some(p - 1), Some(2 * p), "responses.len()"),
+        (0, Some(p + 1), None, "responses.len()"),
+        (0, Some(0), None, "responses.len()"),
+        (1, None, Some(p), "tangential_force.len()"),
     ];
     for (tangents, responses, forces, want) in faults {
         for in_place in [false, true] {
-            let what = format!("{name}: tangents {tangents}, {responses:?} responses, {forces} forces, in place {in_place}");
+            let what = format!("{name}: tangents {tangents}, {responses:?} responses, {forces:?} forces, in place {in_place}");
             let mut out = vec![sentinel_response(); responses.unwrap_or(0)];
-            let (mut f, mut d) = (sentinels(forces), sentinels(p));
+            let (mut f, mut d) = (sentinels(forces.unwrap_or(0)), sentinels(p));
             let mut news = sentinels(p * m);
             let mut states = old.clone();
             let st = if in_place {
@@ -857,7 +857,7 @@ pub fn check_block_rejections(case: &Case) {
                     FrictionBlock {
                         tangents,
                         responses: responses.map(|_| &mut out[..]),
-                        ..b.block(st, &mut f, Some(&mut d))
+                        ..b.block(st, forces.map(|_| &mut f[..]), Some(&mut d))
                     },
                     &mut w,
                 )
@@ -870,7 +870,7 @@ pub fn check_block_rejections(case: &Case) {
             );
             assert_eq!(bits(&news), bits(&sentinels(p * m)), "{what}");
             assert_eq!(bits(&states), bits(&old), "{what}");
-            assert_eq!(bits(&f), bits(&sentinels(forces)), "{what}");
+            assert_eq!(bits(&f), bits(&sentinels(forces.unwrap_or(0))), "{what}");
             assert_eq!(bits(&d), bits(&sentinels(p)), "{what}");
             let blank = vec![sentinel_response(); out.len()];
             same_all(&out, &blank, &what);
@@ -887,7 +887,7 @@ pub fn check_block_rejections(case: &Case) {
                 dt: 0.0,
                 tangents: 5,
                 states: BlockStates::InPlace(&mut []),
-                tangential_force: &mut [],
+                tangential_force: None,
                 dissipation: None,
                 responses: Some(&mut []),
             },
@@ -903,7 +903,7 @@ pub fn check_block_rejections(case: &Case) {
             dt: 0.0,
             tangents: 3,
             states: BlockStates::InPlace(&mut []),
-            tangential_force: &mut [],
+            tangential_force: None,
             dissipation: None,
             responses: Some(&mut []),
         },
@@ -975,7 +975,7 @@ pub fn check_rejections(case: &Case) {
             .step_block(
                 FrictionBlock {
                     responses: Some(&mut resp),
-                    ..b.block(separate, &mut f, Some(&mut d))
+                    ..b.block(separate, Some(&mut f), Some(&mut d))
                 },
                 &mut w,
             )
@@ -1004,7 +1004,7 @@ pub fn check_rejections(case: &Case) {
         let mut f = sentinels(6);
         let e = law
             .step_block(
-                b.block(BlockStates::InPlace(&mut states), &mut f, None),
+                b.block(BlockStates::InPlace(&mut states), Some(&mut f), None),
                 &mut w,
             )
             .unwrap_err();
@@ -1149,7 +1149,7 @@ pub unsafe fn c_contract(h: *const AsperityFriction, case: &Case, rounds: usize)
         };
         let (mut rf, mut rd) = (vec![0.0; 2 * p], vec![0.0; p]);
         let states = BlockStates::InPlace(&mut rust);
-        law.step_block(b.block(states, &mut rf, Some(&mut rd)), &mut rw)
+        law.step_block(b.block(states, Some(&mut rf), Some(&mut rd)), &mut rw)
             .unwrap();
         // Separate (NULL work every other round).
         let mut next = sentinels(p * m);
