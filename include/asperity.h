@@ -172,13 +172,13 @@
 // Segment label: final unloading after the drift hold.
 #define ASPERITY_SEGMENT_FINAL_UNLOADING 6
 
-// Indenter: Berkovich pyramid (ideal area 24.5 h_c², β = 1.05).
+// Indenter: Berkovich pyramid (ideal area 24.5 h_c², β = 1.034).
 #define ASPERITY_INDENTER_BERKOVICH 1
 
-// Indenter: Vickers pyramid (ideal area 24.5 h_c², β = 1.05).
+// Indenter: Vickers pyramid (ideal area 24.5 h_c², β = 1.012).
 #define ASPERITY_INDENTER_VICKERS 2
 
-// Indenter: cube corner (ideal area 2.598 h_c², β = 1.05).
+// Indenter: cube corner (ideal area 2.598 h_c², β = 1.034).
 #define ASPERITY_INDENTER_CUBE_CORNER 3
 
 // Indenter: cone of half-angle `cone_half_angle` (rad), β = 1.
@@ -240,6 +240,10 @@
 
 // Flag bit: E_r not below the indenter's modulus (no sample modulus).
 #define ASPERITY_INDENT_FLAG_MODULUS_EXCEEDS_INDENTER (1 << 13)
+
+// Flag bit: the unloading stiffness moves by more than its standard error as the fit
+// window's lower bound moves from 0.2 to 0.8 of P_max.
+#define ASPERITY_INDENT_FLAG_WINDOW_DEPENDENT_STIFFNESS (1 << 14)
 
 // Weir surface energy prefactor `K = 1/((m−2)(n−2))` (the default).
 #define ASPERITY_WEIR_PLANE_SUM 0
@@ -919,13 +923,13 @@ typedef struct AsperityIndentationOptions {
     double nu_indenter;
     // Sample Poisson's ratio (default 0.3).
     double nu_sample;
-    // β (0: the indenter's, 1.05 pyramids, 1 axisymmetric).
+    // β (0: the indenter's, King 1987: 1.034 Berkovich and cube corner, 1.012 Vickers, 1 axisymmetric).
     double beta;
     // ε of the contact depth (default 0.75).
     double epsilon;
     // Loading-fit load window, fractions of the anchor load (default 0.1, 1).
     double loading_window[2];
-    // Unloading-fit load window, fractions of P_max (default 0.25, 0.95).
+    // Unloading-fit load window, fractions of P_max (default 0.2, 0.98).
     double unloading_window[2];
 } AsperityIndentationOptions;
 
@@ -1847,7 +1851,7 @@ void asperity_homogenised_friction_free(struct AsperityHomogenisedFriction *fric
 
 // Fill `options` with the defaults: Berkovich, ideal area, anchor at the
 // maximum point, labels used, diamond indenter (1141 GPa, 0.07), sample
-// ν = 0.3, β by indenter, ε = 0.75, windows 0.1–1 (loading) and 0.25–0.95
+// ν = 0.3, β by indenter, ε = 0.75, windows 0.1–1 (loading) and 0.2–0.98
 // (unloading).
 int32_t asperity_indentation_default_options(struct AsperityIndentationOptions *options);
 

@@ -1141,8 +1141,8 @@ fn every_function_indentation(c: &mut Report) {
     c.close(INDENT, "fit_segments_from_labels", 1.0, 0.0);
     c.rel(INDENT, "fit_unlabelled_d", 2.0, 1e-3);
     c.close(INDENT, "fit_unlabelled_segments_from_labels", 0.0, 0.0);
-    // Defaults: the same ideal area with β = 1.05.
-    c.rel(INDENT, "fit_defaults_reduced_modulus", 70e9 / 1.05, 1e-5);
+    // Defaults: the same ideal area with β = 1.034 (King 1987).
+    c.rel(INDENT, "fit_defaults_reduced_modulus", 70e9 / 1.034, 1e-5);
     c.close(INDENT, "fit_defaults_kappa", 0.3, 1e-5);
     c.close(CPP, "fit_load_length_threw", 1.0, 0.0);
     c.close(CPP, "fit_load_length_status", -2.0, 0.0);

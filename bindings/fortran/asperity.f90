@@ -165,11 +165,11 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_DRIFT_HOLD = 5
   !> Segment label: final unloading after the drift hold.
   integer(c_int32_t), parameter, public :: ASPERITY_SEGMENT_FINAL_UNLOADING = 6
-  !> Indenter: Berkovich pyramid (ideal area 24.5 h_c², β = 1.05).
+  !> Indenter: Berkovich pyramid (ideal area 24.5 h_c², β = 1.034).
   integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_BERKOVICH = 1
-  !> Indenter: Vickers pyramid (ideal area 24.5 h_c², β = 1.05).
+  !> Indenter: Vickers pyramid (ideal area 24.5 h_c², β = 1.012).
   integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_VICKERS = 2
-  !> Indenter: cube corner (ideal area 2.598 h_c², β = 1.05).
+  !> Indenter: cube corner (ideal area 2.598 h_c², β = 1.034).
   integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_CUBE_CORNER = 3
   !> Indenter: cone of half-angle `cone_half_angle` (rad), β = 1.
   integer(c_int32_t), parameter, public :: ASPERITY_INDENTER_CONE = 4
@@ -211,6 +211,9 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_D_POORLY_CONSTRAINED = 4096
   !> Flag bit: E_r not below the indenter's modulus (no sample modulus).
   integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_MODULUS_EXCEEDS_INDENTER = 8192
+  !> Flag bit: the unloading stiffness moves by more than its standard error as the fit
+  !> window's lower bound moves from 0.2 to 0.8 of P_max.
+  integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_WINDOW_DEPENDENT_STIFFNESS = 16384
   !> Weir surface energy prefactor `K = 1/((m−2)(n−2))` (the default).
   integer(c_int32_t), parameter, public :: ASPERITY_WEIR_PLANE_SUM = 0
   !> Weir surface energy prefactor `K = 3/(mn)` (reproduces seed 001's 8.6 nN).
@@ -660,13 +663,13 @@ module asperity
     real(c_double) :: nu_indenter = 0.0_c_double
     !> Sample Poisson's ratio (default 0.3).
     real(c_double) :: nu_sample = 0.0_c_double
-    !> β (0: the indenter's, 1.05 pyramids, 1 axisymmetric).
+    !> β (0: the indenter's, King 1987: 1.034 Berkovich and cube corner, 1.012 Vickers, 1 axisymmetric).
     real(c_double) :: beta = 0.0_c_double
     !> ε of the contact depth (default 0.75).
     real(c_double) :: epsilon = 0.0_c_double
     !> Loading-fit load window, fractions of the anchor load (default 0.1, 1).
     real(c_double) :: loading_window(2) = 0.0_c_double
-    !> Unloading-fit load window, fractions of P_max (default 0.25, 0.95).
+    !> Unloading-fit load window, fractions of P_max (default 0.2, 0.98).
     real(c_double) :: unloading_window(2) = 0.0_c_double
   end type asperity_indentation_options
 
@@ -1719,7 +1722,7 @@ module asperity
 
     !> Fill `options` with the defaults: Berkovich, ideal area, anchor at the maximum point,
     !  labels used, diamond indenter (1141 GPa, 0.07), sample ν = 0.3, β by indenter, ε = 0.75,
-    !  windows 0.1–1 (loading) and 0.25–0.95 (unloading).
+    !  windows 0.1–1 (loading) and 0.2–0.98 (unloading).
     function c_asperity_indentation_default_options(options) result(r) bind(c, &
         name="asperity_indentation_default_options")
       import

@@ -25,11 +25,11 @@ pub const ASPERITY_SEGMENT_DRIFT_HOLD: i32 = 5;
 /// Segment label: final unloading after the drift hold.
 pub const ASPERITY_SEGMENT_FINAL_UNLOADING: i32 = 6;
 
-/// Indenter: Berkovich pyramid (ideal area 24.5 h_c², β = 1.05).
+/// Indenter: Berkovich pyramid (ideal area 24.5 h_c², β = 1.034).
 pub const ASPERITY_INDENTER_BERKOVICH: i32 = 1;
-/// Indenter: Vickers pyramid (ideal area 24.5 h_c², β = 1.05).
+/// Indenter: Vickers pyramid (ideal area 24.5 h_c², β = 1.012).
 pub const ASPERITY_INDENTER_VICKERS: i32 = 2;
-/// Indenter: cube corner (ideal area 2.598 h_c², β = 1.05).
+/// Indenter: cube corner (ideal area 2.598 h_c², β = 1.034).
 pub const ASPERITY_INDENTER_CUBE_CORNER: i32 = 3;
 /// Indenter: cone of half-angle `cone_half_angle` (rad), β = 1.
 pub const ASPERITY_INDENTER_CONE: i32 = 4;
@@ -73,8 +73,11 @@ pub const ASPERITY_INDENT_FLAG_KAPPA_POORLY_CONSTRAINED: u32 = 1 << 11;
 pub const ASPERITY_INDENT_FLAG_D_POORLY_CONSTRAINED: u32 = 1 << 12;
 /// Flag bit: E_r not below the indenter's modulus (no sample modulus).
 pub const ASPERITY_INDENT_FLAG_MODULUS_EXCEEDS_INDENTER: u32 = 1 << 13;
+/// Flag bit: the unloading stiffness moves by more than its standard error as the fit
+/// window's lower bound moves from 0.2 to 0.8 of P_max.
+pub const ASPERITY_INDENT_FLAG_WINDOW_DEPENDENT_STIFFNESS: u32 = 1 << 14;
 
-const _: () = assert!(FLAG_CODES.len() == 14);
+const _: () = assert!(FLAG_CODES.len() == 15);
 
 /// Options of `asperity_indentation_fit`. Fill with
 /// `asperity_indentation_default_options` and change what you need.
@@ -113,13 +116,13 @@ pub struct AsperityIndentationOptions {
     pub nu_indenter: f64,
     /// Sample Poisson's ratio (default 0.3).
     pub nu_sample: f64,
-    /// β (0: the indenter's, 1.05 pyramids, 1 axisymmetric).
+    /// β (0: the indenter's, King 1987: 1.034 Berkovich and cube corner, 1.012 Vickers, 1 axisymmetric).
     pub beta: f64,
     /// ε of the contact depth (default 0.75).
     pub epsilon: f64,
     /// Loading-fit load window, fractions of the anchor load (default 0.1, 1).
     pub loading_window: [f64; 2],
-    /// Unloading-fit load window, fractions of P_max (default 0.25, 0.95).
+    /// Unloading-fit load window, fractions of P_max (default 0.2, 0.98).
     pub unloading_window: [f64; 2],
 }
 
@@ -199,7 +202,7 @@ pub struct AsperityIndentationResult {
 
 /// Fill `options` with the defaults: Berkovich, ideal area, anchor at the
 /// maximum point, labels used, diamond indenter (1141 GPa, 0.07), sample
-/// ν = 0.3, β by indenter, ε = 0.75, windows 0.1–1 (loading) and 0.25–0.95
+/// ν = 0.3, β by indenter, ε = 0.75, windows 0.1–1 (loading) and 0.2–0.98
 /// (unloading).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_indentation_default_options(
@@ -402,7 +405,7 @@ pub unsafe extern "C" fn asperity_indentation_fit(
 /// a static NUL-terminated string; NULL for a bit without a flag. Do not free.
 #[no_mangle]
 pub extern "C" fn asperity_indentation_flag_name(bit: u32) -> *const c_char {
-    static NAMES: [&str; 14] = [
+    static NAMES: [&str; 15] = [
         "kappa_negative\0",
         "kappa_above_one\0",
         "d_above_three\0",
@@ -417,6 +420,7 @@ pub extern "C" fn asperity_indentation_flag_name(bit: u32) -> *const c_char {
         "kappa_poorly_constrained\0",
         "d_poorly_constrained\0",
         "modulus_exceeds_indenter\0",
+        "window_dependent_stiffness\0",
     ];
     NAMES
         .get(bit as usize)

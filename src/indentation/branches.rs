@@ -7,6 +7,7 @@ use super::oliver_pharr::{oliver_pharr, OliverPharr, OliverPharrOptions};
 use super::options::IndentationOptions;
 use super::read::Curve;
 use super::segment::{in_range, Segmentation};
+use super::window::WindowSensitivity;
 use crate::error::{Error, Result};
 
 /// The log–log fit of the loading branch: anchored at the maximum point of
@@ -75,6 +76,8 @@ pub(super) struct UnloadingBranch {
     pub(super) error: Option<Error>,
     /// Points in the unloading segment (before the load window of the fit).
     pub(super) segment_points: usize,
+    /// The evaluation repeated over windows, when there is one.
+    pub(super) sensitivity: Option<WindowSensitivity>,
 }
 
 /// Oliver–Pharr on the unloading segment when it has at least 5 points.
@@ -93,6 +96,7 @@ pub(super) fn evaluate_unloading_branch(
     let area = o.area.clone().unwrap_or_else(|| o.indenter.ideal_area());
     let beta = o.beta.unwrap_or_else(|| o.indenter.beta());
     let mut unloading_error = None;
+    let mut sensitivity = None;
     let unloading = if ur.len() >= 5 {
         // Unloading starts from the point before it (the end of the hold or
         // of loading), or its own first point.
@@ -108,7 +112,16 @@ pub(super) fn evaluate_unloading_branch(
             window: o.unloading_window,
         };
         match oliver_pharr(&h[ur.clone()], &p[ur.clone()], h[start], p[start], &opts) {
-            Ok(r) => Some(r),
+            Ok(r) => {
+                sensitivity = Some(WindowSensitivity::measure(
+                    &h[ur.clone()],
+                    &p[ur.clone()],
+                    &r,
+                    &opts,
+                    o,
+                ));
+                Some(r)
+            }
             Err(e) => {
                 unloading_error = Some(e);
                 None
@@ -121,5 +134,6 @@ pub(super) fn evaluate_unloading_branch(
         evaluation: unloading,
         error: unloading_error,
         segment_points: ur.len(),
+        sensitivity,
     }
 }

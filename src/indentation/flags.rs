@@ -20,7 +20,7 @@ pub struct Flag {
 
 /// Every flag code [`analyze`](super::analyze) can raise, in the order of the
 /// C ABI's bit mask (bit i is `FLAG_CODES[i]`).
-pub static FLAG_CODES: [&str; 14] = [
+pub static FLAG_CODES: [&str; 15] = [
     "kappa_negative",
     "kappa_above_one",
     "d_above_three",
@@ -35,6 +35,7 @@ pub static FLAG_CODES: [&str; 14] = [
     "kappa_poorly_constrained",
     "d_poorly_constrained",
     "modulus_exceeds_indenter",
+    "window_dependent_stiffness",
 ];
 
 /// The flags of an analysis, in the order of [`FLAG_CODES`].
@@ -56,6 +57,7 @@ pub(super) fn raise(
     let es = moduli.sample_modulus;
     let unloading_error = unloading.error;
     let unloading_points = unloading.segment_points;
+    let sensitivity = &unloading.sensitivity;
     let unloading = &unloading.evaluation;
     let mut flags: Vec<Flag> = Vec::new();
     let mut flag = |code: &'static str, message: String| flags.push(Flag { code, message });
@@ -127,7 +129,7 @@ pub(super) fn raise(
         }
     }
     if o.indenter == Indenter::Unknown && o.area.is_none() {
-        flag("area_function_assumed", "indenter not documented: the ideal Berkovich area 24.5 h_c^2 and beta = 1.05 were assumed".to_string());
+        flag("area_function_assumed", "indenter not documented: the ideal Berkovich area 24.5 h_c^2 and beta = 1.034 were assumed".to_string());
     }
     if kappa_se > 0.25 {
         flag(
@@ -144,5 +146,27 @@ pub(super) fn raise(
     if unloading.is_some() && es.is_none() {
         flag("modulus_exceeds_indenter", "the reduced modulus is not below the indenter's plane-strain modulus: no sample modulus".to_string());
     }
+    if let Some(w) = sensitivity {
+        if w.stiffness_spread_in_stderr > 1.0 {
+            flag(
+                "window_dependent_stiffness",
+                format!(
+                    "the unloading stiffness moves by {:.1} % ({:.1} of its standard errors) as the fit window's lower bound moves over {}; the modulus by {:.1} %: the window, not the statistics, limits the result",
+                    100.0 * w.stiffness_relative_spread,
+                    w.stiffness_spread_in_stderr,
+                    window_bounds(w),
+                    100.0 * w.modulus_relative_spread
+                ),
+            );
+        }
+    }
     flags
+}
+
+/// "0.2–0.8 of P_max": the range of lower bounds that gave a fit.
+fn window_bounds(w: &super::window::WindowSensitivity) -> String {
+    match (w.points.first(), w.points.last()) {
+        (Some(a), Some(b)) => format!("{}–{} of P_max", a.window[0], b.window[0]),
+        _ => "no other window".to_string(),
+    }
 }

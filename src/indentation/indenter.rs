@@ -149,12 +149,19 @@ impl Indenter {
         }
     }
 
-    /// Oliver–Pharr β: 1.05 for pyramids (Oliver & Pharr 2004), 1 for
-    /// axisymmetric indenters.
+    /// Oliver–Pharr β of `E_r = √π S/(2β√A)`, the correction of the
+    /// axisymmetric stiffness for the pyramid's cross-section: King (1987,
+    /// Int. J. Solids Struct. 23, 1657–1664, finite-element flat punches)
+    /// 1.034 for a triangular punch (Berkovich, cube corner) and 1.012 for a
+    /// square one (Vickers), the values Oliver & Pharr (2004, J. Mater. Res.
+    /// 19:3, §III.A) recommend among the published 1.0226–1.085; 1 for
+    /// axisymmetric indenters (Sneddon). Oliver & Pharr (1992) used 1; an
+    /// undocumented indenter is treated as a Berkovich.
     pub fn beta(&self) -> f64 {
         match self {
             Indenter::Sphere { .. } | Indenter::Cone { .. } => 1.0,
-            _ => 1.05,
+            Indenter::Vickers => 1.012,
+            Indenter::Berkovich | Indenter::CubeCorner | Indenter::Unknown => 1.034,
         }
     }
 

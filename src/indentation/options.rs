@@ -17,21 +17,36 @@ pub struct IndentationOptions {
     pub known_d: Option<f64>,
     /// Hardening index when known (then d comes from the loading slope).
     pub known_kappa: Option<f64>,
-    /// Indenter Young's modulus (Pa), default diamond 1141 GPa.
+    /// Indenter (tip) Young's modulus E_i (Pa) in (2-15),
+    /// `1/E_r = (1 − ν²)/E + (1 − ν_i²)/E_i`; default diamond 1141 GPa
+    /// (Oliver & Pharr 1992, §II; ISO 14577-1:2015 Annex A). `+inf` is a rigid
+    /// indenter.
     pub e_indenter: f64,
-    /// Indenter Poisson's ratio, default diamond 0.07.
+    /// Indenter Poisson's ratio ν_i, default diamond 0.07 (same sources).
     pub nu_indenter: f64,
     /// Sample Poisson's ratio (default 0.3).
     pub nu_sample: f64,
-    /// β; `None` uses the indenter's (1.05 pyramids, 1 axisymmetric).
+    /// β of `E_r = √π S/(2β√A)`; `None` uses the indenter's
+    /// ([`Indenter::beta`]: 1.034 Berkovich and cube corner, 1.012 Vickers,
+    /// King 1987 as recommended by Oliver & Pharr 2004 §III.A; 1 for
+    /// axisymmetric indenters). Accepted range [0.5, 1.5].
     pub beta: Option<f64>,
-    /// ε of the contact depth (0.75).
+    /// ε of the contact depth `h_c = h_max − ε P_max/S`: 0.75 for a
+    /// paraboloid of revolution, the geometry Oliver & Pharr (1992, 2004)
+    /// recommend for real Berkovich tips, and the value of ISO 14577-1:2015
+    /// Annex A (0.72 is the cone's, 1 the flat punch's). Accepted range
+    /// (0, 1].
     pub epsilon: f64,
     /// Load window of the loading fit, fractions of the anchor load
     /// (default 0.1–1: the first 10 % of the load, where surface detection and
     /// noise dominate the logarithm, is left out).
     pub loading_window: [f64; 2],
-    /// Load window of the unloading fit, fractions of P_max (default 0.25–0.95).
+    /// Load window of the unloading fit, fractions of P_max (default
+    /// 0.2–0.98, the range of ISO 14577-1:2015 Annex A as applied by the
+    /// Czech Metrology Institute, OEFPIL `silica2098` data set: the top 2 %,
+    /// where creep at the start of unloading bends the curve, and the bottom
+    /// 20 %, which the power law does not describe near h_f, are left out).
+    /// The result's `window_sensitivity` reports what other windows give.
     pub unloading_window: [f64; 2],
     /// Anchor of the loading fit (default the maximum point).
     pub anchor: Anchor,
@@ -52,7 +67,7 @@ impl Default for IndentationOptions {
             beta: None,
             epsilon: 0.75,
             loading_window: [0.1, 1.0],
-            unloading_window: [0.25, 0.95],
+            unloading_window: [0.2, 0.98],
             anchor: Anchor::MaxPoint,
             use_labels: true,
         }
@@ -77,9 +92,15 @@ impl IndentationOptions {
                 bound: "> 0 (+inf for a rigid indenter)",
             });
         }
-        check::positive("epsilon", o.epsilon)?;
+        if !(o.epsilon > 0.0 && o.epsilon <= 1.0) {
+            return Err(Error::InvalidArgument {
+                name: "epsilon",
+                value: o.epsilon,
+                bound: "in (0, 1] (0.72 cone, 0.75 paraboloid, 1 flat punch)",
+            });
+        }
         if let Some(b) = o.beta {
-            check::positive("beta", b)?;
+            check::in_range("beta", b, 0.5, 1.5, "in [0.5, 1.5] (1.034 Berkovich)")?;
         }
         let w = o.loading_window;
         if !(w[0] >= 0.0 && w[1] <= 1.0 && w[0] < w[1]) {

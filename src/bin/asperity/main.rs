@@ -109,15 +109,30 @@ enum Command {
         /// nm, A in nm²); the ideal area of the indenter when absent.
         #[arg(long, value_delimiter = ',')]
         area: Option<Vec<f64>>,
-        /// Indenter Young's modulus (Pa).
-        #[arg(long, default_value_t = 1141e9)]
+        /// Indenter Young's modulus (Pa); diamond 1141 GPa (Oliver & Pharr
+        /// 1992). `--tip-modulus` is the same option.
+        #[arg(long, alias = "tip-modulus", default_value_t = 1141e9)]
         e_indenter: f64,
-        /// Indenter Poisson's ratio.
-        #[arg(long, default_value_t = 0.07)]
+        /// Indenter Poisson's ratio; diamond 0.07. `--tip-poisson` is the same
+        /// option.
+        #[arg(long, alias = "tip-poisson", default_value_t = 0.07)]
         nu_indenter: f64,
         /// Sample Poisson's ratio.
         #[arg(long, default_value_t = 0.3)]
         nu_sample: f64,
+        /// Oliver–Pharr β of E_r = √π S/(2β√A); the indenter's when absent
+        /// (King 1987: 1.034 Berkovich and cube corner, 1.012 Vickers, 1
+        /// axisymmetric).
+        #[arg(long)]
+        beta: Option<f64>,
+        /// ε of the contact depth h_c = h_max − ε P_max/S (0.75, paraboloid
+        /// of revolution; Oliver & Pharr 1992, ISO 14577-1).
+        #[arg(long, default_value_t = 0.75)]
+        epsilon: f64,
+        /// Load window LO,HI of the unloading fit, fractions of P_max
+        /// (default 0.2,0.98).
+        #[arg(long, value_delimiter = ',')]
+        fit_window: Option<Vec<f64>>,
         /// Ignore the file's segment labels and detect the segments.
         #[arg(long)]
         detect_segments: bool,
@@ -250,6 +265,9 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
             e_indenter,
             nu_indenter,
             nu_sample,
+            beta,
+            epsilon,
+            fit_window,
             detect_segments,
             json,
             svg,
@@ -260,6 +278,11 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
             e_indenter,
             nu_indenter,
             nu_sample,
+            OpChoices {
+                beta,
+                epsilon,
+                fit_window,
+            },
             detect_segments,
             json,
             svg,
@@ -333,6 +356,14 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
     Ok(())
 }
 
+/// The Oliver–Pharr choices of `asperity indent`: β, ε and the unloading
+/// fit window (`None`: the library's defaults).
+struct OpChoices {
+    beta: Option<f64>,
+    epsilon: f64,
+    fit_window: Option<Vec<f64>>,
+}
+
 #[allow(clippy::too_many_arguments)]
 fn indent(
     file: &PathBuf,
@@ -341,6 +372,7 @@ fn indent(
     e_indenter: f64,
     nu_indenter: f64,
     nu_sample: f64,
+    op: OpChoices,
     detect_segments: bool,
     json: bool,
     svg: Option<PathBuf>,
@@ -368,6 +400,13 @@ fn indent(
         e_indenter,
         nu_indenter,
         nu_sample,
+        beta: op.beta,
+        epsilon: op.epsilon,
+        unloading_window: match op.fit_window.as_deref() {
+            Some(&[lo, hi]) => [lo, hi],
+            Some(_) => return Err("--fit-window takes two numbers LO,HI".into()),
+            None => IndentationOptions::default().unloading_window,
+        },
         use_labels: !detect_segments,
         ..IndentationOptions::default()
     };
