@@ -261,7 +261,7 @@ fn indenter(obj: &Bound<'_, PyAny>) -> PyResult<ind::Indenter> {
     })
 }
 
-/// analyze_indentation(source=None, *, depth=None, load=None, indenter="berkovich", area=None, e_indenter=1141e9, nu_indenter=0.07, nu_sample=0.3, detect_segments=False, known_d=None, known_kappa=None, beta=None, epsilon=0.75) -> dict
+/// analyze_indentation(source=None, *, depth=None, load=None, indenter="berkovich", area=None, e_indenter=1141e9, nu_indenter=0.07, nu_sample=0.3, detect_segments=False, known_d=None, known_kappa=None, beta=None, epsilon=0.75, unloading_window=(0.2, 0.98)) -> dict
 ///
 /// Analyse a measured indentation curve as ``asperity indent --json`` does:
 /// segments, the loading log-log fit, Oliver–Pharr on the unloading branch,
@@ -272,11 +272,14 @@ fn indenter(obj: &Bound<'_, PyAny>) -> PyResult<ind::Indenter> {
 /// ``"berkovich"``, ``"vickers"``, ``"cube-corner"``, ``"sphere:radius=R"``
 /// (m), ``"cone:half_angle=DEG"``, ``"unknown"``; ``area``: NanoSuite
 /// coefficients C0, C1, … (h_c in nm, A in nm²), default the indenter's
-/// ideal area. Returns the dict of the CLI's JSON (keys ``kappa``,
-/// ``kappa_stderr``, ``d``, ``d_stderr``, ``reduced_modulus``, ``hardness``,
-/// ``flags``, …).
+/// ideal area. ``beta`` (None: the indenter's), ``epsilon`` and
+/// ``unloading_window`` (the Oliver–Pharr fit's load range, fractions of
+/// P_max) are the CLI's ``--beta``, ``--epsilon`` and ``--fit-window``.
+/// Returns the dict of the CLI's JSON (keys ``kappa``, ``kappa_stderr``,
+/// ``d``, ``d_stderr``, ``reduced_modulus``, ``sample_modulus``,
+/// ``hardness``, ``window_sensitivity``, ``flags``, …).
 #[pyfunction]
-#[pyo3(signature = (source=None, *, depth=None, load=None, indenter=None, area=None, e_indenter=None, nu_indenter=None, nu_sample=None, detect_segments=false, known_d=None, known_kappa=None, beta=None, epsilon=None))]
+#[pyo3(signature = (source=None, *, depth=None, load=None, indenter=None, area=None, e_indenter=None, nu_indenter=None, nu_sample=None, detect_segments=false, known_d=None, known_kappa=None, beta=None, epsilon=None, unloading_window=None))]
 #[allow(clippy::too_many_arguments)]
 fn analyze_indentation(
     py: Python<'_>,
@@ -293,6 +296,7 @@ fn analyze_indentation(
     known_kappa: Option<&Bound<'_, PyAny>>,
     beta: Option<&Bound<'_, PyAny>>,
     epsilon: Option<&Bound<'_, PyAny>>,
+    unloading_window: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Py<PyAny>> {
     let curve = match (source, depth, load) {
         (Some(p), None, None) => {
@@ -329,6 +333,24 @@ fn analyze_indentation(
         known_kappa: real_opt(known_kappa, "known_kappa")?,
         beta: real_opt(beta, "beta")?,
         epsilon: real_opt(epsilon, "epsilon")?.unwrap_or(defaults.epsilon),
+        unloading_window: match unloading_window {
+            Some(w) if !w.is_none() => {
+                let a = array(w, "unloading_window")?;
+                match a.as_slice()? {
+                    &[lo, hi] => [lo, hi],
+                    other => {
+                        return Err(arg_error(
+                            "unloading_window",
+                            format!(
+                                "must be two fractions (lo, hi) of P_max, got {} values",
+                                other.len()
+                            ),
+                        ))
+                    }
+                }
+            }
+            _ => defaults.unloading_window,
+        },
         use_labels: !detect_segments,
         ..defaults
     };

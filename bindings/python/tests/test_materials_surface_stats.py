@@ -47,6 +47,15 @@ def test_synthetic_indentation_curve_equals_cli():
     assert r["hardness"] == pytest.approx(9e9, rel=1e-3)
     cli = cli_json("indent", str(path), "--indenter", "berkovich", "--nu-sample", "0.17", "--json")
     assert_same(cli, r)
+    # The Oliver-Pharr options as the CLI's flags.
+    r = asperity.analyze_indentation(str(path), nu_sample=0.17, beta=1.05, epsilon=0.72, unloading_window=(0.5, 0.95))
+    cli = cli_json("indent", str(path), "--nu-sample", "0.17", "--beta", "1.05", "--epsilon", "0.72",
+                   "--fit-window", "0.5,0.95", "--json")
+    assert_same(cli, r)
+    with pytest.raises(asperity.Error, match="unloading_window"):
+        asperity.analyze_indentation(str(path), unloading_window=(0.5,))
+    with pytest.raises(asperity.Error, match="unloading_window"):
+        asperity.analyze_indentation(str(path), unloading_window=(0.9, 0.5))
     c = asperity.read_indentation_curve(str(path))
     arrays = asperity.analyze_indentation(depth=c["depth"], load=c["load"], nu_sample=0.17, detect_segments=True)
     assert arrays["reduced_modulus"] == pytest.approx(69.6e9, rel=2e-2)

@@ -354,6 +354,7 @@ def analyze_indentation(
     known_kappa: Optional[Real] = None,
     beta: Optional[Real] = None,
     epsilon: Real = 0.75,
+    unloading_window: Tuple[Real, Real] = (0.2, 0.98),
 ) -> Dict[str, Any]: ...
 def read_indentation_curve(path: Path) -> Dict[str, Any]: ...
 
