@@ -26,7 +26,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from contact2d import (  # noqa: E402
     COMM, Geometry, Material, Model, dump_json, fit_elliptic_edge,
-    hertz_half_width, log, timer,
+    hertz_half_width, log, pyplot, timer,
 )
 
 import asperity  # noqa: E402
@@ -153,12 +153,8 @@ def run(args, cells_per_half_width: int, tangent: str = "law", max_iterations: i
 
 
 def plot(results, directory):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        log("no matplotlib: no plots")
+    plt = pyplot()
+    if plt is None:
         return
     os.makedirs(directory, exist_ok=True)
     fig, ax = plt.subplots(figsize=(6.4, 4.2))

@@ -333,10 +333,11 @@ class Model:
 
     @property
     def law_stick_stiffness(self) -> float:
-        return getattr(self.law, "stick_stiffness", self.k_normal)
-
-    def _norm(self, vec) -> float:
-        return vec.norm()
+        """The law's stick stiffness (the "stick" Jacobian needs one)."""
+        k = getattr(self.law, "stick_stiffness", None)
+        if k is None:
+            raise ValueError("the 'stick' Jacobian needs a law with a stick_stiffness")
+        return k
 
     # ------------------------------------------------------------ steps
     def step(self, delta: float, shift: float) -> StepRecord:
@@ -351,8 +352,8 @@ class Model:
         pressure, active, slip, r = self._residual(delta, shift)
         # Convergence is measured against the residual the load increment
         # causes at the converged state (the predictor's right-hand side).
-        scale = max(self.increment_norm(delta, shift), self._norm(self.R), 1e-300)
-        residuals = [self._norm(self.R) / scale]
+        scale = max(self.increment_norm(delta, shift), self.R.norm(), 1e-300)
+        residuals = [self.R.norm() / scale]
         converged = residuals[-1] <= self.tolerance
         while not converged and it < self.max_iterations:
             self._jacobian(active, r)
@@ -361,7 +362,7 @@ class Model:
             self.ksp.solve(self.R, self.dU)
             it += 1
             pressure, active, slip, r = self._line_search(delta, shift, residuals[-1] * scale)
-            residuals.append(self._norm(self.R) / scale)
+            residuals.append(self.R.norm() / scale)
             converged = residuals[-1] <= self.tolerance
         self._commit(delta, shift, pressure, active, r)
         rec = StepRecord(
@@ -391,7 +392,7 @@ class Model:
             self.U.axpy(alpha, self.dU)
             self.U.ghostUpdate(addv=PETSc.InsertMode.INSERT, mode=PETSc.ScatterMode.FORWARD)
             out = self._residual(delta, shift)
-            if self._norm(self.R) < norm0 or alpha < 0.02:
+            if self.R.norm() < norm0 or alpha < 0.02:
                 return out
             self.U.axpy(-alpha, self.dU)
             alpha *= 0.5
@@ -549,6 +550,18 @@ def dump_json(obj) -> str:
         raise TypeError(type(o))
 
     return json.dumps(obj, default=conv, indent=1)
+
+
+def pyplot():
+    """matplotlib.pyplot with the Agg backend, or None (plots skipped)."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        log("no matplotlib: no plots")
+        return None
+    return plt
 
 
 def timer():

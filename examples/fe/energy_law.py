@@ -28,7 +28,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from contact2d import COMM, Geometry, Material, Model, dump_json, log, timer  # noqa: E402
+from contact2d import COMM, Geometry, Material, Model, dump_json, log, pyplot, timer  # noqa: E402
 
 import asperity  # noqa: E402
 
@@ -206,12 +206,8 @@ def main():
 
 
 def plot(out, directory):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        log("no matplotlib: no plots")
+    plt = pyplot()
+    if plt is None:
         return
     os.makedirs(directory, exist_ok=True)
     law = out["law"]
