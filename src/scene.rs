@@ -47,7 +47,7 @@ use crate::friction::geometry::{nano_analysis, rod_levels, NanoAsperities, Slide
 use crate::friction::ledger::{CofForm, Mechanisms};
 use crate::friction::mechanisms::FrictionMaterial;
 use crate::friction::rods::{PlasticUpdate, RodOptions, RodSolver};
-use crate::friction::slider::{Loading, SlideRun, Slider, SliderOptions, TrackEnd};
+use crate::friction::slider::{CounterHeight, Loading, SlideRun, Slider, SliderOptions, TrackEnd};
 use crate::surface::{read_profile, read_topography, Form, MapForm, Profile, SelfAffine, Spacing};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
@@ -258,6 +258,11 @@ pub struct RodsSpec {
     /// Solver (default sweep).
     #[serde(default)]
     pub solver: SolverSpec,
+    /// The counter height a rod sees: `"rod_centre"` (default, the thesis's
+    /// reading) or `"highest_point"` (not stated by the thesis; see
+    /// [`CounterHeight`]).
+    #[serde(default)]
+    pub counter_height: CounterHeight,
 }
 
 /// Plastic update rule (thesis 6.2.3).
@@ -269,7 +274,8 @@ pub enum PlasticSpec {
     /// The thesis's rule (default).
     #[default]
     NearestNeighbours,
-    /// Gaussian weights of width `width` (m).
+    /// Gaussian weights of width `width` (m): the project's extension,
+    /// not the thesis's rule ([`PlasticUpdate::Gaussian`]).
     Gaussian {
         /// Width (m).
         width: f64,
@@ -772,6 +778,7 @@ impl Scene {
         options.mechanisms = self.mechanisms;
         options.cof_form = self.cof_form;
         options.track_end = self.sliding.track_end;
+        options.counter_height = self.rods.counter_height;
         options.rod = RodOptions {
             solver: match self.rods.solver {
                 SolverSpec::Sweep => RodSolver::Sweep,

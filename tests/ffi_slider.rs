@@ -758,6 +758,7 @@ fn slider_from_structs_equals_the_rust_slider() {
         depth: Some(1.35e-5),
         root_margin: None,
         track_end: TrackEnd::Error,
+        counter_height: asperity::friction::CounterHeight::RodCentre,
     };
     let mut b = c_defaults();
     b.control = ASPERITY_SLIDER_CONTROL_GAP;

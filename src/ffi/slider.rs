@@ -15,8 +15,8 @@ use super::friction_law::AsperityFrictionWork;
 use super::{guard, input, output, read_text, set_last_error, Failure};
 use crate::error::{Error, Result};
 use crate::friction::{
-    CofForm, FrictionLaw, FrictionMaterial, Loading, Mechanisms, PlasticUpdate, RodOptions,
-    RodSolver, Slider, SliderOptions, SliderWork, TrackEnd,
+    CofForm, CounterHeight, FrictionLaw, FrictionMaterial, Loading, Mechanisms, PlasticUpdate,
+    RodOptions, RodSolver, Slider, SliderOptions, SliderWork, TrackEnd,
 };
 use crate::scene::{Scene, SceneError};
 use std::ffi::{c_char, CStr};
@@ -269,6 +269,9 @@ impl AsperitySliderOptions {
             depth,
             root_margin,
             track_end,
+            // Not in the C options (its layout is part of ABI 0.2): the
+            // counter height at the rod centre, the thesis's reading.
+            counter_height: CounterHeight::RodCentre,
         })
     }
 }

@@ -74,5 +74,6 @@ pub use rods::{
     RodSolution, RodSolver, RodState,
 };
 pub use slider::{
-    summarize, SlideRun, SlideStep, SlideSummary, Slider, SliderOptions, SliderWork, TrackEnd,
+    summarize, CounterHeight, SlideRun, SlideStep, SlideSummary, Slider, SliderOptions, SliderWork,
+    TrackEnd,
 };

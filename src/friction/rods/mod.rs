@@ -289,8 +289,11 @@ pub enum PlasticUpdate {
     /// non-yielded rod on each side.
     #[default]
     NearestNeighbours,
-    /// The thesis's proposed weighting function: shares ∝
-    /// exp(−Δx²/(2·width²)) over all non-yielded rods, `width` (m) > 0.
+    /// Not the thesis's rule: shares ∝ exp(−Δx²/(2·width²)) over all
+    /// non-yielded rods, `width` (m) > 0. Thesis 6.2.3 only announces "a
+    /// weighting function" for future versions without giving one; this
+    /// Gaussian is the project's extension (the chapter-6 scenes use
+    /// 20 µm, THESIS.md "The pile-up rule").
     Gaussian {
         /// Width ℓ of the Gaussian weight (m).
         width: f64,

@@ -11,7 +11,8 @@
 //!    position: g_i = g(x_i + X), X the slider position, g the counter profile
 //!    (heights m, spacing m, sample j at x = j·dx), linearly between samples
 //!    (the thesis's h_i, "the heights of the asperities corresponding to each
-//!    of the micro-asperities", 6.3 input list). Past the profile's end the
+//!    of the micro-asperities", 6.3 input list); [`CounterHeight`] can take
+//!    the highest counter point under the rod's face instead. Past the profile's end the
 //!    [`TrackEnd`] option decides: an error naming `position`
 //!    ([`TrackEnd::Error`], the default) or a periodic counter-surface of
 //!    period n·dx ([`TrackEnd::Periodic`], sample n wraps to sample 0);
@@ -151,6 +152,31 @@ pub enum TrackEnd {
     Periodic,
 }
 
+/// Which height of the counter-surface under a rod's flat face the rod
+/// equilibrium sees (the h_i of the thesis's compatibility conditions (6-11),
+/// (6-15), "the heights of the asperities corresponding to each of the
+/// micro-asperities").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CounterHeight {
+    /// The counter height at the rod centre, linear between samples: for a
+    /// rod one sample wide the mean of the two samples it spans, the thesis's
+    /// rule (6-1) for the slider's own rods applied to the counter-surface
+    /// (the default). Where the counter rises above the face away from the
+    /// centre the face and the counter overlap; those nano-asperity columns
+    /// count as in contact.
+    #[default]
+    RodCentre,
+    /// Not stated by the thesis: the highest counter height under the face
+    /// (the samples inside it and the interpolated ends), so that the rigid
+    /// counter-surface never passes through a rod's flat face. A rod then
+    /// touches at its highest counter point and only the nano-asperity
+    /// columns within the adhesive layer of that point are in contact;
+    /// wider rods touch with a smaller share of their columns (the study of
+    /// thesis Table 6-3 in `examples/chapter6.rs`).
+    HighestPoint,
+}
+
 /// Options of a [`Slider`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SliderOptions {
@@ -170,6 +196,8 @@ pub struct SliderOptions {
     pub root_margin: Option<f64>,
     /// Counter-surface past its end (default [`TrackEnd::Error`]).
     pub track_end: TrackEnd,
+    /// The counter height a rod sees (default [`CounterHeight::RodCentre`]).
+    pub counter_height: CounterHeight,
 }
 
 impl SliderOptions {
@@ -183,6 +211,7 @@ impl SliderOptions {
             depth: None,
             root_margin: None,
             track_end: TrackEnd::Error,
+            counter_height: CounterHeight::RodCentre,
         }
     }
 }
@@ -597,6 +626,30 @@ impl Slider {
         Ok(a + f * (b - a))
     }
 
+    /// The counter height the rod centred at track coordinate `x` (m) sees,
+    /// by [`SliderOptions::counter_height`].
+    fn counter_under(&self, x: f64) -> Result<f64> {
+        match self.options.counter_height {
+            CounterHeight::RodCentre => self.counter_at(x),
+            CounterHeight::HighestPoint => {
+                let (a, b) = (x - 0.5 * self.tip_width, x + 0.5 * self.tip_width);
+                let mut top = self.counter_at(a)?.max(self.counter_at(b)?);
+                // Samples strictly inside the face (linear interpolation
+                // peaks at samples only).
+                let (first, last) = (
+                    (a / self.counter_dx).floor() + 1.0,
+                    (b / self.counter_dx).ceil() - 1.0,
+                );
+                let mut j = first;
+                while j <= last {
+                    top = top.max(self.counter_at(j * self.counter_dx)?);
+                    j += 1.0;
+                }
+                Ok(top)
+            }
+        }
+    }
+
     /// The body of every increment (module docs): counter heights, rod
     /// equilibrium under `loading`, nano-asperities in contact, the ledger
     /// when `slip` is given (nothing booked otherwise: a seat).
@@ -621,7 +674,7 @@ impl Slider {
         }
         let centers = self.bed.centers();
         for i in 0..n {
-            counter[i] = self.counter_at(centers[i] + position)?;
+            counter[i] = self.counter_under(centers[i] + position)?;
         }
         let opts = &self.options.rod;
         let report: RodReport =
