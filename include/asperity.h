@@ -294,6 +294,10 @@
 // `AsperitySliderOptions.cof_form`: Coulomb, mu = (F - A)/N (1-2).
 #define ASPERITY_COF_COULOMB 2
 
+// `AsperitySliderOptions.cof_form`: mu = F/(N + 2A), not the thesis's
+// stated form but the arithmetic of its Tables 6-1 and 6-2 (THESIS.md).
+#define ASPERITY_COF_DERJAGUIN_DOUBLE_ADHESION 3
+
 // `AsperitySliderOptions.plastic`: the volume of a yielded rod goes in
 // halves to the nearest non-yielded rod on each side (thesis 6.2.3), the
 // default.
@@ -1030,7 +1034,8 @@ typedef struct AsperitySliderOptions {
     // `ASPERITY_MECHANISM_*` bits: the mechanisms computed (0 = none; the
     // default `ASPERITY_MECHANISM_ALL`).
     int32_t mechanisms;
-    // `ASPERITY_COF_DERJAGUIN` (default), `_AMONTONS` or `_COULOMB`.
+    // `ASPERITY_COF_DERJAGUIN` (default), `_AMONTONS`, `_COULOMB` or
+    // `_DERJAGUIN_DOUBLE_ADHESION`.
     int32_t cof_form;
     // `ASPERITY_PLASTIC_NEAREST_NEIGHBOURS` (default), `_GAUSSIAN` or
     // `_SHORTEN_ONLY`.

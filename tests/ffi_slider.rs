@@ -926,7 +926,7 @@ fn slider_from_structs_errors_name_the_argument() {
             "options.mechanisms",
         ),
         (
-            with(&|o| o.cof_form = 3),
+            with(&|o| o.cof_form = 4),
             ASPERITY_ERR_INVALID_ARGUMENT,
             "options.cof_form",
         ),

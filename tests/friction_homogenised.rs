@@ -150,6 +150,7 @@ fn plastic_slip(h: &HomogenisedFriction, old: &State, i: &FrictionIncrement) -> 
 fn slip_limit(form: CofForm, r: &FrictionResponse) -> f64 {
     match form {
         CofForm::Derjaguin => r.cof * (r.normal_force + r.adhesion),
+        CofForm::DerjaguinDoubleAdhesion => r.cof * (r.normal_force + 2.0 * r.adhesion),
         CofForm::Amontons => r.cof * r.normal_force,
         CofForm::Coulomb => r.adhesion + r.cof * r.normal_force,
     }
@@ -506,7 +507,12 @@ fn tangents_match_finite_differences() {
         200.0 * (1.0 + 1e-5),
     ];
     let mut checked = 0;
-    for form in [CofForm::Derjaguin, CofForm::Amontons, CofForm::Coulomb] {
+    for form in [
+        CofForm::Derjaguin,
+        CofForm::Amontons,
+        CofForm::Coulomb,
+        CofForm::DerjaguinDoubleAdhesion,
+    ] {
         let table = HomogenisedFriction::from_samples(&copper_samples(), form).unwrap();
         for k in [K, 0.0] {
             let h = table.clone().with_stick_stiffness(k).unwrap();
@@ -584,7 +590,12 @@ fn tangents_match_finite_differences() {
     bare[0].pressure = 0.0;
     bare[0].adhesion_pressure = 0.0;
     for (samples, contact) in [(copper_samples(), true), (bare, false)] {
-        for form in [CofForm::Derjaguin, CofForm::Amontons, CofForm::Coulomb] {
+        for form in [
+            CofForm::Derjaguin,
+            CofForm::Amontons,
+            CofForm::Coulomb,
+            CofForm::DerjaguinDoubleAdhesion,
+        ] {
             let table = HomogenisedFriction::from_samples(&samples, form).unwrap();
             for k in [K, 0.0] {
                 let h = table.clone().with_stick_stiffness(k).unwrap();
@@ -630,6 +641,7 @@ fn cof_forms_set_the_slip_limit() {
         (CofForm::Derjaguin, 0.97 * (n + a)),
         (CofForm::Amontons, 0.97 * n),
         (CofForm::Coulomb, a + 0.97 * n),
+        (CofForm::DerjaguinDoubleAdhesion, 0.97 * (n + 2.0 * a)),
     ] {
         let h = HomogenisedFriction::from_samples(&s, form).unwrap();
         let (_, r) = step(&h, &FRESH, &inc(n, 1e-3, 0.0));
@@ -1259,7 +1271,12 @@ fn json_round_trip_is_bit_exact() {
     // Values that plain JSON numbers would not round-trip.
     samples[1].cof = 1.0 / 3.0 + 1e-17;
     samples[2].adhesion_pressure = 9.000000000000002e6;
-    for form in [CofForm::Derjaguin, CofForm::Amontons, CofForm::Coulomb] {
+    for form in [
+        CofForm::Derjaguin,
+        CofForm::Amontons,
+        CofForm::Coulomb,
+        CofForm::DerjaguinDoubleAdhesion,
+    ] {
         let h = HomogenisedFriction::from_samples(&samples, form).unwrap();
         let json = h.to_json();
         let g = HomogenisedFriction::from_json(&json).unwrap();

@@ -121,6 +121,7 @@ fn mechanisms(s: &[f64]) -> f64 {
 fn slip_limit(form: CofForm, r: &FrictionResponse) -> f64 {
     match form {
         CofForm::Derjaguin => r.cof * (r.normal_force + r.adhesion),
+        CofForm::DerjaguinDoubleAdhesion => r.cof * (r.normal_force + 2.0 * r.adhesion),
         CofForm::Amontons => r.cof * r.normal_force,
         CofForm::Coulomb => r.adhesion + r.cof * r.normal_force,
     }

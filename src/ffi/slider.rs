@@ -50,6 +50,9 @@ pub const ASPERITY_COF_DERJAGUIN: i32 = 0;
 pub const ASPERITY_COF_AMONTONS: i32 = 1;
 /// `AsperitySliderOptions.cof_form`: Coulomb, mu = (F - A)/N (1-2).
 pub const ASPERITY_COF_COULOMB: i32 = 2;
+/// `AsperitySliderOptions.cof_form`: mu = F/(N + 2A), not the thesis's
+/// stated form but the arithmetic of its Tables 6-1 and 6-2 (THESIS.md).
+pub const ASPERITY_COF_DERJAGUIN_DOUBLE_ADHESION: i32 = 3;
 
 /// `AsperitySliderOptions.plastic`: the volume of a yielded rod goes in
 /// halves to the nearest non-yielded rod on each side (thesis 6.2.3), the
@@ -170,7 +173,8 @@ pub struct AsperitySliderOptions {
     /// `ASPERITY_MECHANISM_*` bits: the mechanisms computed (0 = none; the
     /// default `ASPERITY_MECHANISM_ALL`).
     pub mechanisms: i32,
-    /// `ASPERITY_COF_DERJAGUIN` (default), `_AMONTONS` or `_COULOMB`.
+    /// `ASPERITY_COF_DERJAGUIN` (default), `_AMONTONS`, `_COULOMB` or
+    /// `_DERJAGUIN_DOUBLE_ADHESION`.
     pub cof_form: i32,
     /// `ASPERITY_PLASTIC_NEAREST_NEIGHBOURS` (default), `_GAUSSIAN` or
     /// `_SHORTEN_ONLY`.
@@ -227,6 +231,7 @@ impl AsperitySliderOptions {
             ASPERITY_COF_DERJAGUIN => CofForm::Derjaguin,
             ASPERITY_COF_AMONTONS => CofForm::Amontons,
             ASPERITY_COF_COULOMB => CofForm::Coulomb,
+            ASPERITY_COF_DERJAGUIN_DOUBLE_ADHESION => CofForm::DerjaguinDoubleAdhesion,
             other => return Err(selector("options.cof_form", other)),
         };
         let plastic = match self.plastic {

@@ -597,6 +597,10 @@ impl HomogenisedFriction {
                 q.cof * (n + adhesion),
                 q.dcof / a_n * (n + adhesion) + q.cof * (1.0 + q.dadhesion),
             ),
+            CofForm::DerjaguinDoubleAdhesion => (
+                q.cof * (n + 2.0 * adhesion),
+                q.dcof / a_n * (n + 2.0 * adhesion) + q.cof * (1.0 + 2.0 * q.dadhesion),
+            ),
             CofForm::Amontons => (q.cof * n, q.dcof / a_n * n + q.cof),
             CofForm::Coulomb => (adhesion + q.cof * n, q.dadhesion + q.dcof / a_n * n + q.cof),
         };

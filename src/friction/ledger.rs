@@ -222,6 +222,13 @@ pub enum CofForm {
     /// adhesion acts mainly normal to the surface. The default.
     #[default]
     Derjaguin,
+    /// Not the thesis's stated form: μ = F/(N + 2A), the adhesive force
+    /// counted twice (once in the normal force, as if N were the force the
+    /// rods carry, N + A, and once more as in (4-3)). The COFs the thesis
+    /// prints in Tables 6-1 and 6-2 are this form of its own energy columns
+    /// (within −3.6 … +1.6 % at all 16 loads; THESIS.md); use it to compare
+    /// with those tables, not as a law.
+    DerjaguinDoubleAdhesion,
 }
 
 /// Coefficient of friction from the friction force `friction_force` F (N,
@@ -232,7 +239,9 @@ pub enum CofForm {
 /// * [`CofForm::Amontons`]: μ = F/N (1-1);
 /// * [`CofForm::Coulomb`]: μ = (F − A)/N (1-2);
 /// * [`CofForm::Derjaguin`]: μ = F/(N + A) (4-3); N may be negative (a
-///   pulling load held by adhesion) as long as N + A > 0.
+///   pulling load held by adhesion) as long as N + A > 0;
+/// * [`CofForm::DerjaguinDoubleAdhesion`]: μ = F/(N + 2A) (the arithmetic
+///   of thesis Tables 6-1 and 6-2), N + 2A > 0.
 ///
 /// A zero or negative denominator is an error naming `normal_load` (the
 /// coefficient is undefined there), never an infinity.
@@ -252,6 +261,11 @@ pub fn coefficient_of_friction(
             f,
             n + a,
             "such that normal_load + adhesion > 0 (Derjaguin: mu = F/(N + A))",
+        ),
+        CofForm::DerjaguinDoubleAdhesion => (
+            f,
+            n + 2.0 * a,
+            "such that normal_load + 2 adhesion > 0 (mu = F/(N + 2A))",
         ),
     };
     if denominator > 0.0 && denominator.is_finite() {
@@ -546,6 +560,11 @@ mod tests {
             coefficient_of_friction(CofForm::Derjaguin, 2.0, 3.0, 1.0).unwrap(),
             0.5
         );
+        assert_eq!(
+            coefficient_of_friction(CofForm::DerjaguinDoubleAdhesion, 2.0, 2.0, 1.0).unwrap(),
+            0.5
+        );
+        assert!(coefficient_of_friction(CofForm::DerjaguinDoubleAdhesion, 2.0, -2.0, 1.0).is_err());
         assert_eq!(CofForm::default(), CofForm::Derjaguin);
         // a pulling load held by adhesion
         assert_eq!(

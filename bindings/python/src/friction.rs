@@ -175,9 +175,10 @@ pub(crate) fn cof_form(obj: Option<&Bound<'_, PyAny>>) -> PyResult<fr::CofForm> 
         "amontons" => Ok(fr::CofForm::Amontons),
         "coulomb" => Ok(fr::CofForm::Coulomb),
         "derjaguin" => Ok(fr::CofForm::Derjaguin),
+        "derjaguin_double_adhesion" => Ok(fr::CofForm::DerjaguinDoubleAdhesion),
         x => Err(arg_error(
             "form",
-            format!("must be \"amontons\", \"coulomb\" or \"derjaguin\", got {x:?}"),
+            format!("must be \"amontons\", \"coulomb\", \"derjaguin\" or \"derjaguin_double_adhesion\", got {x:?}"),
         )),
     }
 }
@@ -185,7 +186,9 @@ pub(crate) fn cof_form(obj: Option<&Bound<'_, PyAny>>) -> PyResult<fr::CofForm> 
 /// coefficient_of_friction(friction_force, normal_load, adhesion=0.0, form="amontons") -> float
 ///
 /// μ from friction force F (N), normal load N (N) and adhesive force A (N):
-/// ``"amontons"`` F/N, ``"coulomb"`` (F - A)/N, ``"derjaguin"`` F/(N + A).
+/// ``"amontons"`` F/N, ``"coulomb"`` (F - A)/N, ``"derjaguin"`` F/(N + A),
+/// ``"derjaguin_double_adhesion"`` F/(N + 2A) (the arithmetic of thesis
+/// Tables 6-1 and 6-2, not its stated form).
 #[pyfunction]
 #[pyo3(signature = (friction_force, normal_load, adhesion=None, form=None))]
 fn coefficient_of_friction(

@@ -752,6 +752,7 @@ impl Slider {
         record.friction_force = ledger.friction_force;
         let denominator = match self.options.cof_form {
             CofForm::Derjaguin => normal_load + ledger.adhesion,
+            CofForm::DerjaguinDoubleAdhesion => normal_load + 2.0 * ledger.adhesion,
             CofForm::Amontons | CofForm::Coulomb => normal_load,
         };
         if denominator > 0.0 {
