@@ -244,6 +244,9 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_COF_AMONTONS = 1
   !> `asperity_slider_options%cof_form`: Coulomb, mu = (F - A)/N (1-2).
   integer(c_int32_t), parameter, public :: ASPERITY_COF_COULOMB = 2
+  !> `asperity_slider_options%cof_form`: mu = F/(N + 2A), not the thesis's stated form but the
+  !  arithmetic of its Tables 6-1 and 6-2 (THESIS.md).
+  integer(c_int32_t), parameter, public :: ASPERITY_COF_DERJAGUIN_DOUBLE_ADHESION = 3
   !> `asperity_slider_options%plastic`: the volume of a yielded rod goes in halves to the
   !  nearest non-yielded rod on each side (thesis 6.2.3), the default.
   integer(c_int32_t), parameter, public :: ASPERITY_PLASTIC_NEAREST_NEIGHBOURS = 0
