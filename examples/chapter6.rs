@@ -186,13 +186,24 @@ fn arg(flag: &str) -> Option<String> {
 fn main() {
     let as_json = std::env::args().any(|a| a == "--json");
     let mut base = scene();
-    // Controlled variations of the scene: `--rq METRES` (both synthetic
-    // profiles), `--counter-height rod_centre|highest_point`.
-    if let Some(rq) = arg("--rq").map(|v| v.parse::<f64>().expect("--rq METRES")) {
-        for s in [&mut base.surfaces.slider, &mut base.surfaces.counter] {
-            if let SurfaceSpec::SelfAffine { rq: r, .. } = s {
-                *r = rq;
-            }
+    // Controlled variations of the scene: `--rq METRES`, `--hurst H`,
+    // `--roll-off METRES` (both synthetic profiles),
+    // `--counter-height rod_centre|highest_point`.
+    let number = |flag: &str| {
+        arg(flag).map(|v| v.parse::<f64>().unwrap_or_else(|_| panic!("{flag} NUMBER")))
+    };
+    let (rq, hurst, roll_off) = (number("--rq"), number("--hurst"), number("--roll-off"));
+    for s in [&mut base.surfaces.slider, &mut base.surfaces.counter] {
+        if let SurfaceSpec::SelfAffine {
+            rq: r,
+            hurst: h,
+            roll_off_wavelength: l,
+            ..
+        } = s
+        {
+            *r = rq.unwrap_or(*r);
+            *h = hurst.unwrap_or(*h);
+            *l = roll_off.or(*l);
         }
     }
     if let Some(h) = arg("--counter-height") {
