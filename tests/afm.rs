@@ -160,7 +160,12 @@ fn check_recovery(s: Synth) {
         .find(|f| f.model == s.model.name())
         .unwrap_or_else(|| panic!("no {} fit: {:?}", s.model.name(), a.failed_fits));
     let m = s.model.name();
-    within(&format!("{m} E*"), fit.e_star.unwrap(), fit.e_star_stderr, s.e_star);
+    within(
+        &format!("{m} E*"),
+        fit.e_star.unwrap(),
+        fit.e_star_stderr,
+        s.e_star,
+    );
     if s.model != AfmModel::Hertz {
         within(
             &format!("{m} w"),
@@ -280,19 +285,28 @@ fn bad_input_is_an_error() {
     let mut o = options(&s, Some(-1.0));
     assert!(matches!(
         analyze(&c, &o),
-        Err(Error::InvalidArgument { name: "tip_radius", .. })
+        Err(Error::InvalidArgument {
+            name: "tip_radius",
+            ..
+        })
     ));
     o.tip_radius = None;
     o.spring_constant = Some(0.0);
     assert!(matches!(
         analyze(&c, &o),
-        Err(Error::InvalidArgument { name: "spring_constant", .. })
+        Err(Error::InvalidArgument {
+            name: "spring_constant",
+            ..
+        })
     ));
     let mut no_k = c.clone();
     no_k.spring_constant = None;
     assert!(matches!(
         analyze(&no_k, &AfmOptions::default()),
-        Err(Error::InvalidArgument { name: "spring_constant", .. })
+        Err(Error::InvalidArgument {
+            name: "spring_constant",
+            ..
+        })
     ));
     assert!(AfmCurve::new(vec![0.0; 5], vec![0.0; 5], None, None).is_err());
     assert!(AfmCurve::new(vec![0.0; 20], vec![f64::NAN; 20], None, None).is_err());

@@ -11,7 +11,12 @@
 //! stiffness of lever and contact in series (s = dF/dδ of the law), which is
 //! a force (N) and stays well conditioned both for a stiff sample under a
 //! soft lever (S → k) and near the pull-off (s → 0). Points below the
-//! model's pull-off p_c have the residual `F − p_c`.
+//! model's pull-off p_c have the residual `F − p_c`. When the curve has a
+//! significant pull-off F_po, one more residual `F_po − p_c` asks the law's
+//! load-controlled pull-off to match it: the lever separates where the
+//! combined stiffness vanishes, at the minimum force for a lever much
+//! softer than the contact, so a law whose own pull-off lies far beyond the
+//! measured one contradicts the curve even where its branch fits.
 //!
 //! The parameters are `K = E*√R` and `W = wR` (and u_c): δ(F) depends on R,
 //! E* and w only through these two for Hertz, DMT, JKR and Maugis–Dugdale
@@ -202,6 +207,10 @@ pub(crate) struct FitData<'a> {
     pub direction: f64,
     /// Spring constant k (N/m).
     pub spring_constant: f64,
+    /// The measured pull-off force (N) when it is significant: one more
+    /// residual, `F_po − p_c`, ties the law's load-controlled pull-off to it
+    /// (a soft lever separates at the minimum force).
+    pub pull_off: Option<f64>,
 }
 
 /// Fit `model` to the data.
@@ -251,8 +260,12 @@ pub(crate) fn fit(model: AfmModel, d: &FitData) -> Result<ModelFit> {
             }
             out[i] = v;
         }
+        if let Some(po) = d.pull_off {
+            out[n] = (po - pc) / fs;
+        }
         Some(())
     };
+    let m = n + usize::from(d.pull_off.is_some());
     let mut best: Option<Lm> = None;
     for s in [0.0, -2.3, 2.3] {
         let mut th0 = vec![s; p];
@@ -260,7 +273,7 @@ pub(crate) fn fit(model: AfmModel, d: &FitData) -> Result<ModelFit> {
             th0[1] = 0.0;
         }
         th0[p - 1] = 0.0;
-        if let Some(res) = levenberg_marquardt(&residual, th0, n) {
+        if let Some(res) = levenberg_marquardt(&residual, th0, m) {
             if best.as_ref().map_or(true, |b| res.ssr < b.ssr) {
                 best = Some(res);
             }
@@ -275,7 +288,7 @@ pub(crate) fn fit(model: AfmModel, d: &FitData) -> Result<ModelFit> {
     let k = k0 * th[0].exp();
     let w = if p == 3 { w0 * th[1].exp() } else { 0.0 };
     let uc = y_ref + len * th[p - 1];
-    let dof = (n - p) as f64;
+    let dof = (m - p) as f64;
     let s2 = b.ssr / dof;
     let se = |i: usize| -> Option<f64> {
         b.cov
@@ -288,7 +301,7 @@ pub(crate) fn fit(model: AfmModel, d: &FitData) -> Result<ModelFit> {
     let se_uc = se(p - 1).map(|s| s * len);
     let law = model.law(r, k, w, d.z0)?;
     let pull_off = law.pull_off_force(Control::Load)?;
-    let rms = fs * (b.ssr / n as f64).sqrt();
+    let rms = fs * (b.ssr / m as f64).sqrt();
     let known = d.radius.is_some();
     let adhesive = model.adhesive();
     let tabor = if adhesive {
@@ -406,8 +419,8 @@ fn levenberg_marquardt(
             if r(&t, &mut trial).is_some() {
                 let s: f64 = trial.iter().map(|v| v * v).sum();
                 if s <= ssr {
-                    let small = step.iter().all(|v| v.abs() < 1e-9)
-                        || (ssr - s) <= 1e-12 * ssr.max(1e-300);
+                    let small =
+                        step.iter().all(|v| v.abs() < 1e-9) || (ssr - s) <= 1e-12 * ssr.max(1e-300);
                     th = t;
                     res.copy_from_slice(&trial);
                     ssr = s;

@@ -299,9 +299,7 @@ fn free_part(z: &[f64], f: &[f64]) -> (f64, f64, f64, usize) {
         let (a, b, s) = fitted;
         let thr = THRESHOLD * s.max(floor);
         let off = |i: usize| (f[i] - a - b * z[i]).abs() > thr;
-        let departure = (0..n)
-            .find(|&i| (i..(i + 3).min(n)).all(off))
-            .unwrap_or(n);
+        let departure = (0..n).find(|&i| (i..(i + 3).min(n)).all(off)).unwrap_or(n);
         let margin = (departure / 20).max(2);
         end = departure.saturating_sub(margin).max(5).min(n);
         fitted = line(&z[..end], &f[..end]);
@@ -345,11 +343,7 @@ pub fn analyze(curve: &AfmCurve, options: &AfmOptions) -> Result<AfmAnalysis> {
     let fr_rev: Vec<f64> = raw[rs..].iter().rev().copied().collect();
     let (aa, ba, sa, na) = free_part(za, fa);
     let (ar, br, sr, nr) = free_part(&zr, &fr_rev);
-    let fa: Vec<f64> = za
-        .iter()
-        .zip(fa)
-        .map(|(&z, &f)| f - aa - ba * z)
-        .collect();
+    let fa: Vec<f64> = za.iter().zip(fa).map(|(&z, &f)| f - aa - ba * z).collect();
     let fr: Vec<f64> = z[rs..]
         .iter()
         .zip(&raw[rs..])
@@ -361,7 +355,9 @@ pub fn analyze(curve: &AfmCurve, options: &AfmOptions) -> Result<AfmAnalysis> {
     // 3. Contact point and jump-in on the approach.
     let (_, i_max_a) = extremes(&fa);
     let floor_a = sa.max(1e-12 * fa[i_max_a].abs());
-    let dip = (0..=i_max_a).filter(|&i| i + 1 >= na).min_by(|&i, &j| fa[i].total_cmp(&fa[j]));
+    let dip = (0..=i_max_a)
+        .filter(|&i| i + 1 >= na)
+        .min_by(|&i, &j| fa[i].total_cmp(&fa[j]));
     let jump = dip.filter(|&i| fa[i] < -THRESHOLD * floor_a && i < i_max_a);
     let (contact_point, jump_in_distance, jump_in_force) = match jump {
         Some(i_min) => {
@@ -442,6 +438,7 @@ pub fn analyze(curve: &AfmCurve, options: &AfmOptions) -> Result<AfmAnalysis> {
         radius: options.tip_radius,
         direction,
         spring_constant: k,
+        pull_off: (pull_off_force < -THRESHOLD * floor_r).then_some(pull_off_force),
     };
     let models: Vec<AfmModel> = if options.models.is_empty() {
         AfmModel::ALL.to_vec()
@@ -561,7 +558,10 @@ pub fn analyze(curve: &AfmCurve, options: &AfmOptions) -> Result<AfmAnalysis> {
     if ff.len() < 10 {
         raise(
             "few_fit_points",
-            format!("{} retract points between the maximum and the pull-off", ff.len()),
+            format!(
+                "{} retract points between the maximum and the pull-off",
+                ff.len()
+            ),
         );
     }
     let flags = flag_details.iter().map(|f| f.code).collect();
