@@ -241,9 +241,9 @@ impl AfmAnalysis {
 
 /// Maugis parameter below which DMT holds and above which JKR holds
 /// (Johnson & Greenwood 1997).
-pub const DMT_LAMBDA_MAX: f64 = 0.1;
-/// See [`DMT_LAMBDA_MAX`].
-pub const JKR_LAMBDA_MIN: f64 = 5.0;
+const DMT_LAMBDA_MAX: f64 = 0.1;
+/// See `DMT_LAMBDA_MAX`.
+const JKR_LAMBDA_MIN: f64 = 5.0;
 
 /// Whether a fit's own Maugis parameter λ = 1.157 μ lies in its model's
 /// range: DMT for λ ≤ 0.1, JKR for λ ≥ 5, Maugis–Dugdale and Hertz always
