@@ -46,9 +46,11 @@ pub fn run(args: &AfmArgs) -> Result<(), Box<dyn Error>> {
     let models = match args.model.as_str() {
         "auto" => Vec::new(),
         "lj" => {
-            return Err("model `lj`: the tabulated Lennard-Jones sphere is not fitted yet; \
+            return Err(
+                "model `lj`: the tabulated Lennard-Jones sphere is not fitted yet; \
                         maugis_dugdale uses the Lennard-Jones stress (λ = 1.157 μ)"
-                .into())
+                    .into(),
+            )
         }
         m => vec![AfmModel::from_name(m).ok_or_else(|| {
             format!("unknown model `{m}`: auto | hertz | dmt | jkr | maugis_dugdale")
@@ -178,7 +180,9 @@ fn plot(path: &Path, a: &AfmAnalysis, c: &AfmCurve) -> Result<(), Box<dyn Error>
     let nm = |z: f64| z * 1e9;
     let nn = |f: f64| f * 1e9;
     let rs = c.retract_start;
-    let approach: Vec<(f64, f64)> = (0..rs).map(|i| (nm(c.position[i]), nn(c.force[i] * scale(a, c)))).collect();
+    let approach: Vec<(f64, f64)> = (0..rs)
+        .map(|i| (nm(c.position[i]), nn(c.force[i] * scale(a, c))))
+        .collect();
     let retract: Vec<(f64, f64)> = (rs..c.len())
         .map(|i| (nm(c.position[i]), nn(c.force[i] * scale(a, c))))
         .collect();
@@ -189,10 +193,17 @@ fn plot(path: &Path, a: &AfmAnalysis, c: &AfmCurve) -> Result<(), Box<dyn Error>
         let pts = a.model_curve(f, f_top, 200)?;
         models.push((
             f.model,
-            pts.into_iter().map(|(z, f)| (nm(z), nn(f))).collect::<Vec<_>>(),
+            pts.into_iter()
+                .map(|(z, f)| (nm(z), nn(f)))
+                .collect::<Vec<_>>(),
         ));
     }
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    let (mut x0, mut x1, mut y0, mut y1) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
     for &(x, y) in approach.iter().chain(&retract) {
         x0 = x0.min(x);
         x1 = x1.max(x);
@@ -240,18 +251,24 @@ fn plot(path: &Path, a: &AfmAnalysis, c: &AfmCurve) -> Result<(), Box<dyn Error>
     let cp = nm(a.contact_point);
     let red = RGBColor(200, 30, 30);
     chart
-        .draw_series(LineSeries::new(vec![(cp, y0), (cp, y1)], red.stroke_width(1)))?
+        .draw_series(LineSeries::new(
+            vec![(cp, y0), (cp, y1)],
+            red.stroke_width(1),
+        ))?
         .label("contact point")
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], red.stroke_width(1)));
     for (i, (name, pts)) in models.into_iter().enumerate() {
         let color = Palette99::pick(i + 2).to_rgba();
         chart
             .draw_series(LineSeries::new(
-                pts.into_iter().filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1),
+                pts.into_iter()
+                    .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1),
                 color.stroke_width(2),
             ))?
             .label(format!("{name} fit"))
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+            });
     }
     chart
         .configure_series_labels()
