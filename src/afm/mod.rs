@@ -39,11 +39,15 @@
 //!
 //! # Measured curves (`../shared/data/afm`)
 //!
-//! | file | k (N/m) | baseline (nN) | pull-off (nN) | jump-in (nm) | adhesion energy (J) | recommended |
-//! |---|---|---|---|---|---|---|
-//! | MFP-3D SiN | 1.1841 | see README | −12.9 | see README | see README | see README |
+//! No tip radius is recorded in either file (the fits give E*√R and wR; E*
+//! below is for an assumed R = 20 nm):
 //!
-//! (`asperity afm FILE --json` prints them; README "AFM force curves".)
+//! | file | k (N/m) | baseline at contact (nN) | pull-off (nN) | jump-in (nm) | adhesion energy (J) | recommended |
+//! |---|---|---|---|---|---|---|
+//! | MFP-3D SiN | 1.1841 | −3.96 | −12.77 | 3.8 | 1.76e-16 | DMT (flagged: μ ≈ 24 favours JKR) |
+//! | JPK QI | 35.028 | −180.9 (tilt 7.4e-3 N/m) | −4.6 (within noise) | none | 1.5e-16 | Hertz, E* = 78.6 ± 0.6 MPa |
+//!
+//! (`asperity afm FILE --json` prints them; README, "`asperity afm FILE`".)
 //!
 //! # References
 //!
