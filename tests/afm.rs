@@ -378,3 +378,47 @@ fn jpk_curve_is_finite_and_flagged() {
         assert!(f.e_star.unwrap().is_finite());
     }
 }
+
+#[test]
+fn arbitrary_curves_never_panic_and_ok_results_are_finite() {
+    // Pure noise, steps, ramps, constant curves, lengths 16…400.
+    for seed in 0..40u64 {
+        let n = 16 + (seed as usize * 37) % 385;
+        let z: Vec<f64> = (0..n)
+            .map(|i| {
+                let t = i as f64 / n as f64;
+                1e-6 * if t < 0.5 { t } else { 1.0 - t } + 1e-10 * noise(i, seed)
+            })
+            .collect();
+        let f: Vec<f64> = (0..n)
+            .map(|i| match seed % 4 {
+                0 => 1e-9 * noise(i, seed + 100),
+                1 => {
+                    if i % 7 == 0 {
+                        5e-9
+                    } else {
+                        -2e-9
+                    }
+                }
+                2 => 1e-8 * (i as f64 / n as f64),
+                _ => 0.0,
+            })
+            .collect();
+        // A noisy turning point can leave fewer than 8 points a side: an error.
+        let Ok(c) = AfmCurve::new(z, f, None, Some(0.5 + seed as f64)) else {
+            continue;
+        };
+        let opts = AfmOptions {
+            tip_radius: (seed % 2 == 0).then_some(10e-9),
+            ..AfmOptions::default()
+        };
+        if let Ok(a) = analyze(&c, &opts) {
+            assert!(a.pull_off_force.is_finite() && a.adhesion_energy.is_finite());
+            assert!(a.contact_point.is_finite() && a.jump_in_distance.is_finite());
+            for f in &a.fits {
+                assert!(f.rms_residual.is_finite() && f.e_star_times_sqrt_radius.is_finite());
+            }
+            assert!(serde_json::from_str::<serde_json::Value>(&a.to_json()).is_ok());
+        }
+    }
+}

@@ -253,12 +253,12 @@ pub(crate) fn fit(model: AfmModel, d: &FitData) -> Result<ModelFit> {
         let uc = y_ref + len * th[p - 1];
         let law = model.law(r, k, w, d.z0).ok()?;
         let pc = law.pull_off_force(Control::Load).ok()?;
-        for i in 0..n {
-            let v = residual_at(law.as_ref(), pc, kl, uc, d.force[i], d.tip[i])? / fs;
+        for ((o, &f), &y) in out.iter_mut().zip(d.force).zip(d.tip) {
+            let v = residual_at(law.as_ref(), pc, kl, uc, f, y)? / fs;
             if !v.is_finite() {
                 return None;
             }
-            out[i] = v;
+            *o = v;
         }
         if let Some(po) = d.pull_off {
             out[n] = (po - pc) / fs;
@@ -367,11 +367,10 @@ struct Lm {
 /// Levenberg–Marquardt with Marquardt's diagonal scaling on a residual
 /// `r(θ)` of length `n` (`None` where the model is undefined); central
 /// differences with step 1e-6 (θ is O(1) by construction).
-fn levenberg_marquardt(
-    r: &dyn Fn(&[f64], &mut [f64]) -> Option<()>,
-    mut th: Vec<f64>,
-    n: usize,
-) -> Option<Lm> {
+/// A residual function: fills its second argument, `None` where undefined.
+type Residual<'a> = dyn Fn(&[f64], &mut [f64]) -> Option<()> + 'a;
+
+fn levenberg_marquardt(r: &Residual, mut th: Vec<f64>, n: usize) -> Option<Lm> {
     let p = th.len();
     let mut res = vec![0.0; n];
     r(&th, &mut res)?;

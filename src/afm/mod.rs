@@ -374,7 +374,7 @@ pub fn analyze(curve: &AfmCurve, options: &AfmOptions) -> Result<AfmAnalysis> {
         }
         None => {
             let c = (0..i_max_a).rev().find(|&i| fa[i] <= 0.0).unwrap_or(0);
-            let zc = if c + 1 <= i_max_a && fa[c + 1] != fa[c] {
+            let zc = if c < i_max_a && fa[c + 1] != fa[c] {
                 let t = (0.0 - fa[c]) / (fa[c + 1] - fa[c]);
                 za[c] + t.clamp(0.0, 1.0) * (za[c + 1] - za[c])
             } else {
@@ -524,7 +524,7 @@ pub fn analyze(curve: &AfmCurve, options: &AfmOptions) -> Result<AfmAnalysis> {
         let rel = c
             .e_star_times_sqrt_radius_stderr
             .map(|s| s / c.e_star_times_sqrt_radius);
-        if rel.map_or(true, |r| !(r <= 0.5)) {
+        if rel.map_or(true, |r| r.is_nan() || r > 0.5) {
             raise(
                 "e_star_unresolved",
                 format!(
