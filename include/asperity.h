@@ -43,6 +43,55 @@
 #define ASPERITY_VERSION_PATCH 0
 
 
+// Model selector: fit every model and recommend one.
+#define ASPERITY_AFM_MODEL_AUTO 0
+
+// Model selector: Hertz.
+#define ASPERITY_AFM_MODEL_HERTZ 1
+
+// Model selector: DMT.
+#define ASPERITY_AFM_MODEL_DMT 2
+
+// Model selector: JKR.
+#define ASPERITY_AFM_MODEL_JKR 3
+
+// Model selector: Maugis–Dugdale with the Lennard-Jones stress.
+#define ASPERITY_AFM_MODEL_MAUGIS_DUGDALE 4
+
+// Input signal: the array holds the cantilever force (N, positive repulsive).
+#define ASPERITY_AFM_INPUT_FORCE 0
+
+// Input signal: the array holds the deflection (m); force = k · deflection.
+#define ASPERITY_AFM_INPUT_DEFLECTION 1
+
+// Flag bit: no tip radius; the fits give E*·√R and w·R.
+#define ASPERITY_AFM_FLAG_RADIUS_UNKNOWN (1 << 0)
+
+// Flag bit: no jump-in on the approach.
+#define ASPERITY_AFM_FLAG_NO_JUMP_IN (1 << 1)
+
+// Flag bit: the pull-off is within the noise of the baseline.
+#define ASPERITY_AFM_FLAG_NO_ADHESION (1 << 2)
+
+// Flag bit: a free part shorter than 20 points.
+#define ASPERITY_AFM_FLAG_SHORT_BASELINE (1 << 3)
+
+// Flag bit: approach and retract baselines differ (drag, drift).
+#define ASPERITY_AFM_FLAG_BASELINE_MISMATCH (1 << 4)
+
+// Flag bit: E* of the recommended fit is undetermined (relative standard
+// error above 0.5).
+#define ASPERITY_AFM_FLAG_E_STAR_UNRESOLVED (1 << 5)
+
+// Flag bit: a model could not be fitted or did not converge.
+#define ASPERITY_AFM_FLAG_FIT_FAILED (1 << 6)
+
+// Flag bit: the recommended model lies outside its Tabor range.
+#define ASPERITY_AFM_FLAG_MODEL_OUTSIDE_TABOR_RANGE (1 << 7)
+
+// Flag bit: fewer than 10 retract points fitted.
+#define ASPERITY_AFM_FLAG_FEW_FIT_POINTS (1 << 8)
+
 // Law kind: not a law (an all-zero `AsperityNormalLaw`).
 #define ASPERITY_LAW_NONE 0
 
@@ -459,6 +508,89 @@ typedef struct AsperitySliderGeometry AsperitySliderGeometry;
 // `asperity_table_new_*` or `asperity_table_from_json`, release it with
 // `asperity_table_free`. Safe to share between threads.
 typedef struct AsperityTable AsperityTable;
+
+// One fitted model (SI units). A quantity that is not determined (E* and
+// w without a radius, w for Hertz, a standard error of a singular fit) is 0.
+typedef struct AsperityAfmFit {
+    // One of `ASPERITY_AFM_MODEL_*` (never AUTO).
+    int32_t model;
+    // 1 when the least-squares iteration converged.
+    int32_t converged;
+    // Contact modulus E* (Pa), for the given tip radius.
+    double e_star;
+    // Standard error of E* (Pa).
+    double e_star_stderr;
+    // E*·√R (Pa·m^½).
+    double e_star_times_sqrt_radius;
+    // Standard error of E*·√R.
+    double e_star_times_sqrt_radius_stderr;
+    // Work of adhesion w (J/m²), for the given tip radius.
+    double work_of_adhesion;
+    // Standard error of w (J/m²).
+    double work_of_adhesion_stderr;
+    // w·R (J/m).
+    double work_of_adhesion_times_radius;
+    // Standard error of w·R (J/m).
+    double work_of_adhesion_times_radius_stderr;
+    // Tabor parameter μ of the fit (z₀ = 0.3 nm).
+    double tabor_parameter;
+    // The law's load-controlled pull-off force (N).
+    double pull_off_force;
+    // Position of zero overlap (m, on the input's position axis).
+    double zero_overlap_position;
+    // Root-mean-square effective-variance residual (N).
+    double rms_residual;
+    // Points fitted.
+    size_t points;
+} AsperityAfmFit;
+
+// Result of `asperity_afm_analyze` (SI units, never NaN).
+typedef struct AsperityAfmResult {
+    // Pull-off force (N, negative), from the retract baseline.
+    double pull_off_force;
+    // Position of the pull-off (m).
+    double pull_off_position;
+    // Jump-in distance (m), 0 without jump-in.
+    double jump_in_distance;
+    // Force at the bottom of the jump-in dip (N), 0 without jump-in.
+    double jump_in_force;
+    // Adhesion energy (J): the area of the attractive retract part.
+    double adhesion_energy;
+    // Retract baseline: force (N) at the contact point.
+    double baseline_offset;
+    // Retract baseline: tilt dF/dz (N/m).
+    double baseline_slope;
+    // Retract baseline: noise (N, standard deviation).
+    double baseline_noise;
+    // Approach baseline: force (N) at the contact point.
+    double approach_baseline_offset;
+    // Approach baseline: tilt (N/m).
+    double approach_baseline_slope;
+    // Contact point (m, on the input's position axis).
+    double contact_point;
+    // Spring constant used (N/m).
+    double spring_constant;
+    // +1 when the position grows towards the sample, −1 otherwise.
+    double direction;
+    // Tabor parameter of the recommended fit (0 when none).
+    double tabor_parameter;
+    // First and last index fitted (retract, maximum force to pull-off).
+    size_t fit_range[2];
+    // 1 when a tip radius was given (E*, w filled).
+    int32_t radius_known;
+    // The recommended model (`ASPERITY_AFM_MODEL_*`), 0 when none.
+    int32_t recommended_model;
+    // Its index in `fits`, −1 when none.
+    int32_t recommended_index;
+    // Number of entries of `fits` in use (cheapest model first).
+    int32_t n_fits;
+    // `ASPERITY_AFM_FLAG_*` bits.
+    uint32_t flags;
+    // Reserved, 0.
+    uint32_t reserved;
+    // The fitted models, cheapest first; `n_fits` are valid.
+    struct AsperityAfmFit fits[4];
+} AsperityAfmResult;
 
 // Inputs of a Hertz sphere, as [`Hertz::from_params`] and C's
 // `asperity_law_from_params` take them.
@@ -1341,6 +1473,8 @@ typedef struct AsperityPeakStatistics {
 
 
 
+
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -1379,6 +1513,31 @@ int32_t asperity_type_name(size_t index,
                            char *buf,
                            size_t len,
                            size_t *needed);
+
+// Analyse an AFM force–distance curve of `n` points: `position` (m, piezo
+// or height sensor, either direction), `signal` (force in N or deflection
+// in m, as `input_kind` says: `ASPERITY_AFM_INPUT_*`), approach first and
+// retract from index `retract_start` (0: split at the turning point);
+// `spring_constant` k (N/m, > 0), `tip_radius` R (m, 0 = unknown: the fits
+// then give E*·√R and w·R), `model` (`ASPERITY_AFM_MODEL_*`, AUTO fits all
+// and recommends one). Writes baselines, contact point, jump-in, pull-off,
+// adhesion energy, the fits and the flags into `result` (see
+// `afm::analyze`). Errors: NULL pointers, n too small (8 points a side),
+// non-finite values, non-positive k, negative radius, unknown selectors.
+int32_t asperity_afm_analyze(size_t n,
+                             const double *position,
+                             const double *signal,
+                             int32_t input_kind,
+                             size_t retract_start,
+                             double spring_constant,
+                             double tip_radius,
+                             int32_t model,
+                             struct AsperityAfmResult *result);
+
+// The code of AFM flag bit `bit` (0-based, e.g. `"no_jump_in"` for bit 1)
+// as a static NUL-terminated string; NULL for a bit without a flag. Do not
+// free.
+const char *asperity_afm_flag_name(uint32_t bit);
 
 // The law of kind `kind` (`ASPERITY_LAW_*`) from its inputs: the member of
 // `params` that `kind` names (`params->jkr` for `ASPERITY_LAW_JKR`, ...;

@@ -57,6 +57,7 @@
 
 #![deny(missing_docs)]
 
+pub mod afm;
 pub mod contact;
 pub mod error;
 pub mod ffi;

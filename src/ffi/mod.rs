@@ -9,6 +9,7 @@
 #![allow(clippy::missing_safety_doc)]
 
 pub mod abi;
+pub mod afm;
 pub mod contact;
 pub mod dynamic;
 pub mod fidelity;

@@ -4,6 +4,7 @@
 
 use pyo3::prelude::*;
 
+mod afm;
 mod bench;
 mod common;
 mod contact;
@@ -26,6 +27,7 @@ fn _asperity(m: &Bound<'_, PyModule>) -> PyResult<()> {
     lj_sphere::register(m)?;
     tabulated::register(m)?;
     rescaling::register(m)?;
+    afm::register(m)?;
     surface::register(m)?;
     statistics::register(m)?;
     friction::register(m)?;

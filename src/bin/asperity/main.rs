@@ -28,6 +28,7 @@ macro_rules! outln {
     };
 }
 
+mod afm;
 mod axis;
 mod profile;
 mod slide;
@@ -143,6 +144,10 @@ enum Command {
         #[arg(long)]
         svg: Option<PathBuf>,
     },
+    /// Analyse a measured AFM force–distance curve: baseline, contact point,
+    /// jump-in, pull-off, adhesion energy, contact-law fits (E*, w or E*√R,
+    /// wR with standard errors, Tabor parameter) and the recommended model.
+    Afm(afm::AfmArgs),
     /// ISO 4287 parameters, spectrum and plots of a measured line scan (or the
     /// areal parameters of a height map).
     Profile(profile::ProfileArgs),
@@ -287,6 +292,7 @@ fn run(cli: Cli) -> Result<(), Box<dyn Error>> {
             json,
             svg,
         )?,
+        Command::Afm(args) => afm::run(&args)?,
         Command::Profile(args) => profile::run(&args)?,
         Command::Slide(args) => slide::run(&args)?,
         Command::Lj {

@@ -357,6 +357,21 @@ def analyze_indentation(
     unloading_window: Tuple[Real, Real] = (0.2, 0.98),
 ) -> Dict[str, Any]: ...
 def read_indentation_curve(path: Path) -> Dict[str, Any]: ...
+def analyze_afm(
+    source: Optional[Path] = None,
+    *,
+    position: Optional[ArrayLike] = None,
+    force: Optional[ArrayLike] = None,
+    deflection: Optional[ArrayLike] = None,
+    retract_start: Optional[int] = None,
+    spring_constant: Optional[Real] = None,
+    tip_radius: Optional[Real] = None,
+    model: Literal["auto", "hertz", "dmt", "jkr", "maugis_dugdale"] = "auto",
+    position_column: Optional[str] = None,
+    z0: Real = 0.3e-9,
+    tolerance: Real = 0.1,
+) -> Dict[str, Any]: ...
+def read_afm_curve(path: Path, position_column: Optional[str] = None) -> Dict[str, Any]: ...
 
 # --- surfaces ---------------------------------------------------------------
 
