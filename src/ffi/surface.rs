@@ -444,7 +444,7 @@ pub unsafe extern "C" fn asperity_profile_psd(
 }
 
 /// Power-law fit of the PSD of `heights` (`n` values, m, spacing `dx` m;
-/// bridge-detrended rectangular periodogram, weighted log-bin fit) over
+/// bridge-detrended Hann periodogram, weighted log-bin fit) over
 /// `q_min ≤ q ≤ q_max` (rad/m); `q_min` = `q_max` = 0 chooses the band from
 /// the data (the widest run of at least one decade that is a power law with
 /// 0 ≤ H ≤ 1). Errors: as `asperity_profile_psd`, a bad band, fewer than 3

@@ -64,7 +64,8 @@ pub fn areal_gaussian_filter(
     let z = map.heights();
     let mut rows = vec![0.0; nx * ny];
     for j in 0..ny {
-        let (_, w) = gaussian_mean_line(&z[j * nx..(j + 1) * nx], map.dx(), cutoff, FilterEnds::Keep)?;
+        let (_, w) =
+            gaussian_mean_line(&z[j * nx..(j + 1) * nx], map.dx(), cutoff, FilterEnds::Keep)?;
         rows[j * nx..(j + 1) * nx].copy_from_slice(&w);
     }
     let mut mean = vec![0.0; nx * ny];

@@ -253,7 +253,10 @@ impl Acf2d {
         if !(u >= 0.0 && v >= 0.0 && u <= (self.nx - 1) as f64 && v <= (self.ny - 1) as f64) {
             return None;
         }
-        let (i, j) = ((u.floor() as usize).min(self.nx - 2), (v.floor() as usize).min(self.ny - 2));
+        let (i, j) = (
+            (u.floor() as usize).min(self.nx - 2),
+            (v.floor() as usize).min(self.ny - 2),
+        );
         let (fu, fv) = (u - i as f64, v - j as f64);
         let g = |i: usize, j: usize| self.r[j * self.nx + i];
         let val = g(i, j) * (1.0 - fu) * (1.0 - fv)

@@ -90,12 +90,12 @@ pub use iso::{
 pub use map_spectral::{acf_2d, isotropy, psd_2d, Acf2d, Isotropy, Psd2d, Radial};
 pub use pattern::{ks_statistics, ks_two_sample, representative_pattern, RepresentativePattern};
 pub use peaks::{peaks, summits, summits_grid, Peak, PeakStatistics, Summit};
+pub use power_law::{
+    bridge_detrend, default_fit_band, hurst_estimate, hurst_fit, psd_hurst_exponent, HurstEstimate,
+};
 pub use profile::{remove_form, Form, MapForm, Profile, Topography};
 pub use read::{
     parse_profile, parse_topography, profile_from_positions, read_profile, read_topography, Spacing,
-};
-pub use power_law::{
-    bridge_detrend, default_fit_band, hurst_estimate, hurst_fit, psd_hurst_exponent, HurstEstimate,
 };
 pub use scale::{scale_dependent, scale_dependent_map, ScaleDependent, ScaleDependentMap};
 pub use spectral::{

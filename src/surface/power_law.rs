@@ -4,34 +4,41 @@
 //! ## Estimator
 //!
 //! 1. **Bridge detrending** (end matching): the line through the first and
-//!    the last height is subtracted, so the periodic extension that the DFT
-//!    implies has no jump. A jump would add leakage ∝ q⁻² to every ordinate
-//!    and flatten spectra steeper than q⁻² (H > 0.5); after end matching the
-//!    leakage left (from the slope mismatch) falls as q⁻⁴, below any
-//!    self-affine spectrum with H < 1.5.
-//! 2. **Rectangular periodogram** G_k (the normalisation of
-//!    [`super::spectral`]). No taper: a taper's main lobe averages
-//!    neighbouring harmonics, which lifts a steep spectrum at its lowest
-//!    harmonics (the Hann window by 11 % at k = 4 for H = 0.8) and tilts the
-//!    fit. The ordinates k = 1, 2 (shaped by form removal and the bridge) and
-//!    the Nyquist ordinate (a χ²₁ variate) are left out.
-//! 3. **Log bins**, 10 per decade: each bin holds the mean of log₁₀ q and of
+//!    the last height is subtracted, which removes the bulk of a tilt and
+//!    the jump between the ends of a measured (non-periodic) scan.
+//! 2. **Hann-windowed periodogram** G_k (normalised by ⟨w²⟩ = 3/8, as
+//!    [`super::spectral`]): the taper brings both ends to zero with zero
+//!    slope, so whatever jump or kink is left leaks ∝ q⁻⁶, below any
+//!    self-affine spectrum; on a periodic profile the sawtooth the bridge
+//!    adds is tapered away the same way. The ordinates k = 1, 2 (shaped by
+//!    the form removal and the taper) and the Nyquist ordinate are left out.
+//! 3. **The taper's smoothing is modelled**, not ignored: the Hann window
+//!    averages neighbouring harmonics, E[G_k] = ⅔G(q_k) + ⅙(G(q_{k−1}) +
+//!    G(q_{k+1})), which lifts a steep spectrum at its lowest harmonics (by
+//!    e(e+1)/(6k²) for G ∝ q^{−e}: 11 % at k = 4 for H = 0.8) and would
+//!    flatten the fit. The fit subtracts log₁₀ of that factor for the
+//!    current slope from every bin and refits (three passes).
+//! 4. **Log bins**, 10 per decade: each bin holds the mean of log₁₀ q and of
 //!    log₁₀ G over its n_b ordinates. A periodogram ordinate of a Gaussian
 //!    profile is G·χ²₂/2, whose log₁₀ has the variance
 //!    σ₁² = (π²/6)/ln²10 ≈ 0.310 and the mean log₁₀ G − γ_E/ln 10 whatever
 //!    the bin size (a constant that moves the prefactor, corrected by
-//!    e^{γ_E}, never the slope).
-//! 4. **Weighted least squares** of the bin points with the variance
-//!    σ_b² = σ₁²/n_b + σ_m², where σ_m = 0.02 decade (5 % in G) is a floor for
-//!    the departures of real spectra from a pure power law that are no
-//!    reason to reject a band.
-//! 5. **Band from the data** ([`hurst_fit`] without a band): every run of
+//!    e^{γ_E}, never the slope). Neighbouring Hann ordinates are correlated
+//!    (their log-ordinates by Li₂(4/9)/ζ(2) ≈ 0.31 at lag 1, 0.017 at lag
+//!    2), so a bin's mean has the variance σ₁² f(n_b)/n_b with
+//!    f = 1 + 2(1 − 1/n_b)·0.31 + 2(1 − 2/n_b)·0.017.
+//! 5. **Weighted least squares** of the bin points with the variance
+//!    σ_b² = σ₁² f(n_b)/n_b + σ_m², where σ_m = 0.02 decade (5 % in G) is a
+//!    floor for the departures of real spectra from a pure power law that
+//!    are no reason to reject a band.
+//! 6. **Band from the data** ([`hurst_fit`] without a band): every run of
 //!    consecutive bins spanning at least one decade of q is fitted; a run is
 //!    a power law when χ² = Σ r_b²/σ_b² ≤ ν + 3√(2ν) (ν = bins − 2: the
 //!    residuals are within three standard deviations of the χ²_ν they would
 //!    follow for a power law) and 0 ≤ H ≤ 1. The widest such run is the
 //!    band (ties: the smaller χ²/ν). Instrument roll-off (the stylus tip),
-//!    a noise floor or a roll-off to a flat spectrum end the band.
+//!    a noise floor or a roll-off to a flat spectrum end the band; a line
+//!    spectrum (a sine) leaks ∝ q⁻⁶ (H = 2.5) and has none.
 //!
 //! The uncertainty is the standard error of the WLS slope,
 //! s_s = (Σ_b w_b (x_b − x̄)²)^{−1/2}, times √(χ²/ν) when that exceeds 1 (the
@@ -41,7 +48,8 @@
 //!
 //! On generated self-affine profiles (the library's Fourier-filtered
 //! generator, 2¹⁶ points) the fitted H is within 0.02 of the input for
-//! H = 0.3 … 0.9 (tests/surface_power_law.rs).
+//! H = 0.3 … 0.9, and so is it on non-periodic segments of them
+//! (tests/surface_topography.rs).
 //!
 //! # References
 //!
@@ -67,14 +75,20 @@ const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
 /// Log bins per decade.
 pub(crate) const PER_DECADE: f64 = 10.0;
 /// Variance of log₁₀ of one χ²₂/2 ordinate: (π²/6)/ln²10.
-const VAR_LOG10_ORDINATE: f64 =
-    core::f64::consts::PI * core::f64::consts::PI / 6.0 / (core::f64::consts::LN_10 * core::f64::consts::LN_10);
+const VAR_LOG10_ORDINATE: f64 = core::f64::consts::PI * core::f64::consts::PI
+    / 6.0
+    / (core::f64::consts::LN_10 * core::f64::consts::LN_10);
 /// Model floor σ_m (decades of G).
 const MODEL_FLOOR: f64 = 0.02;
 /// Shortest band the data-chosen fit accepts (decades of q).
 const MIN_DECADES: f64 = 1.0;
 /// Lowest harmonic used.
 const FIRST_HARMONIC: usize = 3;
+/// Correlation of the logs of neighbouring Hann periodogram ordinates at lags
+/// 1 and 2: Li₂(ρ)/ζ(2) with the ordinates' correlations ρ = 4/9, 1/36.
+const LOG_CORRELATION: [f64; 2] = [0.308, 0.017];
+/// Passes of the window-smoothing correction.
+const PASSES: usize = 3;
 /// Shortest profile for [`psd_hurst_exponent`] and [`hurst_estimate`].
 const MIN_POINTS: usize = 128;
 
@@ -158,20 +172,40 @@ struct Wls {
     r_squared: f64,
 }
 
-fn wls(bins: &[Bin]) -> Wls {
-    let w = |b: &Bin| 1.0 / (VAR_LOG10_ORDINATE / b.n as f64 + MODEL_FLOOR * MODEL_FLOOR);
+/// Variance of a bin's mean log₁₀ G (module docs, items 4 and 5).
+fn bin_variance(b: &Bin, correlated: bool) -> f64 {
+    let n = b.n as f64;
+    let f = if correlated {
+        1.0 + 2.0 * (1.0 - 1.0 / n) * LOG_CORRELATION[0]
+            + 2.0 * (1.0 - 2.0 / n).max(0.0) * LOG_CORRELATION[1]
+    } else {
+        1.0
+    };
+    VAR_LOG10_ORDINATE * f / n + MODEL_FLOOR * MODEL_FLOOR
+}
+
+/// log₁₀ of the Hann smoothing factor ⅔ + ⅙((1 − 1/k)^s + (1 + 1/k)^s) at
+/// harmonic k for G ∝ q^s.
+fn hann_lift(k: f64, s: f64) -> f64 {
+    let u = 1.0 / k;
+    (2.0 / 3.0 + ((1.0 - u).powf(s) + (1.0 + u).powf(s)) / 6.0).log10()
+}
+
+fn wls_once(bins: &[Bin], shift: &[f64], correlated: bool) -> Wls {
+    let w = |b: &Bin| 1.0 / bin_variance(b, correlated);
+    let y = |i: usize| bins[i].lg - shift[i];
     let (mut sw, mut sx, mut sy) = (0.0, 0.0, 0.0);
-    for b in bins {
+    for (i, b) in bins.iter().enumerate() {
         let wb = w(b);
         sw += wb;
         sx += wb * b.lq;
-        sy += wb * b.lg;
+        sy += wb * y(i);
     }
     let (mx, my) = (sx / sw, sy / sw);
     let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
-    for b in bins {
+    for (i, b) in bins.iter().enumerate() {
         let wb = w(b);
-        let (dx, dy) = (b.lq - mx, b.lg - my);
+        let (dx, dy) = (b.lq - mx, y(i) - my);
         sxx += wb * dx * dx;
         sxy += wb * dx * dy;
         syy += wb * dy * dy;
@@ -180,8 +214,9 @@ fn wls(bins: &[Bin]) -> Wls {
     let intercept = my - slope * mx;
     let chi2: f64 = bins
         .iter()
-        .map(|b| {
-            let r = b.lg - intercept - slope * b.lq;
+        .enumerate()
+        .map(|(i, b)| {
+            let r = y(i) - intercept - slope * b.lq;
             w(b) * r * r
         })
         .sum();
@@ -201,9 +236,27 @@ fn wls(bins: &[Bin]) -> Wls {
     }
 }
 
-/// The [`HurstFit`] of `bins` (at least 3, with 2 distinct q).
-pub(crate) fn fit_bins(bins: &[Bin]) -> HurstFit {
-    let f = wls(bins);
+/// The WLS fit of `bins`; with `hann_dq = Some(Δq)` the bins are Hann
+/// ordinates at q = kΔq and the window's smoothing is modelled (module docs,
+/// item 3).
+fn wls(bins: &[Bin], hann_dq: Option<f64>) -> Wls {
+    let mut shift = vec![0.0; bins.len()];
+    let mut f = wls_once(bins, &shift, hann_dq.is_some());
+    if let Some(dq) = hann_dq {
+        for _ in 0..PASSES {
+            for (sh, b) in shift.iter_mut().zip(bins) {
+                *sh = hann_lift(10f64.powf(b.lq) / dq, f.slope);
+            }
+            f = wls_once(bins, &shift, true);
+        }
+    }
+    f
+}
+
+/// The [`HurstFit`] of `bins` (at least 3, with 2 distinct q); `hann_dq` as
+/// in [`wls`].
+pub(crate) fn fit_bins(bins: &[Bin], hann_dq: Option<f64>) -> HurstFit {
+    let f = wls(bins, hann_dq);
     HurstFit {
         hurst: -(f.slope + 1.0) / 2.0,
         hurst_uncertainty: f.slope_se / 2.0,
@@ -239,23 +292,23 @@ pub fn bridge_detrend(heights: &[f64]) -> Vec<f64> {
         .collect()
 }
 
-/// Log bins of the bridge-detrended rectangular periodogram for
-/// `FIRST_HARMONIC ≤ k < n/2`, restricted to `band` when given.
-fn binned_periodogram(heights: &[f64], dx: f64, band: Option<(f64, f64)>) -> Vec<Bin> {
+/// Log bins of the bridge-detrended Hann periodogram for
+/// `FIRST_HARMONIC ≤ k < n/2`, restricted to `band` when given; and Δq.
+fn binned_periodogram(heights: &[f64], dx: f64, band: Option<(f64, f64)>) -> (Vec<Bin>, f64) {
     let n = heights.len();
     let z = bridge_detrend(heights);
     let dq = 2.0 * core::f64::consts::PI / (n as f64 * dx);
-    let scale = dx / (core::f64::consts::PI * n as f64);
+    let scale = dx / (core::f64::consts::PI * n as f64 * 0.375);
     let (lo, hi) = band.unwrap_or((FIRST_HARMONIC as f64 * dq * (1.0 - 1e-12), f64::INFINITY));
     let mut binner = Binner::new(lo);
-    RealFft::new(n).forward_with(&z, mean(&z), false, |k, x| {
+    RealFft::new(n).forward_with(&z, mean(&z), true, |k, x| {
         let q = k as f64 * dq;
         if k == 0 || 2 * k >= n || q < lo || q > hi {
             return;
         }
         binner.add(q, x.norm_sqr() * scale);
     });
-    binner.finish()
+    (binner.finish(), dq)
 }
 
 pub(crate) fn check_fit_band(q_min: f64, q_max: f64) -> Result<()> {
@@ -281,8 +334,9 @@ pub(crate) fn check_fit_band(q_min: f64, q_max: f64) -> Result<()> {
 }
 
 /// The widest run of bins that is a power law with 0 ≤ H ≤ 1 (module docs).
-fn search_band(bins: &[Bin]) -> Option<HurstFit> {
-    let mut best: Option<(f64, f64, usize, usize)> = None; // (width, chi2/dof, a, b)
+fn search_band(bins: &[Bin], dq: f64) -> Option<HurstFit> {
+    // (width, χ²/ν, a, b): wider wins, then smaller χ²/ν.
+    let mut best: Option<(f64, f64, usize, usize)> = None;
     for a in 0..bins.len() {
         for b in a + 2..bins.len() {
             let width = (bins[b].q_hi / bins[a].q_lo).log10();
@@ -293,7 +347,7 @@ fn search_band(bins: &[Bin]) -> Option<HurstFit> {
                 continue;
             }
             let run = &bins[a..=b];
-            let f = wls(run);
+            let f = wls(run, Some(dq));
             let h = -(f.slope + 1.0) / 2.0;
             if !acceptable(&f) || !(0.0..=1.0).contains(&h) {
                 continue;
@@ -308,7 +362,7 @@ fn search_band(bins: &[Bin]) -> Option<HurstFit> {
             }
         }
     }
-    best.map(|(_, _, a, b)| fit_bins(&bins[a..=b]))
+    best.map(|(_, _, a, b)| fit_bins(&bins[a..=b], Some(dq)))
 }
 
 /// Power-law fit G = A q^s of a profile's PSD and its Hurst exponent
@@ -328,7 +382,7 @@ pub fn hurst_fit(heights: &[f64], dx: f64, band: Option<(f64, f64)>) -> Result<H
     if let Some((lo, hi)) = band {
         check_fit_band(lo, hi)?;
     }
-    let bins = binned_periodogram(heights, dx, band);
+    let (bins, dq) = binned_periodogram(heights, dx, band);
     match band {
         Some((lo, _)) => {
             if bins.len() < 3 {
@@ -338,9 +392,9 @@ pub fn hurst_fit(heights: &[f64], dx: f64, band: Option<(f64, f64)>) -> Result<H
                     reason: "fewer than 3 log bins with power between q_min and q_max",
                 });
             }
-            Ok(fit_bins(&bins))
+            Ok(fit_bins(&bins, Some(dq)))
         }
-        None => search_band(&bins).ok_or(Error::OutOfDomain {
+        None => search_band(&bins, dq).ok_or(Error::OutOfDomain {
             name: "heights",
             value: heights.len() as f64,
             reason: NO_BAND,
@@ -378,11 +432,11 @@ pub fn hurst_estimate(heights: &[f64], dx: f64) -> Result<HurstEstimate> {
     if heights.len() < MIN_POINTS {
         return none("fewer than 128 points");
     }
-    let bins = binned_periodogram(heights, dx, None);
+    let (bins, dq) = binned_periodogram(heights, dx, None);
     if bins.len() < 3 {
         return none("no spectral power (constant heights)");
     }
-    match search_band(&bins) {
+    match search_band(&bins, dq) {
         Some(f) => Ok(HurstEstimate {
             fit: Some(f),
             reason: None,

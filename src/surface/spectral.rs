@@ -211,9 +211,10 @@ impl Psd {
     /// ordinates are grouped in log bins (10 per decade, from `q_min`), each
     /// bin represented by the mean of log₁₀ G and of log₁₀ q over its
     /// ordinates, and the bins fitted by weighted least squares as in
-    /// [`super::power_law`] (the uncertainty assumes independent χ²₂
-    /// ordinates: a rectangular periodogram; a Hann one's neighbours are
-    /// correlated and its uncertainty is about 1.4 times larger). Ordinates
+    /// [`super::power_law`], without its window-smoothing correction (the
+    /// uncertainty assumes independent χ²₂ ordinates: a rectangular
+    /// periodogram of a periodic profile; a Hann one's neighbours are
+    /// correlated and its uncertainty is about 1.3 times larger). Ordinates
     /// without power (≤ 0) are skipped, so line spectra (a sine, the
     /// Weierstrass–Mandelbrot comb) are not fitted meaningfully.
     ///
@@ -238,7 +239,7 @@ impl Psd {
                 reason: "fewer than 3 log bins with power between q_min and q_max",
             });
         }
-        Ok(super::power_law::fit_bins(&bins))
+        Ok(super::power_law::fit_bins(&bins, None))
     }
 }
 
