@@ -304,13 +304,17 @@ fn analyze_profile_file(
     let c = real_opt(cutoff, "cutoff")?;
     let v = py
         .detach(|| -> Result<Value, String> {
-            let text = std::fs::read_to_string(&path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+            let text = std::fs::read_to_string(&path)
+                .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
             let mut v = match s::parse_topography(&text, s::Spacing::Tolerant) {
                 Ok(t) => map_json(t, d, c)?,
                 Err(map_err) => match s::parse_profile(&text, s::Spacing::Tolerant) {
                     Ok(p) => line_json(&p, d, c)?,
                     Err(line_err) => {
-                        return Err(format!("{}: not a line scan ({line_err}) nor a height map ({map_err})", path.display()))
+                        return Err(format!(
+                            "{}: not a line scan ({line_err}) nor a height map ({map_err})",
+                            path.display()
+                        ))
                     }
                 },
             };
