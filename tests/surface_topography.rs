@@ -524,6 +524,14 @@ fn isotropy_of_isotropic_and_grooved_maps() {
     assert!(s.gradient_ratio < 0.2, "{s:?}");
     assert!((s.gradient_direction - PI / 2.0).abs() < 0.05, "{s:?}");
     assert!(isotropy(&g, 1.0).is_err());
+    // A flat map: nothing decays, no preferred slope; very unequal spacings
+    // finish (the search along a direction is bounded in steps).
+    let flat = Topography::new(16, 16, 1e-6, 1e-6, vec![0.0; 256]).unwrap();
+    let s = isotropy(&flat, 0.2).unwrap();
+    assert!(s.texture_aspect_ratio.is_none() && s.gradient_ratio == 1.0);
+    let skew = Topography::new(16, 16, 1.0, 1e-9, iso.heights()[..256].to_vec()).unwrap();
+    let s = isotropy(&skew, 0.2).unwrap();
+    assert!(s.gradient_ratio.is_finite());
 }
 
 /// Scale-dependent slope and curvature: closed forms of a sine, and the

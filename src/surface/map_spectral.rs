@@ -284,7 +284,9 @@ impl Acf2d {
         let half_x = 0.5 * (self.nx / 2) as f64 * self.dx;
         let half_y = 0.5 * (self.ny / 2) as f64 * self.dy;
         let reach = (half_x / c.abs().max(1e-300)).min(half_y / sn.abs().max(1e-300));
-        let step = 0.25 * self.dx.min(self.dy);
+        // A quarter of the finer spacing, but at most ~8(nx + ny) steps (very
+        // unequal spacings).
+        let step = (0.25 * self.dx.min(self.dy)).max(reach / (8 * (self.nx + self.ny)) as f64);
         let mut prev = (0.0, 1.0);
         let mut t = step;
         while t <= reach {
