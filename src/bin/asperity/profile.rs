@@ -937,7 +937,10 @@ fn line_plots(prefix: &Path, a: &LineAnalysis, args: &ProfileArgs) -> Res<Vec<St
     if let Some(f) = &a.fit {
         let fit = [f.q_min, f.q_max].map(|q| (q, f.prefactor * q.powf(f.slope)));
         lines.push(line(
-            format!("power law G ∝ q^{:.3}, H = {:.3}", f.slope, f.hurst),
+            format!(
+                "power law G ∝ q^{:.3}, H = {:.3} ± {:.3}",
+                f.slope, f.hurst, f.hurst_uncertainty
+            ),
             log(&fit),
             RED,
             2,
