@@ -1405,17 +1405,20 @@ typedef struct AsperityRoughness {
     double rsm;
     // Root-mean-square slope RΔq (dimensionless), seven-point slopes.
     double rdq;
-    // Hurst exponent H of the power-law fit PSD ∝ q^{−(1+2H)} over the
-    // default band; meaningful only when `has_psd_hurst_exponent` is 1 (0
-    // otherwise: fewer than 128 samples, or the spectrum is not a power law
-    // with r² ≥ 0.9 and 0 ≤ H ≤ 1 there).
+    // Hurst exponent H of the power-law fit PSD ∝ q^{−(1+2H)} over the band
+    // chosen from the data; meaningful only when `has_psd_hurst_exponent` is
+    // 1 (0 otherwise: fewer than 128 samples, or no band of one decade where
+    // the spectrum is a power law with 0 ≤ H ≤ 1).
     double psd_hurst_exponent;
-    // Spectral moment m₀ = ∫G dq (m²) of the evaluated profile (rectangular
-    // window): the height variance, Rq² when there is one sampling length.
+    // Spectral moment m₀ (m²) of the evaluated profile: the height
+    // variance, Rq² when there is one sampling length.
     double m0;
-    // Spectral moment m₂ = ∫q²G dq (dimensionless): the slope variance.
+    // Spectral moment m₂ (dimensionless): the slope variance, mean square of
+    // the seven-point slopes of RΔq (from the derivatives, not from a
+    // rectangular-window PSD, whose m₂ measures the jump between the ends).
     double m2;
-    // Spectral moment m₄ = ∫q⁴G dq (m⁻²): the curvature variance.
+    // Spectral moment m₄ (m⁻²): the curvature variance, mean square of the
+    // three-point second differences.
     double m4;
     // Nayak's bandwidth parameter α = m₀m₄/m₂² (dimensionless).
     double nayak_alpha;
@@ -1446,11 +1449,11 @@ typedef struct AsperityHurstFit {
     double slope;
     // Prefactor A (m³·(rad/m)^{−s}).
     double prefactor;
-    // Coefficient of determination r² of the log–log fit.
+    // Coefficient of determination r² of the weighted log–log fit.
     double r_squared;
-    // Lower end of the fit band (rad/m).
+    // Lowest wavenumber fitted (rad/m).
     double q_min;
-    // Upper end of the fit band (rad/m).
+    // Highest wavenumber fitted (rad/m).
     double q_max;
     // Number of populated log bins fitted (10 per decade).
     size_t bins;
@@ -2485,11 +2488,12 @@ int32_t asperity_profile_psd(size_t n,
                              double *q,
                              double *g);
 
-// Power-law fit of the Hann-windowed PSD of `heights` (`n` values, m,
-// spacing `dx` m) over `q_min ≤ q ≤ q_max` (rad/m); `q_min` = `q_max` = 0
-// selects the default band (wavelengths from n·dx/4 down to 8·dx). Errors:
-// as `asperity_profile_psd`, a bad band, fewer than 3 populated bins
-// (`ASPERITY_ERR_OUT_OF_DOMAIN`).
+// Power-law fit of the PSD of `heights` (`n` values, m, spacing `dx` m;
+// bridge-detrended Hann periodogram, weighted log-bin fit) over
+// `q_min ≤ q ≤ q_max` (rad/m); `q_min` = `q_max` = 0 chooses the band from
+// the data (the widest run of at least one decade that is a power law with
+// 0 ≤ H ≤ 1). Errors: as `asperity_profile_psd`, a bad band, fewer than 3
+// populated bins, no power-law band (`ASPERITY_ERR_OUT_OF_DOMAIN`).
 int32_t asperity_profile_hurst_fit(size_t n,
                                    const double *heights,
                                    double dx,

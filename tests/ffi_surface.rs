@@ -69,13 +69,16 @@ fn sine_profile_parameters_are_analytic() {
     assert!(rel(r.rc, 2.0 * a) < 1e-3, "Rc {}", r.rc);
     assert!(rel(r.rp, a) < 1e-3 && rel(r.rv, a) < 1e-3);
     assert!(rel(r.rz, r.rp + r.rv) < 1e-15 && r.rz <= r.rt);
-    // Parseval: m0 = Rq²; a single line at q = 2π/Λ: m2 = q² m0, m4 = q⁴ m0,
-    // so α = 1.
+    // From the derivatives: m0 = Rq²; a single line at q = 2π/Λ: m2 = q² m0,
+    // m4 = q⁴ m0, α = 1, to the stencils' errors ((q dx)²/12 = 8e-5 for the
+    // curvature at 200 samples a period) and the end samples (the one-sided
+    // slopes at the ends, the two samples the second difference leaves out:
+    // ~ 2/2000).
     let q = 2.0 * PI / lambda;
     assert!(rel(r.m0, a * a / 2.0) < 1e-12, "m0 {}", r.m0);
-    assert!(rel(r.m2, q * q * r.m0) < 1e-9, "m2 {}", r.m2);
-    assert!(rel(r.m4, q.powi(4) * r.m0) < 1e-9, "m4 {}", r.m4);
-    assert!(rel(r.nayak_alpha, 1.0) < 1e-9, "α {}", r.nayak_alpha);
+    assert!(rel(r.m2, q * q * r.m0) < 3e-3, "m2 {}", r.m2);
+    assert!(rel(r.m4, q.powi(4) * r.m0) < 3e-3, "m4 {}", r.m4);
+    assert!(rel(r.nayak_alpha, 1.0) < 6e-3, "α {}", r.nayak_alpha);
     assert_eq!(
         (r.n_evaluated, r.first_index, r.sampling_lengths),
         (2000, 0, 1)
@@ -112,7 +115,7 @@ fn roughness_equals_the_rust_api() {
         // Without a filter.
         let r = parameters(&z, dx, code, 0.0, 0.0);
         let p = roughness_parameters(&levelled, dx, &opts).unwrap();
-        let m = asperity::surface::psd(&levelled, dx).unwrap().moments();
+        let m = asperity::surface::spectral_moments(&levelled, dx).unwrap();
         assert_eq!(r.rq, p.rq);
         assert_eq!(r.ra, p.ra);
         assert_eq!(r.rz, p.rz);
@@ -264,8 +267,10 @@ fn arrays_equal_the_rust_api() {
         let h = hurst_fit(&z, dx, Some((2e4, 5e5))).unwrap();
         assert_eq!(
             (f.hurst, f.prefactor, f.q_min, f.q_max),
-            (h.hurst, h.prefactor, 2e4, 5e5)
+            (h.hurst, h.prefactor, h.q_min, h.q_max)
         );
+        // The ordinates fitted lie in the band given.
+        assert!(f.q_min >= 2e4 && f.q_max <= 5e5, "{f:?}");
 
         // Peaks.
         let mut s = AsperityPeakStatistics::default();

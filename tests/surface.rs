@@ -3,7 +3,7 @@
 //! representative pattern. Real measured data: `tests/surface_data.rs`.
 
 use asperity::error::Error;
-use asperity::surface::spectral::default_fit_band;
+use asperity::surface::default_fit_band;
 use asperity::surface::*;
 use std::f64::consts::PI;
 

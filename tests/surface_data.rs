@@ -244,8 +244,8 @@ fn line_scan_parameters_and_invariants() {
         );
         if let Ok(fit) = hurst_fit(flat.heights(), flat.dx(), None) {
             eprintln!(
-                "  PSD power-law fit (Hann, λ from L/4 to 8 dx): H = {:.3}, r² = {:.3}, {} bins",
-                fit.hurst, fit.r_squared, fit.bins
+                "  PSD power-law fit (band from the data): H = {:.3} ± {:.3}, q = {:.3e} … {:.3e} rad/m, {} bins",
+                fit.hurst, fit.hurst_uncertainty, fit.q_min, fit.q_max, fit.bins
             );
         }
         let rp = representative_pattern(f.roughness.heights(), f.roughness.len() / 12).unwrap();

@@ -67,17 +67,20 @@ pub struct AsperityRoughness {
     pub rsm: f64,
     /// Root-mean-square slope RΔq (dimensionless), seven-point slopes.
     pub rdq: f64,
-    /// Hurst exponent H of the power-law fit PSD ∝ q^{−(1+2H)} over the
-    /// default band; meaningful only when `has_psd_hurst_exponent` is 1 (0
-    /// otherwise: fewer than 128 samples, or the spectrum is not a power law
-    /// with r² ≥ 0.9 and 0 ≤ H ≤ 1 there).
+    /// Hurst exponent H of the power-law fit PSD ∝ q^{−(1+2H)} over the band
+    /// chosen from the data; meaningful only when `has_psd_hurst_exponent` is
+    /// 1 (0 otherwise: fewer than 128 samples, or no band of one decade where
+    /// the spectrum is a power law with 0 ≤ H ≤ 1).
     pub psd_hurst_exponent: f64,
-    /// Spectral moment m₀ = ∫G dq (m²) of the evaluated profile (rectangular
-    /// window): the height variance, Rq² when there is one sampling length.
+    /// Spectral moment m₀ (m²) of the evaluated profile: the height
+    /// variance, Rq² when there is one sampling length.
     pub m0: f64,
-    /// Spectral moment m₂ = ∫q²G dq (dimensionless): the slope variance.
+    /// Spectral moment m₂ (dimensionless): the slope variance, mean square of
+    /// the seven-point slopes of RΔq (from the derivatives, not from a
+    /// rectangular-window PSD, whose m₂ measures the jump between the ends).
     pub m2: f64,
-    /// Spectral moment m₄ = ∫q⁴G dq (m⁻²): the curvature variance.
+    /// Spectral moment m₄ (m⁻²): the curvature variance, mean square of the
+    /// three-point second differences.
     pub m4: f64,
     /// Nayak's bandwidth parameter α = m₀m₄/m₂² (dimensionless).
     pub nayak_alpha: f64,
@@ -110,11 +113,11 @@ pub struct AsperityHurstFit {
     pub slope: f64,
     /// Prefactor A (m³·(rad/m)^{−s}).
     pub prefactor: f64,
-    /// Coefficient of determination r² of the log–log fit.
+    /// Coefficient of determination r² of the weighted log–log fit.
     pub r_squared: f64,
-    /// Lower end of the fit band (rad/m).
+    /// Lowest wavenumber fitted (rad/m).
     pub q_min: f64,
-    /// Upper end of the fit band (rad/m).
+    /// Highest wavenumber fitted (rad/m).
     pub q_max: f64,
     /// Number of populated log bins fitted (10 per decade).
     pub bins: usize,
@@ -276,7 +279,7 @@ pub unsafe extern "C" fn asperity_roughness_parameters(
             ..ParameterOptions::default()
         };
         let p = roughness_parameters(&z, dx, &options)?;
-        let m = crate::surface::psd(&z, dx)?.moments();
+        let m = crate::surface::spectral_moments(&z, dx)?;
         *out = AsperityRoughness {
             rp: p.rp,
             rv: p.rv,
@@ -440,11 +443,12 @@ pub unsafe extern "C" fn asperity_profile_psd(
     })
 }
 
-/// Power-law fit of the Hann-windowed PSD of `heights` (`n` values, m,
-/// spacing `dx` m) over `q_min ≤ q ≤ q_max` (rad/m); `q_min` = `q_max` = 0
-/// selects the default band (wavelengths from n·dx/4 down to 8·dx). Errors:
-/// as `asperity_profile_psd`, a bad band, fewer than 3 populated bins
-/// (`ASPERITY_ERR_OUT_OF_DOMAIN`).
+/// Power-law fit of the PSD of `heights` (`n` values, m, spacing `dx` m;
+/// bridge-detrended Hann periodogram, weighted log-bin fit) over
+/// `q_min ≤ q ≤ q_max` (rad/m); `q_min` = `q_max` = 0 chooses the band from
+/// the data (the widest run of at least one decade that is a power law with
+/// 0 ≤ H ≤ 1). Errors: as `asperity_profile_psd`, a bad band, fewer than 3
+/// populated bins, no power-law band (`ASPERITY_ERR_OUT_OF_DOMAIN`).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_profile_hurst_fit(
     n: usize,

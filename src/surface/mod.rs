@@ -14,13 +14,21 @@
 //!
 //! ## Analysis
 //!
-//! * [`filter`]: the ISO 16610-21 Gaussian mean-line filter.
+//! * [`filter`]: the ISO 16610-21 Gaussian mean-line filter;
+//!   [`areal_filter`]: the ISO 16610-61 areal Gaussian filter of maps.
 //! * [`iso`]: ISO 4287 profile parameters (Rp, Rv, Rz, Rc, Rt, Ra, Rq, Rsk,
 //!   Rku, RSm, RΔq) averaged over sampling lengths, the material-ratio
 //!   (Abbott–Firestone) curve, and areal Sa, Sq, Ssk, Sku, Sp, Sv, Sz, Sdq.
 //! * [`spectral`]: autocorrelation (thesis 1-6, 1-8) and one-sided power
 //!   spectral density (1-7) normalised so that Parseval holds exactly,
-//!   spectral moments and Nayak's bandwidth, the power-law (Hurst) fit.
+//!   spectral moments (from the derivatives) and Nayak's bandwidth.
+//! * [`power_law`]: the PSD power-law (Hurst) fit with its uncertainty and a
+//!   band chosen from the data.
+//! * [`map_spectral`]: 2-D PSD and ACF of maps (full arrays, radial
+//!   averages) and their isotropy (Str-like texture aspect ratio, slope
+//!   anisotropy).
+//! * [`scale`]: rms slope and curvature as functions of the scale (finite
+//!   differences at increasing step), for profiles and maps.
 //! * [`peaks`](mod@peaks): peaks of profiles (3-point) and summits of maps (8-neighbour)
 //!   with finite-difference curvatures.
 //! * [`pattern`]: Pepelyshev's representative elementary pattern (thesis
@@ -54,17 +62,22 @@
 //! * The generators' and the pattern's sources are cited in [`generate`] and
 //!   [`pattern`].
 
+pub mod areal_filter;
 mod fft;
 pub mod filter;
 pub mod fractal;
 pub mod generate;
 pub mod iso;
+pub mod map_spectral;
 pub mod pattern;
 pub mod peaks;
+pub mod power_law;
 pub mod profile;
 pub mod read;
+pub mod scale;
 pub mod spectral;
 
+pub use areal_filter::{areal_gaussian_filter, areal_gaussian_transmission, FilteredMap};
 pub use filter::{
     gaussian_filter, gaussian_mean_line, gaussian_transmission, FilterEnds, FilteredProfile,
 };
@@ -74,15 +87,19 @@ pub use iso::{
     areal_parameters, areal_parameters_grid, roughness_parameters, ArealParameters,
     MaterialRatioCurve, ParameterOptions, RoughnessParameters,
 };
+pub use map_spectral::{acf_2d, isotropy, psd_2d, Acf2d, Isotropy, Psd2d, Radial};
 pub use pattern::{ks_statistics, ks_two_sample, representative_pattern, RepresentativePattern};
 pub use peaks::{peaks, summits, summits_grid, Peak, PeakStatistics, Summit};
+pub use power_law::{
+    bridge_detrend, default_fit_band, hurst_estimate, hurst_fit, psd_hurst_exponent, HurstEstimate,
+};
 pub use profile::{remove_form, Form, MapForm, Profile, Topography};
 pub use read::{
     parse_profile, parse_topography, profile_from_positions, read_profile, read_topography, Spacing,
 };
+pub use scale::{scale_dependent, scale_dependent_map, ScaleDependent, ScaleDependentMap};
 pub use spectral::{
-    acf, default_fit_band, hurst_fit, psd, psd_hurst_exponent, psd_windowed, Acf, HurstFit, Psd,
-    PsdPlan, SpectralMoments, Window,
+    acf, psd, psd_windowed, spectral_moments, Acf, HurstFit, Psd, PsdPlan, SpectralMoments, Window,
 };
 
 use crate::error::{Error, Result};

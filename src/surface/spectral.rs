@@ -1,5 +1,6 @@
-//! Autocorrelation function, power spectral density, spectral moments and the
-//! power-law (Hurst) fit of a profile (thesis 1.5.2–1.5.3).
+//! Autocorrelation function, power spectral density and spectral moments of a
+//! profile (thesis 1.5.2–1.5.3); the power-law (Hurst) fit is in
+//! [`super::power_law`].
 //!
 //! ## Normalisation
 //!
@@ -12,10 +13,33 @@
 //! Δq = 2π/L, equals (1/n) Σ_j Z_j² exactly (Parseval): m₀ = Rq² to rounding.
 //! Units: m² per rad/m = m³.
 //!
-//! Spectral moments m_p (discretised as Σ q_k^p G_k Δq): m₀ is the height
-//! variance, m₂ the slope variance, m₄ the curvature variance of the
-//! band-limited profile; Nayak's bandwidth parameter α is ≥ 1 (1.5 for a
-//! Gaussian ideal low-pass, → ∞ broadband).
+//! ## Spectral moments
+//!
+//! m₀, m₂, m₄ are the variances of the height, the slope and the curvature
+//! (Nayak 1971), m_p = ∫ q^p G dq. [`spectral_moments`] computes them **from
+//! the derivatives** of the profile, the definition the library reports for
+//! measured profiles:
+//!
+//! * m₀ = ⟨Z²⟩, Z = z − z̄ (= Rq²);
+//! * m₂ = ⟨Z′²⟩ with the seven-point slopes of ISO 4287 (those of RΔq, so
+//!   √m₂ = RΔq over one sampling length);
+//! * m₄ = ⟨Z″²⟩ with the three-point second difference
+//!   (z_{j+1} − 2z_j + z_{j−1})/dx² on the n − 2 interior samples.
+//!
+//! By Parseval these are ∫ |D_p(q)|² G dq with the stencils' transfer
+//! functions D₁ ≈ q (error O((q dx)⁶)), D₂ = (2/dx) sin(q dx/2) squared
+//! (error (q dx)²/12), so they equal the q^p moments for a profile resolved
+//! by its sampling. They need no periodic extension: a measured scan is not
+//! periodic, and [`Psd::moments`] of its rectangular-window PSD measures the
+//! jump between its two ends — the step's leakage ∝ q⁻² makes ∫ q² G dq grow
+//! with the number of samples (on the Dektak scan √m₂ is 87 × RΔq without
+//! detrending). Those values are kept, under names that say so
+//! (`m2_rectangular_window`, …), in the CLI and the Python package; they are
+//! right for a periodic profile (a generated one, whole periods of a sine).
+//!
+//! Nayak's bandwidth parameter α = m₀m₄/m₂² is ≥ 1 for the q^p moments of
+//! any spectrum (Cauchy–Schwarz), 1.5 for a Gaussian ideal low-pass, → ∞
+//! broadband; with the stencils it is ≥ 1 up to the stencil error.
 //!
 //! The ACF (1-6, 1-8) is the biased estimator R_k, R_0 = Rq², computed by
 //! zero-padded FFT. Both ACF and PSD are even in Z:
@@ -43,9 +67,6 @@ use super::{check_heights, mean};
 use crate::error::{check, Error, Result};
 use serde::Serialize;
 
-/// Euler–Mascheroni constant γ_E.
-const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
-
 /// Data window applied before the FFT.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Window {
@@ -70,7 +91,8 @@ pub struct Psd {
     pub c: Vec<f64>,
 }
 
-/// Spectral moments m_p = ∫ q^p G(q) dq of a one-sided PSD (Nayak 1971).
+/// Spectral moments m_p = ∫ q^p G(q) dq (Nayak 1971): from the derivatives
+/// ([`spectral_moments`]) or of a given PSD ([`Psd::moments`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct SpectralMoments {
     /// m₀ = height variance (m²); equals Rq² for the rectangular window.
@@ -79,6 +101,31 @@ pub struct SpectralMoments {
     pub m2: f64,
     /// m₄ = curvature variance (m⁻²).
     pub m4: f64,
+}
+
+/// Spectral moments of a profile from its derivatives (see the module docs):
+/// m₀ = ⟨Z²⟩ (Z = z − z̄), m₂ = ⟨Z′²⟩ with the ISO 4287 seven-point slopes
+/// (five- and three-point near the ends, one-sided at the end points: the
+/// slopes of RΔq), m₄ = ⟨Z″²⟩ with the three-point second difference on the
+/// n − 2 interior samples.
+///
+/// Errors: fewer than 3 or non-finite heights; `dx` not finite and > 0.
+pub fn spectral_moments(heights: &[f64], dx: f64) -> Result<SpectralMoments> {
+    check::positive("dx", dx)?;
+    check_heights(heights, 3, ">= 3 points")?;
+    let n = heights.len();
+    let zbar = mean(heights);
+    let m0 = heights.iter().map(|z| (z - zbar) * (z - zbar)).sum::<f64>() / n as f64;
+    let m2 = (0..n)
+        .map(|i| super::iso::slope_at(heights, i, dx).powi(2))
+        .sum::<f64>()
+        / n as f64;
+    let m4 = heights
+        .windows(3)
+        .map(|w| ((w[2] - 2.0 * w[1] + w[0]) / (dx * dx)).powi(2))
+        .sum::<f64>()
+        / (n - 2) as f64;
+    Ok(SpectralMoments { m0, m2, m4 })
 }
 
 impl SpectralMoments {
@@ -94,22 +141,32 @@ impl SpectralMoments {
     }
 }
 
-/// A least-squares power-law fit log G = log A + s log q over log-spaced bins.
+/// A power-law fit G = A q^s of a PSD over a band (see
+/// [`super::power_law`] for the estimator and the band choice).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct HurstFit {
     /// Hurst exponent H = −(s + 1)/2, from G ∝ q^{−(1+2H)} for a self-affine
     /// profile (fractal dimension D = 2 − H).
     pub hurst: f64,
+    /// Standard error of H (one standard deviation, statistical: the scatter
+    /// of the periodogram in the band, inflated by √(χ²/ν) when the
+    /// residuals exceed it).
+    pub hurst_uncertainty: f64,
     /// Fitted log–log slope s.
     pub slope: f64,
+    /// Standard error of s (= 2 × `hurst_uncertainty`).
+    pub slope_uncertainty: f64,
     /// Prefactor A of G = A q^s (m³·(rad/m)^{−s}), corrected for the log bias
     /// of χ²₂ ordinates.
     pub prefactor: f64,
-    /// Coefficient of determination of the log–log fit.
+    /// Coefficient of determination of the weighted log–log fit.
     pub r_squared: f64,
-    /// Lower end of the fit band (rad/m).
+    /// χ²/ν of the fit with the weights of [`super::power_law`] (about 1 for
+    /// a power law).
+    pub chi2_per_dof: f64,
+    /// Lowest wavenumber fitted (rad/m).
     pub q_min: f64,
-    /// Upper end of the fit band (rad/m).
+    /// Highest wavenumber fitted (rad/m).
     pub q_max: f64,
     /// Number of populated log bins fitted (10 per decade).
     pub bins: usize,
@@ -131,7 +188,10 @@ impl Psd {
         self.c.iter().sum::<f64>() * self.dq
     }
 
-    /// Spectral moments m₀, m₂, m₄.
+    /// Spectral moments m_p = Σ q_k^p G_k Δq of this PSD. Of a
+    /// rectangular-window PSD of a non-periodic profile, m₂ and m₄ measure
+    /// the jump between its ends, not its slopes (module docs); use
+    /// [`spectral_moments`] for a measured profile.
     pub fn moments(&self) -> SpectralMoments {
         let (mut m0, mut m2, mut m4) = (0.0, 0.0, 0.0);
         for (q, c) in self.q.iter().zip(&self.c) {
@@ -147,26 +207,22 @@ impl Psd {
         }
     }
 
-    /// Power-law fit of G(q) over `q_min ≤ q ≤ q_max` (rad/m): the ordinates
-    /// are grouped in log-spaced bins (10 per decade, from `q_min`), each bin
-    /// is represented by the mean of log₁₀ G and of log₁₀ q over its ordinates
-    /// (geometric means), and the bin points are fitted by least squares, each
-    /// bin weighted equally (so every decade counts the same).
-    ///
-    /// Why geometric means: a periodogram ordinate of a random (Gaussian)
-    /// profile scatters as G·χ²₂/2, whose logarithm is biased by −γ_E
-    /// (Euler's constant) whatever the bin size — a constant that moves only
-    /// the prefactor (corrected here by e^{γ_E}), never the slope. The log of
-    /// an arithmetic bin mean would be biased by an amount that shrinks with
-    /// the number of ordinates per bin, and so tilt the fit towards shallower
-    /// slopes where bins are sparse (low q). Ordinates without power (≤ 0)
-    /// are skipped, so line spectra (a sine, the Weierstrass–Mandelbrot comb)
-    /// are not fitted meaningfully by this method.
+    /// Power-law fit of this PSD over `q_min ≤ q ≤ q_max` (rad/m): the
+    /// ordinates are grouped in log bins (10 per decade, from `q_min`), each
+    /// bin represented by the mean of log₁₀ G and of log₁₀ q over its
+    /// ordinates, and the bins fitted by weighted least squares as in
+    /// [`super::power_law`], without its window-smoothing correction (the
+    /// uncertainty assumes independent χ²₂ ordinates: a rectangular
+    /// periodogram of a periodic profile; a Hann one's neighbours are
+    /// correlated and its uncertainty is about 1.3 times larger). Ordinates
+    /// without power (≤ 0) are skipped, so line spectra (a sine, the
+    /// Weierstrass–Mandelbrot comb) are not fitted meaningfully.
     ///
     /// Errors: band not finite, `q_min` ≤ 0 or ≥ `q_max`; fewer than 3 bins
     /// with power in the band ([`Error::OutOfDomain`]).
     pub fn power_law_fit(&self, q_min: f64, q_max: f64) -> Result<HurstFit> {
-        let mut bins = LogBins::new(q_min, q_max)?;
+        super::power_law::check_fit_band(q_min, q_max)?;
+        let mut bins = super::power_law::Binner::new(q_min);
         // q ascending, as produced by the PSD functions.
         let k_lo = self.q.partition_point(|&q| q < q_min);
         for (&q, &c) in self.q[k_lo..].iter().zip(&self.c[k_lo..]) {
@@ -175,93 +231,15 @@ impl Psd {
             }
             bins.add(q, c);
         }
-        bins.fit()
-    }
-}
-
-/// Log-spaced bins (10 per decade from `q_min`) accumulating mean log₁₀ q and
-/// mean log₁₀ G, and the least-squares line through them.
-struct LogBins {
-    q_min: f64,
-    q_max: f64,
-    sum_lq: Vec<f64>,
-    sum_lc: Vec<f64>,
-    cnt: Vec<usize>,
-}
-
-impl LogBins {
-    const PER_DECADE: f64 = 10.0;
-
-    fn new(q_min: f64, q_max: f64) -> Result<Self> {
-        check::positive("q_min", q_min)?;
-        check::positive("q_max", q_max)?;
-        if q_max <= q_min {
-            return Err(Error::InvalidArgument {
-                name: "q_max",
-                value: q_max,
-                bound: "> q_min",
-            });
-        }
-        // A band wider than f64 can express (q_max / q_min = inf, e.g. a
-        // subnormal q_min) has no finite bin count: an error, not an
-        // overflowing count.
-        let decades = (q_max / q_min).log10();
-        if !decades.is_finite() {
-            return Err(Error::InvalidArgument {
-                name: "q_max",
-                value: q_max,
-                bound: "q_max / q_min finite (a band of at most about 308 decades)",
-            });
-        }
-        let nb = (decades * Self::PER_DECADE).floor() as usize + 1;
-        Ok(Self {
-            q_min,
-            q_max,
-            sum_lq: vec![0.0; nb],
-            sum_lc: vec![0.0; nb],
-            cnt: vec![0; nb],
-        })
-    }
-
-    #[inline]
-    fn add(&mut self, q: f64, c: f64) {
-        if q < self.q_min || q > self.q_max || c <= 0.0 {
-            return;
-        }
-        let lq = q.log10();
-        let nb = self.cnt.len();
-        let b = (((lq - self.q_min.log10()) * Self::PER_DECADE).floor() as usize).min(nb - 1);
-        self.sum_lq[b] += lq;
-        self.sum_lc[b] += c.log10();
-        self.cnt[b] += 1;
-    }
-
-    fn fit(&self) -> Result<HurstFit> {
-        let pts: Vec<(f64, f64)> = (0..self.cnt.len())
-            .filter(|&b| self.cnt[b] > 0)
-            .map(|b| {
-                let n = self.cnt[b] as f64;
-                (self.sum_lq[b] / n, self.sum_lc[b] / n)
-            })
-            .collect();
-        if pts.len() < 3 {
+        let bins = bins.finish();
+        if bins.len() < 3 {
             return Err(Error::OutOfDomain {
                 name: "q_min",
-                value: self.q_min,
+                value: q_min,
                 reason: "fewer than 3 log bins with power between q_min and q_max",
             });
         }
-        let (slope, icpt, r_squared) = line_fit(&pts);
-        Ok(HurstFit {
-            hurst: -(slope + 1.0) / 2.0,
-            slope,
-            // e^{γ_E}: the mean of ln(χ²₂/2) is −γ_E.
-            prefactor: 10f64.powf(icpt) * EULER_GAMMA.exp(),
-            r_squared,
-            q_min: self.q_min,
-            q_max: self.q_max,
-            bins: pts.len(),
-        })
+        Ok(super::power_law::fit_bins(&bins, None))
     }
 }
 
@@ -370,61 +348,6 @@ pub fn psd(heights: &[f64], dx: f64) -> Result<Psd> {
 pub fn psd_windowed(heights: &[f64], dx: f64, window: Window) -> Result<Psd> {
     check_heights(heights, 4, ">= 4 points")?;
     PsdPlan::new(heights.len())?.psd(heights, dx, window)
-}
-
-/// Default power-law fit band for n samples at spacing dx: wavelengths from
-/// L/4 down to 8·dx, i.e. q from 8π/L to π/(4·dx) (rad/m). The three lowest
-/// harmonics (shaped by form removal and the finite length) and the top
-/// three octaves (stylus and instrument filtering, aliasing) are left out.
-pub fn default_fit_band(n: usize, dx: f64) -> (f64, f64) {
-    let l = n as f64 * dx;
-    (
-        8.0 * core::f64::consts::PI / l,
-        core::f64::consts::PI / (4.0 * dx),
-    )
-}
-
-/// Power-law fit of the Hann-windowed PSD of `heights` (m, spacing `dx` m)
-/// over `band` (rad/m; default [`default_fit_band`]); see
-/// [`Psd::power_law_fit`]. For a self-affine profile G ∝ q^{−(1+2H)}
-/// (fractal dimension D = 2 − H; the Weierstrass–Mandelbrot spectrum
-/// q^{−(5−2D)} of thesis 1.5.3).
-///
-/// Errors: as [`psd_windowed`] and [`Psd::power_law_fit`].
-pub fn hurst_fit(heights: &[f64], dx: f64, band: Option<(f64, f64)>) -> Result<HurstFit> {
-    check::positive("dx", dx)?;
-    check_heights(heights, 4, ">= 4 points")?;
-    let n = heights.len();
-    let (lo, hi) = band.unwrap_or_else(|| default_fit_band(n, dx));
-    let mut bins = LogBins::new(lo, hi)?;
-    // Stream the Hann periodogram into the bins: no spectrum is stored.
-    let dq = 2.0 * core::f64::consts::PI / (n as f64 * dx);
-    let scale = psd_scale(n, dx, Window::Hann);
-    RealFft::new(n).forward_with(heights, mean(heights), true, |k, x| {
-        bins.add(k as f64 * dq, x.norm_sqr() * scale(k));
-    });
-    bins.fit()
-}
-
-/// The Hurst exponent of a profile where a power law applies: the fit of
-/// [`hurst_fit`] over the default band, returned only when the band spans at
-/// least two octaves (n ≥ 128), at least 5 bins are populated, the log–log
-/// fit has r² ≥ 0.9 and 0 ≤ H ≤ 1; `Ok(None)` otherwise (too short, or the
-/// spectrum is not a self-affine power law there).
-///
-/// Errors: non-finite heights, `dx` not finite and > 0.
-pub fn psd_hurst_exponent(heights: &[f64], dx: f64) -> Result<Option<f64>> {
-    check::positive("dx", dx)?;
-    check_heights(heights, 1, ">= 1 point")?;
-    if heights.len() < 128 {
-        return Ok(None);
-    }
-    let f = match hurst_fit(heights, dx, None) {
-        Ok(f) => f,
-        Err(Error::OutOfDomain { .. }) => return Ok(None),
-        Err(e) => return Err(e),
-    };
-    Ok((f.bins >= 5 && f.r_squared >= 0.9 && (0.0..=1.0).contains(&f.hurst)).then_some(f.hurst))
 }
 
 /// Autocorrelation function R(δ_k), δ_k = k·dx, k = 0..n (biased estimator,

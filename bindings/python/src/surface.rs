@@ -87,16 +87,17 @@ fn line_json(raw: &s::Profile, detrend: Detrend, cutoff: Option<f64>) -> Result<
     };
     let p = analysed.parameters(&options).map_err(err_text)?;
     let dx = analysed.dx();
-    let moments = analysed.psd().map_err(err_text)?.moments();
+    // Moments from the derivatives; the rectangular-window ones (the end
+    // jump of a non-periodic scan) only under names that say so.
+    let moments = s::spectral_moments(analysed.heights(), dx).map_err(err_text)?;
+    let rectangular = analysed.psd().map_err(err_text)?.moments();
     let correlation_length = analysed
         .acf()
         .map_err(err_text)?
         .correlation_length(std::f64::consts::E.recip())
         .map_err(err_text)?;
-    let fit = match p.psd_hurst_exponent {
-        Some(_) => Some(s::hurst_fit(analysed.heights(), dx, None).map_err(err_text)?),
-        None => None,
-    };
+    let estimate = s::hurst_estimate(analysed.heights(), dx).map_err(err_text)?;
+    let fit = estimate.fit;
     let mut v = serde_json::to_value(p).map_err(err_text)?;
     let extra = json!({
         "kind": "profile",
@@ -109,12 +110,19 @@ fn line_json(raw: &s::Profile, detrend: Detrend, cutoff: Option<f64>) -> Result<
         "length": analysed.length(),
         "evaluation_length": p.sampling_length * p.sampling_lengths as f64,
         "spacing_deviation": raw.spacing_deviation(),
+        "moments_from": "derivatives (seven-point slopes, three-point second differences)",
         "m0": moments.m0,
         "m2": moments.m2,
         "m4": moments.m4,
         "nayak_alpha": moments.nayak_alpha(),
+        "m0_rectangular_window": rectangular.m0,
+        "m2_rectangular_window": rectangular.m2,
+        "m4_rectangular_window": rectangular.m4,
+        "nayak_alpha_rectangular_window": rectangular.nayak_alpha(),
         "correlation_length_1e": correlation_length,
+        "psd_hurst_uncertainty": fit.map(|f| f.hurst_uncertainty),
         "psd_fit": fit,
+        "psd_fit_reason": estimate.reason,
     });
     if let (Some(o), Value::Object(extra)) = (v.as_object_mut(), extra) {
         o.extend(extra);
@@ -123,14 +131,26 @@ fn line_json(raw: &s::Profile, detrend: Detrend, cutoff: Option<f64>) -> Result<
 }
 
 /// The CLI's analysis of a map, without `file` and `plots`.
-fn map_json(t: s::Topography, detrend: Detrend) -> Result<Value, String> {
+fn map_json(t: s::Topography, detrend: Detrend, cutoff: Option<f64>) -> Result<Value, String> {
     let t = match detrend {
         Detrend::None => t,
         Detrend::Mean => t.remove_form(s::MapForm::Mean).map_err(err_text)?,
         Detrend::Linear => t.remove_form(s::MapForm::Plane).map_err(err_text)?,
         Detrend::Quadratic => t.remove_form(s::MapForm::Quadratic).map_err(err_text)?,
     };
+    let (t, first) = match cutoff {
+        None => (t, None),
+        Some(lc) => {
+            let f = s::areal_gaussian_filter(&t, lc, s::FilterEnds::Discard)
+                .map_err(|e| format!("cutoff {lc:e} m: {e}"))?;
+            (f.roughness, Some(f.first_index))
+        }
+    };
     let p = t.parameters().map_err(err_text)?;
+    let psd_radial = s::psd_2d(&t, s::Window::Hann).map_err(err_text)?.radial();
+    let acf_radial = s::acf_2d(&t).map_err(err_text)?.radial();
+    let iso = s::isotropy(&t, 0.2).map_err(err_text)?;
+    let scale = s::scale_dependent_map(&t).map_err(err_text)?;
     let mut v = serde_json::to_value(p).map_err(err_text)?;
     let extra = json!({
         "kind": "map",
@@ -140,6 +160,12 @@ fn map_json(t: s::Topography, detrend: Detrend) -> Result<Value, String> {
         "ny": t.ny(),
         "dx": t.dx(),
         "dy": t.dy(),
+        "cutoff": cutoff,
+        "first_index": first,
+        "isotropy": iso,
+        "scale_dependent": scale,
+        "psd_radial": {"window": "hann", "q": psd_radial.r, "c": psd_radial.value},
+        "acf_radial": {"lag": acf_radial.r, "r": acf_radial.value},
     });
     if let (Some(o), Value::Object(extra)) = (v.as_object_mut(), extra) {
         o.extend(extra);
@@ -205,22 +231,27 @@ fn profile_parameters(
 ///
 /// ISO 25178-2 height parameters of a height map, as ``asperity profile
 /// --json`` on a map: ``Sa Sq Ssk Sku Sp Sv Sz Sdq`` with ``kind``,
-/// ``detrend``, ``points``, ``nx``, ``ny``, ``dx``, ``dy``. ``z``: heights
-/// (m), a C-contiguous 2-D float64 array indexed [y, x]; dx, dy: spacings
-/// (m, dy defaults to dx). ``detrend``: ``"none"``, ``"mean"``,
-/// ``"linear"`` (a plane) or ``"quadratic"`` (a quadric).
+/// ``detrend``, ``points``, ``nx``, ``ny``, ``dx``, ``dy``, ``cutoff``,
+/// ``first_index``, ``isotropy``, ``scale_dependent``, ``psd_radial``,
+/// ``acf_radial``. ``z``: heights (m), a C-contiguous 2-D float64 array
+/// indexed [y, x]; dx, dy: spacings (m, dy defaults to dx). ``detrend``:
+/// ``"none"``, ``"mean"``, ``"linear"`` (a plane) or ``"quadratic"`` (a
+/// quadric). ``cutoff`` (m): analyse the roughness surface of the ISO
+/// 16610-61 areal Gaussian filter (λc/2 dropped at every edge).
 #[pyfunction]
-#[pyo3(signature = (z, dx, dy=None, detrend=None))]
+#[pyo3(signature = (z, dx, dy=None, detrend=None, cutoff=None))]
 fn map_parameters(
     py: Python<'_>,
     z: &Bound<'_, PyAny>,
     dx: &Bound<'_, PyAny>,
     dy: Option<&Bound<'_, PyAny>>,
     detrend: Option<&Bound<'_, PyAny>>,
+    cutoff: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Py<PyAny>> {
     let d = Detrend::parse(detrend)?;
     let t = topography_arg(z, dx, dy)?;
-    let v = py.detach(|| map_json(t, d)).map_err(any_err)?;
+    let c = real_opt(cutoff, "cutoff")?;
+    let v = py.detach(|| map_json(t, d, c)).map_err(any_err)?;
     json_to_py(py, &v)
 }
 
@@ -273,21 +304,17 @@ fn analyze_profile_file(
     let c = real_opt(cutoff, "cutoff")?;
     let v = py
         .detach(|| -> Result<Value, String> {
-            let text = std::fs::read_to_string(&path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+            let text = std::fs::read_to_string(&path)
+                .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
             let mut v = match s::parse_topography(&text, s::Spacing::Tolerant) {
-                Ok(t) => {
-                    if let Some(lc) = c {
-                        return Err(format!(
-                            "invalid argument `cutoff` = {lc:e}: {} is a height map ({} × {}); the Gaussian cut-off applies to line scans only",
-                            path.display(), t.nx(), t.ny()
-                        ));
-                    }
-                    map_json(t, d)?
-                }
+                Ok(t) => map_json(t, d, c)?,
                 Err(map_err) => match s::parse_profile(&text, s::Spacing::Tolerant) {
                     Ok(p) => line_json(&p, d, c)?,
                     Err(line_err) => {
-                        return Err(format!("{}: not a line scan ({line_err}) nor a height map ({map_err})", path.display()))
+                        return Err(format!(
+                            "{}: not a line scan ({line_err}) nor a height map ({map_err})",
+                            path.display()
+                        ))
                     }
                 },
             };
@@ -352,7 +379,11 @@ fn rz(e: asperity::Error) -> PyErr {
 ///
 /// One-sided power spectral density of heights ``z`` (m) sampled every
 /// ``dx`` (m): ``q`` (rad/m), ``psd`` G(q) (m³), ``dq`` (rad/m), the
-/// spectral moments ``m0`` (m²), ``m2``, ``m4`` (m⁻²) and ``nayak_alpha``.
+/// q^p moments of this PSD under names that say which window gave them,
+/// ``m0_rectangular_window`` (m²), ``m2_…``, ``m4_…`` (m⁻²),
+/// ``nayak_alpha_…`` (or ``…_hann_window``): for a non-periodic profile the
+/// rectangular ones measure the jump between its ends; ``spectral_moments``
+/// gives the profile's slope and curvature variances.
 /// ``window``: ``"rectangular"`` (exact Parseval) or ``"hann"``.
 #[pyfunction]
 #[pyo3(signature = (z, dx, window=None))]
@@ -384,10 +415,15 @@ fn psd<'py>(
     d.set_item("dq", p.dq)?;
     d.set_item("q", PyArray1::from_vec(py, p.q))?;
     d.set_item("psd", PyArray1::from_vec(py, p.c))?;
-    d.set_item("m0", m.m0)?;
-    d.set_item("m2", m.m2)?;
-    d.set_item("m4", m.m4)?;
-    d.set_item("nayak_alpha", m.nayak_alpha())?;
+    let tag = if w == s::Window::Hann {
+        "hann"
+    } else {
+        "rectangular"
+    };
+    d.set_item(format!("m0_{tag}_window"), m.m0)?;
+    d.set_item(format!("m2_{tag}_window"), m.m2)?;
+    d.set_item(format!("m4_{tag}_window"), m.m4)?;
+    d.set_item(format!("nayak_alpha_{tag}_window"), m.nayak_alpha())?;
     Ok(d)
 }
 
@@ -421,10 +457,14 @@ fn acf<'py>(
 
 /// hurst_fit(z, dx, band=None) -> dict
 ///
-/// Least-squares power law G = A q^s of the Hann-windowed PSD of ``z`` (m,
-/// every ``dx`` m) over log bins in ``band`` = (q_min, q_max) (rad/m;
-/// default L/4 … 8dx in wavelength): ``hurst`` H = -(s+1)/2, ``slope``,
-/// ``prefactor``, ``r_squared``, ``q_min``, ``q_max``, ``bins``.
+/// Power law G = A q^s of the PSD of ``z`` (m, every ``dx`` m): bridge
+/// detrending, Hann periodogram with the window's smoothing modelled,
+/// weighted fit of log bins, in ``band`` = (q_min, q_max) (rad/m) or, by
+/// default, the band chosen from the data (the widest run of one decade or
+/// more that is a power law with 0 <= H <= 1; ``asperity.Error`` when there
+/// is none): ``hurst`` H = -(s+1)/2, ``hurst_uncertainty``, ``slope``,
+/// ``slope_uncertainty``, ``prefactor``, ``r_squared``, ``chi2_per_dof``,
+/// ``q_min``, ``q_max``, ``bins``.
 #[pyfunction]
 #[pyo3(signature = (z, dx, band=None))]
 fn hurst_fit(
@@ -438,6 +478,201 @@ fn hurst_fit(
     let dx = real(dx, "dx")?;
     let f = py.detach(|| s::hurst_fit(hs, dx, band)).map_err(rz)?;
     to_py_value(py, &f)
+}
+
+/// spectral_moments(z, dx) -> dict
+///
+/// Spectral moments of heights ``z`` (m, every ``dx`` m) from the
+/// derivatives: ``m0`` = mean Z² (m²), ``m2`` = mean squared seven-point
+/// slope (as RΔq), ``m4`` = mean squared three-point second difference
+/// (m⁻²), ``nayak_alpha`` = m0 m4 / m2².
+#[pyfunction]
+fn spectral_moments<'py>(
+    py: Python<'py>,
+    z: &Bound<'py, PyAny>,
+    dx: &Bound<'_, PyAny>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let h = heights(z)?;
+    let hs = h.as_slice()?;
+    let dx = real(dx, "dx")?;
+    let m = py.detach(|| s::spectral_moments(hs, dx)).map_err(rz)?;
+    let d = PyDict::new(py);
+    d.set_item("m0", m.m0)?;
+    d.set_item("m2", m.m2)?;
+    d.set_item("m4", m.m4)?;
+    d.set_item("nayak_alpha", m.nayak_alpha())?;
+    Ok(d)
+}
+
+fn window_arg(window: Option<&Bound<'_, PyAny>>) -> PyResult<s::Window> {
+    match window {
+        None => Ok(s::Window::Rectangular),
+        Some(w) => match string(w, "window")?.as_str() {
+            "rectangular" | "none" => Ok(s::Window::Rectangular),
+            "hann" => Ok(s::Window::Hann),
+            x => Err(arg_error(
+                "window",
+                format!("must be \"rectangular\" or \"hann\", got {x:?}"),
+            )),
+        },
+    }
+}
+
+/// psd_2d(z, dx, dy=None, window="rectangular") -> dict
+///
+/// Two-dimensional PSD of a height map ``z`` (m, 2-D array [y, x]), centred:
+/// ``psd`` C(qy, qx) (m⁴, 2-D array [y, x]) with ``qx``, ``qy`` (rad/m),
+/// ``dqx``, ``dqy``; sum(C)·dqx·dqy = Sq² for the rectangular window; and
+/// its radial average ``radial_q`` (rad/m), ``radial_psd`` (m⁴).
+#[pyfunction]
+#[pyo3(signature = (z, dx, dy=None, window=None))]
+fn psd_2d<'py>(
+    py: Python<'py>,
+    z: &Bound<'py, PyAny>,
+    dx: &Bound<'_, PyAny>,
+    dy: Option<&Bound<'_, PyAny>>,
+    window: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let w = window_arg(window)?;
+    let t = topography_arg(z, dx, dy)?;
+    let g = py.detach(|| s::psd_2d(&t, w)).map_err(rs)?;
+    let r = g.radial();
+    let d = PyDict::new(py);
+    let qx: Vec<f64> = (0..g.nx).map(|i| g.qx(i)).collect();
+    let qy: Vec<f64> = (0..g.ny).map(|j| g.qy(j)).collect();
+    d.set_item("qx", PyArray1::from_vec(py, qx))?;
+    d.set_item("qy", PyArray1::from_vec(py, qy))?;
+    d.set_item("dqx", g.dqx)?;
+    d.set_item("dqy", g.dqy)?;
+    d.set_item("psd", PyArray1::from_vec(py, g.c).reshape([g.ny, g.nx])?)?;
+    d.set_item("radial_q", PyArray1::from_vec(py, r.r))?;
+    d.set_item("radial_psd", PyArray1::from_vec(py, r.value))?;
+    Ok(d)
+}
+
+/// acf_2d(z, dx, dy=None) -> dict
+///
+/// Two-dimensional ACF of a height map ``z`` (m, [y, x]) on the full lag
+/// grid, centred: ``acf`` R (m², 2-D array [(2ny−1), (2nx−1)]),
+/// ``tau_x``, ``tau_y`` (m); R at (0, 0) is Sq²; the radial average
+/// ``radial_lag`` (m), ``radial_acf`` (m²).
+#[pyfunction]
+#[pyo3(signature = (z, dx, dy=None))]
+fn acf_2d<'py>(
+    py: Python<'py>,
+    z: &Bound<'py, PyAny>,
+    dx: &Bound<'_, PyAny>,
+    dy: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let t = topography_arg(z, dx, dy)?;
+    let a = py.detach(|| s::acf_2d(&t)).map_err(rs)?;
+    let r = a.radial();
+    let d = PyDict::new(py);
+    let tx: Vec<f64> = (0..a.nx).map(|i| a.tau_x(i)).collect();
+    let ty: Vec<f64> = (0..a.ny).map(|j| a.tau_y(j)).collect();
+    d.set_item("tau_x", PyArray1::from_vec(py, tx))?;
+    d.set_item("tau_y", PyArray1::from_vec(py, ty))?;
+    d.set_item("acf", PyArray1::from_vec(py, a.r).reshape([a.ny, a.nx])?)?;
+    d.set_item("radial_lag", PyArray1::from_vec(py, r.r))?;
+    d.set_item("radial_acf", PyArray1::from_vec(py, r.value))?;
+    Ok(d)
+}
+
+/// isotropy(z, dx, dy=None, s=0.2) -> dict
+///
+/// Isotropy of a height map ``z`` (m, [y, x]): ``texture_aspect_ratio``
+/// (Str: shortest over longest distance where the normalised ACF falls to
+/// ``s``; None when it does not fall in some direction),
+/// ``autocorrelation_length`` (Sal, m), ``longest_decay_length`` (m),
+/// ``texture_direction`` (rad), ``gradient_ratio`` (smallest over largest
+/// directional rms slope), ``gradient_direction`` (rad, steepest),
+/// ``rms_slope_max``, ``rms_slope_min``, ``s``.
+#[pyfunction]
+#[pyo3(signature = (z, dx, dy=None, s=0.2))]
+fn isotropy(
+    py: Python<'_>,
+    z: &Bound<'_, PyAny>,
+    dx: &Bound<'_, PyAny>,
+    dy: Option<&Bound<'_, PyAny>>,
+    s: f64,
+) -> PyResult<Py<PyAny>> {
+    let t = topography_arg(z, dx, dy)?;
+    let i = py.detach(|| s::isotropy(&t, s)).map_err(rs)?;
+    to_py_value(py, &i)
+}
+
+/// scale_dependent(z, dx, dy=None) -> dict
+///
+/// rms slope and curvature at increasing scale h (finite differences at
+/// step h): for a profile ``z`` (1-D) ``scale`` (m), ``slope_rms``,
+/// ``curvature_rms`` (1/m); for a map (2-D [y, x]) ``along_x`` and
+/// ``along_y``, each such a dict.
+#[pyfunction]
+#[pyo3(signature = (z, dx, dy=None))]
+fn scale_dependent(
+    py: Python<'_>,
+    z: &Bound<'_, PyAny>,
+    dx: &Bound<'_, PyAny>,
+    dy: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Py<PyAny>> {
+    if z.cast::<PyArray2<f64>>().is_ok() {
+        let t = topography_arg(z, dx, dy)?;
+        let m = py.detach(|| s::scale_dependent_map(&t)).map_err(rs)?;
+        return to_py_value(py, &m);
+    }
+    let h = heights(z)?;
+    let hs = h.as_slice()?;
+    let dx = real(dx, "dx")?;
+    let r = py.detach(|| s::scale_dependent(hs, dx)).map_err(rz)?;
+    to_py_value(py, &r)
+}
+
+/// areal_gaussian_filter(z, dx, cutoff, dy=None, ends="discard") -> dict
+///
+/// ISO 16610-61 areal Gaussian filter of a height map ``z`` (m, [y, x]) for
+/// the cut-off ``cutoff`` (m): ``mean_surface`` and ``roughness`` (m, 2-D
+/// arrays [y, x]) and ``first_index`` (i, j) of the retained grid;
+/// ``ends``: ``"discard"`` (drop λc/2 at every edge) or ``"keep"``.
+#[pyfunction]
+#[pyo3(signature = (z, dx, cutoff, dy=None, ends=None))]
+fn areal_gaussian_filter<'py>(
+    py: Python<'py>,
+    z: &Bound<'py, PyAny>,
+    dx: &Bound<'_, PyAny>,
+    cutoff: &Bound<'_, PyAny>,
+    dy: Option<&Bound<'_, PyAny>>,
+    ends: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let e = match ends {
+        None => s::FilterEnds::Discard,
+        Some(v) => match string(v, "ends")?.as_str() {
+            "discard" => s::FilterEnds::Discard,
+            "keep" => s::FilterEnds::Keep,
+            x => {
+                return Err(arg_error(
+                    "ends",
+                    format!("must be \"discard\" or \"keep\", got {x:?}"),
+                ))
+            }
+        },
+    };
+    let lc = real(cutoff, "cutoff")?;
+    let t = topography_arg(z, dx, dy)?;
+    let f = py
+        .detach(|| s::areal_gaussian_filter(&t, lc, e))
+        .map_err(rs)?;
+    let (nx, ny) = (f.roughness.nx(), f.roughness.ny());
+    let d = PyDict::new(py);
+    d.set_item(
+        "mean_surface",
+        PyArray1::from_slice(py, f.mean_surface.heights()).reshape([ny, nx])?,
+    )?;
+    d.set_item(
+        "roughness",
+        PyArray1::from_slice(py, f.roughness.heights()).reshape([ny, nx])?,
+    )?;
+    d.set_item("first_index", f.first_index)?;
+    Ok(d)
 }
 
 /// remove_form(z, form="linear") -> numpy.ndarray
@@ -731,6 +966,12 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(psd, m)?,
         wrap_pyfunction!(acf, m)?,
         wrap_pyfunction!(hurst_fit, m)?,
+        wrap_pyfunction!(spectral_moments, m)?,
+        wrap_pyfunction!(psd_2d, m)?,
+        wrap_pyfunction!(acf_2d, m)?,
+        wrap_pyfunction!(isotropy, m)?,
+        wrap_pyfunction!(scale_dependent, m)?,
+        wrap_pyfunction!(areal_gaussian_filter, m)?,
         wrap_pyfunction!(remove_form, m)?,
         wrap_pyfunction!(gaussian_filter, m)?,
         wrap_pyfunction!(peaks, m)?,

@@ -128,3 +128,42 @@ def test_greenwood_williamson_closed_form():
     sol = gw.separation_at_load(float(r["load"][1]))
     assert sol["separation"] == pytest.approx(1e-6, rel=1e-9)
     assert asperity.deformation_regime(asperity.plasticity_index(1e11, 1e9, 1e-6, 1e-4)) == "plastic"
+
+
+def test_moments_hurst_and_maps():
+    # Moments from the derivatives: a sine's slope and curvature variances.
+    a, wl, dx = 1e-6, 1e-4, 5e-7
+    x = np.arange(2000) * dx
+    z = a * np.sin(2 * np.pi * x / wl)
+    m = asperity.spectral_moments(z, dx)
+    q = 2 * np.pi / wl
+    assert m["m2"] == pytest.approx(a * a / 2 * q * q, rel=3e-3)
+    assert m["m4"] == pytest.approx(a * a / 2 * q**4, rel=3e-3)
+    assert asperity.psd(z, dx)["m2_rectangular_window"] == pytest.approx(a * a / 2 * q * q, rel=1e-9)
+    # The Hurst fit with its uncertainty and the band from the data.
+    zs = asperity.self_affine_profile(1 << 16, 1e-8, 0.8, 1e-6, seed=2)
+    f = asperity.hurst_fit(zs, 1e-8)
+    assert f["hurst"] == pytest.approx(0.8, abs=0.02)
+    assert 0 < f["hurst_uncertainty"] < 0.01
+    p = asperity.profile_parameters(1e-8, zs, detrend="none")
+    assert p["psd_hurst_exponent"] == f["hurst"] and p["psd_fit_reason"] is None
+    assert p["m2"] == pytest.approx(p["RDq"] ** 2, rel=1e-9)
+    # Maps: 2-D PSD (Parseval), ACF, isotropy, scale dependence, areal filter.
+    mp = asperity.self_affine_map(64, 48, 1e-8, 1e-8, 0.7, 1e-8, seed=4)
+    g = asperity.psd_2d(mp, 1e-8)
+    assert g["psd"].shape == (48, 64)
+    assert g["psd"].sum() * g["dqx"] * g["dqy"] == pytest.approx(np.mean((mp - mp.mean()) ** 2), rel=1e-9)
+    ac = asperity.acf_2d(mp, 1e-8)
+    assert ac["acf"].shape == (95, 127)
+    assert ac["acf"][47, 63] == pytest.approx(np.mean((mp - mp.mean()) ** 2), rel=1e-9)
+    iso = asperity.isotropy(mp, 1e-8)
+    assert 0 < iso["gradient_ratio"] <= 1
+    sd = asperity.scale_dependent(mp, 1e-8)
+    assert len(sd["along_x"]["scale"]) == len(sd["along_x"]["slope_rms"])
+    assert asperity.scale_dependent(zs, 1e-8)["slope_rms"][0] > 0
+    fl = asperity.areal_gaussian_filter(mp, 1e-8, 1e-7)
+    assert fl["roughness"].shape == (48 - 10, 64 - 10) and fl["first_index"] == (5, 5)
+    mm = asperity.map_parameters(mp, 1e-8, cutoff=1e-7)
+    assert mm["nx"] == 54 and "isotropy" in mm and "psd_radial" in mm
+    with pytest.raises(asperity.Error):
+        asperity.areal_gaussian_filter(mp, 1e-8, 1e-5)

@@ -1,5 +1,6 @@
 //! `asperity profile FILE`: ISO 4287 parameters, spectrum and plots of a
-//! measured line scan, or the ISO 25178 height parameters of a map.
+//! measured line scan, or the ISO 25178 height parameters, spectra, isotropy
+//! and scale-dependent slope and curvature of a map.
 //!
 //! Everything physical comes from `asperity::surface`: reading, form
 //! removal, the Gaussian filter, the parameters, ACF, PSD, spectral moments,
@@ -7,9 +8,13 @@
 //! what to call, formats the results and draws them.
 
 use asperity::surface::{
-    hurst_fit, parse_profile, parse_topography, psd_windowed, FilterEnds, Form, HurstFit, MapForm,
-    MaterialRatioCurve, ParameterOptions, Profile, RoughnessParameters, Spacing, Topography,
-    Window,
+    acf_2d, areal_gaussian_filter, isotropy, psd_2d, scale_dependent_map, Acf2d, Isotropy, Psd2d,
+    Radial, ScaleDependentMap,
+};
+use asperity::surface::{
+    hurst_estimate, parse_profile, parse_topography, psd_windowed, spectral_moments, FilterEnds,
+    Form, HurstFit, MapForm, MaterialRatioCurve, ParameterOptions, Profile, RoughnessParameters,
+    Spacing, SpectralMoments, Topography, Window,
 };
 use clap::{Args, ValueEnum};
 use plotters::coord::Shift;
@@ -65,11 +70,14 @@ pub struct ProfileArgs {
     /// Cut-off wavelength λc (m) of the ISO 16610-21 Gaussian filter: the
     /// parameters are those of the roughness profile (profile minus the
     /// Gaussian mean line), λc/2 is discarded at each end and the sampling
-    /// length is λc (ISO 4288). Line scans only.
+    /// length is λc (ISO 4288). For a map: the roughness (S-L) surface of
+    /// the ISO 16610-61 areal Gaussian filter, λc/2 dropped at every edge.
     #[arg(long, value_name = "METRES", allow_hyphen_values = true)]
     cutoff: Option<f64>,
     /// Write SVG plots PREFIX-profile.svg, PREFIX-acf.svg, PREFIX-psd.svg and
-    /// PREFIX-material-ratio.svg (maps: the material ratio only). If PREFIX
+    /// PREFIX-material-ratio.svg (maps: PREFIX-psd.svg radial PSD,
+    /// PREFIX-psd2d.svg, PREFIX-acf.svg, PREFIX-scale.svg slope and
+    /// curvature against scale, PREFIX-material-ratio.svg). If PREFIX
     /// is a directory, the file's stem is used inside it.
     #[arg(long, value_name = "PREFIX")]
     svg: Option<PathBuf>,
@@ -128,12 +136,16 @@ struct LineAnalysis {
     /// lengths).
     evaluated: usize,
     params: RoughnessParameters,
-    m0: f64,
-    m2: f64,
-    m4: f64,
-    nayak_alpha: f64,
+    /// Spectral moments from the derivatives (seven-point slopes, three-point
+    /// curvatures): the profile's own slope and curvature variances.
+    moments: SpectralMoments,
+    /// The q^p moments of the rectangular-window PSD: for a non-periodic
+    /// scan they measure the jump between its ends.
+    rectangular: SpectralMoments,
     correlation_length: Option<f64>,
     fit: Option<HurstFit>,
+    /// Why there is no power-law fit.
+    no_fit: Option<&'static str>,
 }
 
 fn analyse_line(raw: Profile, detrend: Detrend, cutoff: Option<f64>) -> Res<LineAnalysis> {
@@ -174,27 +186,24 @@ fn analyse_line(raw: Profile, detrend: Detrend, cutoff: Option<f64>) -> Res<Line
     let params = analysed.parameters(&options)?;
     let dx = analysed.dx();
     let evaluated = params.sampling_lengths * (params.sampling_length / dx).round() as usize;
-    let moments = analysed.psd()?.moments();
+    let moments = spectral_moments(analysed.heights(), dx)?;
+    let rectangular = analysed.psd()?.moments();
     let correlation_length = analysed
         .acf()?
         .correlation_length(std::f64::consts::E.recip())?;
-    // The fit behind psd_hurst_exponent, for its band and prefactor.
-    let fit = match params.psd_hurst_exponent {
-        Some(_) => Some(hurst_fit(analysed.heights(), dx, None)?),
-        None => None,
-    };
+    // The fit behind psd_hurst_exponent: its band, uncertainty and prefactor.
+    let estimate = hurst_estimate(analysed.heights(), dx)?;
     Ok(LineAnalysis {
         raw,
         analysed,
         first,
         evaluated,
         params,
-        m0: moments.m0,
-        m2: moments.m2,
-        m4: moments.m4,
-        nayak_alpha: moments.nayak_alpha(),
+        moments,
+        rectangular,
         correlation_length,
-        fit,
+        fit: estimate.fit,
+        no_fit: estimate.reason,
     })
 }
 
@@ -226,12 +235,19 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
             "length": a.analysed.length(),
             "evaluation_length": p.sampling_length * p.sampling_lengths as f64,
             "spacing_deviation": a.raw.spacing_deviation(),
-            "m0": a.m0,
-            "m2": a.m2,
-            "m4": a.m4,
-            "nayak_alpha": a.nayak_alpha,
+            "moments_from": "derivatives (seven-point slopes, three-point second differences)",
+            "m0": a.moments.m0,
+            "m2": a.moments.m2,
+            "m4": a.moments.m4,
+            "nayak_alpha": a.moments.nayak_alpha(),
+            "m0_rectangular_window": a.rectangular.m0,
+            "m2_rectangular_window": a.rectangular.m2,
+            "m4_rectangular_window": a.rectangular.m4,
+            "nayak_alpha_rectangular_window": a.rectangular.nayak_alpha(),
             "correlation_length_1e": a.correlation_length,
+            "psd_hurst_uncertainty": a.fit.map(|f| f.hurst_uncertainty),
             "psd_fit": a.fit,
+            "psd_fit_reason": a.no_fit,
             "plots": plots,
         });
         if let Value::Object(extra) = extra {
@@ -299,22 +315,47 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
         (
             "psd_hurst_exponent",
             p.psd_hurst_exponent.map_or(("n/a".to_string(), ""), num),
-            match &a.fit {
-                Some(_) => "Hurst exponent H of the PSD power law",
-                None => "no power law: fewer than 128 points, or fit r² < 0.9 or H outside [0, 1]",
+            match (&a.fit, a.no_fit) {
+                (Some(_), _) => "Hurst exponent H of the PSD power law",
+                (None, Some(reason)) => reason,
+                (None, None) => "no power law",
             },
         ),
-        ("m0", sci(a.m0, "m²"), "spectral moment: height variance"),
-        ("m2", sci(a.m2, ""), "spectral moment: slope variance"),
+        (
+            "psd_hurst_uncertainty",
+            a.fit
+                .map_or(("n/a".to_string(), ""), |f| num(f.hurst_uncertainty)),
+            "standard error of H (statistical, in the band)",
+        ),
+        (
+            "m0",
+            sci(a.moments.m0, "m²"),
+            "spectral moment: height variance",
+        ),
+        (
+            "m2",
+            sci(a.moments.m2, ""),
+            "slope variance (seven-point slopes, as RΔq)",
+        ),
         (
             "m4",
-            sci(a.m4, "m⁻²"),
-            "spectral moment: curvature variance",
+            sci(a.moments.m4, "m⁻²"),
+            "curvature variance (three-point differences)",
         ),
         (
             "nayak_alpha",
-            num(a.nayak_alpha),
+            num(a.moments.nayak_alpha()),
             "Nayak bandwidth m0 m4 / m2²",
+        ),
+        (
+            "m2_rectangular_window",
+            sci(a.rectangular.m2, ""),
+            "∫q²G dq, rectangular window (end jump for a non-periodic scan)",
+        ),
+        (
+            "m4_rectangular_window",
+            sci(a.rectangular.m4, "m⁻²"),
+            "∫q⁴G dq, rectangular window",
         ),
         (
             "correlation_length_1e",
@@ -325,12 +366,15 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
     print_rows(&rows);
     if let Some(f) = &a.fit {
         outln!(
-            "PSD power law G = A q^{:.4} over q = {:.3e} … {:.3e} rad/m ({} bins, r² = {:.4})",
+            "PSD power law G = A q^{:.4} over q = {:.3e} … {:.3e} rad/m (band from the data, \
+             {} bins, χ²/ν = {:.2}): H = {:.3} ± {:.3}",
             f.slope,
             f.q_min,
             f.q_max,
             f.bins,
-            f.r_squared
+            f.chi2_per_dof,
+            f.hurst,
+            f.hurst_uncertainty
         );
     }
     for p in &plots {
@@ -340,28 +384,48 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
 }
 
 fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<()> {
-    if let Some(lc) = args.cutoff {
-        return Err(format!(
-            "--cutoff {lc:e} m: {} is a height map ({} × {}); the Gaussian cut-off applies to line scans only",
-            args.file.display(),
-            t.nx(),
-            t.ny()
-        )
-        .into());
-    }
+    let read = format!(
+        "{}: height map, {} × {} points, dx = {}, dy = {}, {} × {}",
+        args.file.display(),
+        t.nx(),
+        t.ny(),
+        length_text(t.dx()),
+        length_text(t.dy()),
+        length_text(t.nx() as f64 * t.dx()),
+        length_text(t.ny() as f64 * t.dy())
+    );
     let t = match args.detrend {
         Detrend::None => t,
         Detrend::Mean => t.remove_form(MapForm::Mean)?,
         Detrend::Linear => t.remove_form(MapForm::Plane)?,
         Detrend::Quadratic => t.remove_form(MapForm::Quadratic)?,
     };
+    // With a cut-off: the S-L (roughness) surface of the ISO 16610-61 areal
+    // Gaussian filter, λc/2 dropped at every edge.
+    let (t, first) = match args.cutoff {
+        None => (t, None),
+        Some(lc) => {
+            let f = areal_gaussian_filter(&t, lc, FilterEnds::Discard).map_err(|e| {
+                format!(
+                    "--cutoff {lc:e} m (map {} × {}): {e}",
+                    length_text(t.nx() as f64 * t.dx()),
+                    length_text(t.ny() as f64 * t.dy())
+                )
+            })?;
+            (f.roughness, Some(f.first_index))
+        }
+    };
+    let ma = analyse_map(&t)?;
     let s = t.parameters()?;
     let plots = match &args.svg {
         Some(prefix) => {
             bar.set_message("plotting");
-            let path = suffixed(&plot_prefix(prefix, &args.file), "-material-ratio.svg");
+            let prefix = plot_prefix(prefix, &args.file);
+            let mut written = map_plots(&prefix, &ma, args)?;
+            let path = suffixed(&prefix, "-material-ratio.svg");
             material_ratio_plot(&path, t.heights())?;
-            vec![path.display().to_string()]
+            written.push(path.display().to_string());
+            written
         }
         None => Vec::new(),
     };
@@ -380,6 +444,19 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
             "ny": t.ny(),
             "dx": t.dx(),
             "dy": t.dy(),
+            "cutoff": args.cutoff,
+            "first_index": first,
+            "isotropy": ma.isotropy,
+            "scale_dependent": ma.scale,
+            "psd_radial": {
+                "window": "hann",
+                "q": ma.psd_radial.r,
+                "c": ma.psd_radial.value,
+            },
+            "acf_radial": {
+                "lag": ma.acf_radial.r,
+                "r": ma.acf_radial.value,
+            },
             "plots": plots,
         });
         if let Value::Object(extra) = extra {
@@ -388,16 +465,7 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
         outln!("{v}");
         return Ok(());
     }
-    outln!(
-        "{}: height map, {} × {} points, dx = {}, dy = {}, {} × {}",
-        args.file.display(),
-        t.nx(),
-        t.ny(),
-        length_text(t.dx()),
-        length_text(t.dy()),
-        length_text(t.nx() as f64 * t.dx()),
-        length_text(t.ny() as f64 * t.dy())
-    );
+    outln!("{read}");
     outln!(
         "detrend {}{}",
         args.detrend.name(),
@@ -421,10 +489,88 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
         ("Sdq", num(s.sdq), "root-mean-square gradient"),
     ];
     print_rows(&rows);
+    if let Some(lc) = args.cutoff {
+        outln!(
+            "roughness (S-L) surface of the ISO 16610-61 Gaussian filter, λc = {}, {} × {} points after dropping λc/2 at each edge",
+            length_text(lc),
+            t.nx(),
+            t.ny()
+        );
+    }
+    print_map_analysis(&ma);
     for p in &plots {
         outln!("wrote {p}");
     }
     Ok(())
+}
+
+/// The map quantities beyond the ISO height parameters.
+struct MapAnalysis {
+    /// Hann-windowed 2-D PSD (centred) and its radial average.
+    psd: Psd2d,
+    psd_radial: Radial,
+    acf: Acf2d,
+    acf_radial: Radial,
+    isotropy: Isotropy,
+    scale: ScaleDependentMap,
+}
+
+fn analyse_map(t: &Topography) -> Res<MapAnalysis> {
+    // A measured map is not periodic: the Hann window keeps the edges' jump
+    // out of the spectrum.
+    let psd = psd_2d(t, Window::Hann)?;
+    let psd_radial = psd.radial();
+    let acf = acf_2d(t)?;
+    let acf_radial = acf.radial();
+    Ok(MapAnalysis {
+        psd,
+        psd_radial,
+        acf,
+        acf_radial,
+        isotropy: isotropy(t, 0.2)?,
+        scale: scale_dependent_map(t)?,
+    })
+}
+
+fn print_map_analysis(m: &MapAnalysis) {
+    let i = &m.isotropy;
+    let len = |v: Option<f64>| v.map_or("n/a".to_string(), length_text);
+    outln!(
+        "isotropy: Str (ACF to {}) = {}, Sal = {}, longest decay {}, lay at {:.1}°; \
+         directional rms slopes {:.4} … {:.4} (ratio {:.3}, steepest at {:.1}°)",
+        i.s,
+        i.texture_aspect_ratio
+            .map_or("n/a (no decay in some direction)".to_string(), |v| sig(
+                v, 3
+            )),
+        len(i.autocorrelation_length),
+        len(i.longest_decay_length),
+        i.texture_direction.to_degrees(),
+        i.rms_slope_min,
+        i.rms_slope_max,
+        i.gradient_ratio,
+        i.gradient_direction.to_degrees()
+    );
+    let s = &m.scale;
+    outln!("scale-dependent rms slope / curvature (finite differences at step h):");
+    outln!(
+        "  {:>12} {:>10} {:>10} {:>14} {:>14}",
+        "h",
+        "slope x",
+        "slope y",
+        "curv. x (1/m)",
+        "curv. y (1/m)"
+    );
+    for k in 0..s.along_x.scale.len().min(s.along_y.scale.len()) {
+        outln!(
+            "  {:>12} {:>10} {:>10} {:>14.4e} {:>14.4e}",
+            length_text(s.along_x.scale[k]),
+            sig(s.along_x.slope_rms[k], 4),
+            sig(s.along_y.slope_rms[k], 4),
+            s.along_x.curvature_rms[k],
+            s.along_y.curvature_rms[k]
+        );
+    }
 }
 
 fn print_rows(rows: &[(&str, (String, &str), &str)]) {
@@ -766,8 +912,7 @@ fn line_plots(prefix: &Path, a: &LineAnalysis, args: &ProfileArgs) -> Res<Vec<St
     written.push(path.display().to_string());
 
     // PSD: the Hann-windowed periodogram, which the power law is fitted to
-    // (the rectangular one, whose moments are reported, leaks at high q for
-    // steep spectra).
+    // (the rectangular one leaks the end jump ∝ q⁻² for a non-periodic scan).
     let g = psd_windowed(z, dx, Window::Hann)?;
     let gmax = g.c.iter().skip(1).fold(0.0f64, |m, &c| m.max(c));
     let floor = gmax * 1e-16;
@@ -792,7 +937,10 @@ fn line_plots(prefix: &Path, a: &LineAnalysis, args: &ProfileArgs) -> Res<Vec<St
     if let Some(f) = &a.fit {
         let fit = [f.q_min, f.q_max].map(|q| (q, f.prefactor * q.powf(f.slope)));
         lines.push(line(
-            format!("power law G ∝ q^{:.3}, H = {:.3}", f.slope, f.hurst),
+            format!(
+                "power law G ∝ q^{:.3}, H = {:.3} ± {:.3}",
+                f.slope, f.hurst, f.hurst_uncertainty
+            ),
             log(&fit),
             RED,
             2,
@@ -854,4 +1002,246 @@ fn material_ratio_plot(path: &Path, heights: &[f64]) -> Res<()> {
             &[line("c(Rmr)", pts, BLUE, 2)],
         )
     })
+}
+
+/// A log–log chart of `lines` (values > 0), plotted as log10 on linear axes
+/// labelled with the values (plotters' log axes drop labels below 2.2e-16).
+fn log_chart(
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    caption: &str,
+    x_desc: &str,
+    y_desc: &str,
+    lines: Vec<Line>,
+) -> Res<()> {
+    let lines: Vec<Line> = lines
+        .into_iter()
+        .map(|l| Line {
+            pts: l
+                .pts
+                .iter()
+                .filter(|p| p.0 > 0.0 && p.1 > 0.0)
+                .map(|&(x, y)| (x.log10(), y.log10()))
+                .collect(),
+            ..l
+        })
+        .collect();
+    let (x0, x1) = range(&lines, true, 0.0);
+    let (y0, y1) = range(&lines, false, 0.03);
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, ("sans-serif", 20))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(75)
+        .build_cartesian_2d(x0..x1, y0..y1)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .max_light_lines(0)
+        .x_label_formatter(&decade_label)
+        .y_label_formatter(&decade_label)
+        .draw()?;
+    draw_lines(&mut chart, &lines)
+}
+
+/// Colour of `t` in [0, 1] on a dark-blue → green → yellow ramp.
+fn ramp(t: f64) -> RGBColor {
+    const STOPS: [(f64, f64, f64); 5] = [
+        (68.0, 1.0, 84.0),
+        (59.0, 82.0, 139.0),
+        (33.0, 145.0, 140.0),
+        (94.0, 201.0, 98.0),
+        (253.0, 231.0, 37.0),
+    ];
+    let t = t.clamp(0.0, 1.0) * (STOPS.len() - 1) as f64;
+    let i = (t.floor() as usize).min(STOPS.len() - 2);
+    let f = t - i as f64;
+    let (a, b) = (STOPS[i], STOPS[i + 1]);
+    let mix = |x: f64, y: f64| (x + (y - x) * f).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// The plots of a map (besides the material ratio); returns the paths.
+fn map_plots(prefix: &Path, m: &MapAnalysis, args: &ProfileArgs) -> Res<Vec<String>> {
+    let name = args
+        .file
+        .file_name()
+        .map_or(String::new(), |s| s.to_string_lossy().into_owned());
+    let mut written = Vec::new();
+
+    // Radial PSD (the zero wavevector left out).
+    let r = &m.psd_radial;
+    let pts: Vec<(f64, f64)> =
+        r.r.iter()
+            .copied()
+            .zip(r.value.iter().copied())
+            .skip(1)
+            .collect();
+    let path = suffixed(prefix, "-psd.svg");
+    write_svg(&path, (900, 600), |root| {
+        log_chart(
+            root,
+            &format!("{name}: radially averaged PSD (Hann window)"),
+            "wavenumber |q| / (rad/m)",
+            "PSD C(|q|) / m⁴",
+            vec![line("C(|q|), mean over annuli", pts, BLUE, 2)],
+        )
+    })?;
+    written.push(path.display().to_string());
+
+    // 2-D PSD as a heat map of log10 C, block-averaged to at most 96 cells a side.
+    let g = &m.psd;
+    let (bx, by) = (g.nx.div_ceil(96), g.ny.div_ceil(96));
+    let (cx, cy) = (g.nx / bx, g.ny / by);
+    let mut cells = vec![0.0; cx * cy];
+    for j in 0..cy * by {
+        for i in 0..cx * bx {
+            cells[(j / by) * cx + i / bx] += g.c[j * g.nx + i] / (bx * by) as f64;
+        }
+    }
+    let logs: Vec<f64> = cells
+        .iter()
+        .map(|&c| if c > 0.0 { c.log10() } else { f64::NAN })
+        .collect();
+    let hi = logs
+        .iter()
+        .copied()
+        .filter(|v| v.is_finite())
+        .fold(f64::NEG_INFINITY, f64::max);
+    let lo = hi - 8.0;
+    let q_at = |i: usize, n: usize, b: usize, dq: f64| ((i * b) as f64 - (n / 2) as f64) * dq;
+    let path = suffixed(prefix, "-psd2d.svg");
+    write_svg(&path, (800, 760), |root| {
+        let (xa, xb) = (q_at(0, g.nx, bx, g.dqx), q_at(cx, g.nx, bx, g.dqx));
+        let (ya, yb) = (q_at(0, g.ny, by, g.dqy), q_at(cy, g.ny, by, g.dqy));
+        let mut chart = ChartBuilder::on(root)
+            .caption(
+                format!("{name}: 2-D PSD log10 C(qx, qy) (8 decades below the peak)"),
+                ("sans-serif", 18),
+            )
+            .margin(15)
+            .x_label_area_size(45)
+            .y_label_area_size(75)
+            .build_cartesian_2d(xa..xb, ya..yb)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc("qx / (rad/m)")
+            .y_desc("qy / (rad/m)")
+            .x_label_formatter(&|v| format!("{v:.1e}"))
+            .y_label_formatter(&|v| format!("{v:.1e}"))
+            .draw()?;
+        chart.draw_series(
+            (0..cy)
+                .flat_map(|j| (0..cx).map(move |i| (i, j)))
+                .map(|(i, j)| {
+                    let v = logs[j * cx + i];
+                    let t = if v.is_finite() {
+                        (v - lo) / (hi - lo)
+                    } else {
+                        0.0
+                    };
+                    Rectangle::new(
+                        [
+                            (q_at(i, g.nx, bx, g.dqx), q_at(j, g.ny, by, g.dqy)),
+                            (q_at(i + 1, g.nx, bx, g.dqx), q_at(j + 1, g.ny, by, g.dqy)),
+                        ],
+                        ramp(t).filled(),
+                    )
+                }),
+        )?;
+        Ok(())
+    })?;
+    written.push(path.display().to_string());
+
+    // ACF: radial average and the cuts along x and y, normalised.
+    let a = &m.acf;
+    let r0 = a.r0();
+    let norm = |v: f64| if r0 > 0.0 { v / r0 } else { 0.0 };
+    let reach = m.acf_radial.r.last().copied().unwrap_or(0.0);
+    let (ls, lu) = length_unit(reach.max(a.dx));
+    let radial: Vec<(f64, f64)> = m
+        .acf_radial
+        .r
+        .iter()
+        .zip(&m.acf_radial.value)
+        .map(|(&t, &v)| (t / ls, norm(v)))
+        .collect();
+    let (ci, cj) = (a.nx / 2, a.ny / 2);
+    let along_x: Vec<(f64, f64)> = (ci..a.nx)
+        .take_while(|&i| a.tau_x(i) <= reach)
+        .map(|i| (a.tau_x(i) / ls, norm(a.r[cj * a.nx + i])))
+        .collect();
+    let along_y: Vec<(f64, f64)> = (cj..a.ny)
+        .take_while(|&j| a.tau_y(j) <= reach)
+        .map(|j| (a.tau_y(j) / ls, norm(a.r[j * a.nx + ci])))
+        .collect();
+    let s = m.isotropy.s;
+    let path = suffixed(prefix, "-acf.svg");
+    let caption = match m.isotropy.texture_aspect_ratio {
+        Some(str_) => format!("{name}: autocorrelation, Str = {}", sig(str_, 3)),
+        None => format!("{name}: autocorrelation (Str undefined)"),
+    };
+    write_svg(&path, (900, 600), |root| {
+        linear_chart(
+            root,
+            &caption,
+            &format!("lag / {lu}"),
+            "ACF R / R(0)",
+            &[
+                line("radial average", radial, BLUE, 2),
+                line("along x", along_x, RED, 1),
+                line("along y", along_y, GREEN, 1),
+                line(
+                    format!("s = {s}"),
+                    vec![(0.0, s), (reach / ls, s)],
+                    RGBColor(150, 150, 150),
+                    1,
+                ),
+            ],
+        )
+    })?;
+    written.push(path.display().to_string());
+
+    // Scale-dependent slope and curvature.
+    let sc = &m.scale;
+    let pair = |s: &asperity::surface::ScaleDependent, v: &[f64]| -> Vec<(f64, f64)> {
+        s.scale.iter().copied().zip(v.iter().copied()).collect()
+    };
+    let path = suffixed(prefix, "-scale.svg");
+    write_svg(&path, (900, 1000), |root| {
+        let panels = root.split_evenly((2, 1));
+        log_chart(
+            &panels[0],
+            &format!("{name}: rms slope at scale h"),
+            "scale h / m",
+            "rms slope",
+            vec![
+                line("along x", pair(&sc.along_x, &sc.along_x.slope_rms), BLUE, 2),
+                line("along y", pair(&sc.along_y, &sc.along_y.slope_rms), RED, 2),
+            ],
+        )?;
+        log_chart(
+            &panels[1],
+            "rms curvature at scale h",
+            "scale h / m",
+            "rms curvature / (1/m)",
+            vec![
+                line(
+                    "along x",
+                    pair(&sc.along_x, &sc.along_x.curvature_rms),
+                    BLUE,
+                    2,
+                ),
+                line(
+                    "along y",
+                    pair(&sc.along_y, &sc.along_y.curvature_rms),
+                    RED,
+                    2,
+                ),
+            ],
+        )
+    })?;
+    written.push(path.display().to_string());
+    Ok(written)
 }
