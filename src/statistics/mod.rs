@@ -49,6 +49,8 @@
 //!   Calculation Methods*, Pergamon Press, Oxford.
 //! * The single modules cite the details.
 
+pub mod bush_gibson_thomas;
+pub mod elliptic_hertz;
 pub mod gaussian;
 pub mod greenwood_williamson;
 pub mod heights;
@@ -57,6 +59,8 @@ pub mod power_law;
 mod quadrature;
 pub mod zhuravlev;
 
+pub use bush_gibson_thomas::{BgtResponse, BushGibsonThomas};
+pub use elliptic_hertz::EllipticHertz;
 pub use greenwood_williamson::GreenwoodWilliamson;
 pub use heights::{EmpiricalHeights, HeightDistribution};
 pub use kragelsky::{BearingCurveRods, KragelskyRods};

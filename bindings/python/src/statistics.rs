@@ -1,5 +1,5 @@
 //! Statistical multi-asperity models (`asperity::statistics`): height
-//! distributions, Greenwood–Williamson, Kragelsky rods and bearing curve,
+//! distributions, Greenwood–Williamson, Bush–Gibson–Thomas, Kragelsky rods and bearing curve,
 //! Zhuravlev, power-law asperities; every response on a float or an array of
 //! separations.
 
@@ -220,6 +220,128 @@ impl GreenwoodWilliamson {
         self.inner
             .plasticity_index(real(hardness, "hardness")?)
             .map_err(rs)
+    }
+}
+
+/// BushGibsonThomas(m0, m2, m4, e_star, nominal_area)
+///
+/// Bush, Gibson & Thomas (1975): an isotropic Gaussian surface of spectral
+/// moments m0 (m², σ²), m2 (mean-square profile slope) and m4 (m⁻²,
+/// mean-square profile curvature), Nayak's α = m0 m4/m2² > 1.5, whose
+/// summits are elliptic paraboloids in Hertz contact with a flat of contact
+/// modulus E* (Pa), over the nominal area A0 (m²). Responses at the
+/// separation d (m) of the flat above the surface's mean plane, on a float
+/// or an array. ``BushGibsonThomas.from_alpha(sigma, rms_slope, alpha,
+/// e_star, nominal_area)`` builds it from σ (m), √m2 and α.
+#[pyclass(module = "asperity", frozen)]
+pub struct BushGibsonThomas {
+    pub inner: st::BushGibsonThomas,
+}
+
+#[pymethods]
+impl BushGibsonThomas {
+    #[new]
+    fn new(
+        m0: &Bound<'_, PyAny>,
+        m2: &Bound<'_, PyAny>,
+        m4: &Bound<'_, PyAny>,
+        e_star: &Bound<'_, PyAny>,
+        nominal_area: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::BushGibsonThomas::new(
+                real(m0, "m0")?,
+                real(m2, "m2")?,
+                real(m4, "m4")?,
+                real(e_star, "e_star")?,
+                real(nominal_area, "nominal_area")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// from_alpha(sigma, rms_slope, alpha, e_star, nominal_area) -> BushGibsonThomas
+    ///
+    /// m0 = σ², m2 = rms_slope², m4 = α m2²/m0.
+    #[staticmethod]
+    fn from_alpha(
+        sigma: &Bound<'_, PyAny>,
+        rms_slope: &Bound<'_, PyAny>,
+        alpha: &Bound<'_, PyAny>,
+        e_star: &Bound<'_, PyAny>,
+        nominal_area: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::BushGibsonThomas::from_alpha(
+                real(sigma, "sigma")?,
+                real(rms_slope, "rms_slope")?,
+                real(alpha, "alpha")?,
+                real(e_star, "e_star")?,
+                real(nominal_area, "nominal_area")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// Nayak's α = m0 m4/m2².
+    #[getter]
+    fn alpha(&self) -> f64 {
+        self.inner.alpha()
+    }
+    /// Nayak's summit density m4/(6π√3 m2) (m⁻²).
+    #[getter]
+    fn summit_density(&self) -> f64 {
+        self.inner.summit_density()
+    }
+    /// Small-load limit of A/P, √(2π)/(E*√(2 m2)) (m²/N).
+    #[getter]
+    fn small_load_area_per_load(&self) -> f64 {
+        self.inner.small_load_area_per_load()
+    }
+    /// load(separation) -> float | numpy.ndarray
+    ///
+    /// Total load P (N) at separation d (m).
+    fn load(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.load(d))
+    }
+    /// area(separation) -> float | numpy.ndarray
+    ///
+    /// Real contact area A (m²) at separation d (m).
+    fn area(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.area(d))
+    }
+    /// contacts(separation) -> float | numpy.ndarray
+    ///
+    /// Expected number of summits in contact at separation d (m).
+    fn contacts(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.contacts(d))
+    }
+    /// stiffness(separation) -> float | numpy.ndarray
+    ///
+    /// Normal contact stiffness -dP/dd (N/m) at separation d (m).
+    fn stiffness(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.stiffness(d))
+    }
+    /// response(separation) -> dict
+    ///
+    /// ``load`` (N), ``area`` (m²), ``contacts``, ``mean_pressure`` (Pa) at
+    /// separation d (m): floats, or arrays for an array of separations.
+    fn response(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        responses(py, separation, "separation", |d| g.response(d))
+    }
+    /// separation_at_load(load) -> dict
+    ///
+    /// The separation (m) that carries ``load`` (N), with ``iterations`` and
+    /// ``relative_residual``.
+    fn separation_at_load<'py>(
+        &self,
+        py: Python<'py>,
+        load: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        separation_at(py, load, |p| self.inner.separation_at_load(p))
     }
 }
 
@@ -642,6 +764,7 @@ fn gaussian_tail_moment(
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<HeightDistribution>()?;
     m.add_class::<GreenwoodWilliamson>()?;
+    m.add_class::<BushGibsonThomas>()?;
     m.add_class::<KragelskyRods>()?;
     m.add_class::<BearingCurveRods>()?;
     m.add_class::<Zhuravlev>()?;
