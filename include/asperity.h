@@ -1240,6 +1240,36 @@ typedef struct AsperityZhuravlevFriction {
 typedef double (*AsperitySummitDensity)(double xi,
                                         void *user_data);
 
+// A Bush–Gibson–Thomas rough surface (thesis §5.3.3), by value: an
+// isotropic Gaussian surface of spectral moments m₀, m₂, m₄ (Nayak 1971)
+// whose summits are elliptic paraboloids in Hertz contact with a flat.
+// Nayak's α = m₀m₄/m₂² must exceed 3/2. An all-zero value is invalid.
+typedef struct AsperityBgtParams {
+    // Mean-square height m₀ = σ² (m², > 0).
+    double m0;
+    // Mean-square profile slope m₂ (dimensionless, > 0); the mean-square
+    // gradient of the isotropic surface is 2m₂.
+    double m2;
+    // Mean-square profile curvature m₄ (m⁻², > 0).
+    double m4;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Nominal contact area A₀ (m², > 0).
+    double nominal_area;
+} AsperityBgtParams;
+
+// Response of a Bush–Gibson–Thomas surface at one separation.
+typedef struct AsperityBgtResponse {
+    // Total normal load P (N), ≥ 0.
+    double load;
+    // Real contact area A (m²), ≥ 0.
+    double area;
+    // Expected number of summits in contact (dimensionless).
+    double contacts;
+    // Normal stiffness −dP/dd (N/m), ≥ 0.
+    double stiffness;
+} AsperityBgtResponse;
+
 // ISO 4287 parameters of a profile, its spectral moments and its Hurst
 // exponent, from `asperity_roughness_parameters`. Heights are measured from
 // the mean line of the evaluated profile (after form removal and filtering).
@@ -2240,6 +2270,40 @@ int32_t asperity_zhuravlev_eval(const struct AsperityZhuravlev *model,
                                 void *n2_data,
                                 size_t order,
                                 struct AsperityZhuravlevResponse *out);
+
+// Bush–Gibson–Thomas load, real area, number of contacts and stiffness at
+// `separation` d (m, finite; the flat's height above the mean plane of the
+// surface).
+int32_t asperity_bgt_eval(const struct AsperityBgtParams *bgt,
+                          double separation,
+                          struct AsperityBgtResponse *out);
+
+// `asperity_bgt_eval` for `n` separations `separation[i]` (m), writing
+// `load[i]` (N) and, where the array is not NULL, `area[i]` (m²),
+// `contacts[i]` and `stiffness[i]` (N/m). `separation` and `load` are
+// required (unless n = 0); inputs and outputs may be the same memory. On an
+// error at element i, elements before i are written, those from i on are
+// untouched, and the message names i.
+int32_t asperity_bgt_eval_batch(const struct AsperityBgtParams *bgt,
+                                size_t n,
+                                const double *separation,
+                                double *load,
+                                double *area,
+                                double *contacts,
+                                double *stiffness);
+
+// The separation (m) at which the surface carries `load` (N, finite, > 0),
+// by safeguarded Newton iteration.
+int32_t asperity_bgt_separation_at_load(const struct AsperityBgtParams *bgt,
+                                        double load,
+                                        struct AsperitySeparation *out);
+
+// Nayak's summit density D = m₄/(6π√3 m₂) (m⁻², to `*summit_density`) and
+// the small-load limit of A/P, √π/(E*√m₂) = √(2π)/(E*√(2m₂)) (m²/N, to
+// `*area_per_load`) of the surface `bgt`; either output may be NULL.
+int32_t asperity_bgt_properties(const struct AsperityBgtParams *bgt,
+                                double *summit_density,
+                                double *area_per_load);
 
 // A static, NUL-terminated description of a status code; "unknown status"
 // for a value that is not one. Do not free.

@@ -81,12 +81,13 @@ use super::{solve_separation, MultiAsperityResponse, SeparationSolution};
 use crate::error::{check, Error, Result};
 use std::sync::OnceLock;
 
-/// κ of the small-load asymptote `A = κ P/(E* √⟨|∇h|²⟩)` (module docs).
-pub const KAPPA: f64 = 2.506_628_274_631_000_2; // √(2π)
+/// κ of the small-load asymptote `A = κ P/(E* √⟨|∇h|²⟩)` (module docs):
+/// √(2π). (Private: cbindgen would export a public constant to the C header.)
+const KAPPA: f64 = 2.506_628_274_631_000_2;
 
-/// Smallest Nayak α: 3/2 (the height and mean curvature become fully
-/// correlated).
-pub const MIN_ALPHA: f64 = 1.5;
+/// Nayak's α must exceed 3/2 (at 3/2 the height and the mean curvature of a
+/// summit are fully correlated and the summit distribution is degenerate).
+const MIN_ALPHA: f64 = 1.5;
 
 const FRAC_1_SQRT_2PI: f64 = 0.398_942_280_401_432_7;
 /// Relative tolerance of the curvature quadrature.
@@ -272,7 +273,7 @@ impl BushGibsonThomas {
     }
 
     /// The small-load limit of A/P (m²/N): `√π/(E*√m₂) = κ/(E*√(2m₂))`
-    /// with κ = √(2π) ([`KAPPA`]).
+    /// with κ = √(2π).
     pub fn small_load_area_per_load(&self) -> f64 {
         KAPPA / (self.e_star * (2.0 * self.m2).sqrt())
     }
