@@ -1,6 +1,6 @@
 //! Statistical multi-asperity models: Zhuravlev, Greenwood–Williamson,
-//! Kragelsky's rod assembly and the power-law asperity extensions through
-//! rescaling (thesis sections 1.6–1.7, 3.7, 5.3–5.4).
+//! Bush–Gibson–Thomas, Kragelsky's rod assembly and the power-law asperity
+//! extensions through rescaling (thesis sections 1.6–1.7, 3.7, 5.3–5.4).
 //!
 //! All of them sum independent single-asperity responses over a distribution
 //! of summit heights:
@@ -13,6 +13,11 @@
 //!   summits against a flat, Gaussian, exponential or empirical heights
 //!   ((1-29), (1-30)), its inverse (separation at a load) and the plasticity
 //!   index (1-31).
+//! * [`bush_gibson_thomas`]: Bush, Gibson & Thomas (1975), §5.3.3: an
+//!   isotropic Gaussian surface given by its spectral moments, whose summits
+//!   (Nayak's random-process model) are elliptic paraboloids in Hertz
+//!   contact ([`elliptic_hertz`]); small-load limit
+//!   `A = √(2π) P/(E*√⟨|∇h|²⟩)`.
 //! * [`kragelsky`]: Kragelsky's assembly of elastic rods (5-7).
 //! * [`power_law`]: asperities `B r^d` on a material `σ ∝ ε^κ`, through
 //!   Borodich's rescaling of one known solution ((3-27), (3-28)).
