@@ -62,6 +62,7 @@ const TYPES: &[TypeLayout] = crate::contact::normal_laws!(layouts!(
     "AsperityZhuravlevFriction" => super::statistics::AsperityZhuravlevFriction,
     "AsperityBgtParams" => super::statistics::AsperityBgtParams,
     "AsperityBgtResponse" => super::statistics::AsperityBgtResponse,
+    "AsperityBoraResponse" => super::statistics::AsperityBoraResponse,
     "AsperityRoughness" => super::surface::AsperityRoughness,
     "AsperityHurstFit" => super::surface::AsperityHurstFit,
     "AsperityPeakStatistics" => super::surface::AsperityPeakStatistics,

@@ -54,6 +54,8 @@
 //!   Calculation Methods*, Pergamon Press, Oxford.
 //! * The single modules cite the details.
 
+pub mod bora;
+pub mod borodich_kryukova;
 pub mod bush_gibson_thomas;
 pub mod elliptic_hertz;
 pub mod gaussian;
@@ -64,6 +66,8 @@ pub mod power_law;
 mod quadrature;
 pub mod zhuravlev;
 
+pub use bora::{BoraSolution, BoraTopography};
+pub use borodich_kryukova::{BorodichKryukova, SliderSample, SliderState, Sinusoid};
 pub use bush_gibson_thomas::{BgtResponse, BushGibsonThomas};
 pub use elliptic_hertz::EllipticHertz;
 pub use greenwood_williamson::GreenwoodWilliamson;

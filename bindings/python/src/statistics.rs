@@ -1,5 +1,6 @@
 //! Statistical multi-asperity models (`asperity::statistics`): height
-//! distributions, Greenwood–Williamson, Bush–Gibson–Thomas, Kragelsky rods and bearing curve,
+//! distributions, Greenwood–Williamson, Bush–Gibson–Thomas, Bora et al.,
+//! Kragelsky rods and bearing curve,
 //! Zhuravlev, power-law asperities; every response on a float or an array of
 //! separations.
 
@@ -78,7 +79,7 @@ impl HeightDistribution {
     #[staticmethod]
     #[pyo3(signature = (heights, radii=None))]
     fn empirical(heights: &Bound<'_, PyAny>, radii: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-        let h = array(heights, "heights")?.as_slice()?.to_vec();
+        let h: Vec<f64> = array(heights, "heights")?.as_array().iter().copied().collect();
         let inner = match radii {
             None => st::HeightDistribution::empirical(h).map_err(rs)?,
             Some(r) => st::HeightDistribution::Empirical(
@@ -331,6 +332,84 @@ impl BushGibsonThomas {
     fn response(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
         let g = &self.inner;
         responses(py, separation, "separation", |d| g.response(d))
+    }
+    /// separation_at_load(load) -> dict
+    ///
+    /// The separation (m) that carries ``load`` (N), with ``iterations`` and
+    /// ``relative_residual``.
+    fn separation_at_load<'py>(
+        &self,
+        py: Python<'py>,
+        load: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        separation_at(py, load, |p| self.inner.separation_at_load(p))
+    }
+}
+
+/// BoraTopography(heights, spacing, spring_stiffness, contact_modulus=None, nx=None)
+///
+/// Bora et al. (2013), thesis §5.3.9: one spring of stiffness k (N/m) per
+/// point of a measured height map (m; a 1-D array, row-major
+/// ``heights[i + nx*j]``, ``nx`` its row length, default the whole array, a
+/// profile) with grid spacing Δ (m), on an elastic half-space of contact
+/// modulus E* (Pa) or a rigid one (``None``: independent springs), pressed
+/// by a flat at separation d (m, in the frame of the heights).
+#[pyclass(module = "asperity", frozen)]
+pub struct BoraTopography {
+    pub inner: st::BoraTopography,
+}
+
+#[pymethods]
+impl BoraTopography {
+    #[new]
+    #[pyo3(signature = (heights, spacing, spring_stiffness, contact_modulus=None, nx=None))]
+    fn new(
+        heights: &Bound<'_, PyAny>,
+        spacing: &Bound<'_, PyAny>,
+        spring_stiffness: &Bound<'_, PyAny>,
+        contact_modulus: Option<&Bound<'_, PyAny>>,
+        nx: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let h: Vec<f64> = array(heights, "heights")?.as_array().iter().copied().collect();
+        let nx = match nx {
+            Some(v) => crate::common::count(v, "nx")?,
+            None => h.len(),
+        };
+        let ny = if nx == 0 { 0 } else { h.len() / nx };
+        Ok(Self {
+            inner: st::BoraTopography::new(
+                nx,
+                ny.max(1),
+                real(spacing, "spacing")?,
+                h,
+                real(spring_stiffness, "spring_stiffness")?,
+                real_opt(contact_modulus, "contact_modulus")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// solve(separation) -> dict
+    ///
+    /// ``load`` (N), ``area`` (m²), ``contacts`` (loaded springs),
+    /// ``stiffness`` (N/m), ``iterations`` and ``forces`` (N, an array like
+    /// the heights) with the flat at separation d (m).
+    fn solve<'py>(&self, py: Python<'py>, separation: &Bound<'_, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+        let s = self.inner.solve(real(separation, "separation")?).map_err(rs)?;
+        let d = PyDict::new(py);
+        d.set_item("load", s.load)?;
+        d.set_item("area", s.area)?;
+        d.set_item("contacts", s.contacts)?;
+        d.set_item("stiffness", s.stiffness)?;
+        d.set_item("iterations", s.iterations)?;
+        d.set_item("forces", numpy::PyArray1::from_vec(py, s.forces))?;
+        Ok(d)
+    }
+    /// load(separation) -> float | numpy.ndarray
+    ///
+    /// Total load P (N) at separation d (m).
+    fn load(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.solve(d).map(|s| s.load))
     }
     /// separation_at_load(load) -> dict
     ///
@@ -765,6 +844,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<HeightDistribution>()?;
     m.add_class::<GreenwoodWilliamson>()?;
     m.add_class::<BushGibsonThomas>()?;
+    m.add_class::<BoraTopography>()?;
     m.add_class::<KragelskyRods>()?;
     m.add_class::<BearingCurveRods>()?;
     m.add_class::<Zhuravlev>()?;
@@ -772,6 +852,5 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(plasticity_index, m)?)?;
     m.add_function(wrap_pyfunction!(deformation_regime, m)?)?;
     m.add_function(wrap_pyfunction!(gaussian_tail_moment, m)?)?;
-    let _ = real_opt;
     Ok(())
 }

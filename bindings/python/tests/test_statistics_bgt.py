@@ -1,4 +1,5 @@
-"""Bush-Gibson-Thomas (thesis §5.3.3) through the Python package: Nayak's
+"""Bush-Gibson-Thomas (thesis §5.3.3) and Bora et al. (§5.3.9) through the
+Python package. BGT: Nayak's
 summit density, the small-load limit A = √(2π) P/(E* √(2 m2)), the inverse
 and the errors (the Rust tests in tests/statistics_bgt.rs cover the rest)."""
 
@@ -42,3 +43,22 @@ def test_arrays_inverse_and_errors():
         asperity.BushGibsonThomas(1e-12, 0.01, 1e6, 1e9, 1e-4)  # α = 0.01
     with pytest.raises(ValueError, match="alpha"):
         asperity.BushGibsonThomas.from_alpha(1e-6, 0.1, 1.5, 1e9, 1e-4)
+
+
+def test_bora_topography():
+    # Two neighbouring springs 2 nm above the rest of a 5 x 5 map.
+    h = np.zeros(25)
+    h[12] = h[13] = 2e-9
+    rigid = asperity.BoraTopography(h, 10e-9, 50.0, nx=5)
+    r = rigid.solve(1e-9)
+    assert r["load"] == pytest.approx(2 * 50.0 * 1e-9, rel=1e-14)
+    assert r["contacts"] == 2 and r["forces"].shape == (25,)
+    soft = asperity.BoraTopography(h, 10e-9, 50.0, contact_modulus=1e9, nx=5)
+    s = soft.solve(1e-9)
+    assert 0 < s["load"] < r["load"] and s["stiffness"] > 0
+    sol = soft.separation_at_load(s["load"])
+    assert sol["separation"] == pytest.approx(1e-9, rel=1e-6)
+    loads = soft.load(np.array([0.0, 1e-9, 3e-9]))
+    assert loads[0] > loads[1] > loads[2] == 0.0
+    with pytest.raises(ValueError, match="heights"):
+        asperity.BoraTopography(np.zeros(7), 10e-9, 50.0, nx=5)
