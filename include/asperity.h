@@ -19,8 +19,8 @@
  * all-zero state means "never touched".
  *
  * Threads: the opaque handles AsperityTable, AsperityHomogenisedFriction,
- * AsperitySliderGeometry, AsperitySlider, AsperityFriction and
- * AsperityGwEmpirical are immutable once built: one handle may be used by
+ * AsperitySliderGeometry, AsperitySlider, AsperityFriction,
+ * AsperityGwEmpirical and AsperityBora are immutable once built: one handle may be used by
  * any number of threads at once (results are bit-identical to
  * single-threaded calls; only *_free must not race with other use). Per
  * caller, never shared while in use: an AsperityFrictionWork (one per
@@ -415,6 +415,12 @@
 
 // PSD data window: periodic Hann, normalised by its mean square.
 #define ASPERITY_WINDOW_HANN 1
+
+// The real nano-topography interface of Bora et al. (2013, thesis §5.3.9)
+// (opaque): springs with the heights of a measured map on an elastic
+// half-space. Create it with `asperity_bora_new`, release it with
+// `asperity_bora_free`. Immutable: safe to share between threads.
+typedef struct AsperityBora AsperityBora;
 
 // A friction law stepped once per increment (opaque): the homogenised
 // law, the slider as a patch law, or a chapter-5 dynamic model. Release it
@@ -1269,6 +1275,22 @@ typedef struct AsperityBgtResponse {
     // Normal stiffness −dP/dd (N/m), ≥ 0.
     double stiffness;
 } AsperityBgtResponse;
+
+// The equilibrium of a Bora interface at one separation.
+typedef struct AsperityBoraResponse {
+    // Total load P (N), ≥ 0.
+    double load;
+    // Real contact area (m²): loaded springs times the cell area Δ².
+    double area;
+    // Normal stiffness −dP/dd (N/m), ≥ 0.
+    double stiffness;
+    // Number of loaded springs.
+    uint64_t contacts;
+    // Conjugate-gradient iterations spent.
+    uint32_t iterations;
+    // Reserved, 0.
+    uint32_t reserved;
+} AsperityBoraResponse;
 
 // ISO 4287 parameters of a profile, its spectral moments and its Hurst
 // exponent, from `asperity_roughness_parameters`. Heights are measured from
@@ -2304,6 +2326,37 @@ int32_t asperity_bgt_separation_at_load(const struct AsperityBgtParams *bgt,
 int32_t asperity_bgt_properties(const struct AsperityBgtParams *bgt,
                                 double *summit_density,
                                 double *area_per_load);
+
+// A Bora interface on `nx` × `ny` heights `heights` (m, finite, row-major:
+// `heights[i + nx*j]` at x = iΔ, y = jΔ; copied) with grid spacing `spacing`
+// Δ (m, > 0), springs of stiffness `spring_stiffness` (N/m, > 0) on a
+// substrate of contact modulus `contact_modulus` E* (Pa, > 0), or a rigid
+// substrate (independent springs) when `contact_modulus` is 0. At most
+// 16384 points. Writes a new handle to `*out` (NULL on failure).
+int32_t asperity_bora_new(size_t nx,
+                          size_t ny,
+                          double spacing,
+                          const double *heights,
+                          double spring_stiffness,
+                          double contact_modulus,
+                          struct AsperityBora **out);
+
+// Release a Bora interface; NULL is accepted.
+void asperity_bora_free(struct AsperityBora *bora);
+
+// The equilibrium with the flat at `separation` d (m, finite, in the frame
+// of the heights): load, area, stiffness, contacts to `*out`, and, unless
+// `forces` is NULL, the nx·ny spring forces (N) to `forces`.
+int32_t asperity_bora_solve(const struct AsperityBora *bora,
+                            double separation,
+                            struct AsperityBoraResponse *out,
+                            double *forces);
+
+// The separation (m) at which the interface carries `load` (N, finite,
+// > 0).
+int32_t asperity_bora_separation_at_load(const struct AsperityBora *bora,
+                                         double load,
+                                         struct AsperitySeparation *out);
 
 // A static, NUL-terminated description of a status code; "unknown status"
 // for a value that is not one. Do not free.
