@@ -138,3 +138,51 @@ fn bgt_c_errors_name_the_argument() {
         ok(asperity_bgt_eval_batch(&p, 0, null(), null_mut(), null_mut(), null_mut(), null_mut()));
     }
 }
+
+#[test]
+fn bora_c_matches_rust_and_names_errors() {
+    use asperity::statistics::BoraTopography;
+    let mut h = vec![0.0; 25];
+    h[12] = 2e-9;
+    h[13] = 1.5e-9;
+    let rust = BoraTopography::new(5, 5, 10e-9, h.clone(), 50.0, Some(1e9)).unwrap();
+    unsafe {
+        let mut m: *mut AsperityBora = null_mut();
+        ok(asperity_bora_new(5, 5, 10e-9, h.as_ptr(), 50.0, 1e9, &mut m));
+        let mut r = AsperityBoraResponse::default();
+        let mut forces = vec![0.0; 25];
+        ok(asperity_bora_solve(m, 1e-9, &mut r, forces.as_mut_ptr()));
+        let want = rust.solve(1e-9).unwrap();
+        assert_eq!((r.load, r.area, r.stiffness, r.contacts), (want.load, want.area, want.stiffness, want.contacts as u64));
+        assert_eq!(forces, want.forces);
+        ok(asperity_bora_solve(m, 1e-9, &mut r, null_mut()));
+        let mut s = AsperitySeparation::default();
+        ok(asperity_bora_separation_at_load(m, r.load, &mut s));
+        assert!((s.separation - 1e-9).abs() < 1e-15, "{s:?}");
+        expect_error(
+            asperity_bora_solve(m, f64::NAN, &mut r, null_mut()),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "`separation`",
+        );
+        expect_error(asperity_bora_solve(null(), 0.0, &mut r, null_mut()), ASPERITY_ERR_NULL_POINTER, "`bora`");
+        asperity_bora_free(m);
+        asperity_bora_free(null_mut());
+        // Rigid substrate (contact_modulus 0): independent springs.
+        ok(asperity_bora_new(5, 5, 10e-9, h.as_ptr(), 50.0, 0.0, &mut m));
+        ok(asperity_bora_solve(m, 1e-9, &mut r, null_mut()));
+        assert!((r.load - 50.0 * (1e-9 + 0.5e-9)).abs() < 1e-20);
+        asperity_bora_free(m);
+        let mut m: *mut AsperityBora = 8 as *mut AsperityBora;
+        expect_error(
+            asperity_bora_new(5, 5, 10e-9, h.as_ptr(), -50.0, 1e9, &mut m),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "`spring_stiffness`",
+        );
+        assert!(m.is_null());
+        expect_error(
+            asperity_bora_new(5, 5, 10e-9, null(), 50.0, 1e9, &mut m),
+            ASPERITY_ERR_NULL_POINTER,
+            "`heights`",
+        );
+    }
+}
