@@ -58,7 +58,10 @@ fn bgt_c_matches_rust() {
                     want.stiffness
                 )
             );
-            assert_eq!((load[i], area[i], count[i], k[i]), (r.load, r.area, r.contacts, r.stiffness));
+            assert_eq!(
+                (load[i], area[i], count[i], k[i]),
+                (r.load, r.area, r.contacts, r.stiffness)
+            );
             if i > 0 {
                 assert!(load[i] < load[i - 1] && area[i] < area[i - 1]);
             }
@@ -96,8 +99,16 @@ fn bgt_c_errors_name_the_argument() {
     let mut r = AsperityBgtResponse::default();
     let mut s = AsperitySeparation::default();
     unsafe {
-        expect_error(asperity_bgt_eval(null(), 0.0, &mut r), ASPERITY_ERR_NULL_POINTER, "`bgt`");
-        expect_error(asperity_bgt_eval(&p, 0.0, null_mut()), ASPERITY_ERR_NULL_POINTER, "`out`");
+        expect_error(
+            asperity_bgt_eval(null(), 0.0, &mut r),
+            ASPERITY_ERR_NULL_POINTER,
+            "`bgt`",
+        );
+        expect_error(
+            asperity_bgt_eval(&p, 0.0, null_mut()),
+            ASPERITY_ERR_NULL_POINTER,
+            "`out`",
+        );
         expect_error(
             asperity_bgt_eval(&p, f64::NAN, &mut r),
             ASPERITY_ERR_INVALID_ARGUMENT,
@@ -110,7 +121,10 @@ fn bgt_c_errors_name_the_argument() {
             "`m0`",
         );
         // α = m₀m₄/m₂² = 1 < 3/2.
-        let narrow = AsperityBgtParams { m4: 1e-4 / 1e-12, ..p };
+        let narrow = AsperityBgtParams {
+            m4: 1e-4 / 1e-12,
+            ..p
+        };
         expect_error(
             asperity_bgt_eval(&narrow, 0.0, &mut r),
             ASPERITY_ERR_INVALID_ARGUMENT,
@@ -125,17 +139,41 @@ fn bgt_c_errors_name_the_argument() {
         let d = [0.0, 1e-6, f64::NAN, 2e-6];
         let mut load = [-1.0; 4];
         expect_error(
-            asperity_bgt_eval_batch(&p, 4, d.as_ptr(), load.as_mut_ptr(), null_mut(), null_mut(), null_mut()),
+            asperity_bgt_eval_batch(
+                &p,
+                4,
+                d.as_ptr(),
+                load.as_mut_ptr(),
+                null_mut(),
+                null_mut(),
+                null_mut(),
+            ),
             ASPERITY_ERR_INVALID_ARGUMENT,
             "element 2",
         );
         assert!(load[0] > 0.0 && load[1] > 0.0 && load[2] == -1.0 && load[3] == -1.0);
         expect_error(
-            asperity_bgt_eval_batch(&p, 1, null(), load.as_mut_ptr(), null_mut(), null_mut(), null_mut()),
+            asperity_bgt_eval_batch(
+                &p,
+                1,
+                null(),
+                load.as_mut_ptr(),
+                null_mut(),
+                null_mut(),
+                null_mut(),
+            ),
             ASPERITY_ERR_NULL_POINTER,
             "`separation`",
         );
-        ok(asperity_bgt_eval_batch(&p, 0, null(), null_mut(), null_mut(), null_mut(), null_mut()));
+        ok(asperity_bgt_eval_batch(
+            &p,
+            0,
+            null(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+        ));
     }
 }
 
@@ -148,12 +186,23 @@ fn bora_c_matches_rust_and_names_errors() {
     let rust = BoraTopography::new(5, 5, 10e-9, h.clone(), 50.0, Some(1e9)).unwrap();
     unsafe {
         let mut m: *mut AsperityBora = null_mut();
-        ok(asperity_bora_new(5, 5, 10e-9, h.as_ptr(), 50.0, 1e9, &mut m));
+        ok(asperity_bora_new(
+            5,
+            5,
+            10e-9,
+            h.as_ptr(),
+            50.0,
+            1e9,
+            &mut m,
+        ));
         let mut r = AsperityBoraResponse::default();
         let mut forces = vec![0.0; 25];
         ok(asperity_bora_solve(m, 1e-9, &mut r, forces.as_mut_ptr()));
         let want = rust.solve(1e-9).unwrap();
-        assert_eq!((r.load, r.area, r.stiffness, r.contacts), (want.load, want.area, want.stiffness, want.contacts as u64));
+        assert_eq!(
+            (r.load, r.area, r.stiffness, r.contacts),
+            (want.load, want.area, want.stiffness, want.contacts as u64)
+        );
         assert_eq!(forces, want.forces);
         ok(asperity_bora_solve(m, 1e-9, &mut r, null_mut()));
         let mut s = AsperitySeparation::default();
@@ -164,11 +213,23 @@ fn bora_c_matches_rust_and_names_errors() {
             ASPERITY_ERR_INVALID_ARGUMENT,
             "`separation`",
         );
-        expect_error(asperity_bora_solve(null(), 0.0, &mut r, null_mut()), ASPERITY_ERR_NULL_POINTER, "`bora`");
+        expect_error(
+            asperity_bora_solve(null(), 0.0, &mut r, null_mut()),
+            ASPERITY_ERR_NULL_POINTER,
+            "`bora`",
+        );
         asperity_bora_free(m);
         asperity_bora_free(null_mut());
         // Rigid substrate (contact_modulus 0): independent springs.
-        ok(asperity_bora_new(5, 5, 10e-9, h.as_ptr(), 50.0, 0.0, &mut m));
+        ok(asperity_bora_new(
+            5,
+            5,
+            10e-9,
+            h.as_ptr(),
+            50.0,
+            0.0,
+            &mut m,
+        ));
         ok(asperity_bora_solve(m, 1e-9, &mut r, null_mut()));
         assert!((r.load - 50.0 * (1e-9 + 0.5e-9)).abs() < 1e-20);
         asperity_bora_free(m);

@@ -52,12 +52,13 @@ fn high_summit_count_is_the_euler_characteristic_density() {
         let s = surface(alpha);
         let mut last = f64::INFINITY;
         for &u in &[6.0, 8.0, 10.0] {
-            let ec = SLOPE * SLOPE / (SIGMA * SIGMA)
-                * (2.0 * PI).powf(-1.5)
-                * u
-                * (-0.5 * u * u).exp();
+            let ec =
+                SLOPE * SLOPE / (SIGMA * SIGMA) * (2.0 * PI).powf(-1.5) * u * (-0.5 * u * u).exp();
             let rel = (s.contacts(u * SIGMA).unwrap() / A0 / ec - 1.0).abs();
-            assert!(rel < 1e-3 && (rel < last || rel < 1e-13), "α {alpha} u {u}: {rel:e}");
+            assert!(
+                rel < 1e-3 && (rel < last || rel < 1e-13),
+                "α {alpha} u {u}: {rel:e}"
+            );
             last = rel;
         }
     }
@@ -88,8 +89,15 @@ fn small_load_limit_area_over_load() {
             }
         }
         let richardson = (784.0 * at[1] - 400.0 * at[0]) / 384.0;
-        assert!((richardson - 1.0).abs() < 5e-4, "α {alpha}: extrapolated {richardson}");
-        assert!(1.0 - last < 0.01, "α {alpha}: A/P at u = 28 off by {:e}", 1.0 - last);
+        assert!(
+            (richardson - 1.0).abs() < 5e-4,
+            "α {alpha}: extrapolated {richardson}"
+        );
+        assert!(
+            1.0 - last < 0.01,
+            "α {alpha}: A/P at u = 28 off by {:e}",
+            1.0 - last
+        );
     }
     // Broad spectra reach the limit only at impractically small loads
     // (Carbone & Bottiglione 2008): α = 1000 is still 50 % below at u = 10.
@@ -106,7 +114,10 @@ fn elliptic_integrals_and_hertz_factors() {
     let (k, e) = (1.854_074_677_301_372, 1.350_643_881_047_675);
     let lambda = (2.0 * e - k) / (k - e);
     let h = EllipticHertz::new(lambda).unwrap();
-    assert!((h.k / k - 1.0).abs() < 1e-13 && (h.e / e - 1.0).abs() < 1e-13, "{h:?}");
+    assert!(
+        (h.k / k - 1.0).abs() < 1e-13 && (h.e / e - 1.0).abs() < 1e-13,
+        "{h:?}"
+    );
     assert!((h.axis_ratio - 0.5f64.sqrt()).abs() < 1e-12);
     // Hamrock & Brewe (1983) curve fits a/b = 1.0339 λ^0.636,
     // E = 1.0003 + 0.5968/λ, K = 1.5277 + 0.6023 ln λ: on 1.5 ≤ λ ≤ 30 they
@@ -116,7 +127,10 @@ fn elliptic_integrals_and_hertz_factors() {
         let ab = 1.0339 * l.powf(0.636) * h.axis_ratio - 1.0;
         let ee = (1.0003 + 0.5968 / l) / h.e - 1.0;
         let kk = (1.5277 + 0.6023 * l.ln()) / h.k - 1.0;
-        assert!(ab.abs() < 0.025 && ee.abs() < 0.006 && kk.abs() < 0.011, "λ {l}: {ab:e} {ee:e} {kk:e}");
+        assert!(
+            ab.abs() < 0.025 && ee.abs() < 0.006 && kk.abs() < 0.011,
+            "λ {l}: {ab:e} {ee:e} {kk:e}"
+        );
     }
     // Against the sphere of the geometric-mean radius an elliptic contact
     // has less area and more load at the same depth, the more so the more
@@ -124,7 +138,10 @@ fn elliptic_integrals_and_hertz_factors() {
     let mut last = EllipticHertz::new(1.0).unwrap();
     for &l in &[1.5, 2.0, 5.0, 10.0, 100.0, 1e4, 1e8] {
         let h = EllipticHertz::new(l).unwrap();
-        assert!(h.area_factor < last.area_factor && h.load_factor > last.load_factor, "{h:?}");
+        assert!(
+            h.area_factor < last.area_factor && h.load_factor > last.load_factor,
+            "{h:?}"
+        );
         assert!(h.area_factor > 0.0 && h.load_factor.is_finite());
         last = h;
     }
@@ -141,12 +158,21 @@ fn sweeps_are_finite_and_monotone() {
         for i in 0..=26 {
             let u = -5.0 + 0.5 * i as f64;
             let r = s.evaluate(u * SIGMA).unwrap();
-            let v = [r.response.load, r.response.area, r.response.contacts, r.stiffness];
+            let v = [
+                r.response.load,
+                r.response.area,
+                r.response.contacts,
+                r.stiffness,
+            ];
             for j in 0..4 {
                 assert!(v[j].is_finite() && v[j] > 0.0, "α {alpha} u {u}: {v:?}");
                 // The count saturates at Nayak's density far below the mean
                 // plane; the rest fall strictly.
-                let falls = if j == 2 { v[j] <= last[j] } else { v[j] < last[j] };
+                let falls = if j == 2 {
+                    v[j] <= last[j]
+                } else {
+                    v[j] < last[j]
+                };
                 assert!(falls, "α {alpha} u {u}: {v:?} after {last:?}");
             }
             last = v;
@@ -176,15 +202,33 @@ fn errors_name_the_argument() {
         other => panic!("{other:?}"),
     };
     bad(BushGibsonThomas::new(-1.0, 0.01, 1e10, E_STAR, A0), "m0");
-    bad(BushGibsonThomas::new(1e-12, f64::NAN, 1e10, E_STAR, A0), "m2");
+    bad(
+        BushGibsonThomas::new(1e-12, f64::NAN, 1e10, E_STAR, A0),
+        "m2",
+    );
     // α = m₀m₄/m₂² = 1.5 exactly is the degenerate bound.
     bad(BushGibsonThomas::new(1e-12, 0.01, 1.5e8, E_STAR, A0), "m4");
     bad(BushGibsonThomas::new(1e-12, 0.01, 1e10, 0.0, A0), "e_star");
-    bad(BushGibsonThomas::new(1e-12, 0.01, 1e10, E_STAR, -A0), "nominal_area");
-    bad(BushGibsonThomas::from_alpha(SIGMA, SLOPE, 1.2, E_STAR, A0), "alpha");
+    bad(
+        BushGibsonThomas::new(1e-12, 0.01, 1e10, E_STAR, -A0),
+        "nominal_area",
+    );
+    bad(
+        BushGibsonThomas::from_alpha(SIGMA, SLOPE, 1.2, E_STAR, A0),
+        "alpha",
+    );
     let s = surface(3.0);
-    assert!(matches!(s.load(f64::NAN), Err(Error::InvalidArgument { name: "separation", .. })));
-    assert!(matches!(s.separation_at_load(0.0), Err(Error::InvalidArgument { name: "load", .. })));
+    assert!(matches!(
+        s.load(f64::NAN),
+        Err(Error::InvalidArgument {
+            name: "separation",
+            ..
+        })
+    ));
+    assert!(matches!(
+        s.separation_at_load(0.0),
+        Err(Error::InvalidArgument { name: "load", .. })
+    ));
     // Far above every summit the response underflows to 0, not NaN.
     assert_eq!(s.load(60.0 * SIGMA).unwrap(), 0.0);
 }

@@ -19,7 +19,9 @@ fn heights(n: usize, amp: f64, seed: u64) -> Vec<f64> {
     let mut x = seed;
     (0..n)
         .map(|_| {
-            x = x.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             amp * (2.0 * ((x >> 11) as f64 / (1u64 << 53) as f64) - 1.0)
         })
         .collect()
@@ -33,7 +35,11 @@ fn without_substrate_it_is_kragelskys_springs() {
         let s = m.solve(d).unwrap();
         let want: f64 = h.iter().map(|x| K * (x - d).max(0.0)).sum();
         let count = h.iter().filter(|&&x| x > d).count();
-        assert!((s.load - want).abs() <= 1e-14 * want, "d {d}: {} vs {want}", s.load);
+        assert!(
+            (s.load - want).abs() <= 1e-14 * want,
+            "d {d}: {} vs {want}",
+            s.load
+        );
         assert_eq!(s.contacts, count);
         assert_eq!(s.stiffness, K * count as f64);
         assert!((s.area - count as f64 * DX * DX).abs() < 1e-30);
@@ -69,7 +75,9 @@ fn one_and_two_loaded_springs_in_closed_form() {
 /// partial pivoting.
 fn dense_solve(mut a: Vec<f64>, mut b: Vec<f64>, n: usize) -> Vec<f64> {
     for c in 0..n {
-        let p = (c..n).max_by(|&i, &j| a[i * n + c].abs().total_cmp(&a[j * n + c].abs())).unwrap();
+        let p = (c..n)
+            .max_by(|&i, &j| a[i * n + c].abs().total_cmp(&a[j * n + c].abs()))
+            .unwrap();
         for k in 0..n {
             a.swap(c * n + k, p * n + k);
         }
@@ -102,7 +110,11 @@ fn complementarity_and_the_dense_solution_on_a_random_map() {
             let n = nx * ny;
             // Gaps g = d − h + f/k + C f.
             let g: Vec<f64> = (0..n)
-                .map(|i| d - h[i] + s.forces[i] / k + (0..n).map(|j| m.influence(i, j) * s.forces[j]).sum::<f64>())
+                .map(|i| {
+                    d - h[i]
+                        + s.forces[i] / k
+                        + (0..n).map(|j| m.influence(i, j) * s.forces[j]).sum::<f64>()
+                })
                 .collect();
             for i in 0..n {
                 assert!(s.forces[i] >= 0.0);
@@ -124,7 +136,12 @@ fn complementarity_and_the_dense_solution_on_a_random_map() {
             let b: Vec<f64> = act.iter().map(|&i| h[i] - d).collect();
             let x = dense_solve(a, b, na);
             for (r, &i) in act.iter().enumerate() {
-                assert!((x[r] / s.forces[i] - 1.0).abs() < 1e-7, "k {k} d {d}: {} vs {}", x[r], s.forces[i]);
+                assert!(
+                    (x[r] / s.forces[i] - 1.0).abs() < 1e-7,
+                    "k {k} d {d}: {} vs {}",
+                    x[r],
+                    s.forces[i]
+                );
             }
         }
     }
@@ -147,8 +164,13 @@ fn load_falls_with_separation_stiffness_and_inverse() {
     for &d in &[-2e-9, 1e-9] {
         let s = m.solve(d).unwrap();
         let step = 1e-13;
-        let fd = -(m.solve(d + step).unwrap().load - m.solve(d - step).unwrap().load) / (2.0 * step);
-        assert!((fd / s.stiffness - 1.0).abs() < 1e-5, "d {d}: {fd} vs {}", s.stiffness);
+        let fd =
+            -(m.solve(d + step).unwrap().load - m.solve(d - step).unwrap().load) / (2.0 * step);
+        assert!(
+            (fd / s.stiffness - 1.0).abs() < 1e-5,
+            "d {d}: {fd} vs {}",
+            s.stiffness
+        );
         let sol = m.separation_at_load(s.load).unwrap();
         assert!((sol.separation - d).abs() < 1e-6 * 5e-9, "{sol:?}");
     }
@@ -161,14 +183,38 @@ fn errors_name_the_argument() {
         other => panic!("{other:?}"),
     };
     assert_eq!(name(BoraTopography::new(0, 3, DX, vec![], K, None)), "nx");
-    assert_eq!(name(BoraTopography::new(2, 2, DX, vec![0.0; 3], K, None)), "heights");
-    assert_eq!(name(BoraTopography::new(2, 1, DX, vec![0.0, f64::NAN], K, None)), "heights");
-    assert_eq!(name(BoraTopography::new(2, 1, -DX, vec![0.0; 2], K, None)), "spacing");
-    assert_eq!(name(BoraTopography::new(2, 1, DX, vec![0.0; 2], 0.0, None)), "spring_stiffness");
-    assert_eq!(name(BoraTopography::new(2, 1, DX, vec![0.0; 2], K, Some(-1.0))), "contact_modulus");
+    assert_eq!(
+        name(BoraTopography::new(2, 2, DX, vec![0.0; 3], K, None)),
+        "heights"
+    );
+    assert_eq!(
+        name(BoraTopography::new(2, 1, DX, vec![0.0, f64::NAN], K, None)),
+        "heights"
+    );
+    assert_eq!(
+        name(BoraTopography::new(2, 1, -DX, vec![0.0; 2], K, None)),
+        "spacing"
+    );
+    assert_eq!(
+        name(BoraTopography::new(2, 1, DX, vec![0.0; 2], 0.0, None)),
+        "spring_stiffness"
+    );
+    assert_eq!(
+        name(BoraTopography::new(2, 1, DX, vec![0.0; 2], K, Some(-1.0))),
+        "contact_modulus"
+    );
     let m = BoraTopography::new(2, 1, DX, vec![0.0, 1e-9], K, Some(E_STAR)).unwrap();
-    assert!(matches!(m.solve(f64::INFINITY), Err(Error::InvalidArgument { name: "separation", .. })));
-    assert!(matches!(m.separation_at_load(-1.0), Err(Error::InvalidArgument { name: "load", .. })));
+    assert!(matches!(
+        m.solve(f64::INFINITY),
+        Err(Error::InvalidArgument {
+            name: "separation",
+            ..
+        })
+    ));
+    assert!(matches!(
+        m.separation_at_load(-1.0),
+        Err(Error::InvalidArgument { name: "load", .. })
+    ));
     // Above every spring: nothing touches.
     let s = m.solve(2e-9).unwrap();
     assert_eq!((s.load, s.contacts, s.stiffness), (0.0, 0, 0.0));

@@ -13,8 +13,9 @@ use super::surface::array;
 use super::{guard, input, output, Failure};
 use crate::error::{Error, Result};
 use crate::statistics::{
-    plasticity_index, BoraTopography, BushGibsonThomas, DeformationRegime, EmpiricalHeights, GreenwoodWilliamson, HeightDistribution,
-    MultiAsperityResponse, SeparationSolution, Zhuravlev, ZhuravlevFriction,
+    plasticity_index, BoraTopography, BushGibsonThomas, DeformationRegime, EmpiricalHeights,
+    GreenwoodWilliamson, HeightDistribution, MultiAsperityResponse, SeparationSolution, Zhuravlev,
+    ZhuravlevFriction,
 };
 use std::cell::Cell;
 use std::ffi::c_void;

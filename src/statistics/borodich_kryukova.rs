@@ -215,7 +215,12 @@ impl BorodichKryukova {
         let mut out = Vec::with_capacity((steps / every) as usize + 1);
         out.push(sample(t, s));
         let add = |a: [f64; 4], k: [f64; 4], h: f64| {
-            [a[0] + h * k[0], a[1] + h * k[1], a[2] + h * k[2], a[3] + h * k[3]]
+            [
+                a[0] + h * k[0],
+                a[1] + h * k[1],
+                a[2] + h * k[2],
+                a[3] + h * k[3],
+            ]
         };
         for step in 1..=steps {
             let k1 = self.rate(t, s);

@@ -417,7 +417,10 @@ mod tests {
                 .map(|&(t, w)| w * (-0.5 * beta * beta * t * t).exp())
                 .sum();
             let exact = j_count(beta);
-            assert!((sum / exact - 1.0).abs() < 1e-11, "β {beta}: {sum} vs {exact}");
+            assert!(
+                (sum / exact - 1.0).abs() < 1e-11,
+                "β {beta}: {sum} vs {exact}"
+            );
         }
         assert_eq!(nodes().len(), rule.len());
     }

@@ -177,9 +177,9 @@ impl EllipticHertz {
         }
         let (_, _, m1, k, e, q) = ratio_of(y.exp());
         let area_factor = 2.0 * q * (m1 * lambda).sqrt() / k;
-        let load_factor = core::f64::consts::PI / core::f64::consts::SQRT_2 * q.sqrt()
-            * lambda.powf(0.25)
-            / (k * k.sqrt());
+        let load_factor =
+            core::f64::consts::PI / core::f64::consts::SQRT_2 * q.sqrt() * lambda.powf(0.25)
+                / (k * k.sqrt());
         Ok(Self {
             curvature_ratio: lambda,
             axis_ratio: m1.sqrt(),

@@ -67,7 +67,7 @@ mod quadrature;
 pub mod zhuravlev;
 
 pub use bora::{BoraSolution, BoraTopography};
-pub use borodich_kryukova::{BorodichKryukova, SliderSample, SliderState, Sinusoid};
+pub use borodich_kryukova::{BorodichKryukova, Sinusoid, SliderSample, SliderState};
 pub use bush_gibson_thomas::{BgtResponse, BushGibsonThomas};
 pub use elliptic_hertz::EllipticHertz;
 pub use greenwood_williamson::GreenwoodWilliamson;

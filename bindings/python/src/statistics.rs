@@ -79,7 +79,11 @@ impl HeightDistribution {
     #[staticmethod]
     #[pyo3(signature = (heights, radii=None))]
     fn empirical(heights: &Bound<'_, PyAny>, radii: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-        let h: Vec<f64> = array(heights, "heights")?.as_array().iter().copied().collect();
+        let h: Vec<f64> = array(heights, "heights")?
+            .as_array()
+            .iter()
+            .copied()
+            .collect();
         let inner = match radii {
             None => st::HeightDistribution::empirical(h).map_err(rs)?,
             Some(r) => st::HeightDistribution::Empirical(
@@ -370,7 +374,11 @@ impl BoraTopography {
         contact_modulus: Option<&Bound<'_, PyAny>>,
         nx: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let h: Vec<f64> = array(heights, "heights")?.as_array().iter().copied().collect();
+        let h: Vec<f64> = array(heights, "heights")?
+            .as_array()
+            .iter()
+            .copied()
+            .collect();
         let nx = match nx {
             Some(v) => crate::common::count(v, "nx")?,
             None => h.len(),
@@ -393,8 +401,15 @@ impl BoraTopography {
     /// ``load`` (N), ``area`` (m²), ``contacts`` (loaded springs),
     /// ``stiffness`` (N/m), ``iterations`` and ``forces`` (N, an array like
     /// the heights) with the flat at separation d (m).
-    fn solve<'py>(&self, py: Python<'py>, separation: &Bound<'_, PyAny>) -> PyResult<Bound<'py, PyDict>> {
-        let s = self.inner.solve(real(separation, "separation")?).map_err(rs)?;
+    fn solve<'py>(
+        &self,
+        py: Python<'py>,
+        separation: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let s = self
+            .inner
+            .solve(real(separation, "separation")?)
+            .map_err(rs)?;
         let d = PyDict::new(py);
         d.set_item("load", s.load)?;
         d.set_item("area", s.area)?;
