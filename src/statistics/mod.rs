@@ -18,6 +18,12 @@
 //!   (Nayak's random-process model) are elliptic paraboloids in Hertz
 //!   contact ([`elliptic_hertz`]); small-load limit
 //!   `A = √(2π) P/(E*√⟨|∇h|²⟩)`.
+//! * [`bora`]: the real nano-topography model of Bora et al. (2013), §5.3.9:
+//!   one spring per point of a measured height map on an elastic half-space
+//!   (Love's square loads), solved as a complementarity problem.
+//! * [`borodich_kryukova`]: Borodich & Kryukova (1997), §5.3.7: a block on a
+//!   moving belt, both faces covered with elastic rough layers, integrated
+//!   in time.
 //! * [`kragelsky`]: Kragelsky's assembly of elastic rods (5-7).
 //! * [`power_law`]: asperities `B r^d` on a material `σ ∝ ε^κ`, through
 //!   Borodich's rescaling of one known solution ((3-27), (3-28)).
