@@ -8,14 +8,15 @@
 //! contacts, stiffness) at 16 separations d/σ ∈ [−2, 6] for Nayak's α = 5 and
 //! 100, against a brute-force double trapezoid over the mean curvature and
 //! the curvature difference (4000 × 4000 nodes, exact elliptic Hertz at every
-//! node) of the same integrals.
+//! node) of the same integrals. Bora et al. (§5.3.9): one equilibrium on
+//! 16 × 16 and 32 × 32 maps.
 //!
 //! `cargo bench --bench statistics`
 
 use asperity::statistics::gaussian::{f0, f1, f1_2};
 use asperity::statistics::gaussian::{f3_2, tail_moment_quadrature};
 use asperity::statistics::{
-    BushGibsonThomas, EllipticHertz, GreenwoodWilliamson, HeightDistribution,
+    BoraTopography, BushGibsonThomas, EllipticHertz, GreenwoodWilliamson, HeightDistribution,
 };
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use std::hint::black_box;
@@ -209,5 +210,42 @@ fn bench_bgt(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench, bench_bgt);
+/// Bora et al.: one equilibrium (Polonsky–Keer CG) on pseudo-random maps of
+/// 16 × 16 and 32 × 32 springs, half of them loaded, with the largest gap
+/// residual of the loaded springs relative to the height range.
+fn bench_bora(c: &mut Criterion) {
+    let mut g = c.benchmark_group("bora_solve");
+    g.sample_size(10);
+    for &side in &[16usize, 32] {
+        let n = side * side;
+        let mut x = 12345u64;
+        let h: Vec<f64> = (0..n)
+            .map(|_| {
+                x = x
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                5e-9 * (2.0 * ((x >> 11) as f64 / (1u64 << 53) as f64) - 1.0)
+            })
+            .collect();
+        let m = BoraTopography::new(side, side, 10e-9, h.clone(), 50.0, Some(1e9)).unwrap();
+        let s = m.solve(0.0).unwrap();
+        let mut worst: f64 = 0.0;
+        for i in 0..n {
+            if s.forces[i] > 0.0 {
+                let u: f64 = (0..n).map(|j| m.influence(i, j) * s.forces[j]).sum();
+                worst = worst.max((0.0 - h[i] + s.forces[i] / 50.0 + u).abs() / 1e-8);
+            }
+        }
+        eprintln!(
+            "Bora {side}x{side}: {} of {n} springs loaded, {} CG iterations, max gap residual {worst:.1e} of the height range",
+            s.contacts, s.iterations
+        );
+        g.bench_function(format!("solve_{side}x{side}"), |b| {
+            b.iter(|| m.solve(black_box(0.0)).unwrap().load)
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench, bench_bgt, bench_bora);
 criterion_main!(benches);
