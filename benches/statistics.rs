@@ -213,6 +213,7 @@ fn bench_bgt(c: &mut Criterion) {
 /// Bora et al.: one equilibrium (Polonsky–Keer CG) on pseudo-random maps of
 /// 16 × 16 and 32 × 32 springs, half of them loaded, with the largest gap
 /// residual of the loaded springs relative to the height range.
+#[allow(clippy::needless_range_loop)] // forces and heights in lockstep
 fn bench_bora(c: &mut Criterion) {
     let mut g = c.benchmark_group("bora_solve");
     g.sample_size(10);

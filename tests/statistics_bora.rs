@@ -5,6 +5,9 @@
 //! solve of the linear complementarity problem on a pseudo-random map, the
 //! stiffness as the load's derivative, the inverse, and named errors.
 
+// Forces, gaps and heights are indexed in lockstep.
+#![allow(clippy::needless_range_loop)]
+
 use asperity::friction::square_influence;
 use asperity::statistics::BoraTopography;
 use asperity::Error;

@@ -826,8 +826,8 @@ pub unsafe extern "C" fn asperity_bora_solve(
     })
 }
 
-/// The separation (m) at which the interface carries `load` (N, finite,
-/// > 0).
+/// The separation (m) at which the interface carries `load` (N, finite
+/// and > 0).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_bora_separation_at_load(
     bora: *const AsperityBora,

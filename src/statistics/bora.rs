@@ -345,8 +345,8 @@ impl BoraTopography {
         s.iter().sum()
     }
 
-    /// The separation (m) at which the interface carries `load` (N, finite,
-    /// > 0): Newton on ln P with the stiffness, safeguarded by bisection.
+    /// The separation (m) at which the interface carries `load` (N, finite
+    /// and > 0): Newton on ln P with the stiffness, safeguarded by bisection.
     pub fn separation_at_load(&self, load: f64) -> Result<SeparationSolution> {
         let target = check::positive("load", load)?;
         let top = self

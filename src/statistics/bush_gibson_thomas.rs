@@ -202,7 +202,7 @@ impl BushGibsonThomas {
         let m2 = check::positive("m2", m2)?;
         let m4 = check::positive("m4", m4)?;
         let alpha = m0 * m4 / (m2 * m2);
-        if !(alpha > MIN_ALPHA) || !alpha.is_finite() {
+        if alpha.is_nan() || alpha <= MIN_ALPHA || !alpha.is_finite() {
             return Err(Error::InvalidArgument {
                 name: "m4",
                 value: m4,
@@ -375,8 +375,8 @@ impl BushGibsonThomas {
         Ok(self.checked(separation)?[3])
     }
 
-    /// The separation (m) at which the surface carries `load` (N, finite,
-    /// > 0), by safeguarded Newton iteration on ln P (as
+    /// The separation (m) at which the surface carries `load` (N, finite
+    /// and > 0), by safeguarded Newton iteration on ln P (as
     /// [`super::GreenwoodWilliamson::separation_at_load`]).
     pub fn separation_at_load(&self, load: f64) -> Result<SeparationSolution> {
         let target = check::positive("load", load)?;
