@@ -383,7 +383,7 @@ impl BoraTopography {
             Some(v) => crate::common::count(v, "nx")?,
             None => h.len(),
         };
-        let ny = if nx == 0 { 0 } else { h.len() / nx };
+        let ny = h.len().checked_div(nx).unwrap_or(0);
         Ok(Self {
             inner: st::BoraTopography::new(
                 nx,
