@@ -134,7 +134,7 @@ fn elliptic_integrals_and_hertz_factors() {
     }
     // Against the sphere of the geometric-mean radius an elliptic contact
     // has less area and more load at the same depth, the more so the more
-    // eccentric (Johnson 1985, §4.2: within 1 % up to λ = 2).
+    // eccentric (measured: −0.65 % and +1.0 % at λ = 2).
     let mut last = EllipticHertz::new(1.0).unwrap();
     for &l in &[1.5, 2.0, 5.0, 10.0, 100.0, 1e4, 1e8] {
         let h = EllipticHertz::new(l).unwrap();
