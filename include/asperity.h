@@ -2352,8 +2352,8 @@ int32_t asperity_bora_solve(const struct AsperityBora *bora,
                             struct AsperityBoraResponse *out,
                             double *forces);
 
-// The separation (m) at which the interface carries `load` (N, finite,
-// > 0).
+// The separation (m) at which the interface carries `load` (N, finite
+// and > 0).
 int32_t asperity_bora_separation_at_load(const struct AsperityBora *bora,
                                          double load,
                                          struct AsperitySeparation *out);
