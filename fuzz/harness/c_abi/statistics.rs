@@ -175,7 +175,12 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 let mut r: AsperityBoraResponse = zeroed();
                 let mut f = vec![0.0; nx * ny];
                 ok(
-                    asperity_bora_solve(out, a[3].0, mp(&mut r, nulls.at(2)), bufm(&mut f, nulls.at(3))),
+                    asperity_bora_solve(
+                        out,
+                        a[3].0,
+                        mp(&mut r, nulls.at(2)),
+                        bufm(&mut f, nulls.at(3)),
+                    ),
                     "bora_solve",
                 );
                 let mut sep: AsperitySeparation = zeroed();
