@@ -19,8 +19,8 @@
  * all-zero state means "never touched".
  *
  * Threads: the opaque handles AsperityTable, AsperityHomogenisedFriction,
- * AsperitySliderGeometry, AsperitySlider, AsperityFriction and
- * AsperityGwEmpirical are immutable once built: one handle may be used by
+ * AsperitySliderGeometry, AsperitySlider, AsperityFriction,
+ * AsperityGwEmpirical and AsperityBora are immutable once built: one handle may be used by
  * any number of threads at once (results are bit-identical to
  * single-threaded calls; only *_free must not race with other use). Per
  * caller, never shared while in use: an AsperityFrictionWork (one per
@@ -468,6 +468,12 @@
 
 // PSD data window: periodic Hann, normalised by its mean square.
 #define ASPERITY_WINDOW_HANN 1
+
+// The real nano-topography interface of Bora et al. (2013, thesis §5.3.9)
+// (opaque): springs with the heights of a measured map on an elastic
+// half-space. Create it with `asperity_bora_new`, release it with
+// `asperity_bora_free`. Immutable: safe to share between threads.
+typedef struct AsperityBora AsperityBora;
 
 // A friction law stepped once per increment (opaque): the homogenised
 // law, the slider as a patch law, or a chapter-5 dynamic model. Release it
@@ -1376,6 +1382,52 @@ typedef struct AsperityZhuravlevFriction {
 // through. It must return a finite value ≥ 0 and must not unwind.
 typedef double (*AsperitySummitDensity)(double xi,
                                         void *user_data);
+
+// A Bush–Gibson–Thomas rough surface (thesis §5.3.3), by value: an
+// isotropic Gaussian surface of spectral moments m₀, m₂, m₄ (Nayak 1971)
+// whose summits are elliptic paraboloids in Hertz contact with a flat.
+// Nayak's α = m₀m₄/m₂² must exceed 3/2. An all-zero value is invalid.
+typedef struct AsperityBgtParams {
+    // Mean-square height m₀ = σ² (m², > 0).
+    double m0;
+    // Mean-square profile slope m₂ (dimensionless, > 0); the mean-square
+    // gradient of the isotropic surface is 2m₂.
+    double m2;
+    // Mean-square profile curvature m₄ (m⁻², > 0).
+    double m4;
+    // Contact modulus E* (Pa, > 0).
+    double e_star;
+    // Nominal contact area A₀ (m², > 0).
+    double nominal_area;
+} AsperityBgtParams;
+
+// Response of a Bush–Gibson–Thomas surface at one separation.
+typedef struct AsperityBgtResponse {
+    // Total normal load P (N), ≥ 0.
+    double load;
+    // Real contact area A (m²), ≥ 0.
+    double area;
+    // Expected number of summits in contact (dimensionless).
+    double contacts;
+    // Normal stiffness −dP/dd (N/m), ≥ 0.
+    double stiffness;
+} AsperityBgtResponse;
+
+// The equilibrium of a Bora interface at one separation.
+typedef struct AsperityBoraResponse {
+    // Total load P (N), ≥ 0.
+    double load;
+    // Real contact area (m²): loaded springs times the cell area Δ².
+    double area;
+    // Normal stiffness −dP/dd (N/m), ≥ 0.
+    double stiffness;
+    // Number of loaded springs.
+    uint64_t contacts;
+    // Conjugate-gradient iterations spent.
+    uint32_t iterations;
+    // Reserved, 0.
+    uint32_t reserved;
+} AsperityBoraResponse;
 
 // ISO 4287 parameters of a profile, its spectral moments and its Hurst
 // exponent, from `asperity_roughness_parameters`. Heights are measured from
@@ -2407,6 +2459,71 @@ int32_t asperity_zhuravlev_eval(const struct AsperityZhuravlev *model,
                                 void *n2_data,
                                 size_t order,
                                 struct AsperityZhuravlevResponse *out);
+
+// Bush–Gibson–Thomas load, real area, number of contacts and stiffness at
+// `separation` d (m, finite; the flat's height above the mean plane of the
+// surface).
+int32_t asperity_bgt_eval(const struct AsperityBgtParams *bgt,
+                          double separation,
+                          struct AsperityBgtResponse *out);
+
+// `asperity_bgt_eval` for `n` separations `separation[i]` (m), writing
+// `load[i]` (N) and, where the array is not NULL, `area[i]` (m²),
+// `contacts[i]` and `stiffness[i]` (N/m). `separation` and `load` are
+// required (unless n = 0); inputs and outputs may be the same memory. On an
+// error at element i, elements before i are written, those from i on are
+// untouched, and the message names i.
+int32_t asperity_bgt_eval_batch(const struct AsperityBgtParams *bgt,
+                                size_t n,
+                                const double *separation,
+                                double *load,
+                                double *area,
+                                double *contacts,
+                                double *stiffness);
+
+// The separation (m) at which the surface carries `load` (N, finite, > 0),
+// by safeguarded Newton iteration.
+int32_t asperity_bgt_separation_at_load(const struct AsperityBgtParams *bgt,
+                                        double load,
+                                        struct AsperitySeparation *out);
+
+// Nayak's summit density D = m₄/(6π√3 m₂) (m⁻², to `*summit_density`) and
+// the small-load limit of A/P, √π/(E*√m₂) = √(2π)/(E*√(2m₂)) (m²/N, to
+// `*area_per_load`) of the surface `bgt`; either output may be NULL.
+int32_t asperity_bgt_properties(const struct AsperityBgtParams *bgt,
+                                double *summit_density,
+                                double *area_per_load);
+
+// A Bora interface on `nx` × `ny` heights `heights` (m, finite, row-major:
+// `heights[i + nx*j]` at x = iΔ, y = jΔ; copied) with grid spacing `spacing`
+// Δ (m, > 0), springs of stiffness `spring_stiffness` (N/m, > 0) on a
+// substrate of contact modulus `contact_modulus` E* (Pa, > 0), or a rigid
+// substrate (independent springs) when `contact_modulus` is 0. At most
+// 16384 points. Writes a new handle to `*out` (NULL on failure).
+int32_t asperity_bora_new(size_t nx,
+                          size_t ny,
+                          double spacing,
+                          const double *heights,
+                          double spring_stiffness,
+                          double contact_modulus,
+                          struct AsperityBora **out);
+
+// Release a Bora interface; NULL is accepted.
+void asperity_bora_free(struct AsperityBora *bora);
+
+// The equilibrium with the flat at `separation` d (m, finite, in the frame
+// of the heights): load, area, stiffness, contacts to `*out`, and, unless
+// `forces` is NULL, the nx·ny spring forces (N) to `forces`.
+int32_t asperity_bora_solve(const struct AsperityBora *bora,
+                            double separation,
+                            struct AsperityBoraResponse *out,
+                            double *forces);
+
+// The separation (m) at which the interface carries `load` (N, finite
+// and > 0).
+int32_t asperity_bora_separation_at_load(const struct AsperityBora *bora,
+                                         double load,
+                                         struct AsperitySeparation *out);
 
 // A static, NUL-terminated description of a status code; "unknown status"
 // for a value that is not one. Do not free.

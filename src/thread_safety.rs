@@ -20,7 +20,7 @@ use crate::ffi::friction::AsperitySliderGeometry;
 use crate::ffi::friction_law::{AsperityFriction, AsperityFrictionWork};
 use crate::ffi::homogenised::AsperityHomogenisedFriction;
 use crate::ffi::slider::AsperitySlider;
-use crate::ffi::statistics::AsperityGwEmpirical;
+use crate::ffi::statistics::{AsperityBora, AsperityGwEmpirical};
 use crate::ffi::tabulated::AsperityTable;
 use crate::friction::{
     CoupledRodBed, FrictionMaterial, HomogenisedFriction, RodBed, RodSolution, RodState, Slider,
@@ -54,6 +54,7 @@ const _: () = {
     shared::<PowerLawAsperities>();
     shared::<Zhuravlev>();
     shared::<AsperityGwEmpirical>();
+    shared::<AsperityBora>();
     // Rescaling and materials.
     shared::<Rescaling>();
     shared::<KnownSolution>();

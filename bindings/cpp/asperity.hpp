@@ -9,7 +9,7 @@
  * - A failed call throws `asperity::Error`, a `std::runtime_error` carrying
  *   the status code (`status()`, one of `ASPERITY_ERR_*`) and the library's
  *   message naming the argument and its bound (`what()`).
- * - Opaque handles are RAII classes (`Table`, `GwEmpirical`,
+ * - Opaque handles are RAII classes (`Table`, `GwEmpirical`, `Bora`,
  *   `HomogenisedFriction`, `SliderGeometry`, `Slider`, `Friction`,
  *   `FrictionWork`):
  *   move-only, `noexcept` moves, the destructor calls `asperity_<thing>_free`;
@@ -322,6 +322,10 @@ struct free_table {
 /// `asperity::GwEmpirical`.
 struct free_gw_empirical {
     static void free(AsperityGwEmpirical* p) noexcept { asperity_gw_empirical_free(p); }
+};
+/// `asperity_bora_free`, called by the destructor of `asperity::Bora`.
+struct free_bora {
+    static void free(AsperityBora* p) noexcept { asperity_bora_free(p); }
 };
 /// `asperity_homogenised_friction_free`, called by the destructor of
 /// `asperity::HomogenisedFriction`.
@@ -1638,6 +1642,90 @@ public:
         double psi = 0.0;
         check(asperity_gw_empirical_plasticity_index(get(), hardness, &psi));
         return psi;
+    }
+};
+
+/// `asperity_bgt_eval`: Bush-Gibson-Thomas load, area, contacts and
+/// stiffness at `separation` (m, above the surface's mean plane).
+[[nodiscard]] inline AsperityBgtResponse bgt_eval(const AsperityBgtParams& bgt, double separation)
+{
+    AsperityBgtResponse out{};
+    check(asperity_bgt_eval(&bgt, separation, &out));
+    return out;
+}
+
+/// `asperity_bgt_eval_batch`: `bgt_eval` for `separation.size()`
+/// separations; `load` needs room for them, `area`, `contacts` and
+/// `stiffness` are empty (not wanted) or as long.
+inline void bgt_eval_batch(const AsperityBgtParams& bgt, span<const double> separation,
+                           span<double> load, span<double> area = {}, span<double> contacts = {},
+                           span<double> stiffness = {})
+{
+    const char* f = "asperity::bgt_eval_batch";
+    const std::size_t n = separation.size();
+    check(asperity_bgt_eval_batch(&bgt, n, detail::required(separation),
+                                  detail::at_least(load, n, f, "load"),
+                                  detail::optional(area, n, f, "area"),
+                                  detail::optional(contacts, n, f, "contacts"),
+                                  detail::optional(stiffness, n, f, "stiffness")));
+}
+
+/// `asperity_bgt_separation_at_load`: the separation that carries `load`
+/// (N), with the solver's report.
+[[nodiscard]] inline AsperitySeparation bgt_separation_at_load(const AsperityBgtParams& bgt,
+                                                               double load)
+{
+    AsperitySeparation out{};
+    check(asperity_bgt_separation_at_load(&bgt, load, &out));
+    return out;
+}
+
+/// `asperity_bgt_properties`: Nayak's summit density (1/m^2) and the
+/// small-load limit of A/P (m^2/N), as a pair.
+[[nodiscard]] inline std::pair<double, double> bgt_properties(const AsperityBgtParams& bgt)
+{
+    double density = 0.0, area_per_load = 0.0;
+    check(asperity_bgt_properties(&bgt, &density, &area_per_load));
+    return {density, area_per_load};
+}
+
+/// The Bora et al. interface on a measured height map (`AsperityBora`).
+/// Immutable; safe to share between threads.
+class Bora : public detail::unique_handle<AsperityBora, detail::free_bora> {
+public:
+    using unique_handle::unique_handle;
+    Bora() noexcept = default;
+
+    /// `asperity_bora_new`: `nx` x `ny` `heights` (m, row-major, copied),
+    /// grid `spacing` (m), `spring_stiffness` (N/m), substrate
+    /// `contact_modulus` (Pa; 0: rigid).
+    Bora(std::size_t nx, std::size_t ny, double spacing, span<const double> heights,
+         double spring_stiffness, double contact_modulus)
+    {
+        AsperityBora* p = nullptr;
+        check(asperity_bora_new(nx, ny, spacing,
+                                detail::exactly(heights, nx * ny, "asperity::Bora", "heights"),
+                                spring_stiffness, contact_modulus, &p));
+        reset(p);
+    }
+
+    /// `asperity_bora_solve`: the equilibrium at `separation` (m); `forces`
+    /// empty (not wanted) or room for nx*ny spring forces (N).
+    [[nodiscard]] AsperityBoraResponse solve(double separation, span<double> forces = {}) const
+    {
+        AsperityBoraResponse out{};
+        check(asperity_bora_solve(get(), separation, &out,
+                                  forces.empty() ? nullptr : forces.data()));
+        return out;
+    }
+
+    /// `asperity_bora_separation_at_load`: the separation that carries
+    /// `load` (N).
+    [[nodiscard]] AsperitySeparation separation_at_load(double load) const
+    {
+        AsperitySeparation out{};
+        check(asperity_bora_separation_at_load(get(), load, &out));
+        return out;
     }
 };
 

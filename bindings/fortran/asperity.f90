@@ -965,6 +965,48 @@ module asperity
     integer(c_int32_t) :: reserved = 0_c_int32_t
   end type asperity_separation
 
+  !> `AsperityBgtParams`
+  type, bind(c), public :: asperity_bgt_params
+    !> Mean-square height m₀ = σ² (m², > 0).
+    real(c_double) :: m0 = 0.0_c_double
+    !> Mean-square profile slope m₂ (dimensionless, > 0).
+    real(c_double) :: m2 = 0.0_c_double
+    !> Mean-square profile curvature m₄ (m⁻², > 0).
+    real(c_double) :: m4 = 0.0_c_double
+    !> Contact modulus E* (Pa, > 0).
+    real(c_double) :: e_star = 0.0_c_double
+    !> Nominal contact area A₀ (m², > 0).
+    real(c_double) :: nominal_area = 0.0_c_double
+  end type asperity_bgt_params
+
+  !> `AsperityBgtResponse`
+  type, bind(c), public :: asperity_bgt_response
+    !> Total normal load P (N), ≥ 0.
+    real(c_double) :: load = 0.0_c_double
+    !> Real contact area A (m²), ≥ 0.
+    real(c_double) :: area = 0.0_c_double
+    !> Expected number of summits in contact (dimensionless).
+    real(c_double) :: contacts = 0.0_c_double
+    !> Normal stiffness −dP/dd (N/m), ≥ 0.
+    real(c_double) :: stiffness = 0.0_c_double
+  end type asperity_bgt_response
+
+  !> `AsperityBoraResponse`
+  type, bind(c), public :: asperity_bora_response
+    !> Total load P (N), ≥ 0.
+    real(c_double) :: load = 0.0_c_double
+    !> Real contact area (m²): loaded springs times the cell area Δ².
+    real(c_double) :: area = 0.0_c_double
+    !> Normal stiffness −dP/dd (N/m), ≥ 0.
+    real(c_double) :: stiffness = 0.0_c_double
+    !> Number of loaded springs.
+    integer(c_int64_t) :: contacts = 0_c_int64_t
+    !> Conjugate-gradient iterations spent.
+    integer(c_int32_t) :: iterations = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_bora_response
+
   !> `AsperityZhuravlev`
   type, bind(c), public :: asperity_zhuravlev
     !> Cap radius R of both surfaces (m, > 0), or 0.
@@ -1118,6 +1160,18 @@ module asperity
     final :: asperity_gw_empirical_final
   end type asperity_gw_empirical
 
+  !> Handle of `AsperityBora`: the Bora et al. interface on a measured height map (`asperity_bora_new`).
+  !> `ptr` is the C pointer (NULL when empty) for the raw layer.
+  type, public :: asperity_bora
+    type(c_ptr) :: ptr = c_null_ptr
+  contains
+    !> Release the object (nothing when empty); the handle becomes empty.
+    procedure :: free => asperity_bora_free
+    procedure, private :: asperity_bora_assign
+    generic :: assignment(=) => asperity_bora_assign
+    final :: asperity_bora_final
+  end type asperity_bora
+
   !> Handle of `AsperityHomogenisedFriction`: the homogenised friction table of FE points (`asperity_homogenised_friction_new`, `..._from_json`), stepped through `asperity_friction_from_homogenised`.
   !> `ptr` is the C pointer (NULL when empty) for the raw layer.
   type, public :: asperity_homogenised_friction
@@ -1197,7 +1251,7 @@ module asperity
 
   !> Release any handle: `call asperity_free(h)`.
   interface asperity_free
-    module procedure asperity_table_free, asperity_gw_empirical_free, &
+    module procedure asperity_table_free, asperity_gw_empirical_free, asperity_bora_free, &
         asperity_homogenised_friction_free, asperity_slider_geometry_free, asperity_slider_free, &
         asperity_friction_free, asperity_friction_work_free
   end interface asperity_free
@@ -2416,6 +2470,102 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_gw_eval
 
+    !> Bush–Gibson–Thomas load, real area, number of contacts and stiffness at `separation` d
+    !  (m, finite; the flat's height above the mean plane of the surface).
+    function c_asperity_bgt_eval(bgt, separation, out) result(r) bind(c, &
+        name="asperity_bgt_eval")
+      import
+      implicit none
+      type(asperity_bgt_params), intent(in) :: bgt
+      real(c_double), value :: separation
+      type(asperity_bgt_response), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_bgt_eval
+
+    !> `asperity_bgt_eval` for `n` separations (see `asperity_gw_eval_batch`).
+    function c_asperity_bgt_eval_batch(bgt, n, separation, load, area, contacts, stiffness) &
+        result(r) bind(c, name="asperity_bgt_eval_batch")
+      import
+      implicit none
+      type(asperity_bgt_params), intent(in) :: bgt
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: separation(*)
+      real(c_double), intent(inout) :: load(*)
+      type(c_ptr), value :: area
+      type(c_ptr), value :: contacts
+      type(c_ptr), value :: stiffness
+      integer(c_int32_t) :: r
+    end function c_asperity_bgt_eval_batch
+
+    !> The separation (m) at which the surface carries `load` (N, finite and > 0).
+    function c_asperity_bgt_separation_at_load(bgt, load, out) result(r) bind(c, &
+        name="asperity_bgt_separation_at_load")
+      import
+      implicit none
+      type(asperity_bgt_params), intent(in) :: bgt
+      real(c_double), value :: load
+      type(asperity_separation), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_bgt_separation_at_load
+
+    !> Nayak's summit density (m⁻²) and the small-load limit of A/P (m²/N); either output may
+    !  be NULL.
+    function c_asperity_bgt_properties(bgt, summit_density, area_per_load) result(r) bind(c, &
+        name="asperity_bgt_properties")
+      import
+      implicit none
+      type(asperity_bgt_params), intent(in) :: bgt
+      type(c_ptr), value :: summit_density
+      type(c_ptr), value :: area_per_load
+      integer(c_int32_t) :: r
+    end function c_asperity_bgt_properties
+
+    !> A Bora et al. interface on `nx` × `ny` heights (m, row-major, copied), grid spacing (m),
+    !  spring stiffness (N/m), substrate contact modulus (Pa; 0: rigid). Writes a new handle.
+    function c_asperity_bora_new(nx, ny, spacing, heights, spring_stiffness, contact_modulus, &
+        out) result(r) bind(c, name="asperity_bora_new")
+      import
+      implicit none
+      integer(c_size_t), value :: nx
+      integer(c_size_t), value :: ny
+      real(c_double), value :: spacing
+      real(c_double), intent(in) :: heights(*)
+      real(c_double), value :: spring_stiffness
+      real(c_double), value :: contact_modulus
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_bora_new
+
+    !> Release a Bora interface; NULL is accepted.
+    subroutine c_asperity_bora_free(bora) bind(c, name="asperity_bora_free")
+      import
+      implicit none
+      type(c_ptr), value :: bora
+    end subroutine c_asperity_bora_free
+
+    !> The equilibrium at `separation` (m); the nx·ny spring forces (N) to `forces` unless NULL.
+    function c_asperity_bora_solve(bora, separation, out, forces) result(r) bind(c, &
+        name="asperity_bora_solve")
+      import
+      implicit none
+      type(c_ptr), value :: bora
+      real(c_double), value :: separation
+      type(asperity_bora_response), intent(inout) :: out
+      type(c_ptr), value :: forces
+      integer(c_int32_t) :: r
+    end function c_asperity_bora_solve
+
+    !> The separation (m) at which the interface carries `load` (N, finite and > 0).
+    function c_asperity_bora_separation_at_load(bora, load, out) result(r) bind(c, &
+        name="asperity_bora_separation_at_load")
+      import
+      implicit none
+      type(c_ptr), value :: bora
+      real(c_double), value :: load
+      type(asperity_separation), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_bora_separation_at_load
+
     !> `asperity_gw_eval` for `n` separations `separation[i]` (m), writing `load[i]` (N) and,
     !  where the array is not NULL, `area[i]` (m²), `contacts[i]` and `stiffness[i]` (N/m).
     !  `separation` and `load` are required (unless n = 0); inputs and outputs may be the same
@@ -3083,6 +3233,14 @@ module asperity
   public :: c_asperity_slider_info
   public :: c_asperity_slider_record
   public :: c_asperity_gw_eval
+  public :: c_asperity_bgt_eval
+  public :: c_asperity_bgt_eval_batch
+  public :: c_asperity_bgt_separation_at_load
+  public :: c_asperity_bgt_properties
+  public :: c_asperity_bora_new
+  public :: c_asperity_bora_free
+  public :: c_asperity_bora_solve
+  public :: c_asperity_bora_separation_at_load
   public :: c_asperity_gw_eval_batch
   public :: c_asperity_gw_separation_at_load
   public :: c_asperity_gw_plasticity_index
@@ -3209,6 +3367,14 @@ module asperity
   public :: asperity_pair_work_of_adhesion
   public :: asperity_hamaker_work_of_adhesion
   public :: asperity_gw_eval
+  public :: asperity_bgt_eval
+  public :: asperity_bgt_eval_batch
+  public :: asperity_bgt_separation_at_load
+  public :: asperity_bgt_properties
+  public :: asperity_bora_new
+  public :: asperity_bora_free
+  public :: asperity_bora_solve
+  public :: asperity_bora_separation_at_load
   public :: asperity_gw_eval_batch
   public :: asperity_gw_separation_at_load
   public :: asperity_gw_plasticity_index
@@ -3498,6 +3664,28 @@ contains
     type(asperity_gw_empirical), intent(inout) :: gw
     call asperity_gw_empirical_free(gw)
   end subroutine asperity_gw_empirical_final
+
+  !> Release `bora` (an empty handle is accepted); `bora` becomes empty.
+  subroutine asperity_bora_free(bora)
+    class(asperity_bora), intent(inout) :: bora
+    call c_asperity_bora_free(bora%ptr)
+    bora%ptr = c_null_ptr
+  end subroutine asperity_bora_free
+
+  subroutine asperity_bora_assign(lhs, rhs)
+    class(asperity_bora), intent(inout) :: lhs
+    type(asperity_bora), intent(in) :: rhs
+    if (c_associated(rhs%ptr)) then
+      if (c_associated(lhs%ptr, rhs%ptr)) return
+      call stop_copy('asperity_bora')
+    end if
+    call asperity_bora_free(lhs)
+  end subroutine asperity_bora_assign
+
+  impure elemental subroutine asperity_bora_final(bora)
+    type(asperity_bora), intent(inout) :: bora
+    call asperity_bora_free(bora)
+  end subroutine asperity_bora_final
 
   !> Release `friction` (an empty handle is accepted); `friction` becomes empty.
   subroutine asperity_homogenised_friction_free(friction)
@@ -4860,6 +5048,91 @@ contains
     end if
     if (present(stiffness)) bad = too_small(what, 'stiffness', size(stiffness), n, ref, status)
   end function gw_batch_sizes_bad
+
+  !> Bush-Gibson-Thomas load, area, contacts and stiffness at `separation` (m).
+  subroutine asperity_bgt_eval(bgt, separation, out, status)
+    type(asperity_bgt_params), intent(in) :: bgt
+    real(c_double), intent(in) :: separation
+    type(asperity_bgt_response), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_bgt_eval(bgt, separation, out), 'asperity_bgt_eval', status)
+  end subroutine asperity_bgt_eval
+
+  !> `asperity_bgt_eval` for `size(separation)` separations: `load(i)` (N)
+  !> and, when given, `area(i)` (m^2), `contacts(i)`, `stiffness(i)` (N/m).
+  subroutine asperity_bgt_eval_batch(bgt, separation, load, area, contacts, stiffness, status)
+    type(asperity_bgt_params), intent(in) :: bgt
+    real(c_double), intent(in) :: separation(:)
+    real(c_double), intent(inout) :: load(:)
+    real(c_double), intent(inout), optional, target, contiguous :: area(:), contacts(:), &
+        stiffness(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_bgt_eval_batch'
+    if (gw_batch_sizes_bad(what, size(separation), load, area, contacts, stiffness, status)) &
+        return
+    call check(c_asperity_bgt_eval_batch(bgt, size(separation, kind=c_size_t), separation, &
+        load, loc_d(area), loc_d(contacts), loc_d(stiffness)), what, status)
+  end subroutine asperity_bgt_eval_batch
+
+  !> The separation (m) at which the BGT surface carries `load` (N).
+  subroutine asperity_bgt_separation_at_load(bgt, load, out, status)
+    type(asperity_bgt_params), intent(in) :: bgt
+    real(c_double), intent(in) :: load
+    type(asperity_separation), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_bgt_separation_at_load(bgt, load, out), &
+        'asperity_bgt_separation_at_load', status)
+  end subroutine asperity_bgt_separation_at_load
+
+  !> Nayak's summit density (1/m^2) and the small-load limit of A/P (m^2/N).
+  subroutine asperity_bgt_properties(bgt, summit_density, area_per_load, status)
+    type(asperity_bgt_params), intent(in) :: bgt
+    real(c_double), intent(out), target :: summit_density, area_per_load
+    integer(c_int32_t), intent(out), optional :: status
+    summit_density = 0
+    area_per_load = 0
+    call check(c_asperity_bgt_properties(bgt, c_loc(summit_density), c_loc(area_per_load)), &
+        'asperity_bgt_properties', status)
+  end subroutine asperity_bgt_properties
+
+  !> A Bora et al. interface on `nx` x `ny` `heights` (m, x fastest), grid
+  !> `spacing` (m), `spring_stiffness` (N/m), substrate `contact_modulus`
+  !> (Pa; 0: rigid). An object `bora` held is freed first.
+  subroutine asperity_bora_new(nx, ny, spacing, heights, spring_stiffness, contact_modulus, &
+      bora, status)
+    integer, intent(in) :: nx, ny
+    real(c_double), intent(in) :: spacing, spring_stiffness, contact_modulus
+    real(c_double), intent(in) :: heights(:)
+    type(asperity_bora), intent(inout) :: bora
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_bora_new'
+    call bora%free()
+    if (too_small(what, 'heights', size(heights), nx * ny, 'nx*ny', status)) return
+    call check(c_asperity_bora_new(int(nx, c_size_t), int(ny, c_size_t), spacing, heights, &
+        spring_stiffness, contact_modulus, bora%ptr), what, status)
+  end subroutine asperity_bora_new
+
+  !> The equilibrium of `bora` at `separation` (m); the spring forces (N)
+  !> to `forces` when given (room for nx*ny).
+  subroutine asperity_bora_solve(bora, separation, out, forces, status)
+    type(asperity_bora), intent(in) :: bora
+    real(c_double), intent(in) :: separation
+    type(asperity_bora_response), intent(out) :: out
+    real(c_double), intent(inout), optional, target, contiguous :: forces(:)
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_bora_solve(bora%ptr, separation, out, loc_d(forces)), &
+        'asperity_bora_solve', status)
+  end subroutine asperity_bora_solve
+
+  !> The separation (m) at which `bora` carries `load` (N).
+  subroutine asperity_bora_separation_at_load(bora, load, out, status)
+    type(asperity_bora), intent(in) :: bora
+    real(c_double), intent(in) :: load
+    type(asperity_separation), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_bora_separation_at_load(bora%ptr, load, out), &
+        'asperity_bora_separation_at_load', status)
+  end subroutine asperity_bora_separation_at_load
 
   !> The separation (m) that carries `load` (N), with the solver's report.
   subroutine asperity_gw_separation_at_load(gw, load, out, status)

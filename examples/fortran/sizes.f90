@@ -51,6 +51,9 @@ program sizes
   type(asperity_gw_params) :: gw_params
   type(asperity_gw_response) :: gw_response
   type(asperity_separation) :: separation
+  type(asperity_bgt_params) :: bgt_params
+  type(asperity_bgt_response) :: bgt_response
+  type(asperity_bora_response) :: bora_response
   type(asperity_zhuravlev) :: zhuravlev
   type(asperity_zhuravlev_response) :: zhuravlev_response
   type(asperity_zhuravlev_friction) :: zhuravlev_friction
@@ -90,6 +93,9 @@ program sizes
   call row('AsperityGwParams', c_sizeof(gw_params))
   call row('AsperityGwResponse', c_sizeof(gw_response))
   call row('AsperitySeparation', c_sizeof(separation))
+  call row('AsperityBgtParams', c_sizeof(bgt_params))
+  call row('AsperityBgtResponse', c_sizeof(bgt_response))
+  call row('AsperityBoraResponse', c_sizeof(bora_response))
   call row('AsperityZhuravlev', c_sizeof(zhuravlev))
   call row('AsperityZhuravlevResponse', c_sizeof(zhuravlev_response))
   call row('AsperityZhuravlevFriction', c_sizeof(zhuravlev_friction))

@@ -322,6 +322,18 @@ pub enum Op {
         order: Big,
         nulls: Nulls,
     },
+    Bgt {
+        p: [F; 5],
+        which: u8,
+        x: Vec<F>,
+        nulls: Nulls,
+    },
+    Bora {
+        a: [F; 4],
+        nx: u8,
+        heights: Heights,
+        nulls: Nulls,
+    },
     // Surfaces.
     Roughness {
         h: Heights,
@@ -712,7 +724,9 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
         | Op::GwEmpirical { .. }
         | Op::GwEmpiricalFree { .. }
         | Op::Zhuravlev { .. }
-        | Op::ZhuravlevEval { .. } => statistics::call(ctx, op),
+        | Op::ZhuravlevEval { .. }
+        | Op::Bgt { .. }
+        | Op::Bora { .. } => statistics::call(ctx, op),
         Op::Roughness { .. }
         | Op::RemoveForm { .. }
         | Op::Filter { .. }

@@ -1,6 +1,6 @@
 //! Statistical multi-asperity models: Zhuravlev, Greenwood–Williamson,
-//! Kragelsky's rod assembly and the power-law asperity extensions through
-//! rescaling (thesis sections 1.6–1.7, 3.7, 5.3–5.4).
+//! Bush–Gibson–Thomas, Kragelsky's rod assembly and the power-law asperity
+//! extensions through rescaling (thesis sections 1.6–1.7, 3.7, 5.3–5.4).
 //!
 //! All of them sum independent single-asperity responses over a distribution
 //! of summit heights:
@@ -13,6 +13,17 @@
 //!   summits against a flat, Gaussian, exponential or empirical heights
 //!   ((1-29), (1-30)), its inverse (separation at a load) and the plasticity
 //!   index (1-31).
+//! * [`bush_gibson_thomas`]: Bush, Gibson & Thomas (1975), §5.3.3: an
+//!   isotropic Gaussian surface given by its spectral moments, whose summits
+//!   (Nayak's random-process model) are elliptic paraboloids in Hertz
+//!   contact ([`elliptic_hertz`]); small-load limit
+//!   `A = √(2π) P/(E*√⟨|∇h|²⟩)`.
+//! * [`bora`]: the real nano-topography model of Bora et al. (2013), §5.3.9:
+//!   one spring per point of a measured height map on an elastic half-space
+//!   (Love's square loads), solved as a complementarity problem.
+//! * [`borodich_kryukova`]: Borodich & Kryukova (1997), §5.3.7: a block on a
+//!   moving belt, both faces covered with elastic rough layers, integrated
+//!   in time.
 //! * [`kragelsky`]: Kragelsky's assembly of elastic rods (5-7).
 //! * [`power_law`]: asperities `B r^d` on a material `σ ∝ ε^κ`, through
 //!   Borodich's rescaling of one known solution ((3-27), (3-28)).
@@ -49,6 +60,10 @@
 //!   Calculation Methods*, Pergamon Press, Oxford.
 //! * The single modules cite the details.
 
+pub mod bora;
+pub mod borodich_kryukova;
+pub mod bush_gibson_thomas;
+pub mod elliptic_hertz;
 pub mod gaussian;
 pub mod greenwood_williamson;
 pub mod heights;
@@ -57,6 +72,10 @@ pub mod power_law;
 mod quadrature;
 pub mod zhuravlev;
 
+pub use bora::{BoraSolution, BoraTopography};
+pub use borodich_kryukova::{BorodichKryukova, Sinusoid, SliderSample, SliderState};
+pub use bush_gibson_thomas::{BgtResponse, BushGibsonThomas};
+pub use elliptic_hertz::EllipticHertz;
 pub use greenwood_williamson::GreenwoodWilliamson;
 pub use heights::{EmpiricalHeights, HeightDistribution};
 pub use kragelsky::{BearingCurveRods, KragelskyRods};

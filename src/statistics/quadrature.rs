@@ -131,6 +131,83 @@ pub(crate) fn tanh_sinh(
     })
 }
 
+/// [`tanh_sinh`] for `N` integrands sharing the nodes (one call of `f` per
+/// node returns all `N` values), refined until every component has converged
+/// within `max(rel_tol·|I_j|, abs_tol)`. Used where several moments of one
+/// expensive integrand are wanted together (the Bush–Gibson–Thomas load, area,
+/// contact count and stiffness).
+pub(crate) fn tanh_sinh_n<const N: usize>(
+    f: impl Fn(f64) -> [f64; N],
+    a: f64,
+    b: f64,
+    rel_tol: f64,
+    abs_tol: f64,
+) -> Result<[f64; N]> {
+    let half_width = 0.5 * (b - a);
+    if half_width <= 0.0 {
+        return Ok([0.0; N]);
+    }
+    let centre = 0.5 * (a + b);
+    let add = |sum: &mut [f64; N], w: f64, v: [f64; N]| {
+        for (s, x) in sum.iter_mut().zip(v) {
+            *s += w * x;
+        }
+    };
+    // Weighted sum over the nodes k·step of one level (odd k after level 0).
+    let level = |sum: &mut [f64; N], step: f64, odd_only: bool| {
+        let stride = if odd_only { 2u32 } else { 1 };
+        let mut k = 1u32;
+        loop {
+            let t = k as f64 * step;
+            if t > T_MAX {
+                break;
+            }
+            let u = FRAC_PI_2 * t.sinh();
+            let cosh_u = u.cosh();
+            let weight = FRAC_PI_2 * t.cosh() / (cosh_u * cosh_u);
+            let delta = 2.0 * half_width / (1.0 + (2.0 * u).exp());
+            add(sum, weight, f(a + delta));
+            add(sum, weight, f(b - delta));
+            k += stride;
+        }
+    };
+    let mut step = 1.0;
+    let mut sum = [0.0; N];
+    add(&mut sum, FRAC_PI_2, f(centre));
+    level(&mut sum, step, false);
+    let mut value = sum.map(|s| half_width * step * s);
+    let mut worst = f64::INFINITY;
+    for lev in 1..=MAX_LEVEL {
+        step *= 0.5;
+        level(&mut sum, step, true);
+        let next = sum.map(|s| half_width * step * s);
+        let mut converged = true;
+        worst = 0.0;
+        for j in 0..N {
+            let error = (next[j] - value[j]).abs();
+            let scale = next[j].abs();
+            if error > (rel_tol * scale).max(abs_tol) {
+                converged = false;
+            }
+            if scale > 0.0 {
+                worst = worst.max(error / scale);
+            }
+        }
+        value = next;
+        if value.iter().any(|v| !v.is_finite()) {
+            break;
+        }
+        if lev >= 3 && converged {
+            return Ok(value);
+        }
+    }
+    Err(Error::NotConverged {
+        what: "tanh-sinh quadrature",
+        iterations: MAX_LEVEL,
+        residual: worst,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

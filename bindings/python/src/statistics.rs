@@ -1,5 +1,6 @@
 //! Statistical multi-asperity models (`asperity::statistics`): height
-//! distributions, Greenwood–Williamson, Kragelsky rods and bearing curve,
+//! distributions, Greenwood–Williamson, Bush–Gibson–Thomas, Bora et al.,
+//! Kragelsky rods and bearing curve,
 //! Zhuravlev, power-law asperities; every response on a float or an array of
 //! separations.
 
@@ -78,7 +79,11 @@ impl HeightDistribution {
     #[staticmethod]
     #[pyo3(signature = (heights, radii=None))]
     fn empirical(heights: &Bound<'_, PyAny>, radii: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-        let h = array(heights, "heights")?.as_slice()?.to_vec();
+        let h: Vec<f64> = array(heights, "heights")?
+            .as_array()
+            .iter()
+            .copied()
+            .collect();
         let inner = match radii {
             None => st::HeightDistribution::empirical(h).map_err(rs)?,
             Some(r) => st::HeightDistribution::Empirical(
@@ -220,6 +225,217 @@ impl GreenwoodWilliamson {
         self.inner
             .plasticity_index(real(hardness, "hardness")?)
             .map_err(rs)
+    }
+}
+
+/// BushGibsonThomas(m0, m2, m4, e_star, nominal_area)
+///
+/// Bush, Gibson & Thomas (1975): an isotropic Gaussian surface of spectral
+/// moments m0 (m², σ²), m2 (mean-square profile slope) and m4 (m⁻²,
+/// mean-square profile curvature), Nayak's α = m0 m4/m2² > 1.5, whose
+/// summits are elliptic paraboloids in Hertz contact with a flat of contact
+/// modulus E* (Pa), over the nominal area A0 (m²). Responses at the
+/// separation d (m) of the flat above the surface's mean plane, on a float
+/// or an array. ``BushGibsonThomas.from_alpha(sigma, rms_slope, alpha,
+/// e_star, nominal_area)`` builds it from σ (m), √m2 and α.
+#[pyclass(module = "asperity", frozen)]
+pub struct BushGibsonThomas {
+    pub inner: st::BushGibsonThomas,
+}
+
+#[pymethods]
+impl BushGibsonThomas {
+    #[new]
+    fn new(
+        m0: &Bound<'_, PyAny>,
+        m2: &Bound<'_, PyAny>,
+        m4: &Bound<'_, PyAny>,
+        e_star: &Bound<'_, PyAny>,
+        nominal_area: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::BushGibsonThomas::new(
+                real(m0, "m0")?,
+                real(m2, "m2")?,
+                real(m4, "m4")?,
+                real(e_star, "e_star")?,
+                real(nominal_area, "nominal_area")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// from_alpha(sigma, rms_slope, alpha, e_star, nominal_area) -> BushGibsonThomas
+    ///
+    /// m0 = σ², m2 = rms_slope², m4 = α m2²/m0.
+    #[staticmethod]
+    fn from_alpha(
+        sigma: &Bound<'_, PyAny>,
+        rms_slope: &Bound<'_, PyAny>,
+        alpha: &Bound<'_, PyAny>,
+        e_star: &Bound<'_, PyAny>,
+        nominal_area: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::BushGibsonThomas::from_alpha(
+                real(sigma, "sigma")?,
+                real(rms_slope, "rms_slope")?,
+                real(alpha, "alpha")?,
+                real(e_star, "e_star")?,
+                real(nominal_area, "nominal_area")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// Nayak's α = m0 m4/m2².
+    #[getter]
+    fn alpha(&self) -> f64 {
+        self.inner.alpha()
+    }
+    /// Nayak's summit density m4/(6π√3 m2) (m⁻²).
+    #[getter]
+    fn summit_density(&self) -> f64 {
+        self.inner.summit_density()
+    }
+    /// Small-load limit of A/P, √(2π)/(E*√(2 m2)) (m²/N).
+    #[getter]
+    fn small_load_area_per_load(&self) -> f64 {
+        self.inner.small_load_area_per_load()
+    }
+    /// load(separation) -> float | numpy.ndarray
+    ///
+    /// Total load P (N) at separation d (m).
+    fn load(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.load(d))
+    }
+    /// area(separation) -> float | numpy.ndarray
+    ///
+    /// Real contact area A (m²) at separation d (m).
+    fn area(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.area(d))
+    }
+    /// contacts(separation) -> float | numpy.ndarray
+    ///
+    /// Expected number of summits in contact at separation d (m).
+    fn contacts(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.contacts(d))
+    }
+    /// stiffness(separation) -> float | numpy.ndarray
+    ///
+    /// Normal contact stiffness -dP/dd (N/m) at separation d (m).
+    fn stiffness(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.stiffness(d))
+    }
+    /// response(separation) -> dict
+    ///
+    /// ``load`` (N), ``area`` (m²), ``contacts``, ``mean_pressure`` (Pa) at
+    /// separation d (m): floats, or arrays for an array of separations.
+    fn response(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        responses(py, separation, "separation", |d| g.response(d))
+    }
+    /// separation_at_load(load) -> dict
+    ///
+    /// The separation (m) that carries ``load`` (N), with ``iterations`` and
+    /// ``relative_residual``.
+    fn separation_at_load<'py>(
+        &self,
+        py: Python<'py>,
+        load: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        separation_at(py, load, |p| self.inner.separation_at_load(p))
+    }
+}
+
+/// BoraTopography(heights, spacing, spring_stiffness, contact_modulus=None, nx=None)
+///
+/// Bora et al. (2013), thesis §5.3.9: one spring of stiffness k (N/m) per
+/// point of a measured height map (m; a 1-D array, row-major
+/// ``heights[i + nx*j]``, ``nx`` its row length, default the whole array, a
+/// profile) with grid spacing Δ (m), on an elastic half-space of contact
+/// modulus E* (Pa) or a rigid one (``None``: independent springs), pressed
+/// by a flat at separation d (m, in the frame of the heights).
+#[pyclass(module = "asperity", frozen)]
+pub struct BoraTopography {
+    pub inner: st::BoraTopography,
+}
+
+#[pymethods]
+impl BoraTopography {
+    #[new]
+    #[pyo3(signature = (heights, spacing, spring_stiffness, contact_modulus=None, nx=None))]
+    fn new(
+        heights: &Bound<'_, PyAny>,
+        spacing: &Bound<'_, PyAny>,
+        spring_stiffness: &Bound<'_, PyAny>,
+        contact_modulus: Option<&Bound<'_, PyAny>>,
+        nx: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let h: Vec<f64> = array(heights, "heights")?
+            .as_array()
+            .iter()
+            .copied()
+            .collect();
+        let nx = match nx {
+            Some(v) => crate::common::count(v, "nx")?,
+            None => h.len(),
+        };
+        let ny = h.len().checked_div(nx).unwrap_or(0);
+        Ok(Self {
+            inner: st::BoraTopography::new(
+                nx,
+                ny.max(1),
+                real(spacing, "spacing")?,
+                h,
+                real(spring_stiffness, "spring_stiffness")?,
+                real_opt(contact_modulus, "contact_modulus")?,
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// solve(separation) -> dict
+    ///
+    /// ``load`` (N), ``area`` (m²), ``contacts`` (loaded springs),
+    /// ``stiffness`` (N/m), ``iterations`` and ``forces`` (N, an array like
+    /// the heights) with the flat at separation d (m).
+    fn solve<'py>(
+        &self,
+        py: Python<'py>,
+        separation: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let s = self
+            .inner
+            .solve(real(separation, "separation")?)
+            .map_err(rs)?;
+        let d = PyDict::new(py);
+        d.set_item("load", s.load)?;
+        d.set_item("area", s.area)?;
+        d.set_item("contacts", s.contacts)?;
+        d.set_item("stiffness", s.stiffness)?;
+        d.set_item("iterations", s.iterations)?;
+        d.set_item("forces", numpy::PyArray1::from_vec(py, s.forces))?;
+        Ok(d)
+    }
+    /// load(separation) -> float | numpy.ndarray
+    ///
+    /// Total load P (N) at separation d (m).
+    fn load(&self, py: Python<'_>, separation: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let g = &self.inner;
+        vectorize(py, separation, "separation", |d| g.solve(d).map(|s| s.load))
+    }
+    /// separation_at_load(load) -> dict
+    ///
+    /// The separation (m) that carries ``load`` (N), with ``iterations`` and
+    /// ``relative_residual``.
+    fn separation_at_load<'py>(
+        &self,
+        py: Python<'py>,
+        load: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        separation_at(py, load, |p| self.inner.separation_at_load(p))
     }
 }
 
@@ -642,6 +858,8 @@ fn gaussian_tail_moment(
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<HeightDistribution>()?;
     m.add_class::<GreenwoodWilliamson>()?;
+    m.add_class::<BushGibsonThomas>()?;
+    m.add_class::<BoraTopography>()?;
     m.add_class::<KragelskyRods>()?;
     m.add_class::<BearingCurveRods>()?;
     m.add_class::<Zhuravlev>()?;
@@ -649,6 +867,5 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(plasticity_index, m)?)?;
     m.add_function(wrap_pyfunction!(deformation_regime, m)?)?;
     m.add_function(wrap_pyfunction!(gaussian_tail_moment, m)?)?;
-    let _ = real_opt;
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! Multi-asperity statistics (`src/ffi/statistics.rs`): Greenwood–Williamson
 //! (parametric and empirical surfaces), plasticity index, deformation
-//! regime, Zhuravlev.
+//! regime, Zhuravlev, Bush–Gibson–Thomas, Bora et al.
 
 use super::common::*;
 use super::{pick, take, Ctx, Op};
@@ -91,6 +91,106 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 asperity_deformation_regime(psi.0, mp(&mut out, *null)),
                 "deformation_regime",
             );
+        }
+        Op::Bgt { p, which, x, nulls } => {
+            let g = AsperityBgtParams {
+                m0: p[0].0,
+                m2: p[1].0,
+                m4: p[2].0,
+                e_star: p[3].0,
+                nominal_area: p[4].0,
+            };
+            let d = x.first().map_or(0.0, |f| f.0);
+            match which % 4 {
+                0 => {
+                    let mut out: AsperityBgtResponse = zeroed();
+                    ok(
+                        asperity_bgt_eval(cp(&g, nulls.at(0)), d, mp(&mut out, nulls.at(1))),
+                        "bgt_eval",
+                    );
+                }
+                1 => {
+                    let mut xs: Vec<f64> = x.iter().take(16).map(|f| f.0).collect();
+                    let n = xs.len();
+                    let (mut a, mut c, mut k) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+                    let xp = bufm(&mut xs, nulls.at(1));
+                    let s = asperity_bgt_eval_batch(
+                        cp(&g, nulls.at(0)),
+                        n,
+                        xp,
+                        xp,
+                        bufm(&mut a, nulls.at(2)),
+                        bufm(&mut c, nulls.at(3)),
+                        bufm(&mut k, nulls.at(4)),
+                    );
+                    ok(s, "bgt_eval_batch");
+                }
+                2 => {
+                    let mut out: AsperitySeparation = zeroed();
+                    ok(
+                        asperity_bgt_separation_at_load(
+                            cp(&g, nulls.at(0)),
+                            d,
+                            mp(&mut out, nulls.at(1)),
+                        ),
+                        "bgt_separation_at_load",
+                    );
+                }
+                _ => {
+                    let (mut dens, mut ratio) = (0.0, 0.0);
+                    ok(
+                        asperity_bgt_properties(
+                            cp(&g, nulls.at(0)),
+                            mp(&mut dens, nulls.at(1)),
+                            mp(&mut ratio, nulls.at(2)),
+                        ),
+                        "bgt_properties",
+                    );
+                }
+            }
+        }
+        Op::Bora {
+            a,
+            nx,
+            heights,
+            nulls,
+        } => {
+            // A small map: the solve costs (nx·ny)² per iteration.
+            let mut h = heights.make();
+            h.truncate(64);
+            let nx = (*nx as usize % 8).max(1);
+            let ny = h.len() / nx;
+            h.truncate(nx * ny);
+            let mut out = null_mut();
+            let s = asperity_bora_new(
+                nx,
+                ny,
+                a[0].0,
+                bufp(&h, nulls.at(0)),
+                a[1].0,
+                a[2].0,
+                mp(&mut out, nulls.at(1)),
+            );
+            if ok(s, "bora_new") && !out.is_null() {
+                let mut r: AsperityBoraResponse = zeroed();
+                let mut f = vec![0.0; nx * ny];
+                ok(
+                    asperity_bora_solve(
+                        out,
+                        a[3].0,
+                        mp(&mut r, nulls.at(2)),
+                        bufm(&mut f, nulls.at(3)),
+                    ),
+                    "bora_solve",
+                );
+                let mut sep: AsperitySeparation = zeroed();
+                ok(
+                    asperity_bora_separation_at_load(out, a[3].0, mp(&mut sep, nulls.at(4))),
+                    "bora_separation_at_load",
+                );
+                asperity_bora_free(out);
+            }
+            asperity_bora_free(null_mut());
         }
         Op::GwEmpiricalNew {
             a,
