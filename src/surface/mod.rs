@@ -15,9 +15,12 @@
 //! ## Analysis
 //!
 //! * [`filter`]: the ISO 16610-21 Gaussian mean-line filter.
-//! * [`iso`]: ISO 4287 profile parameters (Rp, Rv, Rz, Rc, Rt, Ra, Rq, Rsk,
-//!   Rku, RSm, RΔq) averaged over sampling lengths, the material-ratio
-//!   (Abbott–Firestone) curve, and areal Sa, Sq, Ssk, Sku, Sp, Sv, Sz, Sdq.
+//! * [`iso`]: profile parameters (Rp, Rv, Rz, Rc, Rt, Ra, Rq, Rsk, Rku, RSm,
+//!   RΔq) in the ISO 21920-2 (default) or ISO 4287 convention
+//!   ([`Convention`]), the material-ratio (Abbott–Firestone) curve, and
+//!   areal Sa, Sq, Ssk, Sku, Sp, Sv, Sz, Sdq.
+//! * [`material_ratio`](mod@material_ratio): ISO 13565-2 Rk, Rpk, Rvk, Mr1,
+//!   Mr2 and ISO 25178-2 Sk, Spk, Svk, Smr1, Smr2, Vmp, Vmc, Vvc, Vvv.
 //! * [`spectral`]: autocorrelation (thesis 1-6, 1-8) and one-sided power
 //!   spectral density (1-7) normalised so that Parseval holds exactly,
 //!   spectral moments and Nayak's bandwidth, the power-law (Hurst) fit.
@@ -59,6 +62,7 @@ pub mod filter;
 pub mod fractal;
 pub mod generate;
 pub mod iso;
+pub mod material_ratio;
 pub mod pattern;
 pub mod peaks;
 pub mod profile;
@@ -71,8 +75,12 @@ pub use filter::{
 pub use fractal::{box_counting_dimension, BoxCounting};
 pub use generate::{CantorBorodich, SelfAffine, WeierstrassMandelbrot};
 pub use iso::{
-    areal_parameters, areal_parameters_grid, roughness_parameters, ArealParameters,
+    areal_parameters, areal_parameters_grid, roughness_parameters, ArealParameters, Convention,
     MaterialRatioCurve, ParameterOptions, RoughnessParameters,
+};
+pub use material_ratio::{
+    functional_parameters, functional_parameters_of, material_ratio_parameters,
+    FunctionalParameters, MaterialRatioParameters,
 };
 pub use pattern::{ks_statistics, ks_two_sample, representative_pattern, RepresentativePattern};
 pub use peaks::{peaks, summits, summits_grid, Peak, PeakStatistics, Summit};
