@@ -272,7 +272,7 @@ fn elements(seg: &[f64], zbar: f64, d: Discrimination) -> Option<(f64, f64)> {
         cut: bool,
     }
     let mut parts: Vec<Part> = Vec::new();
-    let mut close = |run: Part, parts: &mut Vec<Part>| {
+    let close = |run: Part, parts: &mut Vec<Part>| {
         let h = if run.up { d.peak } else { d.valley };
         if run.ext >= h && run.ext > 0.0 && run.end - run.start >= d.width {
             match parts.last_mut() {

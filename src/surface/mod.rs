@@ -9,6 +9,9 @@
 //! * [`read`]: text readers for `x,z` line scans and `x,y,z` or gridded maps
 //!   (comma, semicolon or whitespace separated, `#` comments), with an
 //!   explicit policy for slightly irregular spacing ([`Spacing`]).
+//! * [`instrument`]: instrument files — X3P (ISO 25178-72), Nanoscope `.di`,
+//!   Dektak CSV, Hommel `.hfm` — and [`read_measurement`], which picks the
+//!   reader by extension or content.
 //! * [`Form`] / [`MapForm`]: least-squares form removal (mean, linear,
 //!   quadratic; mean, plane, quadratic for maps).
 //!
@@ -61,6 +64,7 @@ mod fft;
 pub mod filter;
 pub mod fractal;
 pub mod generate;
+pub mod instrument;
 pub mod iso;
 pub mod material_ratio;
 pub mod pattern;
@@ -74,6 +78,10 @@ pub use filter::{
 };
 pub use fractal::{box_counting_dimension, BoxCounting};
 pub use generate::{CantorBorodich, SelfAffine, WeierstrassMandelbrot};
+pub use instrument::{
+    parse_dektak_csv, parse_hfm, parse_measurement, parse_nanoscope, parse_x3p, read_measurement,
+    Measurement, Surface,
+};
 pub use iso::{
     areal_parameters, areal_parameters_grid, roughness_parameters, ArealParameters, Convention,
     MaterialRatioCurve, ParameterOptions, RoughnessParameters,
