@@ -151,9 +151,7 @@ pub fn parse_hfm(text: &str, spacing: Spacing) -> Result<Profile> {
         line: 0,
     })?;
     let names: Vec<&str> = names.split(';').map(str::trim).collect();
-    if names.len() < 2
-        || !names[0].eq_ignore_ascii_case("x")
-        || !names[1].eq_ignore_ascii_case("y")
+    if names.len() < 2 || !names[0].eq_ignore_ascii_case("x") || !names[1].eq_ignore_ascii_case("y")
     {
         return Err(Error::Parse {
             what: "expected the .hfm column names `X;Y[;valid]`",
@@ -170,7 +168,10 @@ pub fn parse_hfm(text: &str, spacing: Spacing) -> Result<Profile> {
         what: "unknown length unit in the .hfm unit line (expected e.g. `[mm]`)",
         line: 2,
     };
-    let sx = units.first().and_then(|u| metres_per(u)).ok_or(unknown.clone())?;
+    let sx = units
+        .first()
+        .and_then(|u| metres_per(u))
+        .ok_or(unknown.clone())?;
     let sz = units.get(1).and_then(|u| metres_per(u)).ok_or(unknown)?;
     let (mut xs, mut zs, mut nums) = (Vec::new(), Vec::new(), Vec::new());
     for (line, l) in lines {
@@ -338,7 +339,10 @@ pub fn parse_nanoscope(bytes: &[u8]) -> Result<(Topography, String)> {
                     line,
                 });
             };
-            let (k, v) = kv.split_once(':').unwrap_or((kv, ""));
+            // Keys may hold colons (`@2:Z scale`): the value follows ": ".
+            let (k, v) = kv
+                .split_once(": ")
+                .unwrap_or((kv.strip_suffix(':').unwrap_or(kv), ""));
             sec.push((k.trim().to_ascii_lowercase(), v.trim().to_string(), line));
         } else {
             return Err(Error::Parse {
@@ -380,10 +384,7 @@ pub fn parse_nanoscope(bytes: &[u8]) -> Result<(Topography, String)> {
             .and_then(|a| zs[a + 1..].find(']').map(|b| &zs[a + 1..a + 1 + b]));
         let after = zs.rfind(')').map(|k| &zs[k + 1..]).ok_or(bad_z.clone())?;
         let mut t = after.split_whitespace();
-        let hard: f64 = t
-            .next()
-            .and_then(|v| v.parse().ok())
-            .ok_or(bad_z.clone())?;
+        let hard: f64 = t.next().and_then(|v| v.parse().ok()).ok_or(bad_z.clone())?;
         let hard_unit = t.next().unwrap_or("V");
         let Some(q) = quantity else { continue };
         let key = format!("@{}", q.to_ascii_lowercase());
@@ -410,7 +411,11 @@ pub fn parse_nanoscope(bytes: &[u8]) -> Result<(Topography, String)> {
             });
         }
         let nx = num(img, "samps/line", "missing or malformed `\\Samps/line`")?;
-        let ny = num(img, "number of lines", "missing or malformed `\\Number of lines`")?;
+        let ny = num(
+            img,
+            "number of lines",
+            "missing or malformed `\\Number of lines`",
+        )?;
         let offset = num(img, "data offset", "missing or malformed `\\Data offset`")?;
         let length = num(img, "data length", "missing or malformed `\\Data length`")?;
         let bpp = match di_get(img, "bytes/pixel") {
@@ -486,8 +491,11 @@ pub fn parse_nanoscope(bytes: &[u8]) -> Result<(Topography, String)> {
         }
         let name = di_get(img, "@2:image data")
             .and_then(|(v, _)| {
-                v.find('[')
-                    .and_then(|a| v[a + 1..].find(']').map(|b| v[a + 1..a + 1 + b].to_string()))
+                v.find('[').and_then(|a| {
+                    v[a + 1..]
+                        .find(']')
+                        .map(|b| v[a + 1..a + 1 + b].to_string())
+                })
             })
             .unwrap_or_else(|| q.to_string());
         let t = Topography::new(nx, ny, sx * xu / nx as f64, sy * xu / ny as f64, h)?;
@@ -539,7 +547,9 @@ pub fn parse_x3p(bytes: &[u8]) -> Result<Surface> {
         offset: 0,
     })?;
     let mut member = |name: &str, what: &'static str| -> Result<Vec<u8>> {
-        let mut f = zip.by_name(name).map_err(|_| Error::Parse { what, line: 0 })?;
+        let mut f = zip
+            .by_name(name)
+            .map_err(|_| Error::Parse { what, line: 0 })?;
         let start = f.data_start();
         let mut v = Vec::new();
         f.read_to_end(&mut v).map_err(|_| Error::Binary {
@@ -584,7 +594,10 @@ pub fn parse_x3p(bytes: &[u8]) -> Result<Surface> {
     let mut z = Vec::with_capacity(n);
     if let Some(link) = xml_tag(&xml, "PointDataLink") {
         let name = link.trim().to_string();
-        let data = member(&name, "the X3P archive lacks the member named by <PointDataLink>")?;
+        let data = member(
+            &name,
+            "the X3P archive lacks the member named by <PointDataLink>",
+        )?;
         let (w, ty) = match xml_tag(cz, "DataType").map(str::trim) {
             Some("I") => (2, 'I'),
             Some("L") => (4, 'L'),
@@ -665,7 +678,12 @@ pub fn detect_format(path: &Path, bytes: &[u8]) -> Format {
         return Format::X3p;
     }
     let head: String = bytes.iter().take(4096).map(|&b| b as char).collect();
-    let first = head.lines().next().unwrap_or("").trim().to_ascii_lowercase();
+    let first = head
+        .lines()
+        .next()
+        .unwrap_or("")
+        .trim()
+        .to_ascii_lowercase();
     if first.starts_with("\\*file list") {
         Format::Nanoscope
     } else if first.starts_with("x;y") {
@@ -716,7 +734,10 @@ pub fn parse_measurement(path: &Path, bytes: &[u8], spacing: Spacing) -> Result<
             let (t, name) = parse_nanoscope(bytes)?;
             (Surface::Map(t), Some(name))
         }
-        Format::DektakCsv => (Surface::Profile(parse_dektak_csv(text(bytes)?, spacing)?), None),
+        Format::DektakCsv => (
+            Surface::Profile(parse_dektak_csv(text(bytes)?, spacing)?),
+            None,
+        ),
         Format::Hfm => (Surface::Profile(parse_hfm(text(bytes)?, spacing)?), None),
         Format::Text => {
             let t = text(bytes)?;
