@@ -701,7 +701,7 @@ pub fn detect_format(path: &Path, bytes: &[u8]) -> Format {
 
 fn text(bytes: &[u8]) -> Result<&str> {
     std::str::from_utf8(bytes).map_err(|e| Error::Binary {
-        what: "the file is not UTF-8 text",
+        what: "cannot read the file as UTF-8 text (nor as a known binary format)",
         offset: e.valid_up_to() as u64,
     })
 }
