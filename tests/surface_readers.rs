@@ -128,7 +128,7 @@ fn nanoscope(nx: usize, ny: usize, bpp: usize, values: &[i64], z_key: &str) -> V
 #[test]
 fn nanoscope_map() {
     // 3 × 2 image; stored lines from the top: line 0 is y = 1 (row 1).
-    let vals = [1, 2, 3, -4, -5, -6];
+    let vals: [i64; 6] = [1, 2, 3, -4, -5, -6];
     let per_count = 24.576 / 65536.0 * 790.3658e-9;
     for bpp in [2usize, 4] {
         let raw: Vec<i64> = vals
@@ -146,7 +146,7 @@ fn nanoscope_map() {
     // The README's scale of the AFM file: 0.296 nm per count.
     assert!(close(per_count, 0.2964e-9, 1e-3), "{per_count}");
     // Truncated data: the byte offset of the end of the file.
-    let mut b = nanoscope(3, 2, 2, &vals.map(|v| v as i64), "Z scale");
+    let mut b = nanoscope(3, 2, 2, &vals, "Z scale");
     b.truncate(b.len() - 1);
     let e = parse_nanoscope(&b).unwrap_err();
     assert_eq!(
@@ -158,7 +158,7 @@ fn nanoscope_map() {
     );
     assert!(e.to_string().contains(&format!("offset {}", b.len())));
     // Malformed Z scale: the header line.
-    let b = nanoscope(3, 2, 2, &vals.map(|v| v as i64), "Z scale");
+    let b = nanoscope(3, 2, 2, &vals, "Z scale");
     let s =
         String::from_utf8_lossy(&b).replace("(0.000375 V/LSB) 24.576 V", "(0.000375 V/LSB) x V");
     assert!(matches!(

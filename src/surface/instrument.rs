@@ -168,10 +168,7 @@ pub fn parse_hfm(text: &str, spacing: Spacing) -> Result<Profile> {
         what: "unknown length unit in the .hfm unit line (expected e.g. `[mm]`)",
         line: 2,
     };
-    let sx = units
-        .first()
-        .and_then(|u| metres_per(u))
-        .ok_or(unknown.clone())?;
+    let sx = units.first().and_then(|u| metres_per(u)).ok_or(unknown)?;
     let sz = units.get(1).and_then(|u| metres_per(u)).ok_or(unknown)?;
     let (mut xs, mut zs, mut nums) = (Vec::new(), Vec::new(), Vec::new());
     for (line, l) in lines {
@@ -237,7 +234,7 @@ pub fn parse_dektak_csv(text: &str, spacing: Spacing) -> Result<Profile> {
                 what: "unknown unit in the Dektak `Lateral <unit>,<kind> <unit>` header",
                 line,
             };
-            let ux = metres_per(first[7..].trim()).ok_or(bad.clone())?;
+            let ux = metres_per(first[7..].trim()).ok_or(bad)?;
             let uz = f
                 .next()
                 .and_then(|s| s.split_whitespace().last())
@@ -288,9 +285,11 @@ pub fn parse_dektak_csv(text: &str, spacing: Spacing) -> Result<Profile> {
 
 // -------------------------------------------------------------- Nanoscope
 
-/// The header value of `key` (lower case) in a section's (key, value, line)
-/// list.
-fn di_get<'a>(sec: &'a [(String, String, u64)], key: &str) -> Option<(&'a str, u64)> {
+/// A Nanoscope header entry: key (lower case), value, 1-based line.
+type DiEntry = (String, String, u64);
+
+/// The header value of `key` (lower case) in a section's entries.
+fn di_get<'a>(sec: &'a [DiEntry], key: &str) -> Option<(&'a str, u64)> {
     sec.iter()
         .find(|(k, _, _)| k == key)
         .map(|(_, v, l)| (v.as_str(), *l))
@@ -304,7 +303,7 @@ fn di_get<'a>(sec: &'a [(String, String, u64)], key: &str) -> Option<(&'a str, u
 /// data block lies outside the file or has an unsupported pixel size.
 pub fn parse_nanoscope(bytes: &[u8]) -> Result<(Topography, String)> {
     // Header: latin-1 lines up to `\*File list end`.
-    let mut sections: Vec<(String, Vec<(String, String, u64)>)> = Vec::new();
+    let mut sections: Vec<(String, Vec<DiEntry>)> = Vec::new();
     let mut pos = 0usize;
     let mut line = 0u64;
     let mut ended = false;
@@ -357,12 +356,12 @@ pub fn parse_nanoscope(bytes: &[u8]) -> Result<(Topography, String)> {
             line: 0,
         });
     }
-    let scanner: Vec<(String, String, u64)> = sections
+    let scanner: Vec<DiEntry> = sections
         .iter()
         .filter(|(n, _)| n == "scanner list" || n == "ciao scan list")
         .flat_map(|(_, s)| s.iter().cloned())
         .collect();
-    let num = |sec: &[(String, String, u64)], key: &str, what: &'static str| -> Result<f64> {
+    let num = |sec: &[DiEntry], key: &str, what: &'static str| -> Result<f64> {
         let (v, l) = di_get(sec, key).ok_or(Error::Parse { what, line: 0 })?;
         v.split_whitespace()
             .next()
@@ -382,9 +381,9 @@ pub fn parse_nanoscope(bytes: &[u8]) -> Result<(Topography, String)> {
         let quantity = zs
             .find('[')
             .and_then(|a| zs[a + 1..].find(']').map(|b| &zs[a + 1..a + 1 + b]));
-        let after = zs.rfind(')').map(|k| &zs[k + 1..]).ok_or(bad_z.clone())?;
+        let after = zs.rfind(')').map(|k| &zs[k + 1..]).ok_or(bad_z)?;
         let mut t = after.split_whitespace();
-        let hard: f64 = t.next().and_then(|v| v.parse().ok()).ok_or(bad_z.clone())?;
+        let hard: f64 = t.next().and_then(|v| v.parse().ok()).ok_or(bad_z)?;
         let hard_unit = t.next().unwrap_or("V");
         let Some(q) = quantity else { continue };
         let key = format!("@{}", q.to_ascii_lowercase());
@@ -397,7 +396,7 @@ pub fn parse_nanoscope(bytes: &[u8]) -> Result<(Topography, String)> {
             what: "malformed soft scale `\\@quantity: V value unit/V`",
             line: sl,
         };
-        let sv: f64 = s.next().and_then(|v| v.parse().ok()).ok_or(bad_s.clone())?;
+        let sv: f64 = s.next().and_then(|v| v.parse().ok()).ok_or(bad_s)?;
         let Some((num_u, den_u)) = s.next().and_then(|u| u.split_once('/')) else {
             continue;
         };
