@@ -351,3 +351,48 @@ fn detection_by_extension_and_content() {
     ));
     std::fs::remove_dir_all(&d).ok();
 }
+
+// ---------------------------------------------------------- robustness
+
+#[test]
+fn hostile_headers_are_errors_not_panics() {
+    // Sizes that overflow or exceed the file.
+    let huge = String::from_utf8_lossy(&nanoscope(3, 2, 2, &[0; 6], "Z scale"))
+        .replace("Samps/line: 3", "Samps/line: 99999999999999999999")
+        .into_bytes();
+    assert!(matches!(parse_nanoscope(&huge), Err(Error::Binary { .. })));
+    let far = String::from_utf8_lossy(&nanoscope(3, 2, 2, &[0; 6], "Z scale"))
+        .replace("Data offset: 2048", "Data offset: 1e30")
+        .into_bytes();
+    assert!(parse_nanoscope(&far).is_err());
+    // A Dektak preamble with multi-byte characters before the data header.
+    let t = dektak("0.0,1,,\n0.2,2,,\n0.3,3,,\n").replace("Scan Type", "Résolution µm");
+    assert_eq!(parse_dektak_csv(&t, Spacing::Tolerant).unwrap().len(), 3);
+    // X3P with an absurd size: no allocation, an error.
+    let d = temp_dir("hostile");
+    let p = d.join("big.x3p");
+    let xml = main_xml("SUR", 4, 3, "D", 1.0, LINK)
+        .replace("<SizeX>4</SizeX>", "<SizeX>9000000000000000000</SizeX>");
+    write_x3p(&p, &xml, Some(&[0u8; 96]), false);
+    assert!(read_measurement(&p, Spacing::Strict).is_err());
+    std::fs::remove_dir_all(&d).ok();
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+    #[test]
+    fn arbitrary_bytes_never_panic(bytes in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..600)) {
+        let _ = parse_nanoscope(&bytes);
+        let _ = parse_x3p(&bytes);
+        let text = String::from_utf8_lossy(&bytes);
+        let _ = parse_hfm(&text, Spacing::Tolerant);
+        let _ = parse_dektak_csv(&text, Spacing::Tolerant);
+        // Mutations of valid files.
+        let mut di = nanoscope(3, 2, 2, &[1, 2, 3, 4, 5, 6], "Z scale");
+        for (k, b) in bytes.iter().enumerate().take(64) {
+            let i = (k * 37 + *b as usize * 11) % di.len();
+            di[i] = *b;
+        }
+        let _ = parse_nanoscope(&di);
+    }
+}

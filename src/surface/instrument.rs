@@ -229,7 +229,11 @@ pub fn parse_dektak_csv(text: &str, spacing: Spacing) -> Result<Profile> {
     for (line, l) in lines.by_ref() {
         let mut f = l.split(',').map(str::trim);
         let first = f.next().unwrap_or("");
-        if first.len() >= 7 && first[..7].eq_ignore_ascii_case("lateral") {
+        // `get` (not indexing): a non-ASCII field must not split a character.
+        if first
+            .get(..7)
+            .is_some_and(|h| h.eq_ignore_ascii_case("lateral"))
+        {
             let bad = Error::Parse {
                 what: "unknown unit in the Dektak `Lateral <unit>,<kind> <unit>` header",
                 line,
@@ -458,14 +462,25 @@ pub fn parse_nanoscope(bytes: &[u8]) -> Result<(Topography, String)> {
                 })
             }
         };
-        let need = nx * ny * bpp;
+        let too_big = Error::Binary {
+            what: "Samps/line x Number of lines x Bytes/pixel exceeds the file",
+            offset: offset as u64,
+        };
+        let need = nx
+            .checked_mul(ny)
+            .and_then(|v| v.checked_mul(bpp))
+            .filter(|&v| v <= bytes.len())
+            .ok_or(too_big)?;
         if need > length {
             return Err(Error::Binary {
                 what: "`\\Data length` is shorter than Samps/line x Number of lines x Bytes/pixel",
                 offset: offset as u64,
             });
         }
-        if offset + need > bytes.len() {
+        if offset
+            .checked_add(need)
+            .map_or(true, |end| end > bytes.len())
+        {
             return Err(Error::Binary {
                 what: "the data block runs past the end of the file",
                 offset: bytes.len() as u64,
@@ -515,7 +530,7 @@ fn xml_tag<'a>(xml: &'a str, name: &str) -> Option<&'a str> {
     while let Some(k) = xml[from..].find(&open) {
         let a = from + k + open.len();
         let next = xml[a..].chars().next()?;
-        if next == '>' || next.is_whitespace() {
+        if next == '>' || next == '/' || next.is_whitespace() {
             let body = a + xml[a..].find('>')? + 1;
             if xml[a..body].ends_with("/>") {
                 return Some("");
@@ -589,8 +604,10 @@ pub fn parse_x3p(bytes: &[u8]) -> Result<Surface> {
             "main.xml: SizeZ > 1 (several layers) is not supported",
         ));
     }
-    let n = nx * ny;
-    let mut z = Vec::with_capacity(n);
+    let n = nx
+        .checked_mul(ny)
+        .ok_or(missing("main.xml: SizeX x SizeY too large"))?;
+    let mut z = Vec::new();
     if let Some(link) = xml_tag(&xml, "PointDataLink") {
         let name = link.trim().to_string();
         let data = member(
@@ -604,7 +621,7 @@ pub fn parse_x3p(bytes: &[u8]) -> Result<Surface> {
             Some("D") | None => (8, 'D'),
             Some(_) => return Err(missing("main.xml: <CZ><DataType> must be I, L, F or D")),
         };
-        if data.len() < n * w {
+        if n.checked_mul(w).map_or(true, |need| data.len() < need) {
             return Err(Error::Binary {
                 what: "the point data are shorter than SizeX x SizeY values",
                 offset: data.len() as u64,

@@ -728,8 +728,8 @@ mod tests {
 
     #[test]
     fn small_wiggles_merge_into_the_preceding_part() {
-        // Peak, tiny dip below the line, peak, valley, peak: one peak-valley
-        // element (ISO 4287); in both directions also valley-peak.
+        // Peak, tiny dip below the line, peak, valley, peak: one complete
+        // peak-valley element.
         let d = [
             -1.0, 1.0, 2.0, 1.0, -0.01, 1.0, 2.0, 1.0, -1.0, -2.0, -1.0, 1.0, 2.0, -1.0,
         ];
@@ -738,11 +738,12 @@ mod tests {
             ..D4287
         };
         let (xs, zt) = elements(&d, 0.0, disc).unwrap();
-        // Leading valley (from 0 to the crossing at 0.5), peak to 7.5, valley
-        // to 10.5, peak to 12.667, last valley to 14: the peak-valley pairs
-        // are 0.5..10.5 and 10.5..14.
-        assert!((zt - 3.5).abs() < 1e-12, "{zt}");
-        assert!((xs - (10.0 + 3.5) / 2.0).abs() < 1e-12, "{xs}");
+        // Leading valley (from 0 to the crossing at 0.5, cut by the start),
+        // peak to 7.5 (the dip merged), valley to 10.5, peak to 12.667, last
+        // valley to 14 (cut by the end): the one complete peak-valley pair is
+        // 0.5..10.5.
+        assert!((zt - 4.0).abs() < 1e-12, "{zt}");
+        assert!((xs - 10.0).abs() < 1e-12, "{xs}");
         // Thresholds per sign: valleys need 1.5, so only the valley of depth
         // 2 counts; the peaks merge around it.
         let disc = Discrimination {
