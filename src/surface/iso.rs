@@ -31,11 +31,12 @@
 //!   nearly every parameter on a sampling length, and ISO 4288 §4.1 averages
 //!   over the sampling lengths. On a skewed profile the two differ: for the
 //!   Hommel scan of `shared/data/profiles` (quadratic form removed, λc =
-//!   0.8 mm, five sections) Rq is 22.7 nm over the evaluation length and
-//!   19.6 nm as the mean of the section values (the mean of square roots is
-//!   below the square root of the mean); Rsk 5.97 against 4.03, Rku 62.1
-//!   against 45.3. surfalize (Profile.Rq, Rsk, Rku; Rp, Rv, Rz with
-//!   `n_sections = 5`) follows the ISO 21920-2 column.
+//!   0.8 mm, five sections) Rq is 22.60 nm over the evaluation length and
+//!   19.57 nm as the mean of the section values (the mean of square roots
+//!   is below the square root of the mean); Rsk 5.974 against 4.027, Rku
+//!   62.62 against 45.30. surfalize (Profile.Rq, Rsk, Rku; Rp, Rv, Rz with
+//!   `n_sections = 5`) follows the ISO 21920-2 column: 22.7 nm, 5.97, 62.1
+//!   (`tests/surface_standards.rs` holds both within 1 %).
 //! * Integrals are sample means (each sample stands for one interval dx),
 //!   e.g. Rq for (1-5) (*Formulas*).
 //! * Profile elements (Rc, RSm): runs of the profile between mean-line
