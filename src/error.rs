@@ -69,6 +69,14 @@ pub enum Error {
         /// the text as a whole, e.g. too few lines).
         line: u64,
     },
+    /// A binary file or buffer does not have the expected format.
+    Binary {
+        /// What was expected (e.g. `"a zip local file header"`).
+        what: &'static str,
+        /// Byte offset in the file (or in the named archive member) where
+        /// the problem was found.
+        offset: u64,
+    },
 }
 
 /// `Result` with the library's [`Error`].
@@ -124,6 +132,9 @@ impl fmt::Display for Error {
             Error::Io { what, kind } => write!(f, "cannot read {what}: {kind}"),
             Error::Parse { what, line: 0 } => write!(f, "parse error: {what}"),
             Error::Parse { what, line } => write!(f, "parse error at line {line}: {what}"),
+            Error::Binary { what, offset } => {
+                write!(f, "malformed binary data at byte offset {offset}: {what}")
+            }
         }
     }
 }

@@ -13,8 +13,8 @@ use asperity::ffi::*;
 use asperity::statistics::{EmpiricalHeights, GreenwoodWilliamson, HeightDistribution, Zhuravlev};
 use asperity::surface::{
     gaussian_filter, hurst_fit, psd_windowed, remove_form, roughness_parameters, CantorBorodich,
-    FilterEnds, Form, MaterialRatioCurve, ParameterOptions, PeakStatistics, Profile, SelfAffine,
-    WeierstrassMandelbrot, Window,
+    Convention, FilterEnds, Form, MaterialRatioCurve, ParameterOptions, PeakStatistics, Profile,
+    SelfAffine, WeierstrassMandelbrot, Window,
 };
 use std::f64::consts::PI;
 use std::ffi::c_void;
@@ -101,7 +101,10 @@ fn roughness_equals_the_rust_api() {
     for (j, v) in z.iter_mut().enumerate() {
         *v += 1e-9 * j as f64 + 3e-6; // tilt and offset
     }
-    let opts = ParameterOptions::default();
+    let opts = ParameterOptions {
+        convention: Convention::Iso4287,
+        ..ParameterOptions::default()
+    };
     for (code, form) in [
         (ASPERITY_FORM_NONE, None),
         (ASPERITY_FORM_MEAN, Some(Form::Mean)),

@@ -32,7 +32,7 @@ pub(crate) fn status_of(e: &Error) -> i32 {
         Error::NotConverged { .. } => ASPERITY_ERR_NOT_CONVERGED,
         Error::OutOfDomain { .. } => ASPERITY_ERR_OUT_OF_DOMAIN,
         Error::Io { .. } => ASPERITY_ERR_IO,
-        Error::Parse { .. } => ASPERITY_ERR_PARSE,
+        Error::Parse { .. } | Error::Binary { .. } => ASPERITY_ERR_PARSE,
     }
 }
 

@@ -276,6 +276,8 @@ pub unsafe extern "C" fn asperity_roughness_parameters(
         };
         let options = ParameterOptions {
             sampling_length: (sampling_length != 0.0).then_some(sampling_length),
+            // The C entry point documents the ISO 4287 rules (section means).
+            convention: crate::surface::Convention::Iso4287,
             ..ParameterOptions::default()
         };
         let p = roughness_parameters(&z, dx, &options)?;

@@ -1,5 +1,8 @@
-//! ISO 4287 profile parameters (thesis 1.5.1), the material-ratio
-//! (Abbott–Firestone) curve, and areal parameters of maps (ISO 25178-2).
+//! Profile parameters in the two conventions users meet (ISO 21920-2:2021,
+//! the default, and ISO 4287:1997 with ISO 4288:1996; thesis 1.5.1), the
+//! material-ratio (Abbott–Firestone) curve, and areal parameters of maps
+//! (ISO 25178-2). The ISO 13565-2 and ISO 25178-2 functional parameters of
+//! the material-ratio curve (Rk, Sk, Vmp, …) are in [`super::material_ratio`].
 //!
 //! Conventions, for a profile z_j, j = 0..n, spacing dx:
 //!
@@ -7,29 +10,68 @@
 //!   (filter or form-remove it first: [`super::gaussian_filter`],
 //!   [`super::remove_form`]); the mean line is its least-squares level over
 //!   the evaluation length, z̄ = mean(z), and Z(x) = z − z̄.
-//! * Sampling lengths: with [`ParameterOptions::sampling_length`] = l, the
-//!   evaluation length is the first ⌊n·dx / l⌋ whole sampling lengths of
-//!   m = round(l/dx) samples (a remainder at the end is ignored); Rp, Rv, Rz,
-//!   Rc, Ra, Rq, Rsk, Rku, RSm and RΔq are computed in each sampling length and
-//!   averaged (ISO 4287 §4, ISO 4288 §4.1). Rt is over the evaluation length.
-//!   Without a sampling length the whole profile is one sampling length.
-//! * Integrals over a sampling length are sample means (each sample stands
-//!   for one interval dx), e.g. Rq for (1-5) (*Formulas*).
-//! * Profile elements (Rc, RSm): a peak (the profile above the mean line
-//!   between two crossings) with the valley that follows it. Peaks or valleys
-//!   lower than the height discrimination (default 10 % of Rz of the sampling
-//!   length) or narrower than the width discrimination (default 1 % of the
-//!   sampling length) count as part of the preceding valley or peak (ISO 4287
-//!   §3.2.8–3.2.9). Elements cut by a sampling-length boundary are ignored.
-//!   Rc and RSm are averaged over the sampling lengths that hold at least one
-//!   element, and are `None` when none does.
+//! * Sections (ISO 21920-2 "sections", ISO 4287 "sampling lengths"): with
+//!   [`ParameterOptions::sampling_length`] = l, the evaluation length is the
+//!   first ⌊n·dx / l⌋ whole sections of m = round(l/dx) samples (a remainder
+//!   at the end is ignored). Without a sampling length the whole profile is
+//!   one section. ISO 4288 and ISO 21920-3 tie l to the cut-off: l = λc,
+//!   five sections.
+//! * Which parameters are averaged over the sections ([`Convention`]):
+//!
+//!   | parameter | [`Convention::Iso21920`] (default) | [`Convention::Iso4287`] |
+//!   |---|---|---|
+//!   | Rp, Rv, Rz | mean of the section values | mean of the section values |
+//!   | Rt | evaluation length | evaluation length |
+//!   | Ra, Rq, Rsk, Rku, RΔq | evaluation length | mean of the section values |
+//!   | Rc, RSm | evaluation length | mean of the section values |
+//!
+//!   ISO 21920-2 evaluates the field parameters over the evaluation length
+//!   and keeps section means only for the peak/valley heights Rp, Rv, Rz
+//!   (whose evaluation-length forms are Rpt, Rvt, Rt). ISO 4287 defines
+//!   nearly every parameter on a sampling length, and ISO 4288 §4.1 averages
+//!   over the sampling lengths. On a skewed profile the two differ: for the
+//!   Hommel scan of `shared/data/profiles` (quadratic form removed, λc =
+//!   0.8 mm, five sections) Rq is 22.60 nm over the evaluation length and
+//!   19.57 nm as the mean of the section values (the mean of square roots
+//!   is below the square root of the mean); Rsk 5.974 against 4.027, Rku
+//!   62.62 against 45.30. surfalize (Profile.Rq, Rsk, Rku; Rp, Rv, Rz with
+//!   `n_sections = 5`) follows the ISO 21920-2 column: 22.7 nm, 5.97, 62.1
+//!   (`tests/surface_standards.rs` holds both within 1 %).
+//! * Integrals are sample means (each sample stands for one interval dx),
+//!   e.g. Rq for (1-5) (*Formulas*).
+//! * Profile elements (Rc, RSm): runs of the profile between mean-line
+//!   crossings (interpolated linearly) are peaks (Z > 0) or valleys. The runs
+//!   cut by the ends of the section or evaluation length count as a peak or
+//!   valley too (ISO 4287 §3.2.3, note), from or to the end of the last
+//!   sample's interval. A run lower than the height discrimination or
+//!   narrower than the width discrimination (default 1 % of the section
+//!   length) is counted as part of the preceding peak or valley
+//!   (ISO 4287 §3.2.8–3.2.9).
+//!   * ISO 4287: the height discrimination is 10 % of Rz of the sampling
+//!     length, for peaks and valleys alike; an element is a peak with the
+//!     valley that follows it; Rc and RSm are averaged over the sampling
+//!     lengths that hold an element.
+//!   * ISO 21920-2: the height discriminations are 10 % of Rp for peaks and
+//!     10 % of Rv for valleys; an element is a peak with the adjacent valley
+//!     in either order (evaluated in both directions), over the evaluation
+//!     length (as documented for ISO 21920-2 by Mahr's MarSurf manual; the
+//!     standard's text was not available here). Pairs with a part cut by an
+//!     end of the evaluation length are left out (counted in both directions
+//!     they would bias RSm low by about Λ/(2N) on N periods).
+//!
+//!   Why the ISO 4287 rule finds no element on strongly skewed scans: on the
+//!   Hommel roughness profile Rv ≈ 29 nm against Rz ≈ 229 nm, so almost no
+//!   valley reaches 10 % of Rz and no peak is followed by a significant
+//!   valley — Rc and RSm are `None` by the standard's own rule. Scaling the
+//!   valley threshold with Rv (ISO 21920-2) finds them.
 //! * Local slopes dZ/dX for RΔq use the seven-point formula of *Formulas*,
 //!   with the 5- and 3-point central formulas within
 //!   three samples of the ends and one-sided differences at the end points.
 //!
 //! # Formulas
 //!
-//! Over a sampling length of $m$ samples, $Z_j = z_j - \bar z$:
+//! Over a section (ISO 4287) or the evaluation length (ISO 21920-2) of $m$
+//! samples, $Z_j = z_j - \bar z$:
 //!
 //! $$R_a = \frac1m\sum_j \lvert Z_j\rvert, \qquad R_q = \sqrt{\frac1m\sum_j Z_j^2}, \qquad R_{sk} = \frac{1}{R_q^3}\\,\frac1m\sum_j Z_j^3, \qquad R_{ku} = \frac{1}{R_q^4}\\,\frac1m\sum_j Z_j^4,$$
 //!
@@ -37,22 +79,61 @@
 //!
 //! For $z = A\sin(2\pi x/\Lambda)$ over whole periods: $R_a = 2A/\pi$,
 //! $R_q = A/\sqrt2$, $R_{sk} = 0$, $R_{ku} = 1.5$, $R_{\Delta q} = \sqrt2\\,\pi A/\Lambda$,
-//! $R_{Sm} = \Lambda$.
+//! $R_{Sm} = \Lambda$, in both conventions.
 //!
 //! # References
 //!
+//! * ISO 21920-2:2021, *Geometrical product specifications (GPS) — Surface
+//!   texture: Profile — Part 2: Terms, definitions and surface texture
+//!   parameters*; ISO 21920-3:2021 (specification operators, section length
+//!   and number of sections).
 //! * ISO 4287:1997, *Geometrical Product Specifications (GPS) — Surface texture:
 //!   Profile method — Terms, definitions and surface texture parameters*.
 //! * ISO 4288:1996 (sampling lengths); ISO 25178-2:2012 (areal parameters).
+//! * Mahr, MarSurf software documentation (ISO 21920-2 parameters: Rp, Rv as
+//!   section means, Rpt, Rvt over the evaluation length, profile elements in
+//!   both directions with 10 % Rp / 10 % Rv thresholds).
+//! * surfalize (Python package, github.com/fredericjs/surfalize), `Profile`
+//!   parameters: the Hommel comparison above.
 //! * Thesis §1.5.1, (1-5).
 
 use super::{check_heights, mean, Topography};
 use crate::error::{check, Error, Result};
 use serde::{Deserialize, Serialize};
 
-/// ISO 4287 parameters of a profile (all lengths in m, slopes and shape
-/// factors dimensionless). Serialised with the ISO symbols as names (`Rp`,
-/// `Rv`, …, `RDq` for RΔq).
+/// Which standard's evaluation rules [`roughness_parameters`] follows (see
+/// the module docs for the table of what each averages over sections).
+/// Serialised as the standard's name, `"ISO 21920-2:2021"` or
+/// `"ISO 4287:1997"`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum Convention {
+    /// ISO 21920-2:2021 (the default): Ra, Rq, Rsk, Rku, RΔq, Rc, RSm over the
+    /// evaluation length; Rp, Rv, Rz section means; profile elements with
+    /// 10 % Rp / 10 % Rv height discrimination, in both directions.
+    #[default]
+    #[serde(rename = "ISO 21920-2:2021")]
+    Iso21920,
+    /// ISO 4287:1997 with ISO 4288:1996: every parameter but Rt on a
+    /// sampling length, averaged over the sampling lengths; profile elements
+    /// with 10 % Rz height discrimination, a peak and the following valley.
+    #[serde(rename = "ISO 4287:1997")]
+    Iso4287,
+}
+
+impl Convention {
+    /// The standard's name, as serialised (`"ISO 21920-2:2021"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Convention::Iso21920 => "ISO 21920-2:2021",
+            Convention::Iso4287 => "ISO 4287:1997",
+        }
+    }
+}
+
+/// Profile parameters (all lengths in m, slopes and shape factors
+/// dimensionless) in the [`Convention`] named by [`Self::convention`].
+/// Serialised with the ISO symbols as names (`Rp`, `Rv`, …, `RDq` for RΔq)
+/// and `convention`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct RoughnessParameters {
     /// Maximum profile peak height Rp = max Z within a sampling length (m).
@@ -95,10 +176,12 @@ pub struct RoughnessParameters {
     /// [`super::psd_hurst_exponent`]); `None` when not requested, the profile
     /// is too short, or the spectrum is not a power law over the fit band.
     pub psd_hurst_exponent: Option<f64>,
-    /// Sampling length used (m).
+    /// Sampling (section) length used (m).
     pub sampling_length: f64,
-    /// Number of sampling lengths averaged.
+    /// Number of sampling lengths (sections) in the evaluation length.
     pub sampling_lengths: usize,
+    /// The standard whose rules gave these values.
+    pub convention: Convention,
 }
 
 /// Options of [`roughness_parameters`].
@@ -107,14 +190,17 @@ pub struct ParameterOptions {
     /// Sampling length l (m); `None` = the whole profile is one sampling
     /// length. ISO 4288 ties l to the cut-off: l = λc, 5 sampling lengths.
     pub sampling_length: Option<f64>,
-    /// Height discrimination for profile elements (Rc, RSm), as a fraction of
-    /// Rz of the sampling length: ISO 4287 default 0.1.
+    /// Height discrimination for profile elements (Rc, RSm), as a fraction:
+    /// of Rz of the sampling length for ISO 4287, of Rp (peaks) and Rv
+    /// (valleys) for ISO 21920-2; default 0.1 in both.
     pub height_discrimination: f64,
     /// Width discrimination for profile elements, as a fraction of the
     /// sampling length: ISO 4287 default 0.01.
     pub width_discrimination: f64,
     /// Fit the Hurst exponent (one extra FFT); default `true`.
     pub hurst: bool,
+    /// Evaluation rules; default [`Convention::Iso21920`].
+    pub convention: Convention,
 }
 
 impl Default for ParameterOptions {
@@ -124,6 +210,7 @@ impl Default for ParameterOptions {
             height_discrimination: 0.1,
             width_discrimination: 0.01,
             hurst: true,
+            convention: Convention::Iso21920,
         }
     }
 }
@@ -147,80 +234,114 @@ pub(crate) fn slope_at(z: &[f64], i: usize, dx: f64) -> f64 {
     }
 }
 
-/// Profile elements of one sampling length: mean width Xs (in samples) and
-/// mean height Zt, or `None` without a complete element. `seg − zbar` are
-/// the heights from the mean line; `hd` the height discrimination (m), `wd`
-/// the width discrimination (samples).
+/// Height and width thresholds of profile elements, and which pairs form
+/// an element.
+#[derive(Clone, Copy)]
+struct Discrimination {
+    /// Minimum height of a peak (m).
+    peak: f64,
+    /// Minimum depth of a valley (m).
+    valley: f64,
+    /// Minimum width of a peak or valley (samples).
+    width: f64,
+    /// Valley–peak pairs count too (ISO 21920-2), not only peak–valley.
+    both_directions: bool,
+}
+
+/// Profile elements of `seg` (heights `seg − zbar` from the mean line): mean
+/// width Xs (in samples) and mean height Zt, or `None` without an element.
 ///
 /// Runs between mean-line crossings (crossings interpolated linearly) are
-/// peaks (Z > 0) or valleys. The incomplete runs at both ends of the
-/// sampling length are ignored: ISO 4287 §3.2.3 (note) counts the leading
-/// one as a peak or valley, but an element cut by the sampling-length
-/// boundary would bias RSm low (a sine would not give RSm = Λ).
-/// A run lower than `hd` or narrower than `wd` is counted as part of the
-/// preceding peak or valley (ISO 4287 §3.2.8–3.2.9, Annex); an element is a
-/// peak with the valley that follows it.
-fn elements(seg: &[f64], zbar: f64, hd: f64, wd: f64) -> Option<(f64, f64)> {
+/// peaks (Z > 0) or valleys; the runs cut by the ends count too (ISO 4287
+/// §3.2.3, note), the first from 0 and the last to `seg.len()` (each sample
+/// stands for one interval). A run lower than its height threshold or
+/// narrower than the width threshold is counted as part of the preceding
+/// peak or valley (ISO 4287 §3.2.8–3.2.9); a leading insignificant run is
+/// dropped. An element is a significant peak with the following significant
+/// valley (ISO 4287), or, with `both_directions`, any two adjacent
+/// significant parts neither of which touches an end (a pair cut by an end
+/// is shorter than a whole element, and counting pairs in both directions
+/// would weigh the cut ones twice).
+fn elements(seg: &[f64], zbar: f64, d: Discrimination) -> Option<(f64, f64)> {
     #[derive(Clone, Copy)]
     struct Part {
         up: bool,
         start: f64,
         end: f64,
         ext: f64,
+        /// Touches an end of `seg` (itself or a run merged into it).
+        cut: bool,
     }
     let mut parts: Vec<Part> = Vec::new();
+    let close = |run: Part, parts: &mut Vec<Part>| {
+        let h = if run.up { d.peak } else { d.valley };
+        if run.ext >= h && run.ext > 0.0 && run.end - run.start >= d.width {
+            match parts.last_mut() {
+                Some(p) if p.up == run.up => {
+                    p.end = run.end;
+                    p.ext = p.ext.max(run.ext);
+                    p.cut |= run.cut;
+                }
+                _ => parts.push(run),
+            }
+        } else if let Some(p) = parts.last_mut() {
+            p.end = run.end;
+            p.cut |= run.cut;
+        }
+    };
     let mut prev = seg[0] - zbar;
     let mut up = prev > 0.0;
-    let mut start: Option<f64> = None; // None while in the leading partial run
-    let mut ext = 0.0f64;
+    let mut start = 0.0;
+    let mut ext = prev.abs();
     for (j, &z) in seg.iter().enumerate().skip(1) {
         let dj = z - zbar;
         let u = dj > 0.0;
         if u != up {
             let x = (j - 1) as f64 + prev / (prev - dj);
-            if let Some(s) = start {
-                let run = Part {
+            close(
+                Part {
                     up,
-                    start: s,
+                    start,
                     end: x,
                     ext,
-                };
-                if run.ext >= hd && run.end - run.start >= wd {
-                    match parts.last_mut() {
-                        Some(p) if p.up == run.up => {
-                            p.end = run.end;
-                            p.ext = p.ext.max(run.ext);
-                        }
-                        _ => parts.push(run),
-                    }
-                } else if let Some(p) = parts.last_mut() {
-                    p.end = run.end;
-                }
-            }
-            start = Some(x);
+                    cut: start == 0.0,
+                },
+                &mut parts,
+            );
+            start = x;
             up = u;
             ext = 0.0;
         }
         ext = ext.max(dj.abs());
         prev = dj;
     }
+    close(
+        Part {
+            up,
+            start,
+            end: seg.len() as f64,
+            ext,
+            cut: true,
+        },
+        &mut parts,
+    );
     let (mut sx, mut sz, mut count) = (0.0, 0.0, 0usize);
-    let mut i = 0;
-    while i + 1 < parts.len() {
-        if parts[i].up && !parts[i + 1].up {
-            sx += parts[i + 1].end - parts[i].start;
-            sz += parts[i].ext + parts[i + 1].ext;
+    for w in parts.windows(2) {
+        // Pairs of complete parts only: a part cut by an end would bias Xs
+        // low.
+        let counted = !w[0].cut && !w[1].cut && (d.both_directions || (w[0].up && !w[1].up));
+        if counted {
+            sx += w[1].end - w[0].start;
+            sz += w[0].ext + w[1].ext;
             count += 1;
-            i += 2;
-        } else {
-            i += 1;
         }
     }
     (count > 0).then(|| (sx / count as f64, sz / count as f64))
 }
 
-/// ISO 4287 parameters of the profile `heights` (m) sampled at `dx` (m); see
-/// the module docs for the mean line, sampling lengths and discretisation.
+/// Profile parameters of `heights` (m) sampled at `dx` (m) in
+/// `options.convention` (ISO 21920-2 by default); see the module docs for the
+/// mean line, sections, what each convention averages, and discretisation.
 /// With `options.hurst`, also [`super::psd_hurst_exponent`] of the whole
 /// profile.
 ///
@@ -275,8 +396,13 @@ pub fn roughness_parameters(
     };
     let ev = &heights[..m * count];
     let zbar = mean(ev);
+    let iso4287 = options.convention == Convention::Iso4287;
+    let mf = m as f64;
+    // Section means (ISO 4287: all; ISO 21920-2: Rp, Rv, Rz).
     let (mut rp, mut rv, mut rz, mut ra, mut rq, mut rsk, mut rku, mut rdq) =
         (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    // Evaluation-length sums (ISO 21920-2).
+    let (mut t1, mut t2, mut t3, mut t4, mut tg) = (0.0, 0.0, 0.0, 0.0, 0.0);
     let (mut rc_sum, mut rsm_sum, mut n_elem) = (0.0, 0.0, 0usize);
     let (mut zmax, mut zmin) = (f64::NEG_INFINITY, f64::INFINITY);
     let ne = ev.len();
@@ -295,7 +421,6 @@ pub fn roughness_parameters(
             hi = hi.max(v);
             lo = lo.min(v);
         }
-        let mf = m as f64;
         let q = (s2 / mf).sqrt();
         if hi == lo {
             return Err(Error::OutOfDomain {
@@ -313,6 +438,7 @@ pub fn roughness_parameters(
         rq += q;
         rsk += s3 / mf / (q * q * q);
         rku += s4 / mf / (q * q * q * q);
+        (t1, t2, t3, t4) = (t1 + s1, t2 + s2, t3 + s3, t4 + s4);
         // Slopes: the evaluation length supplies neighbours across sampling
         // lengths; the lower-order stencils apply only at its two ends.
         let a = first.max(3).min(last);
@@ -331,35 +457,75 @@ pub fn roughness_parameters(
             sd += si / (60.0 * dx * 60.0 * dx);
         }
         rdq += (sd / mf).sqrt();
-        let hd = options.height_discrimination * (hi - lo);
-        let wd = options.width_discrimination * mf;
-        if let Some((xs, zt)) = elements(seg, zbar, hd, wd) {
-            rsm_sum += xs * dx;
-            rc_sum += zt;
-            n_elem += 1;
+        tg += sd;
+        if iso4287 {
+            let hd = options.height_discrimination * (hi - lo);
+            let d = Discrimination {
+                peak: hd,
+                valley: hd,
+                width: options.width_discrimination * mf,
+                both_directions: false,
+            };
+            if let Some((xs, zt)) = elements(seg, zbar, d) {
+                rsm_sum += xs * dx;
+                rc_sum += zt;
+                n_elem += 1;
+            }
         }
     }
     let c = count as f64;
+    let (rp, rv, rz) = (rp / c, rv / c, rz / c);
+    let (ra, rq, rsk, rku, rdq) = if iso4287 {
+        (ra / c, rq / c, rsk / c, rku / c, rdq / c)
+    } else {
+        let nf = ne as f64;
+        let q = (t2 / nf).sqrt();
+        (
+            t1 / nf,
+            q,
+            t3 / nf / (q * q * q),
+            t4 / nf / (q * q * q * q),
+            (tg / nf).sqrt(),
+        )
+    };
+    let (rc, rsm) = if iso4287 {
+        (
+            (n_elem > 0).then(|| rc_sum / n_elem as f64),
+            (n_elem > 0).then(|| rsm_sum / n_elem as f64),
+        )
+    } else {
+        let d = Discrimination {
+            peak: options.height_discrimination * rp,
+            valley: options.height_discrimination * rv,
+            width: options.width_discrimination * mf,
+            both_directions: true,
+        };
+        match elements(ev, zbar, d) {
+            Some((xs, zt)) => (Some(zt), Some(xs * dx)),
+            None => (None, None),
+        }
+    };
     let psd_hurst_exponent = if options.hurst {
         super::psd_hurst_exponent(heights, dx)?
     } else {
         None
     };
     Ok(RoughnessParameters {
-        rp: rp / c,
-        rv: rv / c,
-        rz: rz / c,
-        rc: (n_elem > 0).then(|| rc_sum / n_elem as f64),
+        rp,
+        rv,
+        rz,
+        rc,
         rt: zmax - zmin,
-        ra: ra / c,
-        rq: rq / c,
-        rsk: rsk / c,
-        rku: rku / c,
-        rsm: (n_elem > 0).then(|| rsm_sum / n_elem as f64),
-        rdq: rdq / c,
+        ra,
+        rq,
+        rsk,
+        rku,
+        rsm,
+        rdq,
         psd_hurst_exponent,
         sampling_length: m as f64 * dx,
         sampling_lengths: count,
+        convention: options.convention,
     })
 }
 
@@ -536,26 +702,61 @@ pub fn areal_parameters_grid(
 mod tests {
     use super::*;
 
+    const D4287: Discrimination = Discrimination {
+        peak: 0.2,
+        valley: 0.2,
+        width: 10.0,
+        both_directions: false,
+    };
+
     #[test]
     fn elements_of_a_sine() {
-        // 10 periods of 100 samples: complete elements span 100 samples.
+        // 10 periods of 100 samples: the elements, the cut ones at the ends
+        // included, tile the 1000 samples, so Xs = 100 in both conventions.
         let d: Vec<f64> = (0..1000)
             .map(|j| (2.0 * core::f64::consts::PI * j as f64 / 100.0 + 0.3).sin())
             .collect();
-        let (xs, zt) = elements(&d, 0.0, 0.2, 10.0).unwrap();
-        assert!((xs - 100.0).abs() < 1e-3, "{xs}");
-        assert!((zt - 2.0).abs() < 2e-3, "{zt}");
+        for both_directions in [false, true] {
+            let disc = Discrimination {
+                both_directions,
+                ..D4287
+            };
+            let (xs, zt) = elements(&d, 0.0, disc).unwrap();
+            assert!((xs - 100.0).abs() < 1e-3, "{xs}");
+            assert!((zt - 2.0).abs() < 0.02, "{zt}");
+        }
     }
 
     #[test]
     fn small_wiggles_merge_into_the_preceding_part() {
-        // Peak, tiny dip below the line, peak, valley: one element.
+        // Peak, tiny dip below the line, peak, valley, peak: one complete
+        // peak-valley element.
         let d = [
             -1.0, 1.0, 2.0, 1.0, -0.01, 1.0, 2.0, 1.0, -1.0, -2.0, -1.0, 1.0, 2.0, -1.0,
         ];
-        let (xs, zt) = elements(&d, 0.0, 0.2, 0.0).unwrap();
-        assert!((zt - 4.0).abs() < 1e-12);
-        // From the crossing at 0.5 to the crossing at 10.5.
+        let disc = Discrimination {
+            width: 0.0,
+            ..D4287
+        };
+        let (xs, zt) = elements(&d, 0.0, disc).unwrap();
+        // Leading valley (from 0 to the crossing at 0.5, cut by the start),
+        // peak to 7.5 (the dip merged), valley to 10.5, peak to 12.667, last
+        // valley to 14 (cut by the end): the one complete peak-valley pair is
+        // 0.5..10.5.
+        assert!((zt - 4.0).abs() < 1e-12, "{zt}");
+        assert!((xs - 10.0).abs() < 1e-12, "{xs}");
+        // Thresholds per sign: valleys need 1.5, so only the valley of depth
+        // 2 counts; the peaks merge around it.
+        let disc = Discrimination {
+            valley: 1.5,
+            both_directions: true,
+            ..disc
+        };
+        let (xs, zt) = elements(&d, 0.0, disc).unwrap();
+        // Peak 0.5..7.5 (the dip merged), valley 7.5..10.5, peak 10.5..14
+        // (the shallow last valley merged, so cut by the end): one complete
+        // pair, 0.5..10.5.
+        assert!((zt - 4.0).abs() < 1e-12, "{zt}");
         assert!((xs - 10.0).abs() < 1e-12, "{xs}");
     }
 }

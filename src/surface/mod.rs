@@ -9,6 +9,9 @@
 //! * [`read`]: text readers for `x,z` line scans and `x,y,z` or gridded maps
 //!   (comma, semicolon or whitespace separated, `#` comments), with an
 //!   explicit policy for slightly irregular spacing ([`Spacing`]).
+//! * [`instrument`]: instrument files — X3P (ISO 25178-72), Nanoscope `.di`,
+//!   Dektak CSV, Hommel `.hfm` — and [`read_measurement`], which picks the
+//!   reader by extension or content.
 //! * [`Form`] / [`MapForm`]: least-squares form removal (mean, linear,
 //!   quadratic; mean, plane, quadratic for maps).
 //!
@@ -16,9 +19,12 @@
 //!
 //! * [`filter`]: the ISO 16610-21 Gaussian mean-line filter;
 //!   [`areal_filter`]: the ISO 16610-61 areal Gaussian filter of maps.
-//! * [`iso`]: ISO 4287 profile parameters (Rp, Rv, Rz, Rc, Rt, Ra, Rq, Rsk,
-//!   Rku, RSm, RΔq) averaged over sampling lengths, the material-ratio
-//!   (Abbott–Firestone) curve, and areal Sa, Sq, Ssk, Sku, Sp, Sv, Sz, Sdq.
+//! * [`iso`]: profile parameters (Rp, Rv, Rz, Rc, Rt, Ra, Rq, Rsk, Rku, RSm,
+//!   RΔq) in the ISO 21920-2 (default) or ISO 4287 convention
+//!   ([`Convention`]), the material-ratio (Abbott–Firestone) curve, and
+//!   areal Sa, Sq, Ssk, Sku, Sp, Sv, Sz, Sdq.
+//! * [`material_ratio`](mod@material_ratio): ISO 13565-2 Rk, Rpk, Rvk, Mr1,
+//!   Mr2 and ISO 25178-2 Sk, Spk, Svk, Smr1, Smr2, Vmp, Vmc, Vvc, Vvv.
 //! * [`spectral`]: autocorrelation (thesis 1-6, 1-8) and one-sided power
 //!   spectral density (1-7) normalised so that Parseval holds exactly,
 //!   spectral moments (from the derivatives) and Nayak's bandwidth.
@@ -67,8 +73,10 @@ mod fft;
 pub mod filter;
 pub mod fractal;
 pub mod generate;
+pub mod instrument;
 pub mod iso;
 pub mod map_spectral;
+pub mod material_ratio;
 pub mod pattern;
 pub mod peaks;
 pub mod power_law;
@@ -83,11 +91,19 @@ pub use filter::{
 };
 pub use fractal::{box_counting_dimension, BoxCounting};
 pub use generate::{CantorBorodich, SelfAffine, WeierstrassMandelbrot};
+pub use instrument::{
+    parse_dektak_csv, parse_hfm, parse_measurement, parse_nanoscope, parse_x3p, read_measurement,
+    Measurement, Surface,
+};
 pub use iso::{
-    areal_parameters, areal_parameters_grid, roughness_parameters, ArealParameters,
+    areal_parameters, areal_parameters_grid, roughness_parameters, ArealParameters, Convention,
     MaterialRatioCurve, ParameterOptions, RoughnessParameters,
 };
 pub use map_spectral::{acf_2d, isotropy, psd_2d, Acf2d, Isotropy, Psd2d, Radial};
+pub use material_ratio::{
+    functional_parameters, functional_parameters_of, material_ratio_parameters,
+    FunctionalParameters, MaterialRatioParameters,
+};
 pub use pattern::{ks_statistics, ks_two_sample, representative_pattern, RepresentativePattern};
 pub use peaks::{peaks, summits, summits_grid, Peak, PeakStatistics, Summit};
 pub use power_law::{

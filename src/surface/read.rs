@@ -123,7 +123,7 @@ fn content_lines<'a>(
 
 /// Mean spacing, origin and relative deviation of `x` from the uniform grid;
 /// errors per `spacing`. `lines[j]` is the line of `x[j]` for messages.
-fn uniform_grid(x: &[f64], lines: &[u64], spacing: Spacing) -> Result<(f64, f64, f64)> {
+pub(crate) fn uniform_grid(x: &[f64], lines: &[u64], spacing: Spacing) -> Result<(f64, f64, f64)> {
     for j in 1..x.len() {
         if x[j] <= x[j - 1] {
             return Err(Error::Parse {

@@ -48,13 +48,33 @@ impl Detrend {
     }
 }
 
+/// The `convention` keyword: "iso21920" (default) or "iso4287".
+fn convention(obj: Option<&Bound<'_, PyAny>>) -> PyResult<s::Convention> {
+    let Some(o) = obj.filter(|o| !o.is_none()) else {
+        return Ok(s::Convention::Iso21920);
+    };
+    match string(o, "convention")?.as_str() {
+        "iso21920" => Ok(s::Convention::Iso21920),
+        "iso4287" => Ok(s::Convention::Iso4287),
+        x => Err(arg_error(
+            "convention",
+            format!("must be \"iso21920\" or \"iso4287\", got {x:?}"),
+        )),
+    }
+}
+
 fn err_text(e: impl std::fmt::Display) -> String {
     e.to_string()
 }
 
 /// The CLI's analysis of a line scan (src/bin/asperity/profile.rs,
 /// `analyse_line` and the JSON of `line_scan`), without `file` and `plots`.
-fn line_json(raw: &s::Profile, detrend: Detrend, cutoff: Option<f64>) -> Result<Value, String> {
+fn line_json(
+    raw: &s::Profile,
+    detrend: Detrend,
+    cutoff: Option<f64>,
+    convention: s::Convention,
+) -> Result<Value, String> {
     let detrended = match detrend {
         Detrend::None => raw.clone(),
         Detrend::Mean => raw.remove_form(s::Form::Mean).map_err(err_text)?,
@@ -83,10 +103,13 @@ fn line_json(raw: &s::Profile, detrend: Detrend, cutoff: Option<f64>) -> Result<
     };
     let options = s::ParameterOptions {
         sampling_length: cutoff,
+        convention,
         ..s::ParameterOptions::default()
     };
     let p = analysed.parameters(&options).map_err(err_text)?;
     let dx = analysed.dx();
+    let evaluated = p.sampling_lengths * (p.sampling_length / dx).round() as usize;
+    let k = s::material_ratio_parameters(&analysed.heights()[..evaluated]).map_err(err_text)?;
     // Moments from the derivatives; the rectangular-window ones (the end
     // jump of a non-periodic scan) only under names that say so.
     let moments = s::spectral_moments(analysed.heights(), dx).map_err(err_text)?;
@@ -99,6 +122,12 @@ fn line_json(raw: &s::Profile, detrend: Detrend, cutoff: Option<f64>) -> Result<
     let estimate = s::hurst_estimate(analysed.heights(), dx).map_err(err_text)?;
     let fit = estimate.fit;
     let mut v = serde_json::to_value(p).map_err(err_text)?;
+    if let (Some(o), Value::Object(k)) = (
+        v.as_object_mut(),
+        serde_json::to_value(k).map_err(err_text)?,
+    ) {
+        o.extend(k);
+    }
     let extra = json!({
         "kind": "profile",
         "detrend": detrend.name(),
@@ -151,7 +180,14 @@ fn map_json(t: s::Topography, detrend: Detrend, cutoff: Option<f64>) -> Result<V
     let acf_radial = s::acf_2d(&t).map_err(err_text)?.radial();
     let iso = s::isotropy(&t, 0.2).map_err(err_text)?;
     let scale = s::scale_dependent_map(&t).map_err(err_text)?;
+    let f = s::functional_parameters(&t).map_err(err_text)?;
     let mut v = serde_json::to_value(p).map_err(err_text)?;
+    if let (Some(o), Value::Object(f)) = (
+        v.as_object_mut(),
+        serde_json::to_value(f).map_err(err_text)?,
+    ) {
+        o.extend(f);
+    }
     let extra = json!({
         "kind": "map",
         "detrend": detrend.name(),
@@ -210,20 +246,26 @@ fn json_to_py(py: Python<'_>, v: &Value) -> PyResult<Py<PyAny>> {
 /// ``correlation_length_1e``, ``psd_fit``. ``x``: positions (m, 1-D array,
 /// uniform to within half a spacing) or the spacing dx (m, float); ``z``:
 /// heights (m). ``detrend``: ``"none"``, ``"mean"``, ``"linear"`` (ISO) or
-/// ``"quadratic"``; ``cutoff``: the Gaussian cut-off λc (m) or None.
+/// ``"quadratic"``; ``cutoff``: the Gaussian cut-off λc (m) or None;
+/// ``convention``: ``"iso21920"`` (ISO 21920-2, default: Ra, Rq, Rsk, Rku,
+/// RΔq, Rc, RSm over the evaluation length) or ``"iso4287"`` (averaged over
+/// the sampling lengths), named by the ``convention`` key. Also ``Rk Rpk Rvk
+/// Mr1 Mr2`` (ISO 13565-2, ratios as fractions).
 #[pyfunction]
-#[pyo3(signature = (x, z, detrend=None, cutoff=None))]
+#[pyo3(signature = (x, z, detrend=None, cutoff=None, convention=None))]
 fn profile_parameters(
     py: Python<'_>,
     x: &Bound<'_, PyAny>,
     z: &Bound<'_, PyAny>,
     detrend: Option<&Bound<'_, PyAny>>,
     cutoff: Option<&Bound<'_, PyAny>>,
+    convention: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Py<PyAny>> {
     let d = Detrend::parse(detrend)?;
     let c = real_opt(cutoff, "cutoff")?;
+    let k = self::convention(convention)?;
     let p = profile_arg(x, z)?;
-    let v = py.detach(|| line_json(&p, d, c)).map_err(any_err)?;
+    let v = py.detach(|| line_json(&p, d, c, k)).map_err(any_err)?;
     json_to_py(py, &v)
 }
 
@@ -286,38 +328,37 @@ fn topography_arg(
     })
 }
 
-/// analyze_profile_file(path, detrend="linear", cutoff=None) -> dict
+/// analyze_profile_file(path, detrend="linear", cutoff=None, convention="iso21920") -> dict
 ///
-/// ``asperity profile FILE --json`` without plots: reads a line scan (two
-/// columns x z, m) or a height map (grid with ``# dx_m=`` metadata, or x y z
+/// ``asperity profile FILE --json`` without plots: reads an instrument file
+/// (X3P, Nanoscope, Dektak CSV, Hommel .hfm) or plain text (a line scan,
+/// two columns x z in m, or a map: grid with ``# dx_m=`` metadata, or x y z
 /// triplets) and returns the same dict as ``profile_parameters`` /
 /// ``map_parameters`` with ``file`` (the path as given) and ``plots`` ([]).
 #[pyfunction]
-#[pyo3(signature = (path, detrend=None, cutoff=None))]
+#[pyo3(signature = (path, detrend=None, cutoff=None, convention=None))]
 fn analyze_profile_file(
     py: Python<'_>,
     path: std::path::PathBuf,
     detrend: Option<&Bound<'_, PyAny>>,
     cutoff: Option<&Bound<'_, PyAny>>,
+    convention: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Py<PyAny>> {
     let d = Detrend::parse(detrend)?;
     let c = real_opt(cutoff, "cutoff")?;
+    let k = self::convention(convention)?;
     let v = py
         .detach(|| -> Result<Value, String> {
-            let text = std::fs::read_to_string(&path)
-                .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-            let mut v = match s::parse_topography(&text, s::Spacing::Tolerant) {
-                Ok(t) => map_json(t, d, c)?,
-                Err(map_err) => match s::parse_profile(&text, s::Spacing::Tolerant) {
-                    Ok(p) => line_json(&p, d, c)?,
-                    Err(line_err) => {
-                        return Err(format!(
-                            "{}: not a line scan ({line_err}) nor a height map ({map_err})",
-                            path.display()
-                        ))
-                    }
-                },
+            let m = s::read_measurement(&path, s::Spacing::Tolerant)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            let mut v = match m.surface {
+                s::Surface::Map(t) => map_json(t, d, c)?,
+                s::Surface::Profile(p) => line_json(&p, d, c, k)?,
             };
+            if let Some(o) = v.as_object_mut() {
+                o.insert("format".into(), Value::String(m.format.name().into()));
+                o.insert("channel".into(), json!(m.channel));
+            }
             if let Some(o) = v.as_object_mut() {
                 o.insert("file".into(), Value::String(path.display().to_string()));
                 o.insert("plots".into(), Value::Array(vec![]));

@@ -73,12 +73,30 @@ def test_profile_parameters_equal_cli():
         p = asperity.read_profile(str(path))
         raw = np.loadtxt([l for l in path.read_text().splitlines() if l and l[0] not in "#x"], delimiter=",")
         arrays = asperity.profile_parameters(raw[:, 0].copy(), raw[:, 1].copy(), detrend=detrend, cutoff=cutoff)
-        del cli["file"], cli["plots"]
+        del cli["file"], cli["plots"], cli["format"], cli["channel"]
         assert_same(cli, arrays)
         assert p["z"].shape[0] == cli["points_read"]
     # Keys promised by the issue.
     for k in ["Ra", "Rq", "Rsk", "Rku", "RDq", "Rp", "Rv", "Rz", "Rt", "RSm", "Rc"]:
         assert k in arrays
+    for k in ["Rk", "Rpk", "Rvk", "Mr1", "Mr2", "convention"]:
+        assert k in arrays
+
+
+def test_profile_conventions():
+    # Sections of different amplitude: ISO 4287 averages the section Rq,
+    # ISO 21920-2 takes Rq over the evaluation length.
+    per, dx = 100, 1e-6
+    j = np.arange(5 * 4 * per)
+    z = (1.0 + j // (4 * per)) * 1e-6 * np.sin(2 * np.pi * j / per)
+    new = asperity.profile_parameters(dx, z, detrend="none", cutoff=None)
+    assert new["convention"] == "ISO 21920-2:2021"
+    assert new["Rq"] == pytest.approx(math.sqrt(11 / 2) * 1e-6, rel=1e-9)
+    old = asperity.profile_parameters(dx, z, detrend="none", convention="iso4287")
+    assert old["convention"] == "ISO 4287:1997"
+    assert old["Rq"] == pytest.approx(new["Rq"], rel=1e-12)  # one section: equal
+    with pytest.raises(ValueError, match="convention"):
+        asperity.profile_parameters(dx, z, convention="iso9999")
 
 
 def test_profile_of_a_sine():

@@ -12,9 +12,10 @@ use asperity::surface::{
     Radial, ScaleDependentMap,
 };
 use asperity::surface::{
-    hurst_estimate, parse_profile, parse_topography, psd_windowed, spectral_moments, FilterEnds,
-    Form, HurstFit, MapForm, MaterialRatioCurve, ParameterOptions, Profile, RoughnessParameters,
-    Spacing, SpectralMoments, Topography, Window,
+    functional_parameters, hurst_estimate, material_ratio_parameters, psd_windowed,
+    read_measurement, spectral_moments, Convention, FilterEnds, Form, FunctionalParameters,
+    HurstFit, MapForm, MaterialRatioCurve, MaterialRatioParameters, ParameterOptions, Profile,
+    RoughnessParameters, Spacing, SpectralMoments, Surface, Topography, Window,
 };
 use clap::{Args, ValueEnum};
 use plotters::coord::Shift;
@@ -52,13 +53,39 @@ impl Detrend {
     }
 }
 
+/// Which standard's evaluation rules the profile parameters follow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ConventionArg {
+    /// ISO 21920-2:2021: Ra, Rq, Rsk, Rku, RΔq, Rc, RSm over the evaluation
+    /// length; Rp, Rv, Rz averaged over the sections.
+    Iso21920,
+    /// ISO 4287:1997 / ISO 4288: every parameter but Rt averaged over the
+    /// sampling lengths.
+    Iso4287,
+}
+
+impl ConventionArg {
+    fn convention(self) -> Convention {
+        match self {
+            ConventionArg::Iso21920 => Convention::Iso21920,
+            ConventionArg::Iso4287 => Convention::Iso4287,
+        }
+    }
+}
+
 /// Arguments of `asperity profile`.
 #[derive(Args)]
 pub struct ProfileArgs {
-    /// A line scan (two columns `x z` in m, one optional header line) or a
-    /// height map (a grid with `# dx_m=` metadata, or `x y z` triplets), in
-    /// metres; comma, semicolon or whitespace separated, `#` comments.
+    /// A line scan or a height map: an instrument file (X3P `.x3p`,
+    /// Nanoscope `.di`/`.spm`/`.001`, Dektak CSV, Hommel `.hfm`, chosen by
+    /// extension or content) or plain text in metres (two columns `x z`, a
+    /// grid with `# dx_m=` metadata, or `x y z` triplets; comma, semicolon
+    /// or whitespace separated, `#` comments).
     file: PathBuf,
+    /// Evaluation rules of the profile parameters (named in the output):
+    /// ISO 21920-2 (default) or ISO 4287/4288.
+    #[arg(long, value_enum, default_value_t = ConventionArg::Iso21920)]
+    convention: ConventionArg,
     /// Print one JSON object (SI units, ISO names Rp … RDq) instead of the
     /// table.
     #[arg(long)]
@@ -86,33 +113,26 @@ pub struct ProfileArgs {
 /// Runs `asperity profile`.
 pub fn run(args: &ProfileArgs) -> Res<()> {
     let file = &args.file;
-    let text = std::fs::read_to_string(file)
-        .map_err(|e| format!("cannot read {}: {e}", file.display()))?;
     let bar = indicatif::ProgressBar::new_spinner();
     bar.set_message(format!("reading {}", file.display()));
     bar.enable_steady_tick(std::time::Duration::from_millis(120));
-    // A line scan never parses as a map (a map needs `dx_m` metadata or three
-    // columns), but a two-column grid with metadata would parse as a line
-    // scan: try the map first.
-    let data = match parse_topography(&text, Spacing::Tolerant) {
-        Ok(t) => Data::Map(t),
-        Err(map_err) => match parse_profile(&text, Spacing::Tolerant) {
-            Ok(p) => Data::Line(p),
-            Err(line_err) => {
-                bar.finish_and_clear();
-                return Err(format!(
-                    "{}: not a line scan ({line_err}) nor a height map ({map_err})",
-                    file.display()
-                )
-                .into());
-            }
-        },
+    let read = read_measurement(file, Spacing::Tolerant).map_err(|e| {
+        bar.finish_and_clear();
+        format!("{}: {e}", file.display())
+    });
+    let m = read?;
+    let source = Source {
+        format: m.format.name(),
+        channel: m.channel,
     };
-    drop(text);
+    let data = match m.surface {
+        Surface::Map(t) => Data::Map(t),
+        Surface::Profile(p) => Data::Line(p),
+    };
     bar.set_message("analysing");
     let result = match data {
-        Data::Line(p) => line_scan(args, p, &bar),
-        Data::Map(t) => map(args, t, &bar),
+        Data::Line(p) => line_scan(args, p, &bar, &source),
+        Data::Map(t) => map(args, t, &bar, &source),
     };
     bar.finish_and_clear();
     result
@@ -121,6 +141,12 @@ pub fn run(args: &ProfileArgs) -> Res<()> {
 enum Data {
     Line(Profile),
     Map(Topography),
+}
+
+/// The file's format and channel, for the output.
+struct Source {
+    format: &'static str,
+    channel: Option<String>,
 }
 
 /// Everything computed for a line scan.
@@ -142,13 +168,20 @@ struct LineAnalysis {
     /// The q^p moments of the rectangular-window PSD: for a non-periodic
     /// scan they measure the jump between its ends.
     rectangular: SpectralMoments,
+    /// ISO 13565-2 parameters of the evaluation length.
+    material_ratio: MaterialRatioParameters,
     correlation_length: Option<f64>,
     fit: Option<HurstFit>,
     /// Why there is no power-law fit.
     no_fit: Option<&'static str>,
 }
 
-fn analyse_line(raw: Profile, detrend: Detrend, cutoff: Option<f64>) -> Res<LineAnalysis> {
+fn analyse_line(
+    raw: Profile,
+    detrend: Detrend,
+    cutoff: Option<f64>,
+    convention: Convention,
+) -> Res<LineAnalysis> {
     let detrended = match detrend {
         Detrend::None => raw.clone(),
         Detrend::Mean => raw.remove_form(Form::Mean)?,
@@ -181,11 +214,13 @@ fn analyse_line(raw: Profile, detrend: Detrend, cutoff: Option<f64>) -> Res<Line
     };
     let options = ParameterOptions {
         sampling_length: cutoff,
+        convention,
         ..ParameterOptions::default()
     };
     let params = analysed.parameters(&options)?;
     let dx = analysed.dx();
     let evaluated = params.sampling_lengths * (params.sampling_length / dx).round() as usize;
+    let material_ratio = material_ratio_parameters(&analysed.heights()[..evaluated])?;
     let moments = spectral_moments(analysed.heights(), dx)?;
     let rectangular = analysed.psd()?.moments();
     let correlation_length = analysed
@@ -201,14 +236,20 @@ fn analyse_line(raw: Profile, detrend: Detrend, cutoff: Option<f64>) -> Res<Line
         params,
         moments,
         rectangular,
+        material_ratio,
         correlation_length,
         fit: estimate.fit,
         no_fit: estimate.reason,
     })
 }
 
-fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> Res<()> {
-    let a = analyse_line(raw, args.detrend, args.cutoff)?;
+fn line_scan(
+    args: &ProfileArgs,
+    raw: Profile,
+    bar: &indicatif::ProgressBar,
+    source: &Source,
+) -> Res<()> {
+    let a = analyse_line(raw, args.detrend, args.cutoff, args.convention.convention())?;
     let plots = match &args.svg {
         Some(prefix) => {
             bar.set_message("plotting");
@@ -223,8 +264,13 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
         let o = v
             .as_object_mut()
             .ok_or("RoughnessParameters is not a JSON object")?;
+        if let Value::Object(k) = serde_json::to_value(a.material_ratio)? {
+            o.extend(k);
+        }
         let extra = json!({
             "file": args.file.display().to_string(),
+            "format": source.format,
+            "channel": source.channel,
             "kind": "profile",
             "detrend": args.detrend.name(),
             "cutoff": args.cutoff,
@@ -264,6 +310,7 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
         (sig(v / s, 4), u)
     };
     let num = |v: f64| (sig(v, 4), "");
+    let pct = |v: f64| (sig(100.0 * v, 4), "%");
     let sci = |v: f64, u: &'static str| (format!("{v:.4e}"), u);
     outln!(
         "{}: line scan, {} points, dx = {}, length {}{}",
@@ -288,7 +335,12 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
         ),
         None => "no cut-off".to_string(),
     };
-    outln!("detrend {}, {filter}", args.detrend.name());
+    outln!(
+        "detrend {}, {filter}; {} rules, {} file",
+        args.detrend.name(),
+        p.convention.name(),
+        source.format
+    );
     outln!(
         "evaluation length {} = {} sampling length{} of {}",
         length_text(p.sampling_length * p.sampling_lengths as f64),
@@ -312,6 +364,23 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
             "mean width of profile elements",
         ),
         ("RDq", num(p.rdq), "root-mean-square slope RΔq"),
+        (
+            "Rk",
+            h(a.material_ratio.rk),
+            "core roughness depth (ISO 13565-2)",
+        ),
+        ("Rpk", h(a.material_ratio.rpk), "reduced peak height"),
+        ("Rvk", h(a.material_ratio.rvk), "reduced valley depth"),
+        (
+            "Mr1",
+            pct(a.material_ratio.mr1),
+            "material ratio at the top of the core",
+        ),
+        (
+            "Mr2",
+            pct(a.material_ratio.mr2),
+            "material ratio at the bottom of the core",
+        ),
         (
             "psd_hurst_exponent",
             p.psd_hurst_exponent.map_or(("n/a".to_string(), ""), num),
@@ -383,10 +452,20 @@ fn line_scan(args: &ProfileArgs, raw: Profile, bar: &indicatif::ProgressBar) -> 
     Ok(())
 }
 
-fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<()> {
+fn map(
+    args: &ProfileArgs,
+    t: Topography,
+    bar: &indicatif::ProgressBar,
+    source: &Source,
+) -> Res<()> {
     let read = format!(
-        "{}: height map, {} × {} points, dx = {}, dy = {}, {} × {}",
+        "{}: height map ({} file{}), {} × {} points, dx = {}, dy = {}, {} × {}",
         args.file.display(),
+        source.format,
+        source
+            .channel
+            .as_deref()
+            .map_or(String::new(), |c| format!(", channel {c}")),
         t.nx(),
         t.ny(),
         length_text(t.dx()),
@@ -417,6 +496,7 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
     };
     let ma = analyse_map(&t)?;
     let s = t.parameters()?;
+    let f: FunctionalParameters = functional_parameters(&t)?;
     let plots = match &args.svg {
         Some(prefix) => {
             bar.set_message("plotting");
@@ -435,8 +515,13 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
         let o = v
             .as_object_mut()
             .ok_or("ArealParameters is not a JSON object")?;
+        if let Value::Object(k) = serde_json::to_value(f)? {
+            o.extend(k);
+        }
         let extra = json!({
             "file": args.file.display().to_string(),
+            "format": source.format,
+            "channel": source.channel,
             "kind": "map",
             "detrend": args.detrend.name(),
             "points": t.heights().len(),
@@ -478,6 +563,9 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
     let (hs, hu) = length_unit(s.sz);
     let h = |v: f64| (sig(v / hs, 4), hu);
     let num = |v: f64| (sig(v, 4), "");
+    let pct = |v: f64| (sig(100.0 * v, 4), "%");
+    // m³/m² shown as ml/m² (ISO 25178-2's unit): 1 m³/m² = 10⁶ ml/m².
+    let vol = |v: f64| (sig(v * 1e6, 4), "ml/m²");
     let rows: Vec<(&str, (String, &str), &str)> = vec![
         ("Sa", h(s.sa), "arithmetic mean height"),
         ("Sq", h(s.sq), "root-mean-square height"),
@@ -487,6 +575,19 @@ fn map(args: &ProfileArgs, t: Topography, bar: &indicatif::ProgressBar) -> Res<(
         ("Sv", h(s.sv), "maximum pit depth"),
         ("Sz", h(s.sz), "maximum height Sp + Sv"),
         ("Sdq", num(s.sdq), "root-mean-square gradient"),
+        ("Sk", h(f.sk), "core height (ISO 25178-2)"),
+        ("Spk", h(f.spk), "reduced peak height"),
+        ("Svk", h(f.svk), "reduced dale height"),
+        ("Smr1", pct(f.smr1), "material ratio at the top of the core"),
+        (
+            "Smr2",
+            pct(f.smr2),
+            "material ratio at the bottom of the core",
+        ),
+        ("Vmp", vol(f.vmp), "peak material volume (p = 10 %)"),
+        ("Vmc", vol(f.vmc), "core material volume (10 % to 80 %)"),
+        ("Vvc", vol(f.vvc), "core void volume (10 % to 80 %)"),
+        ("Vvv", vol(f.vvv), "dale void volume (q = 80 %)"),
     ];
     print_rows(&rows);
     if let Some(lc) = args.cutoff {
