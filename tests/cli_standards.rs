@@ -68,18 +68,19 @@ fn conventions_and_instrument_files() {
         "{table}"
     );
     assert!(table.contains("Rk "), "{table}");
-    // A Nanoscope map by extension: 4 × 2, 16-bit.
+    // A Nanoscope map by extension: 4 × 3, 16-bit (3 × 3 is the smallest
+    // map the scale-dependent slope takes).
     let offset = 1024usize;
     let header = format!(
         "\\*File list\r\n\\*Scanner list\r\n\\@Sens. Zsens: V 100 nm/V\r\n\
-         \\*Ciao image list\r\n\\Data offset: {offset}\r\n\\Data length: 16\r\n\\Bytes/pixel: 2\r\n\
-         \\Samps/line: 4\r\n\\Number of lines: 2\r\n\\Scan Size: 4 2 ~m\r\n\
+         \\*Ciao image list\r\n\\Data offset: {offset}\r\n\\Data length: 24\r\n\\Bytes/pixel: 2\r\n\
+         \\Samps/line: 4\r\n\\Number of lines: 3\r\n\\Scan Size: 4 3 ~m\r\n\
          \\@2:Image Data: S [Height] \"Height\"\r\n\
          \\@2:Z scale: V [Sens. Zsens] (0.0003 V/LSB) 65.536 V\r\n\\*File list end\r\n"
     );
     let mut b = header.into_bytes();
     b.resize(offset, 0);
-    for v in [1i16, -2, 3, -4, 5, -6, 7, -8] {
+    for v in [1i16, -2, 3, -4, 5, -6, 7, -8, 9, -10, 11, -12] {
         b.extend_from_slice(&v.to_le_bytes());
     }
     let m = dir.join("map.001");
@@ -94,10 +95,11 @@ fn conventions_and_instrument_files() {
     assert_eq!(v["kind"], "map");
     assert_eq!(v["format"], "nanoscope");
     assert_eq!(v["channel"], "Height");
-    assert_eq!((v["nx"].as_u64(), v["ny"].as_u64()), (Some(4), Some(2)));
+    assert_eq!((v["nx"].as_u64(), v["ny"].as_u64()), (Some(4), Some(3)));
     assert!((num(&v, "dx") - 1e-6).abs() < 1e-18);
-    // 1 count = 65.536/65536 V × 100 nm/V = 0.1 nm: heights ±0.1…0.8 nm.
-    assert!((num(&v, "Sz") - 1.5e-9).abs() < 1e-15, "{}", v["Sz"]);
+    // 1 count = 65.536/65536 V × 100 nm/V = 0.1 nm: heights ±0.1…1.2 nm,
+    // mean −0.05 nm, so Sz = 1.1 + 1.2 nm.
+    assert!((num(&v, "Sz") - 2.3e-9).abs() < 1e-15, "{}", v["Sz"]);
     for k in [
         "Sk", "Spk", "Svk", "Smr1", "Smr2", "Vmp", "Vmc", "Vvc", "Vvv",
     ] {
