@@ -58,6 +58,8 @@
 
 #[path = "c_abi/abi.rs"]
 mod abi;
+#[path = "c_abi/afm.rs"]
+mod afm;
 #[path = "c_abi/common.rs"]
 mod common;
 #[path = "c_abi/contact.rs"]
@@ -582,6 +584,17 @@ pub enum Op {
         raw: [F; 16],
         nulls: Nulls,
     },
+    // AFM force curves (added last: the existing corpus keeps its meaning).
+    AfmFlagName(u32),
+    AfmAnalyze {
+        curve: afm::AfmSpec,
+        input_kind: Sel,
+        retract_start: u8,
+        spring_constant: F,
+        tip_radius: F,
+        model: Sel,
+        nulls: Nulls,
+    },
 }
 
 /// The handles and carried states of one input; all freed on drop.
@@ -695,6 +708,7 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
         | Op::TableFree { .. }
         | Op::TableReach { .. } => tabulated::call(ctx, op),
         Op::Fidelity { .. } => fidelity::call(op),
+        Op::AfmFlagName(_) | Op::AfmAnalyze { .. } => afm::call(op),
         Op::LjPullOff { .. } => lj_sphere::call(ctx, op),
         Op::Material { .. } => material::call(op),
         Op::FlagName(_)
