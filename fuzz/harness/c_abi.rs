@@ -38,7 +38,8 @@
 //! rods; sliders with more than 2^22 nano-asperities in all are built but not
 //! stepped; a Prandtl–Tomlinson increment expected to take more than 2·10⁴
 //! integration sub-steps (the library stops at 10⁶) runs once per input,
-//! like the other expensive calls.
+//! like the other expensive calls; `asperity_afm_analyze` gets at most 48
+//! points (it fits up to four laws by Levenberg–Marquardt).
 //!
 //! Shared by `fuzz/fuzz_targets/c_abi.rs` (libFuzzer) and
 //! `tests/fuzz_corpus.rs` (corpus replay on stable).
