@@ -21,6 +21,7 @@
 //! * [`contact`]: the laws, one file each, all implementing
 //!   [`contact::NormalContact`].
 //! * [`rescaling`] and [`indentation`]: Borodich rescaling, Galanov shapes, κ and d from measured curves, Oliver–Pharr, hardness numbers.
+//! * [`afm`]: AFM force–distance curves: baseline, contact point, jump-in, pull-off, adhesion energy, contact-law fits and the model the data support.
 //! * [`surface`]: profiles and maps, ISO 4287 parameters, ACF/PSD, generators.
 //! * [`statistics`]: Zhuravlev, Greenwood–Williamson and Kragelsky models.
 //! * [`friction`]: the slider geometry of the hierarchical friction model

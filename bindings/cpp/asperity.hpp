@@ -1301,6 +1301,32 @@ inline FrictionWork Friction::work() const
     return asperity_indentation_flag_name(bit);
 }
 
+/// `asperity_afm_analyze`: analyse an AFM force-distance curve, `position`
+/// (m) and `signal` (force N or deflection m, as `input_kind` says) of equal
+/// length, approach first and retract from `retract_start` (0: the turning
+/// point); `spring_constant` (N/m), `tip_radius` (m, 0 = unknown), `model`
+/// (`ASPERITY_AFM_MODEL_*`).
+[[nodiscard]] inline AsperityAfmResult afm_analyze(
+    span<const double> position, span<const double> signal, double spring_constant,
+    double tip_radius = 0.0, std::int32_t model = ASPERITY_AFM_MODEL_AUTO,
+    std::int32_t input_kind = ASPERITY_AFM_INPUT_FORCE, std::size_t retract_start = 0)
+{
+    const char* f = "asperity::afm_analyze";
+    const std::size_t n = position.size();
+    AsperityAfmResult result{};
+    check(asperity_afm_analyze(n, detail::required(position),
+                               detail::exactly(signal, n, f, "signal"), input_kind, retract_start,
+                               spring_constant, tip_radius, model, &result));
+    return result;
+}
+
+/// `asperity_afm_flag_name`: the code of AFM flag bit `bit` (0-based) as a
+/// static string, or NULL for a bit without a flag.
+[[nodiscard]] inline const char* afm_flag_name(std::uint32_t bit) noexcept
+{
+    return asperity_afm_flag_name(bit);
+}
+
 /// `asperity_rescaling_depth`: depth (m) at `load` (N) by Borodich
 /// rescaling (3-13) from the known point (`known_load`, `known_depth`).
 [[nodiscard]] inline double rescaling_depth(double kappa, double d, double lambda, double load,

@@ -214,6 +214,38 @@ module asperity
   !> Flag bit: the unloading stiffness moves by more than its standard error as the fit
   !> window's lower bound moves from 0.2 to 0.8 of P_max.
   integer(c_int32_t), parameter, public :: ASPERITY_INDENT_FLAG_WINDOW_DEPENDENT_STIFFNESS = 16384
+  !> AFM model selector: fit every model and recommend one.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_MODEL_AUTO = 0
+  !> AFM model selector: Hertz.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_MODEL_HERTZ = 1
+  !> AFM model selector: DMT.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_MODEL_DMT = 2
+  !> AFM model selector: JKR.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_MODEL_JKR = 3
+  !> AFM model selector: Maugis–Dugdale with the Lennard-Jones stress.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_MODEL_MAUGIS_DUGDALE = 4
+  !> AFM input signal: force (N, positive repulsive).
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_INPUT_FORCE = 0
+  !> AFM input signal: deflection (m); force = k · deflection.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_INPUT_DEFLECTION = 1
+  !> AFM flag bit: no tip radius; the fits give E*·√R and w·R.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_FLAG_RADIUS_UNKNOWN = 1
+  !> AFM flag bit: no jump-in on the approach.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_FLAG_NO_JUMP_IN = 2
+  !> AFM flag bit: the pull-off is within the noise of the baseline.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_FLAG_NO_ADHESION = 4
+  !> AFM flag bit: a free part shorter than 20 points.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_FLAG_SHORT_BASELINE = 8
+  !> AFM flag bit: approach and retract baselines differ (drag, drift).
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_FLAG_BASELINE_MISMATCH = 16
+  !> AFM flag bit: E* of the recommended fit is undetermined.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_FLAG_E_STAR_UNRESOLVED = 32
+  !> AFM flag bit: a model could not be fitted or did not converge.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_FLAG_FIT_FAILED = 64
+  !> AFM flag bit: the recommended model lies outside its Tabor range.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_FLAG_MODEL_OUTSIDE_TABOR_RANGE = 128
+  !> AFM flag bit: fewer than 10 retract points fitted.
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_FLAG_FEW_FIT_POINTS = 256
   !> Weir surface energy prefactor `K = 1/((m−2)(n−2))` (the default).
   integer(c_int32_t), parameter, public :: ASPERITY_WEIR_PLANE_SUM = 0
   !> Weir surface energy prefactor `K = 3/(mn)` (reproduces seed 001's 8.6 nN).
@@ -745,6 +777,88 @@ module asperity
     !> 1 when the segments came from the labels.
     integer(c_int32_t) :: segments_from_labels = 0_c_int32_t
   end type asperity_indentation_result
+
+  !> `AsperityAfmFit`: one fitted model (SI; 0 where not determined).
+  type, bind(c), public :: asperity_afm_fit
+    !> One of `ASPERITY_AFM_MODEL_*` (never AUTO).
+    integer(c_int32_t) :: model = 0_c_int32_t
+    !> 1 when the least-squares iteration converged.
+    integer(c_int32_t) :: converged = 0_c_int32_t
+    !> Contact modulus E* (Pa), for the given tip radius.
+    real(c_double) :: e_star = 0.0_c_double
+    !> Standard error of E* (Pa).
+    real(c_double) :: e_star_stderr = 0.0_c_double
+    !> E*·√R (Pa·m^½).
+    real(c_double) :: e_star_times_sqrt_radius = 0.0_c_double
+    !> Standard error of E*·√R.
+    real(c_double) :: e_star_times_sqrt_radius_stderr = 0.0_c_double
+    !> Work of adhesion w (J/m²), for the given tip radius.
+    real(c_double) :: work_of_adhesion = 0.0_c_double
+    !> Standard error of w (J/m²).
+    real(c_double) :: work_of_adhesion_stderr = 0.0_c_double
+    !> w·R (J/m).
+    real(c_double) :: work_of_adhesion_times_radius = 0.0_c_double
+    !> Standard error of w·R (J/m).
+    real(c_double) :: work_of_adhesion_times_radius_stderr = 0.0_c_double
+    !> Tabor parameter μ of the fit (z₀ = 0.3 nm).
+    real(c_double) :: tabor_parameter = 0.0_c_double
+    !> The law's load-controlled pull-off force (N).
+    real(c_double) :: pull_off_force = 0.0_c_double
+    !> Position of zero overlap (m).
+    real(c_double) :: zero_overlap_position = 0.0_c_double
+    !> Root-mean-square effective-variance residual (N).
+    real(c_double) :: rms_residual = 0.0_c_double
+    !> Points fitted.
+    integer(c_size_t) :: points = 0_c_size_t
+  end type asperity_afm_fit
+
+  !> `AsperityAfmResult`: result of `asperity_afm_analyze` (SI, never NaN).
+  type, bind(c), public :: asperity_afm_result
+    !> Pull-off force (N, negative), from the retract baseline.
+    real(c_double) :: pull_off_force = 0.0_c_double
+    !> Position of the pull-off (m).
+    real(c_double) :: pull_off_position = 0.0_c_double
+    !> Jump-in distance (m), 0 without jump-in.
+    real(c_double) :: jump_in_distance = 0.0_c_double
+    !> Force at the bottom of the jump-in dip (N).
+    real(c_double) :: jump_in_force = 0.0_c_double
+    !> Adhesion energy (J).
+    real(c_double) :: adhesion_energy = 0.0_c_double
+    !> Retract baseline: force (N) at the contact point.
+    real(c_double) :: baseline_offset = 0.0_c_double
+    !> Retract baseline: tilt (N/m).
+    real(c_double) :: baseline_slope = 0.0_c_double
+    !> Retract baseline: noise (N).
+    real(c_double) :: baseline_noise = 0.0_c_double
+    !> Approach baseline: force (N) at the contact point.
+    real(c_double) :: approach_baseline_offset = 0.0_c_double
+    !> Approach baseline: tilt (N/m).
+    real(c_double) :: approach_baseline_slope = 0.0_c_double
+    !> Contact point (m).
+    real(c_double) :: contact_point = 0.0_c_double
+    !> Spring constant used (N/m).
+    real(c_double) :: spring_constant = 0.0_c_double
+    !> +1 when the position grows towards the sample, −1 otherwise.
+    real(c_double) :: direction = 0.0_c_double
+    !> Tabor parameter of the recommended fit (0 when none).
+    real(c_double) :: tabor_parameter = 0.0_c_double
+    !> First and last index fitted (0-based).
+    integer(c_size_t) :: fit_range(2) = 0_c_size_t
+    !> 1 when a tip radius was given.
+    integer(c_int32_t) :: radius_known = 0_c_int32_t
+    !> The recommended model (`ASPERITY_AFM_MODEL_*`), 0 when none.
+    integer(c_int32_t) :: recommended_model = 0_c_int32_t
+    !> Its 0-based index in `fits`, −1 when none.
+    integer(c_int32_t) :: recommended_index = 0_c_int32_t
+    !> Number of entries of `fits` in use.
+    integer(c_int32_t) :: n_fits = 0_c_int32_t
+    !> `ASPERITY_AFM_FLAG_*` bits.
+    integer(c_int32_t) :: flags = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+    !> The fitted models, cheapest first.
+    type(asperity_afm_fit) :: fits(4)
+  end type asperity_afm_result
 
   !> `AsperityLugreParams`: the LuGre model's parameters (SI).
   type, bind(c), public :: asperity_lugre_params
@@ -1816,6 +1930,35 @@ module asperity
       integer(c_int32_t), value :: bit
       type(c_ptr) :: r
     end function c_asperity_indentation_flag_name
+
+    !> Analyse an AFM force–distance curve of `n` points: `position` (m), `signal` (force N or
+    !  deflection m, as `input_kind` says), approach first and retract from `retract_start` (0:
+    !  the turning point); `spring_constant` (N/m), `tip_radius` (m, 0 = unknown), `model`
+    !  (`ASPERITY_AFM_MODEL_*`). See `afm::analyze`.
+    function c_asperity_afm_analyze(n, position, signal, input_kind, retract_start, &
+        spring_constant, tip_radius, model, result) result(r) bind(c, name="asperity_afm_analyze")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: position(*)
+      real(c_double), intent(in) :: signal(*)
+      integer(c_int32_t), value :: input_kind
+      integer(c_size_t), value :: retract_start
+      real(c_double), value :: spring_constant
+      real(c_double), value :: tip_radius
+      integer(c_int32_t), value :: model
+      type(asperity_afm_result), intent(inout) :: result
+      integer(c_int32_t) :: r
+    end function c_asperity_afm_analyze
+
+    !> The code of AFM flag bit `bit` (0-based) as a static NUL-terminated string; NULL for a
+    !  bit without a flag. Do not free.
+    function c_asperity_afm_flag_name(bit) result(r) bind(c, name="asperity_afm_flag_name")
+      import
+      implicit none
+      integer(c_int32_t), value :: bit
+      type(c_ptr) :: r
+    end function c_asperity_afm_flag_name
 
     !> Depth (m) at load `load` (N) by Borodich rescaling (3-13): `δ = λ^{(2−κ)/s} (P/P₁)^{d/s}
     !  δ₁`, `s = 2 + κ(d − 1)`, from the known point (P₁, δ₁); λ = B/B₁ (spheres R₁/R, cones tan
@@ -3184,6 +3327,8 @@ module asperity
   public :: c_asperity_indentation_default_options
   public :: c_asperity_indentation_fit
   public :: c_asperity_indentation_flag_name
+  public :: c_asperity_afm_analyze
+  public :: c_asperity_afm_flag_name
   public :: c_asperity_rescaling_depth
   public :: c_asperity_rescaling_radius
   public :: c_asperity_rescaling_load
@@ -3342,6 +3487,8 @@ module asperity
   public :: asperity_indentation_default_options
   public :: asperity_indentation_fit
   public :: asperity_indentation_flag_name
+  public :: asperity_afm_analyze
+  public :: asperity_afm_flag_name
   public :: asperity_rescaling_depth
   public :: asperity_rescaling_radius
   public :: asperity_rescaling_load
@@ -4744,6 +4891,45 @@ contains
     character(len=:), allocatable :: name
     name = c_string(c_asperity_indentation_flag_name(bit))
   end function asperity_indentation_flag_name
+
+  !> Analyse an AFM force–distance curve of `size(position)` points: `signal` is the force (N)
+  !> or, with `input_kind = ASPERITY_AFM_INPUT_DEFLECTION`, the deflection (m); `tip_radius`
+  !> (m, default 0 = unknown), `model` (default AUTO) and `retract_start` (default 0: the
+  !> turning point) are optional.
+  subroutine asperity_afm_analyze(position, signal, spring_constant, result, tip_radius, model, &
+      input_kind, retract_start, status)
+    real(c_double), intent(in) :: position(:), signal(:)
+    real(c_double), intent(in) :: spring_constant
+    type(asperity_afm_result), intent(out) :: result
+    real(c_double), intent(in), optional :: tip_radius
+    integer(c_int32_t), intent(in), optional :: model, input_kind
+    integer(c_size_t), intent(in), optional :: retract_start
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_afm_analyze'
+    real(c_double) :: r
+    integer(c_int32_t) :: m, k
+    integer(c_size_t) :: rs
+    integer :: n
+    n = size(position)
+    if (too_small(what, 'signal', size(signal), n, 'the size of `position`', status)) return
+    r = 0.0_c_double
+    if (present(tip_radius)) r = tip_radius
+    m = ASPERITY_AFM_MODEL_AUTO
+    if (present(model)) m = model
+    k = ASPERITY_AFM_INPUT_FORCE
+    if (present(input_kind)) k = input_kind
+    rs = 0_c_size_t
+    if (present(retract_start)) rs = retract_start
+    call check(c_asperity_afm_analyze(int(n, c_size_t), position, signal, k, rs, &
+        spring_constant, r, m, result), what, status)
+  end subroutine asperity_afm_analyze
+
+  !> The code of AFM flag bit `bit` ('' for a bit without a flag).
+  function asperity_afm_flag_name(bit) result(name)
+    integer(c_int32_t), intent(in) :: bit
+    character(len=:), allocatable :: name
+    name = c_string(c_asperity_afm_flag_name(bit))
+  end function asperity_afm_flag_name
 
   !> Depth (m) at `load` (N) by Borodich rescaling (3-13).
   subroutine asperity_rescaling_depth(kappa, d, lambda, load, known_load, known_depth, depth, &

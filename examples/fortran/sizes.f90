@@ -41,6 +41,8 @@ program sizes
   type(asperity_friction_response) :: friction_response
   type(asperity_indentation_options) :: indentation_options
   type(asperity_indentation_result) :: indentation_result
+  type(asperity_afm_fit) :: afm_fit
+  type(asperity_afm_result) :: afm_result
   type(asperity_slider_info) :: slider_info
   type(asperity_slider_record) :: slider_record
   type(asperity_slider_options) :: slider_options
@@ -83,6 +85,8 @@ program sizes
   call row('AsperityFrictionResponse', c_sizeof(friction_response))
   call row('AsperityIndentationOptions', c_sizeof(indentation_options))
   call row('AsperityIndentationResult', c_sizeof(indentation_result))
+  call row('AsperityAfmFit', c_sizeof(afm_fit))
+  call row('AsperityAfmResult', c_sizeof(afm_result))
   call row('AsperitySliderInfo', c_sizeof(slider_info))
   call row('AsperitySliderRecord', c_sizeof(slider_record))
   call row('AsperitySliderOptions', c_sizeof(slider_options))

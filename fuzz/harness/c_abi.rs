@@ -38,7 +38,8 @@
 //! rods; sliders with more than 2^22 nano-asperities in all are built but not
 //! stepped; a Prandtl–Tomlinson increment expected to take more than 2·10⁴
 //! integration sub-steps (the library stops at 10⁶) runs once per input,
-//! like the other expensive calls.
+//! like the other expensive calls; `asperity_afm_analyze` gets at most 48
+//! points (it fits up to four laws by Levenberg–Marquardt).
 //!
 //! Shared by `fuzz/fuzz_targets/c_abi.rs` (libFuzzer) and
 //! `tests/fuzz_corpus.rs` (corpus replay on stable).
@@ -58,6 +59,8 @@
 
 #[path = "c_abi/abi.rs"]
 mod abi;
+#[path = "c_abi/afm.rs"]
+mod afm;
 #[path = "c_abi/common.rs"]
 mod common;
 #[path = "c_abi/contact.rs"]
@@ -594,6 +597,17 @@ pub enum Op {
         raw: [F; 16],
         nulls: Nulls,
     },
+    // AFM force curves (added last: the existing corpus keeps its meaning).
+    AfmFlagName(u32),
+    AfmAnalyze {
+        curve: afm::AfmSpec,
+        input_kind: Sel,
+        retract_start: u8,
+        spring_constant: F,
+        tip_radius: F,
+        model: Sel,
+        nulls: Nulls,
+    },
 }
 
 /// The handles and carried states of one input; all freed on drop.
@@ -707,6 +721,7 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
         | Op::TableFree { .. }
         | Op::TableReach { .. } => tabulated::call(ctx, op),
         Op::Fidelity { .. } => fidelity::call(op),
+        Op::AfmFlagName(_) | Op::AfmAnalyze { .. } => afm::call(op),
         Op::LjPullOff { .. } => lj_sphere::call(ctx, op),
         Op::Material { .. } => material::call(op),
         Op::FlagName(_)
