@@ -57,7 +57,8 @@ use std::path::{Path, PathBuf};
 pub mod models;
 
 pub use models::{
-    run_along, BristlesSpec, BurridgeKnopoffSpec, DynamicModelSpec, FrictionModelSpec, LuGreSpec,
+    run_along, BristlesSpec, BurridgeKnopoffSpec, DynamicModelSpec, FrictionModelSpec,
+    GeneralizedMaxwellSlipSpec, LuGreSpec,
     MaxwellSlipSpec, PrandtlTomlinsonSpec, PrandtlTomlinsonTwoSpringSpec, TrackRun, TrackStep,
     TrackSummary,
 };

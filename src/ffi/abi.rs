@@ -68,6 +68,7 @@ const TYPES: &[TypeLayout] = crate::contact::normal_laws!(layouts!(
     "AsperitySliderOptions" => super::slider::AsperitySliderOptions,
     "AsperityFrictionMaterial" => crate::friction::FrictionMaterial,
     "AsperityLugreParams" => super::dynamic::AsperityLugreParams,
+    "AsperityGeneralizedMaxwellSlipParams" => super::dynamic::AsperityGeneralizedMaxwellSlipParams,
     "AsperityPrandtlTomlinsonTwoSpringParams" => super::dynamic::AsperityPrandtlTomlinsonTwoSpringParams,
     "AsperityBurridgeKnopoffParams" => super::dynamic::AsperityBurridgeKnopoffParams,
 ));

@@ -585,6 +585,9 @@ class LuGre(FrictionLaw):
 class MaxwellSlip(FrictionLaw):
     def __init__(self, **parameters: Any) -> None: ...
 
+class GeneralizedMaxwellSlip(FrictionLaw):
+    def __init__(self, **parameters: Any) -> None: ...
+
 class PrandtlTomlinson(FrictionLaw):
     def __init__(self, **parameters: Any) -> None: ...
 
