@@ -129,7 +129,8 @@
 // position b (m, NaN: none), the dissipation by mechanism (J), the n rod
 // heights (m), the n rods' stored energies (J). LuGre: the bristle
 // deflection z (x, y; m). Maxwell-slip: the element deflections (x, y per
-// element; m). Bristles: the bristle deflections (m). Prandtl-Tomlinson:
+// element; m). Generalised Maxwell-slip: per element the force per unit
+// normal force and the mode (0 sticking, +-1 slipping). Bristles: the bristle deflections (m). Prandtl-Tomlinson:
 // x - x_s (m), tip velocity (m/s), support position x_s (m), then with two
 // springs the cantilever body's x_c - x_s (m) and velocity (m/s).
 // Burridge-Knopoff: x_i - x_d (m) and v_i (m/s) per block, then the driver
@@ -682,6 +683,24 @@ typedef struct AsperityLugreParams {
     // Viscous coefficient sigma_2 (N s/m), finite and >= 0.
     double sigma2;
 } AsperityLugreParams;
+
+// The generalised Maxwell-slip model's Stribeck curve and rates (see
+// `GeneralizedMaxwellSlip::new`; the elements come as arrays). SI units.
+typedef struct AsperityGeneralizedMaxwellSlipParams {
+    // Coulomb coefficient mu_c of the Stribeck curve, finite and > 0.
+    double mu_coulomb;
+    // Static coefficient mu_s of the Stribeck curve, finite and > 0.
+    double mu_static;
+    // Stribeck velocity v_s (m/s), finite and > 0.
+    double stribeck_velocity;
+    // Stribeck exponent delta, finite and > 0 (2: Gaussian).
+    double stribeck_exponent;
+    // Attraction rate C of the slip law per unit normal force (1/s), > 0;
+    // +infinity for the instantaneous limit.
+    double attraction;
+    // Viscous coefficient sigma_2 (N s/m), finite and >= 0.
+    double sigma2;
+} AsperityGeneralizedMaxwellSlipParams;
 
 // The two-spring (tip-cantilever) Prandtl-Tomlinson model's parameters
 // (see `PrandtlTomlinson::two_spring`). SI units.
@@ -1572,6 +1591,19 @@ int32_t asperity_friction_maxwell_slip_new(const double *stiffness,
                                            double sigma2,
                                            struct AsperityFriction **out);
 
+// Build the generalised Maxwell-slip model (Al-Bender, Lampaert and
+// Swevers 2005): `n` >= 1 elements of stiffnesses `stiffness[i]` (1/m per
+// unit normal force, > 0) and weights `weight[i]` (>= 0) whose slip is
+// attracted to their share weight[i] s(v) of the Stribeck curve of
+// `*params`. One-dimensional: increments need `slip[1]` = 0, and dt > 0
+// with a non-zero slip. Writes a new handle to `*out` (NULL on failure);
+// errors name the array or the field (`params.attraction`, ...).
+int32_t asperity_friction_generalized_maxwell_slip_new(const double *stiffness,
+                                                       const double *weight,
+                                                       size_t n,
+                                                       const struct AsperityGeneralizedMaxwellSlipParams *params,
+                                                       struct AsperityFriction **out);
+
 // Build `n` >= 1 bristles (Haessig and Friedland 1991): stiffnesses
 // `stiffness[i]` (1/m per unit normal force, > 0) and break deflections
 // `break_deflection[i]` (m, > 0), viscous coefficient `sigma2`
@@ -1715,7 +1747,8 @@ int32_t asperity_friction_from_slider(const struct AsperitySlider *slider,
 void asperity_friction_free(struct AsperityFriction *law);
 
 // Write the number of doubles of one point's state to `*n` (homogenised:
-// 9; slider: 9 + 2 x rods; LuGre: 4; Maxwell-slip: 2 + 2 x elements;
+// 9; slider: 9 + 2 x rods; LuGre: 4; Maxwell-slip and generalised
+// Maxwell-slip: 2 + 2 x elements;
 // bristles: 2 + bristles; Prandtl-Tomlinson: 5, with two springs 7;
 // Burridge-Knopoff: 3 + 2 x blocks).
 int32_t asperity_friction_state_size(const struct AsperityFriction *law,

@@ -58,9 +58,8 @@ pub mod models;
 
 pub use models::{
     run_along, BristlesSpec, BurridgeKnopoffSpec, DynamicModelSpec, FrictionModelSpec,
-    GeneralizedMaxwellSlipSpec, LuGreSpec,
-    MaxwellSlipSpec, PrandtlTomlinsonSpec, PrandtlTomlinsonTwoSpringSpec, TrackRun, TrackStep,
-    TrackSummary,
+    GeneralizedMaxwellSlipSpec, LuGreSpec, MaxwellSlipSpec, PrandtlTomlinsonSpec,
+    PrandtlTomlinsonTwoSpringSpec, TrackRun, TrackStep, TrackSummary,
 };
 
 /// Most samples a scene's generated (`self_affine`) profile may ask for:

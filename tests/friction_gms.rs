@@ -112,7 +112,10 @@ fn presliding_hysteresis_obeys_the_masing_rules_with_non_local_memory() {
     let f = walk(&m, n, &xs, 0.3e-6, v);
     for (x, f) in xs.iter().zip(&f) {
         let want = m.virgin_force(n, *x, v);
-        assert!((f - want).abs() <= 1e-12 * want, "virgin at {x}: {f} vs {want}");
+        assert!(
+            (f - want).abs() <= 1e-12 * want,
+            "virgin at {x}: {f} vs {want}"
+        );
     }
     // Reversal at x_r: F(x) = F(x_r) − 2 F_v((x_r − x)/2).
     let xr = 9e-6;
@@ -123,7 +126,10 @@ fn presliding_hysteresis_obeys_the_masing_rules_with_non_local_memory() {
     let fr = m.virgin_force(n, xr, v);
     for (x, got) in back.iter().zip(&f[1..]) {
         let want = fr - 2.0 * m.virgin_force(n, (xr - x) / 2.0, v);
-        assert!((got - want).abs() <= 1e-12 * fr, "reversal at {x}: {got} vs {want}");
+        assert!(
+            (got - want).abs() <= 1e-12 * fr,
+            "reversal at {x}: {got} vs {want}"
+        );
     }
     // A closed inner loop is forgotten; an open one is remembered.
     let f = walk(&m, n, &[6e-6, 2e-6, 6e-6, 8e-6, 10e-6], 0.2e-6, v);
@@ -148,7 +154,10 @@ fn steady_sliding_follows_the_stribeck_curve_over_decades_of_speed() {
         let ds = 1e-6;
         let mut r = None;
         for _ in 0..1000 {
-            r = Some(m.step_in_place(&mut s, &inc(n, ds, ds / v), &mut m.work()).unwrap());
+            r = Some(
+                m.step_in_place(&mut s, &inc(n, ds, ds / v), &mut m.work())
+                    .unwrap(),
+            );
         }
         let r = r.unwrap();
         // Σα = 1: F_ss = N s(v) + σ₂v.
@@ -219,15 +228,22 @@ fn an_increment_split_in_two_at_the_same_speed_is_the_whole() {
     let mut seed = 3;
     let mut s = vec![0.0; m.state_len()];
     for step in 0..2000 {
-        let v = 10f64.powf(-6.0 + 4.0 * rng(&mut seed)) * if rng(&mut seed) < 0.4 { -1.0 } else { 1.0 };
+        let v =
+            10f64.powf(-6.0 + 4.0 * rng(&mut seed)) * if rng(&mut seed) < 0.4 { -1.0 } else { 1.0 };
         let ds = v.signum() * 6e-6 * rng(&mut seed);
         let dt = ds / v;
         let n = 1.0 + rng(&mut seed);
         let mut whole = s.clone();
-        let rw = m.step_in_place(&mut whole, &inc(n, ds, dt), &mut m.work()).unwrap();
+        let rw = m
+            .step_in_place(&mut whole, &inc(n, ds, dt), &mut m.work())
+            .unwrap();
         let mut half = s.clone();
-        let r1 = m.step_in_place(&mut half, &inc(n, ds / 2.0, dt / 2.0), &mut m.work()).unwrap();
-        let r2 = m.step_in_place(&mut half, &inc(n, ds / 2.0, dt / 2.0), &mut m.work()).unwrap();
+        let r1 = m
+            .step_in_place(&mut half, &inc(n, ds / 2.0, dt / 2.0), &mut m.work())
+            .unwrap();
+        let r2 = m
+            .step_in_place(&mut half, &inc(n, ds / 2.0, dt / 2.0), &mut m.work())
+            .unwrap();
         let scale = n * 0.8;
         assert!(
             (rw.force[0] - r2.force[0]).abs() <= 1e-10 * scale,
@@ -311,26 +327,79 @@ fn bad_input_names_the_argument() {
     let g = |k: &[f64], a: &[f64], mc, ms, vs, d, c, s2| {
         GeneralizedMaxwellSlip::new(k, a, mc, ms, vs, d, c, s2).map(|_| ())
     };
-    assert_eq!(name(g(&[], &[], 0.5, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()), "weight.len()");
-    assert_eq!(name(g(&[1.0], &[1.0, 1.0], 0.5, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()), "weight.len()");
-    assert_eq!(name(g(&[-1.0], &[1.0], 0.5, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()), "stiffness");
-    assert_eq!(name(g(&[1.0], &[-1.0], 0.5, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()), "weight");
-    assert_eq!(name(g(&[1.0], &[1.0], 0.0, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()), "mu_coulomb");
-    assert_eq!(name(g(&[1.0], &[1.0], 0.5, f64::NAN, 1e-3, 2.0, 1.0, 0.0).unwrap_err()), "mu_static");
-    assert_eq!(name(g(&[1.0], &[1.0], 0.5, 0.8, 0.0, 2.0, 1.0, 0.0).unwrap_err()), "stribeck_velocity");
-    assert_eq!(name(g(&[1.0], &[1.0], 0.5, 0.8, 1e-3, -2.0, 1.0, 0.0).unwrap_err()), "stribeck_exponent");
-    assert_eq!(name(g(&[1.0], &[1.0], 0.5, 0.8, 1e-3, 2.0, 0.0, 0.0).unwrap_err()), "attraction");
-    assert_eq!(name(g(&[1.0], &[1.0], 0.5, 0.8, 1e-3, 2.0, f64::NAN, 0.0).unwrap_err()), "attraction");
-    assert_eq!(name(g(&[1.0], &[1.0], 0.5, 0.8, 1e-3, 2.0, 1.0, -1.0).unwrap_err()), "sigma2");
+    assert_eq!(
+        name(g(&[], &[], 0.5, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()),
+        "weight.len()"
+    );
+    assert_eq!(
+        name(g(&[1.0], &[1.0, 1.0], 0.5, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()),
+        "weight.len()"
+    );
+    assert_eq!(
+        name(g(&[-1.0], &[1.0], 0.5, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()),
+        "stiffness"
+    );
+    assert_eq!(
+        name(g(&[1.0], &[-1.0], 0.5, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()),
+        "weight"
+    );
+    assert_eq!(
+        name(g(&[1.0], &[1.0], 0.0, 0.8, 1e-3, 2.0, 1.0, 0.0).unwrap_err()),
+        "mu_coulomb"
+    );
+    assert_eq!(
+        name(g(&[1.0], &[1.0], 0.5, f64::NAN, 1e-3, 2.0, 1.0, 0.0).unwrap_err()),
+        "mu_static"
+    );
+    assert_eq!(
+        name(g(&[1.0], &[1.0], 0.5, 0.8, 0.0, 2.0, 1.0, 0.0).unwrap_err()),
+        "stribeck_velocity"
+    );
+    assert_eq!(
+        name(g(&[1.0], &[1.0], 0.5, 0.8, 1e-3, -2.0, 1.0, 0.0).unwrap_err()),
+        "stribeck_exponent"
+    );
+    assert_eq!(
+        name(g(&[1.0], &[1.0], 0.5, 0.8, 1e-3, 2.0, 0.0, 0.0).unwrap_err()),
+        "attraction"
+    );
+    assert_eq!(
+        name(g(&[1.0], &[1.0], 0.5, 0.8, 1e-3, 2.0, f64::NAN, 0.0).unwrap_err()),
+        "attraction"
+    );
+    assert_eq!(
+        name(g(&[1.0], &[1.0], 0.5, 0.8, 1e-3, 2.0, 1.0, -1.0).unwrap_err()),
+        "sigma2"
+    );
     let m = gms(1.0, 0.0);
     let mut new = vec![0.0; m.state_len()];
     let old = vec![0.0; m.state_len()];
     // Rate dependent, one-dimensional, a valid mode.
-    assert_eq!(name(m.step(&old, &mut new, &inc(1.0, 1e-6, 0.0), &mut m.work()).unwrap_err()), "dt");
-    let across = FrictionIncrement { slip: [0.0, 1e-9], dt: 1.0, normal_force: 1.0, ..Default::default() };
-    assert_eq!(name(m.step(&old, &mut new, &across, &mut m.work()).unwrap_err()), "slip");
+    assert_eq!(
+        name(
+            m.step(&old, &mut new, &inc(1.0, 1e-6, 0.0), &mut m.work())
+                .unwrap_err()
+        ),
+        "dt"
+    );
+    let across = FrictionIncrement {
+        slip: [0.0, 1e-9],
+        dt: 1.0,
+        normal_force: 1.0,
+        ..Default::default()
+    };
+    assert_eq!(
+        name(m.step(&old, &mut new, &across, &mut m.work()).unwrap_err()),
+        "slip"
+    );
     let mut bad = old.clone();
     bad[3] = 0.5;
-    assert_eq!(name(m.step(&bad, &mut new, &inc(1.0, 1e-6, 1.0), &mut m.work()).unwrap_err()), "old");
+    assert_eq!(
+        name(
+            m.step(&bad, &mut new, &inc(1.0, 1e-6, 1.0), &mut m.work())
+                .unwrap_err()
+        ),
+        "old"
+    );
     assert!(new.iter().all(|&x| x == 0.0));
 }

@@ -58,8 +58,7 @@ use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
 use crate::friction::dynamic::{
     Bristles, BurridgeKnopoff, DynamicModel, FrictionIncrement, FrictionLaw,
-    GeneralizedMaxwellSlip, LuGre, MaxwellSlip,
-    PrandtlTomlinson, STATE_DISSIPATION,
+    GeneralizedMaxwellSlip, LuGre, MaxwellSlip, PrandtlTomlinson, STATE_DISSIPATION,
 };
 use crate::friction::slider::SlideRun;
 use serde::de::{self, DeserializeSeed, Deserializer, EnumAccess, MapAccess, VariantAccess};

@@ -222,7 +222,17 @@ impl GeneralizedMaxwellSlip {
     /// projection g = d·f on the direction of motion).
     #[inline]
     #[allow(clippy::too_many_arguments)]
-    fn element(&self, k: f64, f0: f64, m0: f64, d: f64, x: f64, u: f64, a: f64, da: f64) -> Element {
+    fn element(
+        &self,
+        k: f64,
+        f0: f64,
+        m0: f64,
+        d: f64,
+        x: f64,
+        u: f64,
+        a: f64,
+        da: f64,
+    ) -> Element {
         let g0 = d * f0;
         // (g, ∂g/∂x, block dissipation, slipped, mode).
         let (g, dg, diss, slipped, slipping) = if m0 != d {
