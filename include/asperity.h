@@ -152,6 +152,14 @@
 // friction.
 #define ASPERITY_FRICTION_NO_CONTACT 3
 
+// Archard's hierarchy with Hertzian spheres of equal height at every
+// generation (A ~ W^(2/3, 8/9, 26/27, ...)).
+#define ASPERITY_ARCHARD_UNIFORM 0
+
+// Archard's hierarchy whose finest protuberances stand at heights
+// following the surface under them (A ~ W^(4/5, 14/15, 44/45, ...)).
+#define ASPERITY_ARCHARD_NON_UNIFORM 1
+
 // Segment label: not assigned.
 #define ASPERITY_SEGMENT_UNKNOWN 0
 
@@ -416,6 +424,9 @@
 
 // PSD data window: periodic Hann, normalised by its mean square.
 #define ASPERITY_WINDOW_HANN 1
+
+// The most generations of a profile.
+#define MAX_GENERATIONS 200
 
 // A friction law stepped once per increment (opaque): the homogenised
 // law, the slider as a patch law, or a chapter-5 dynamic model. Release it
@@ -884,6 +895,36 @@ typedef struct AsperityFrictionResponse {
     // (a law may compute more than was asked for).
     int32_t tangents;
 } AsperityFrictionResponse;
+
+// A Cantor profile (the C ABI's `AsperityCantorProfile`). SI units.
+typedef struct AsperityCantorProfile {
+    // Descendants p of every block, in [2, 64].
+    uint32_t descendants;
+    // Generations n above the base, in [1, 200].
+    uint32_t generations;
+    // Width ratio r of a descendant to its parent, > 0 with p r < 1.
+    double width_ratio;
+    // Height ratio q of a descendant's step to its parent's, in (0, 1]
+    // (1: Cantor–Liu; < 1: Cantor–Borodich).
+    double height_ratio;
+    // Width w₀ of the base block (m), finite and > 0.
+    double base_width;
+    // Height h₀ of the base block's step (m), finite and > 0.
+    double base_height;
+} AsperityCantorProfile;
+
+// The contact of a profile at one depth (the C ABI's
+// `AsperityCantorContact`). Per unit length out of the plane.
+typedef struct AsperityCantorContact {
+    // Depth δ below the highest tips (m).
+    double depth;
+    // Contact width A (m).
+    double width;
+    // Load on a Winkler foundation (N/m), κ Σ E_k (δ − d_k)⁺.
+    double winkler_load;
+    // Load on a rigid-perfectly plastic foundation (N/m), H A.
+    double plastic_load;
+} AsperityCantorContact;
 
 // The slider model's response at one nominal pressure: one row of the
 // homogenised table. A plain `repr(C)` value (the C ABI's
@@ -1850,6 +1891,52 @@ int32_t asperity_friction_step_block_responses(const struct AsperityFriction *la
                                                double *new_states,
                                                struct AsperityFrictionResponse *responses,
                                                struct AsperityFrictionWork *work);
+
+// Write to `*out` the exponent a of Archard's A ~ W^a for `model`
+// (`ASPERITY_ARCHARD_UNIFORM` or `_NON_UNIFORM`) with `generations` sphere
+// radii (1..64, 2..64 non-uniform): 1 - 3^-n or 1 - 1/(5 3^(n-2)).
+int32_t asperity_archard_exponent(int32_t model,
+                                  size_t generations,
+                                  double *out);
+
+// Archard's real contact area `area[i]` (m^2) under `load[i]` (N, >= 0)
+// for `n` loads: `model` as `asperity_archard_exponent`, `generations`
+// sphere radii `radii` (m, decreasing), `generations - 1` densities
+// `densities` (spheres of generation k per unit area of generation k-1,
+// 1/m^2), contact modulus `contact_modulus` (Pa). `load` and `area` may be
+// the same memory; on an error at element i the elements before i are
+// written and the message names i.
+int32_t asperity_archard_area_batch(int32_t model,
+                                    const double *radii,
+                                    const double *densities,
+                                    size_t generations,
+                                    double contact_modulus,
+                                    size_t n,
+                                    const double *load,
+                                    double *area);
+
+// The contact of the Cantor profile `*profile` at `n` depths `depth[i]`
+// (m below its highest tips, >= 0) on a Winkler foundation of stiffness
+// `stiffness` (Pa/m, >= 0) and a rigid-plastic one of hardness `hardness`
+// (Pa, >= 0), written to `out[i]` (per unit length out of the plane). On
+// an error at element i the elements before i are written and the message
+// names i.
+int32_t asperity_cantor_contact_batch(const struct AsperityCantorProfile *profile,
+                                      double stiffness,
+                                      double hardness,
+                                      size_t n,
+                                      const double *depth,
+                                      struct AsperityCantorContact *out);
+
+// The exponents of the Cantor profile `*profile`: its tips' fractal
+// dimension D = ln p/ln(1/r), beta = ln(pr)/ln q of width ~ depth^beta
+// (+infinity for Cantor-Liu, q = 1) and beta/(1 + beta) of
+// width ~ load^(beta/(1+beta)) on a Winkler foundation (1 for Cantor-Liu).
+// Any output may be NULL.
+int32_t asperity_cantor_exponents(const struct AsperityCantorProfile *profile,
+                                  double *fractal_dimension,
+                                  double *width_exponent,
+                                  double *load_area_exponent);
 
 // Build the law from `n` >= 1 samples at strictly increasing nominal
 // pressures (Pa), their `cof` read as the Derjaguin coefficient

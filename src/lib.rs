@@ -23,6 +23,8 @@
 //! * [`rescaling`] and [`indentation`]: Borodich rescaling, Galanov shapes, κ and d from measured curves, Oliver–Pharr, hardness numbers.
 //! * [`surface`]: profiles and maps, ISO 4287 parameters, ACF/PSD, generators.
 //! * [`statistics`]: Zhuravlev, Greenwood–Williamson and Kragelsky models.
+//! * [`hierarchical`]: hierarchical roughness (thesis 5.4): Archard's
+//!   spheres on spheres, Cantor–Liu and Cantor–Borodich profile contact.
 //! * [`friction`]: the slider geometry of the hierarchical friction model
 //!   (micro-rods and nano-asperities from measured profiles, thesis 6.2.1).
 //! * [`fidelity`]: the cheapest adhesive-sphere model within a force
@@ -62,6 +64,7 @@ pub mod error;
 pub mod ffi;
 pub mod fidelity;
 pub mod friction;
+pub mod hierarchical;
 pub mod indentation;
 pub mod material;
 pub mod rescaling;
