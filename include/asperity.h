@@ -425,9 +425,6 @@
 // PSD data window: periodic Hann, normalised by its mean square.
 #define ASPERITY_WINDOW_HANN 1
 
-// The most generations of a profile.
-#define MAX_GENERATIONS 200
-
 // A friction law stepped once per increment (opaque): the homogenised
 // law, the slider as a patch law, or a chapter-5 dynamic model. Release it
 // with `asperity_friction_free`. Immutable; safe to share between threads.

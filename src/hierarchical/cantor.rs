@@ -64,7 +64,7 @@
 use crate::error::{check, Error, Result};
 
 /// The most generations of a profile.
-pub const MAX_GENERATIONS: usize = 200;
+const MAX_GENERATIONS: usize = 200;
 
 /// A Cantor profile (the C ABI's `AsperityCantorProfile`). SI units.
 #[repr(C)]
