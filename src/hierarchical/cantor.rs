@@ -174,12 +174,13 @@ impl CantorProfile {
         let n = self.generations as usize;
         let q = self.height_ratio;
         let h0 = self.base_height;
-        // Σ_{j=k+1}^{n} h₀ qʲ, summed from the smallest term.
-        let mut s = 0.0;
-        for j in (k + 1..=n).rev() {
-            s += h0 * q.powi(j as i32);
+        // Σ_{j=k+1}^{n} h₀ qʲ = h₀ q^{k+1} (1 − q^{n−k})/(1 − q).
+        if q == 1.0 {
+            (n - k) as f64 * h0
+        } else {
+            let m = (n - k) as f64;
+            h0 * q.powi(k as i32 + 1) * (-(m * q.ln()).exp_m1()) / (1.0 - q)
         }
-        s
     }
 
     /// The contact at depth `depth` δ (m, finite, ≥ 0) on a Winkler
