@@ -207,12 +207,21 @@ impl CantorProfile {
             load += exposed * (d - dk);
             wk /= pr;
         }
-        Ok(CantorContact {
+        let c = CantorContact {
             depth: d,
             width,
             winkler_load: kappa * load,
             plastic_load: h * width,
-        })
+        };
+        if c.winkler_load.is_finite() && c.plastic_load.is_finite() {
+            Ok(c)
+        } else {
+            Err(Error::OutOfDomain {
+                name: "depth",
+                value: d,
+                reason: "the load overflows",
+            })
+        }
     }
 
     /// The Plesha–Ni series compliance Δ/P (m per N/m) of the layers as

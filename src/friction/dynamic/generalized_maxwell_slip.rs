@@ -327,8 +327,13 @@ impl GeneralizedMaxwellSlip {
 /// ∫ g dy = a y + (gs − a)(1 − e^{−λy})/λ.
 #[inline]
 fn attraction_dissipation(k: f64, gs: f64, ge: f64, a: f64, lambda: f64, y: f64) -> f64 {
-    let om = -(-lambda * y).exp_m1();
-    a * y + (gs - a) * om / lambda - 0.5 * (ge - gs) * (ge + gs) / k
+    // (1 − e^{−λy})/λ → y as λ → 0 (an infinite speed: no attraction).
+    let reach = if lambda == 0.0 {
+        y
+    } else {
+        -(-lambda * y).exp_m1() / lambda
+    };
+    a * y + (gs - a) * reach - 0.5 * (ge - gs) * (ge + gs) / k
 }
 
 /// One increment (module docs). Regime (counting the elements with αᵢ > 0):
