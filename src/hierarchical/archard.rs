@@ -105,8 +105,9 @@ pub struct Archard {
 }
 
 impl Archard {
-    /// The hierarchy `model` of sphere radii `radii` R₁ > R₂ > … (m, finite,
-    /// > 0, decreasing; 1 to 64 of them, ≥ 2 for the non-uniform model),
+    /// The hierarchy `model` of sphere radii `radii` R₁ > R₂ > … (m, finite
+    /// and positive, decreasing; 1 to 64 of them, ≥ 2 for the non-uniform
+    /// model),
     /// `densities` η₂, η₃, … (1/m², finite, > 0; one fewer than the radii):
     /// the number of spheres of generation k per unit area of generation
     /// k−1, and the contact modulus `contact_modulus` E* (Pa, finite, > 0).

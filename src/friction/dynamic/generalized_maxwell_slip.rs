@@ -140,7 +140,7 @@ impl GeneralizedMaxwellSlip {
         check::positive("mu_static", mu_static)?;
         check::positive("stribeck_velocity", stribeck_velocity)?;
         check::positive("stribeck_exponent", stribeck_exponent)?;
-        if !(attraction > 0.0) {
+        if attraction.is_nan() || attraction <= 0.0 {
             return Err(Error::InvalidArgument {
                 name: "attraction",
                 value: attraction,
