@@ -13,7 +13,8 @@
 //! 40).
 
 use asperity::friction::dynamic::{
-    Bristles, BurridgeKnopoff, FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip, PrandtlTomlinson,
+    Bristles, BurridgeKnopoff, FrictionIncrement, FrictionLaw, GeneralizedMaxwellSlip, LuGre,
+    MaxwellSlip, PrandtlTomlinson,
 };
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -209,6 +210,27 @@ fn main() {
             "| Maxwell-slip, {elements} elements (`MaxwellSlip::step`), track | – | – | {t:.1} (inline 1-D loop without checks: {ti:.1}) |"
         );
         println!("| Maxwell-slip, {elements} elements, 2-D slip (30°) | – | – | {t2:.1} |");
+    }
+    // The generalised Maxwell-slip model on the same elements (weights
+    // equal, μ_c = 0.3, μ_s = 0.5, v_s = 1 mm/s, C = 50/s): exact per
+    // increment, one exponential a slipping element.
+    for elements in [1usize, 4, 10] {
+        let k: Vec<f64> = (0..elements).map(|i| 2e5 / (1 << i) as f64).collect();
+        let a: Vec<f64> = (0..elements).map(|_| 1.0 / elements as f64).collect();
+        let g = GeneralizedMaxwellSlip::new(&k, &a, 0.3, 0.5, 1e-3, 2.0, 50.0, 0.0).unwrap();
+        let len = g.state_len();
+        let t = time(rounds, run_ms, || {
+            let mut s = vec![0.0; len];
+            let mut n = vec![0.0; len];
+            let mut w = g.work();
+            for i in &incs {
+                black_box(g.step(&s, &mut n, black_box(i), &mut w).unwrap());
+                std::mem::swap(&mut s, &mut n);
+            }
+        });
+        println!(
+            "| generalised Maxwell-slip, {elements} elements (`GeneralizedMaxwellSlip::step`), track | – | 0 (exact increment) | {t:.1} |"
+        );
     }
     // Ten bristles of break deflections 1–10 µm (snaps counted exactly).
     let d: Vec<f64> = (1..=10).map(|i| 1e-6 * i as f64).collect();

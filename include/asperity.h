@@ -178,7 +178,8 @@
 // position b (m, NaN: none), the dissipation by mechanism (J), the n rod
 // heights (m), the n rods' stored energies (J). LuGre: the bristle
 // deflection z (x, y; m). Maxwell-slip: the element deflections (x, y per
-// element; m). Bristles: the bristle deflections (m). Prandtl-Tomlinson:
+// element; m). Generalised Maxwell-slip: per element the force per unit
+// normal force and the mode (0 sticking, +-1 slipping). Bristles: the bristle deflections (m). Prandtl-Tomlinson:
 // x - x_s (m), tip velocity (m/s), support position x_s (m), then with two
 // springs the cantilever body's x_c - x_s (m) and velocity (m/s).
 // Burridge-Knopoff: x_i - x_d (m) and v_i (m/s) per block, then the driver
@@ -199,6 +200,14 @@
 // `AsperityFrictionResponse.regime`: no normal force and no adhesion; no
 // friction.
 #define ASPERITY_FRICTION_NO_CONTACT 3
+
+// Archard's hierarchy with Hertzian spheres of equal height at every
+// generation (A ~ W^(2/3, 8/9, 26/27, ...)).
+#define ASPERITY_ARCHARD_UNIFORM 0
+
+// Archard's hierarchy whose finest protuberances stand at heights
+// following the surface under them (A ~ W^(4/5, 14/15, 44/45, ...)).
+#define ASPERITY_ARCHARD_NON_UNIFORM 1
 
 // Segment label: not assigned.
 #define ASPERITY_SEGMENT_UNKNOWN 0
@@ -825,6 +834,24 @@ typedef struct AsperityLugreParams {
     double sigma2;
 } AsperityLugreParams;
 
+// The generalised Maxwell-slip model's Stribeck curve and rates (see
+// `GeneralizedMaxwellSlip::new`; the elements come as arrays). SI units.
+typedef struct AsperityGeneralizedMaxwellSlipParams {
+    // Coulomb coefficient mu_c of the Stribeck curve, finite and > 0.
+    double mu_coulomb;
+    // Static coefficient mu_s of the Stribeck curve, finite and > 0.
+    double mu_static;
+    // Stribeck velocity v_s (m/s), finite and > 0.
+    double stribeck_velocity;
+    // Stribeck exponent delta, finite and > 0 (2: Gaussian).
+    double stribeck_exponent;
+    // Attraction rate C of the slip law per unit normal force (1/s), > 0;
+    // +infinity for the instantaneous limit.
+    double attraction;
+    // Viscous coefficient sigma_2 (N s/m), finite and >= 0.
+    double sigma2;
+} AsperityGeneralizedMaxwellSlipParams;
+
 // The two-spring (tip-cantilever) Prandtl-Tomlinson model's parameters
 // (see `PrandtlTomlinson::two_spring`). SI units.
 typedef struct AsperityPrandtlTomlinsonTwoSpringParams {
@@ -1007,6 +1034,36 @@ typedef struct AsperityFrictionResponse {
     // (a law may compute more than was asked for).
     int32_t tangents;
 } AsperityFrictionResponse;
+
+// A Cantor profile (the C ABI's `AsperityCantorProfile`). SI units.
+typedef struct AsperityCantorProfile {
+    // Descendants p of every block, in [2, 64].
+    uint32_t descendants;
+    // Generations n above the base, in [1, 200].
+    uint32_t generations;
+    // Width ratio r of a descendant to its parent, > 0 with p r < 1.
+    double width_ratio;
+    // Height ratio q of a descendant's step to its parent's, in (0, 1]
+    // (1: Cantor–Liu; < 1: Cantor–Borodich).
+    double height_ratio;
+    // Width w₀ of the base block (m), finite and > 0.
+    double base_width;
+    // Height h₀ of the base block's step (m), finite and > 0.
+    double base_height;
+} AsperityCantorProfile;
+
+// The contact of a profile at one depth (the C ABI's
+// `AsperityCantorContact`). Per unit length out of the plane.
+typedef struct AsperityCantorContact {
+    // Depth δ below the highest tips (m).
+    double depth;
+    // Contact width A (m).
+    double width;
+    // Load on a Winkler foundation (N/m), κ Σ E_k (δ − d_k)⁺.
+    double winkler_load;
+    // Load on a rigid-perfectly plastic foundation (N/m), H A.
+    double plastic_load;
+} AsperityCantorContact;
 
 // The slider model's response at one nominal pressure: one row of the
 // homogenised table. A plain `repr(C)` value (the C ABI's
@@ -1791,6 +1848,19 @@ int32_t asperity_friction_maxwell_slip_new(const double *stiffness,
                                            double sigma2,
                                            struct AsperityFriction **out);
 
+// Build the generalised Maxwell-slip model (Al-Bender, Lampaert and
+// Swevers 2005): `n` >= 1 elements of stiffnesses `stiffness[i]` (1/m per
+// unit normal force, > 0) and weights `weight[i]` (>= 0) whose slip is
+// attracted to their share weight[i] s(v) of the Stribeck curve of
+// `*params`. One-dimensional: increments need `slip[1]` = 0, and dt > 0
+// with a non-zero slip. Writes a new handle to `*out` (NULL on failure);
+// errors name the array or the field (`params.attraction`, ...).
+int32_t asperity_friction_generalized_maxwell_slip_new(const double *stiffness,
+                                                       const double *weight,
+                                                       size_t n,
+                                                       const struct AsperityGeneralizedMaxwellSlipParams *params,
+                                                       struct AsperityFriction **out);
+
 // Build `n` >= 1 bristles (Haessig and Friedland 1991): stiffnesses
 // `stiffness[i]` (1/m per unit normal force, > 0) and break deflections
 // `break_deflection[i]` (m, > 0), viscous coefficient `sigma2`
@@ -1934,7 +2004,8 @@ int32_t asperity_friction_from_slider(const struct AsperitySlider *slider,
 void asperity_friction_free(struct AsperityFriction *law);
 
 // Write the number of doubles of one point's state to `*n` (homogenised:
-// 9; slider: 9 + 2 x rods; LuGre: 4; Maxwell-slip: 2 + 2 x elements;
+// 9; slider: 9 + 2 x rods; LuGre: 4; Maxwell-slip and generalised
+// Maxwell-slip: 2 + 2 x elements;
 // bristles: 2 + bristles; Prandtl-Tomlinson: 5, with two springs 7;
 // Burridge-Knopoff: 3 + 2 x blocks).
 int32_t asperity_friction_state_size(const struct AsperityFriction *law,
@@ -2036,6 +2107,52 @@ int32_t asperity_friction_step_block_responses(const struct AsperityFriction *la
                                                double *new_states,
                                                struct AsperityFrictionResponse *responses,
                                                struct AsperityFrictionWork *work);
+
+// Write to `*out` the exponent a of Archard's A ~ W^a for `model`
+// (`ASPERITY_ARCHARD_UNIFORM` or `_NON_UNIFORM`) with `generations` sphere
+// radii (1..64, 2..64 non-uniform): 1 - 3^-n or 1 - 1/(5 3^(n-2)).
+int32_t asperity_archard_exponent(int32_t model,
+                                  size_t generations,
+                                  double *out);
+
+// Archard's real contact area `area[i]` (m^2) under `load[i]` (N, >= 0)
+// for `n` loads: `model` as `asperity_archard_exponent`, `generations`
+// sphere radii `radii` (m, decreasing), `generations - 1` densities
+// `densities` (spheres of generation k per unit area of generation k-1,
+// 1/m^2), contact modulus `contact_modulus` (Pa). `load` and `area` may be
+// the same memory; on an error at element i the elements before i are
+// written and the message names i.
+int32_t asperity_archard_area_batch(int32_t model,
+                                    const double *radii,
+                                    const double *densities,
+                                    size_t generations,
+                                    double contact_modulus,
+                                    size_t n,
+                                    const double *load,
+                                    double *area);
+
+// The contact of the Cantor profile `*profile` at `n` depths `depth[i]`
+// (m below its highest tips, >= 0) on a Winkler foundation of stiffness
+// `stiffness` (Pa/m, >= 0) and a rigid-plastic one of hardness `hardness`
+// (Pa, >= 0), written to `out[i]` (per unit length out of the plane). On
+// an error at element i the elements before i are written and the message
+// names i.
+int32_t asperity_cantor_contact_batch(const struct AsperityCantorProfile *profile,
+                                      double stiffness,
+                                      double hardness,
+                                      size_t n,
+                                      const double *depth,
+                                      struct AsperityCantorContact *out);
+
+// The exponents of the Cantor profile `*profile`: its tips' fractal
+// dimension D = ln p/ln(1/r), beta = ln(pr)/ln q of width ~ depth^beta
+// (+infinity for Cantor-Liu, q = 1) and beta/(1 + beta) of
+// width ~ load^(beta/(1+beta)) on a Winkler foundation (1 for Cantor-Liu).
+// Any output may be NULL.
+int32_t asperity_cantor_exponents(const struct AsperityCantorProfile *profile,
+                                  double *fractal_dimension,
+                                  double *width_exponent,
+                                  double *load_area_exponent);
 
 // Build the law from `n` >= 1 samples at strictly increasing nominal
 // pressures (Pa), their `cof` read as the Derjaguin coefficient

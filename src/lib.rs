@@ -24,6 +24,8 @@
 //! * [`afm`]: AFM force–distance curves: baseline, contact point, jump-in, pull-off, adhesion energy, contact-law fits and the model the data support.
 //! * [`surface`]: profiles and maps, ISO 4287 parameters, ACF/PSD, generators.
 //! * [`statistics`]: Zhuravlev, Greenwood–Williamson and Kragelsky models.
+//! * [`hierarchical`]: hierarchical roughness (thesis 5.4): Archard's
+//!   spheres on spheres, Cantor–Liu and Cantor–Borodich profile contact.
 //! * [`friction`]: the slider geometry of the hierarchical friction model
 //!   (micro-rods and nano-asperities from measured profiles, thesis 6.2.1).
 //! * [`fidelity`]: the cheapest adhesive-sphere model within a force
@@ -64,6 +66,7 @@ pub mod error;
 pub mod ffi;
 pub mod fidelity;
 pub mod friction;
+pub mod hierarchical;
 pub mod indentation;
 pub mod material;
 pub mod rescaling;

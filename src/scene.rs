@@ -57,9 +57,9 @@ use std::path::{Path, PathBuf};
 pub mod models;
 
 pub use models::{
-    run_along, BristlesSpec, BurridgeKnopoffSpec, DynamicModelSpec, FrictionModelSpec, LuGreSpec,
-    MaxwellSlipSpec, PrandtlTomlinsonSpec, PrandtlTomlinsonTwoSpringSpec, TrackRun, TrackStep,
-    TrackSummary,
+    run_along, BristlesSpec, BurridgeKnopoffSpec, DynamicModelSpec, FrictionModelSpec,
+    GeneralizedMaxwellSlipSpec, LuGreSpec, MaxwellSlipSpec, PrandtlTomlinsonSpec,
+    PrandtlTomlinsonTwoSpringSpec, TrackRun, TrackStep, TrackSummary,
 };
 
 /// Most samples a scene's generated (`self_affine`) profile may ask for:

@@ -64,6 +64,9 @@ const _: () = {
     shared::<HomogenisedFriction>();
     shared::<crate::friction::dynamic::LuGre>();
     shared::<crate::friction::dynamic::MaxwellSlip>();
+    shared::<crate::friction::dynamic::GeneralizedMaxwellSlip>();
+    shared::<crate::hierarchical::Archard>();
+    shared::<crate::hierarchical::CantorProfile>();
     shared::<crate::friction::dynamic::PrandtlTomlinson>();
     shared::<crate::friction::dynamic::BurridgeKnopoff>();
     shared::<crate::friction::dynamic::Bristles>();

@@ -456,6 +456,13 @@ fn c_model(case: &laws::Case) -> *mut AsperityFriction {
                 0.1,
                 &mut h,
             ),
+            "generalized_maxwell_slip" => asperity_friction_generalized_maxwell_slip_new(
+                laws::MAXWELL_K.as_ptr(),
+                laws::GMS_ALPHA.as_ptr(),
+                3,
+                &laws::gms_params(),
+                &mut h,
+            ),
             "bristles" => asperity_friction_bristles_new(
                 laws::BRISTLE_K.as_ptr(),
                 laws::BRISTLE_BREAK.as_ptr(),
@@ -489,12 +496,146 @@ fn c_model(case: &laws::Case) -> *mut AsperityFriction {
 #[test]
 fn the_friction_handle_keeps_the_contract_for_every_model() {
     let cases = laws::dynamic_cases();
-    assert_eq!(cases.len(), 6);
+    assert_eq!(cases.len(), 7);
     for case in &cases {
         let h = c_model(case);
         unsafe {
             laws::c_contract(h, case, 16);
             asperity_friction_free(h);
         }
+    }
+}
+
+/// The generalised Maxwell-slip model from C: its errors name the array,
+/// `n` or the parameter field, and leave the handle NULL; a flat Stribeck
+/// curve steps like the Maxwell-slip handle with capacities αᵢ μ_s.
+#[test]
+fn generalized_maxwell_slip_from_c_names_its_errors() {
+    let k = laws::MAXWELL_K;
+    let a = laws::GMS_ALPHA;
+    let p = laws::gms_params();
+    let mut h = null_mut();
+    expect_error(
+        unsafe {
+            asperity_friction_generalized_maxwell_slip_new(
+                k.as_ptr(),
+                a.as_ptr(),
+                3,
+                null(),
+                &mut h,
+            )
+        },
+        ASPERITY_ERR_NULL_POINTER,
+        "params",
+    );
+    assert!(h.is_null());
+    expect_error(
+        unsafe {
+            asperity_friction_generalized_maxwell_slip_new(k.as_ptr(), null(), 3, &p, &mut h)
+        },
+        ASPERITY_ERR_NULL_POINTER,
+        "weight",
+    );
+    expect_error(
+        unsafe {
+            asperity_friction_generalized_maxwell_slip_new(k.as_ptr(), a.as_ptr(), 0, &p, &mut h)
+        },
+        ASPERITY_ERR_INVALID_ARGUMENT,
+        "`n`",
+    );
+    for (field, spoil) in [
+        (
+            "params.attraction",
+            AsperityGeneralizedMaxwellSlipParams {
+                attraction: 0.0,
+                ..p
+            },
+        ),
+        (
+            "params.mu_coulomb",
+            AsperityGeneralizedMaxwellSlipParams {
+                mu_coulomb: -1.0,
+                ..p
+            },
+        ),
+        (
+            "params.stribeck_velocity",
+            AsperityGeneralizedMaxwellSlipParams {
+                stribeck_velocity: f64::NAN,
+                ..p
+            },
+        ),
+        (
+            "params.sigma2",
+            AsperityGeneralizedMaxwellSlipParams { sigma2: -1.0, ..p },
+        ),
+    ] {
+        expect_error(
+            unsafe {
+                asperity_friction_generalized_maxwell_slip_new(
+                    k.as_ptr(),
+                    a.as_ptr(),
+                    3,
+                    &spoil,
+                    &mut h,
+                )
+            },
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            field,
+        );
+        assert!(h.is_null());
+    }
+    // Flat curve: the Maxwell-slip handle with μᵢ = αᵢ μ_s, step for step.
+    let flat = AsperityGeneralizedMaxwellSlipParams {
+        mu_coulomb: 0.5,
+        mu_static: 0.5,
+        ..p
+    };
+    let mu: Vec<f64> = a.iter().map(|x| x * 0.5).collect();
+    let (mut g, mut m) = (null_mut(), null_mut());
+    unsafe {
+        assert_eq!(
+            asperity_friction_generalized_maxwell_slip_new(
+                k.as_ptr(),
+                a.as_ptr(),
+                3,
+                &flat,
+                &mut g
+            ),
+            ASPERITY_OK
+        );
+        assert_eq!(
+            asperity_friction_maxwell_slip_new(k.as_ptr(), mu.as_ptr(), 3, p.sigma2, &mut m),
+            ASPERITY_OK
+        );
+        let (mut n_g, mut n_m) = (0usize, 0usize);
+        asperity_friction_state_size(g, &mut n_g);
+        asperity_friction_state_size(m, &mut n_m);
+        let (mut sg, mut sm) = (vec![0.0; n_g], vec![0.0; n_m]);
+        for i in 0..300 {
+            let inc = FrictionIncrement {
+                normal_force: 2.0,
+                slip: [3e-6 * ((i as f64) * 0.37).sin(), 0.0],
+                dt: 1e-3,
+                ..Default::default()
+            };
+            let (mut rg, mut rm) = (FrictionResponse::default(), FrictionResponse::default());
+            assert_eq!(
+                asperity_friction_step_in_place(g, &inc, sg.as_mut_ptr(), null_mut(), &mut rg),
+                ASPERITY_OK
+            );
+            assert_eq!(
+                asperity_friction_step_in_place(m, &inc, sm.as_mut_ptr(), null_mut(), &mut rm),
+                ASPERITY_OK
+            );
+            assert!(
+                (rg.force[0] - rm.force[0]).abs() <= 1e-12,
+                "{i}: {} vs {}",
+                rg.force[0],
+                rm.force[0]
+            );
+        }
+        asperity_friction_free(g);
+        asperity_friction_free(m);
     }
 }

@@ -8,8 +8,8 @@
 //! against finite differences, cut-backs, extremes, bad input.
 
 use asperity::friction::dynamic::{
-    Bristles, FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip, STATE_DISSIPATION, STATE_MODEL,
-    STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
+    Bristles, FrictionIncrement, FrictionLaw, GeneralizedMaxwellSlip, LuGre, MaxwellSlip,
+    STATE_DISSIPATION, STATE_MODEL, STATE_SLIP_PATH, TANGENT_NORMAL, TANGENT_SLIP,
 };
 use asperity::friction::{BlockStates, FrictionBlock};
 use asperity::Error;
@@ -803,10 +803,15 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
         DynamicModel::PrandtlTomlinson(two_spring(3.0)),
         DynamicModel::BurridgeKnopoff(chain(5, 1e4, 0.05)),
         DynamicModel::Bristles(brush()),
+        DynamicModel::GeneralizedMaxwellSlip(
+            GeneralizedMaxwellSlip::new(&[2e5, 5e4], &[0.5, 0.5], 0.3, 0.5, 1e-3, 2.0, 30.0, 0.1)
+                .unwrap(),
+        ),
     ] {
         let direct: &dyn FrictionLaw = match &model {
             DynamicModel::LuGre(m) => m,
             DynamicModel::MaxwellSlip(m) => m,
+            DynamicModel::GeneralizedMaxwellSlip(m) => m,
             DynamicModel::PrandtlTomlinson(m) => m,
             DynamicModel::BurridgeKnopoff(m) => m,
             DynamicModel::Bristles(m) => m,
@@ -820,6 +825,7 @@ fn model_choice_in_place_and_block_equal_the_single_steps() {
             DynamicModel::PrandtlTomlinson(_)
                 | DynamicModel::BurridgeKnopoff(_)
                 | DynamicModel::Bristles(_)
+                | DynamicModel::GeneralizedMaxwellSlip(_)
         );
         let slip: Vec<f64> = (0..2 * points)
             .map(|i| {

@@ -10,8 +10,8 @@ mod common;
 
 use asperity::contact::BatchError;
 use asperity::friction::dynamic::{
-    BurridgeKnopoff, DynamicModel, FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip,
-    PrandtlTomlinson, STATE_DISSIPATION,
+    BurridgeKnopoff, DynamicModel, FrictionIncrement, FrictionLaw, GeneralizedMaxwellSlip, LuGre,
+    MaxwellSlip, PrandtlTomlinson, STATE_DISSIPATION,
 };
 use asperity::friction::{SlideRun, SlideStep, SlideSummary};
 use asperity::scene::{
@@ -642,4 +642,44 @@ fn a_nano_spacing_far_below_the_tip_width_is_an_error() {
         .unwrap_err();
     let msg = err.to_string();
     assert!(msg.contains("nano_per_rod"), "{msg}");
+}
+
+#[test]
+fn generalized_maxwell_slip_from_a_scene_reaches_its_stribeck_curve() {
+    // The scene key with its defaults (δ = 2, C = +∞, σ₂ = 0), then steady
+    // sliding along a track at v: μ = s(v) Σα, the time increment being
+    // step/velocity.
+    let s = parse(&with_models(
+        r#"{ "name": "GMS", "generalized_maxwell_slip": { "stiffness": [1e6, 2e5],
+             "weight": [0.5, 0.5], "mu_coulomb": 0.3, "mu_static": 0.5,
+             "stribeck_velocity": 1e-3, "attraction": 40 } }"#,
+    ))
+    .unwrap();
+    let want =
+        GeneralizedMaxwellSlip::new(&[1e6, 2e5], &[0.5, 0.5], 0.3, 0.5, 1e-3, 2.0, 40.0, 0.0)
+            .unwrap();
+    let models = s.friction_models().unwrap();
+    assert_eq!(
+        models,
+        vec![DynamicModel::GeneralizedMaxwellSlip(want.clone())]
+    );
+    let run = track(400, 4e-4, |_| 0.25);
+    for v in [2e-4, 1e-3, 5e-3] {
+        let got = run_along(&want, &run, v).unwrap();
+        let mu = 0.3 + 0.2 * (-(v / 1e-3f64).powi(2)).exp();
+        let last = got.steps.last().unwrap();
+        assert!((last.cof - mu).abs() < 1e-12, "v = {v}: {}", last.cof);
+        assert_direct(&models[0], &run, v, &got);
+    }
+    let (field, name) = invalid(
+        parse(&with_models(
+            r#"{ "name": "G", "generalized_maxwell_slip": { "stiffness": [1e6], "weight": [1],
+                 "mu_coulomb": 0.3, "mu_static": 0.5, "stribeck_velocity": 1e-3, "attraction": -1 } }"#,
+        ))
+        .unwrap_err(),
+    );
+    assert_eq!(
+        (field.as_str(), name),
+        ("friction_models[0].generalized_maxwell_slip", "attraction")
+    );
 }

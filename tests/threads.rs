@@ -779,7 +779,8 @@ fn last_error_message_is_thread_local() {
 #[test]
 fn dynamic_friction_models_step_and_block() {
     use asperity::friction::dynamic::{
-        Bristles, BurridgeKnopoff, DynamicModel, LuGre, MaxwellSlip, PrandtlTomlinson,
+        Bristles, BurridgeKnopoff, DynamicModel, GeneralizedMaxwellSlip, LuGre, MaxwellSlip,
+        PrandtlTomlinson,
     };
     let models = [
         DynamicModel::LuGre(LuGre::new(0.3, 0.5, 1e-3, 2.0, 1e5, 1000.0, 1e-3, 0.4).unwrap()),
@@ -799,6 +800,10 @@ fn dynamic_friction_models_step_and_block() {
         DynamicModel::Bristles(
             Bristles::new(&[1e5, 2e5, 5e4], &[1e-6, 2.5e-6, 4e-6], 0.1).unwrap(),
         ),
+        DynamicModel::GeneralizedMaxwellSlip(
+            GeneralizedMaxwellSlip::new(&[2e5, 5e4], &[0.5, 0.5], 0.3, 0.5, 1e-3, 2.0, 30.0, 0.1)
+                .unwrap(),
+        ),
     ];
     for model in &models {
         let track = matches!(
@@ -806,6 +811,7 @@ fn dynamic_friction_models_step_and_block() {
             DynamicModel::PrandtlTomlinson(_)
                 | DynamicModel::BurridgeKnopoff(_)
                 | DynamicModel::Bristles(_)
+                | DynamicModel::GeneralizedMaxwellSlip(_)
         );
         let scale = match model {
             DynamicModel::PrandtlTomlinson(_) => 1e-11,

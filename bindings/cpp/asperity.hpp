@@ -1075,6 +1075,23 @@ public:
         return Friction(p);
     }
 
+    /// `asperity_friction_generalized_maxwell_slip_new`: the generalised
+    /// Maxwell-slip model, elements of stiffnesses `stiffness` (1/m per unit
+    /// normal force) and weights `weight` (one per element) attracted to the
+    /// Stribeck curve of `params`. One-dimensional, rate dependent.
+    [[nodiscard]] static Friction
+    generalized_maxwell_slip(span<const double> stiffness, span<const double> weight,
+                             const AsperityGeneralizedMaxwellSlipParams& params)
+    {
+        const std::size_t n = stiffness.size();
+        AsperityFriction* p = nullptr;
+        check(asperity_friction_generalized_maxwell_slip_new(
+            detail::required(stiffness),
+            detail::at_least(weight, n, "asperity::Friction::generalized_maxwell_slip", "weight"),
+            n, &params, &p));
+        return Friction(p);
+    }
+
     /// `asperity_friction_bristles_new`: bristles of stiffnesses `stiffness`
     /// (1/m per unit normal force) and break deflections `break_deflection`
     /// (m, one per bristle), viscous `sigma2` (N s/m). One-dimensional.
@@ -2055,6 +2072,63 @@ inline void generate_cantor_borodich(std::uint32_t descendants, double alpha, do
     std::vector<double> heights(n);
     generate_cantor_borodich(descendants, alpha, beta, height, levels, length, heights);
     return heights;
+}
+
+/// `asperity_archard_exponent`: the exponent a of Archard's A ~ W^a for
+/// `model` (`ASPERITY_ARCHARD_UNIFORM` or `_NON_UNIFORM`) and `generations`
+/// sphere radii.
+[[nodiscard]] inline double archard_exponent(std::int32_t model, std::size_t generations)
+{
+    double a = 0.0;
+    check(asperity_archard_exponent(model, generations, &a));
+    return a;
+}
+
+/// `asperity_archard_area_batch`: Archard's real contact areas `area` (m^2)
+/// under `load` (N) for the sphere radii `radii` (m, decreasing) and the
+/// densities `densities` (1/m^2, one fewer), contact modulus (Pa).
+inline void archard_area(std::int32_t model, span<const double> radii,
+                         span<const double> densities, double contact_modulus,
+                         span<const double> load, span<double> area)
+{
+    const char* f = "asperity::archard_area";
+    const std::size_t n = load.size();
+    const std::size_t g = radii.size();
+    check(asperity_archard_area_batch(
+        model, detail::required(radii),
+        g > 1 ? detail::at_least(densities, g - 1, f, "densities") : detail::required(densities),
+        g,
+        contact_modulus, n, detail::required(load), detail::at_least(area, n, f, "area")));
+}
+
+/// `asperity_cantor_contact_batch`: the contact of the Cantor profile
+/// `profile` at the depths `depth` (m) on a Winkler foundation of stiffness
+/// `stiffness` (Pa/m) and a rigid-plastic one of hardness `hardness` (Pa).
+[[nodiscard]] inline std::vector<AsperityCantorContact>
+cantor_contact(const AsperityCantorProfile& profile, double stiffness, double hardness,
+               span<const double> depth)
+{
+    std::vector<AsperityCantorContact> out(depth.size());
+    check(asperity_cantor_contact_batch(&profile, stiffness, hardness, depth.size(),
+                                        detail::required(depth), out.data()));
+    return out;
+}
+
+/// `asperity_cantor_exponents`: the fractal dimension, beta of
+/// width ~ depth^beta and beta/(1 + beta) of width ~ load^(...) of `profile`.
+struct CantorExponents {
+    double fractal_dimension;
+    double width_exponent;
+    double load_area_exponent;
+};
+
+/// `asperity_cantor_exponents`: see `CantorExponents`.
+[[nodiscard]] inline CantorExponents cantor_exponents(const AsperityCantorProfile& profile)
+{
+    CantorExponents e{};
+    check(asperity_cantor_exponents(&profile, &e.fractal_dimension, &e.width_exponent,
+                                    &e.load_area_exponent));
+    return e;
 }
 
 } // namespace asperity

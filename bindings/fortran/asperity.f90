@@ -319,6 +319,10 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_HOMOGENISED_STATE_MECHANISMS = 5
   !> Summit heights: Gaussian of zero mean and standard deviation σ.
   integer(c_int32_t), parameter, public :: ASPERITY_HEIGHTS_GAUSSIAN = 1
+  !> Archard's hierarchy with Hertzian spheres of equal height at every generation.
+  integer(c_int32_t), parameter, public :: ASPERITY_ARCHARD_UNIFORM = 0
+  !> Archard's hierarchy whose finest protuberances stand at distributed heights.
+  integer(c_int32_t), parameter, public :: ASPERITY_ARCHARD_NON_UNIFORM = 1
   !> Summit heights: exponential tail shifted to zero mean, standard deviation (decay length) σ.
   integer(c_int32_t), parameter, public :: ASPERITY_HEIGHTS_EXPONENTIAL = 2
   !> Deformation regime of a plasticity index ψ < 0.6: elastic.
@@ -879,6 +883,51 @@ module asperity
     !> Viscous coefficient sigma_2 (N s/m), >= 0.
     real(c_double) :: sigma2 = 0.0_c_double
   end type asperity_lugre_params
+
+  !> `AsperityGeneralizedMaxwellSlipParams`: the generalised Maxwell-slip model's Stribeck
+  !> curve and rates (SI).
+  type, bind(c), public :: asperity_generalized_maxwell_slip_params
+    !> Coulomb coefficient mu_c of the Stribeck curve, > 0.
+    real(c_double) :: mu_coulomb = 0.0_c_double
+    !> Static coefficient mu_s of the Stribeck curve, > 0.
+    real(c_double) :: mu_static = 0.0_c_double
+    !> Stribeck velocity v_s (m/s), > 0.
+    real(c_double) :: stribeck_velocity = 0.0_c_double
+    !> Stribeck exponent delta, > 0 (2: Gaussian).
+    real(c_double) :: stribeck_exponent = 0.0_c_double
+    !> Attraction rate C (1/s), > 0; +infinity for the instantaneous limit.
+    real(c_double) :: attraction = 0.0_c_double
+    !> Viscous coefficient sigma_2 (N s/m), >= 0.
+    real(c_double) :: sigma2 = 0.0_c_double
+  end type asperity_generalized_maxwell_slip_params
+
+  !> `AsperityCantorProfile`: a Cantor profile (SI; q = 1 Cantor-Liu, q < 1 Cantor-Borodich).
+  type, bind(c), public :: asperity_cantor_profile
+    !> Descendants p of every block, in [2, 64].
+    integer(c_int32_t) :: descendants = 0_c_int32_t
+    !> Generations n above the base, in [1, 200].
+    integer(c_int32_t) :: generations = 0_c_int32_t
+    !> Width ratio r of a descendant to its parent, p r < 1.
+    real(c_double) :: width_ratio = 0.0_c_double
+    !> Height ratio q of a descendant's step to its parent's, in (0, 1].
+    real(c_double) :: height_ratio = 0.0_c_double
+    !> Width w0 of the base block (m).
+    real(c_double) :: base_width = 0.0_c_double
+    !> Height h0 of the base block's step (m).
+    real(c_double) :: base_height = 0.0_c_double
+  end type asperity_cantor_profile
+
+  !> `AsperityCantorContact`: a Cantor profile's contact at one depth, per unit length.
+  type, bind(c), public :: asperity_cantor_contact
+    !> Depth below the highest tips (m).
+    real(c_double) :: depth = 0.0_c_double
+    !> Contact width (m).
+    real(c_double) :: width = 0.0_c_double
+    !> Load on the Winkler foundation (N/m).
+    real(c_double) :: winkler_load = 0.0_c_double
+    !> Load on the rigid-plastic foundation (N/m).
+    real(c_double) :: plastic_load = 0.0_c_double
+  end type asperity_cantor_contact
 
   !> `AsperityPrandtlTomlinsonTwoSpringParams`: the tip-cantilever Prandtl-Tomlinson model (SI).
   type, bind(c), public :: asperity_prandtl_tomlinson_two_spring_params
@@ -2334,6 +2383,72 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_friction_maxwell_slip_new
 
+    !> Build the generalised Maxwell-slip model (`n` >= 1 elements). Writes a new handle to `*out`.
+    function c_asperity_friction_generalized_maxwell_slip_new(stiffness, weight, n, params, out) &
+        result(r) bind(c, name="asperity_friction_generalized_maxwell_slip_new")
+      import
+      implicit none
+      real(c_double), intent(in) :: stiffness(*)
+      real(c_double), intent(in) :: weight(*)
+      integer(c_size_t), value :: n
+      type(asperity_generalized_maxwell_slip_params), intent(in) :: params
+      type(c_ptr), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_friction_generalized_maxwell_slip_new
+
+    !> The exponent of Archard's A ~ W^a for `model` and `generations` radii.
+    function c_asperity_archard_exponent(model, generations, out) &
+        result(r) bind(c, name="asperity_archard_exponent")
+      import
+      implicit none
+      integer(c_int32_t), value :: model
+      integer(c_size_t), value :: generations
+      real(c_double), intent(out) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_archard_exponent
+
+    !> Archard's real contact areas (m^2) under `n` loads (N).
+    function c_asperity_archard_area_batch(model, radii, densities, generations, &
+        contact_modulus, n, load, area) result(r) bind(c, name="asperity_archard_area_batch")
+      import
+      implicit none
+      integer(c_int32_t), value :: model
+      real(c_double), intent(in) :: radii(*)
+      real(c_double), intent(in) :: densities(*)
+      integer(c_size_t), value :: generations
+      real(c_double), value :: contact_modulus
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: load(*)
+      real(c_double), intent(inout) :: area(*)
+      integer(c_int32_t) :: r
+    end function c_asperity_archard_area_batch
+
+    !> The contact of a Cantor profile at `n` depths (m).
+    function c_asperity_cantor_contact_batch(profile, stiffness, hardness, n, depth, out) &
+        result(r) bind(c, name="asperity_cantor_contact_batch")
+      import
+      implicit none
+      type(asperity_cantor_profile), intent(in) :: profile
+      real(c_double), value :: stiffness
+      real(c_double), value :: hardness
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: depth(*)
+      type(asperity_cantor_contact), intent(inout) :: out(*)
+      integer(c_int32_t) :: r
+    end function c_asperity_cantor_contact_batch
+
+    !> A Cantor profile's fractal dimension and contact exponents (outputs may be NULL).
+    function c_asperity_cantor_exponents(profile, fractal_dimension, width_exponent, &
+        load_area_exponent) result(r) bind(c, name="asperity_cantor_exponents")
+      import
+      implicit none
+      type(asperity_cantor_profile), intent(in) :: profile
+      real(c_double), intent(out) :: fractal_dimension
+      real(c_double), intent(out) :: width_exponent
+      real(c_double), intent(out) :: load_area_exponent
+      integer(c_int32_t) :: r
+    end function c_asperity_cantor_exponents
+
     !> Build a Prandtl-Tomlinson tip (one-dimensional). Writes a new handle to `*out`.
     function c_asperity_friction_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
         damping, tolerance, out) result(r) bind(c, name="asperity_friction_prandtl_tomlinson_new")
@@ -3355,6 +3470,11 @@ module asperity
   public :: c_asperity_hamaker_work_of_adhesion
   public :: c_asperity_friction_lugre_new
   public :: c_asperity_friction_maxwell_slip_new
+  public :: c_asperity_friction_generalized_maxwell_slip_new
+  public :: c_asperity_archard_exponent
+  public :: c_asperity_archard_area_batch
+  public :: c_asperity_cantor_contact_batch
+  public :: c_asperity_cantor_exponents
   public :: c_asperity_friction_bristles_new
   public :: c_asperity_friction_prandtl_tomlinson_new
   public :: c_asperity_friction_prandtl_tomlinson_two_spring_new
@@ -3457,6 +3577,11 @@ module asperity
   public :: asperity_slider_geometry_new_uniform
   public :: asperity_friction_lugre_new
   public :: asperity_friction_maxwell_slip_new
+  public :: asperity_friction_generalized_maxwell_slip_new
+  public :: asperity_archard_exponent
+  public :: asperity_archard_area_batch
+  public :: asperity_cantor_contact_batch
+  public :: asperity_cantor_exponents
   public :: asperity_friction_bristles_new
   public :: asperity_friction_prandtl_tomlinson_new
   public :: asperity_friction_prandtl_tomlinson_two_spring_new
@@ -4539,6 +4664,88 @@ contains
     call check(c_asperity_friction_maxwell_slip_new(stiffness, capacity, &
         size(stiffness, kind=c_size_t), sigma2, law%ptr), what, status)
   end subroutine asperity_friction_maxwell_slip_new
+
+  !> The generalised Maxwell-slip model: elements of stiffnesses `stiffness` (1/m per unit
+  !> normal force) and weights `weight` (same size) attracted to the Stribeck curve of
+  !> `params`, into `law`. One-dimensional, rate dependent.
+  subroutine asperity_friction_generalized_maxwell_slip_new(stiffness, weight, params, law, &
+      status)
+    real(c_double), intent(in) :: stiffness(:)
+    real(c_double), intent(in) :: weight(:)
+    type(asperity_generalized_maxwell_slip_params), intent(in) :: params
+    type(asperity_friction), intent(inout) :: law
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_friction_generalized_maxwell_slip_new'
+    call law%free()
+    if (too_small(what, 'weight', size(weight), size(stiffness), 'size(stiffness)', status)) &
+        return
+    call check(c_asperity_friction_generalized_maxwell_slip_new(stiffness, weight, &
+        size(stiffness, kind=c_size_t), params, law%ptr), what, status)
+  end subroutine asperity_friction_generalized_maxwell_slip_new
+
+  !> The exponent `a` of Archard's A ~ W^a for `model` (`ASPERITY_ARCHARD_UNIFORM` or
+  !> `ASPERITY_ARCHARD_NON_UNIFORM`) with `generations` sphere radii.
+  subroutine asperity_archard_exponent(model, generations, a, status)
+    integer(c_int32_t), intent(in) :: model
+    integer, intent(in) :: generations
+    real(c_double), intent(out) :: a
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_archard_exponent(model, int(generations, c_size_t), a), &
+        'asperity_archard_exponent', status)
+  end subroutine asperity_archard_exponent
+
+  !> Archard's real contact areas `area` (m^2, size(load)) under `load` (N) for the sphere
+  !> radii `radii` (m, decreasing), densities `densities` (1/m^2, size(radii) - 1) and
+  !> contact modulus `contact_modulus` (Pa).
+  subroutine asperity_archard_area_batch(model, radii, densities, contact_modulus, load, area, &
+      status)
+    integer(c_int32_t), intent(in) :: model
+    real(c_double), intent(in) :: radii(:)
+    real(c_double), intent(in), target :: densities(:)
+    real(c_double), intent(in) :: contact_modulus
+    real(c_double), intent(in) :: load(:)
+    real(c_double), intent(inout) :: area(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_archard_area_batch'
+    real(c_double) :: none(1)
+    if (too_small(what, 'area', size(area), size(load), 'size(load)', status)) return
+    if (size(densities) == 0) then
+      none = 0.0_c_double
+      call check(c_asperity_archard_area_batch(model, radii, none, &
+          size(radii, kind=c_size_t), contact_modulus, size(load, kind=c_size_t), load, area), &
+          what, status)
+    else
+      call check(c_asperity_archard_area_batch(model, radii, densities, &
+          size(radii, kind=c_size_t), contact_modulus, size(load, kind=c_size_t), load, area), &
+          what, status)
+    end if
+  end subroutine asperity_archard_area_batch
+
+  !> The contact `out` (size(depth)) of the Cantor profile `profile` at the depths `depth` (m)
+  !> on a Winkler foundation of stiffness `stiffness` (Pa/m) and a rigid-plastic one of
+  !> hardness `hardness` (Pa).
+  subroutine asperity_cantor_contact_batch(profile, stiffness, hardness, depth, out, status)
+    type(asperity_cantor_profile), intent(in) :: profile
+    real(c_double), intent(in) :: stiffness, hardness
+    real(c_double), intent(in) :: depth(:)
+    type(asperity_cantor_contact), intent(inout) :: out(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_cantor_contact_batch'
+    if (too_small(what, 'out', size(out), size(depth), 'size(depth)', status)) return
+    call check(c_asperity_cantor_contact_batch(profile, stiffness, hardness, &
+        size(depth, kind=c_size_t), depth, out), what, status)
+  end subroutine asperity_cantor_contact_batch
+
+  !> The Cantor profile's fractal dimension, width exponent beta and load-area exponent
+  !> beta/(1 + beta).
+  subroutine asperity_cantor_exponents(profile, fractal_dimension, width_exponent, &
+      load_area_exponent, status)
+    type(asperity_cantor_profile), intent(in) :: profile
+    real(c_double), intent(out) :: fractal_dimension, width_exponent, load_area_exponent
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_cantor_exponents(profile, fractal_dimension, width_exponent, &
+        load_area_exponent), 'asperity_cantor_exponents', status)
+  end subroutine asperity_cantor_exponents
 
   !> Bristles of stiffnesses `stiffness` (1/m per unit normal force) and break
   !> deflections `break_deflection` (m, same size), viscous `sigma2` (N s/m), into `law`.

@@ -47,6 +47,9 @@ program sizes
   type(asperity_slider_record) :: slider_record
   type(asperity_slider_options) :: slider_options
   type(asperity_lugre_params) :: lugre_params
+  type(asperity_generalized_maxwell_slip_params) :: gms_params
+  type(asperity_cantor_profile) :: cantor_profile
+  type(asperity_cantor_contact) :: cantor_contact
   type(asperity_prandtl_tomlinson_two_spring_params) :: two_spring_params
   type(asperity_burridge_knopoff_params) :: burridge_knopoff_params
   type(asperity_friction_material) :: friction_material
@@ -91,6 +94,9 @@ program sizes
   call row('AsperitySliderRecord', c_sizeof(slider_record))
   call row('AsperitySliderOptions', c_sizeof(slider_options))
   call row('AsperityLugreParams', c_sizeof(lugre_params))
+  call row('AsperityGeneralizedMaxwellSlipParams', c_sizeof(gms_params))
+  call row('AsperityCantorProfile', c_sizeof(cantor_profile))
+  call row('AsperityCantorContact', c_sizeof(cantor_contact))
   call row('AsperityPrandtlTomlinsonTwoSpringParams', c_sizeof(two_spring_params))
   call row('AsperityBurridgeKnopoffParams', c_sizeof(burridge_knopoff_params))
   call row('AsperityFrictionMaterial', c_sizeof(friction_material))

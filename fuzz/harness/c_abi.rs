@@ -71,6 +71,8 @@ mod dynamic;
 mod fidelity;
 #[path = "c_abi/friction.rs"]
 mod friction;
+#[path = "c_abi/hierarchical.rs"]
+mod hierarchical;
 #[path = "c_abi/homogenised.rs"]
 mod homogenised;
 #[path = "c_abi/indentation.rs"]
@@ -608,6 +610,29 @@ pub enum Op {
         model: Sel,
         nulls: Nulls,
     },
+    // The generalised Maxwell-slip model and the hierarchical roughness
+    // functions (added last: the existing corpus keeps its meaning).
+    GmsNew {
+        elements: MaxwellSpec,
+        params: [F; 6],
+        nulls: Nulls,
+    },
+    Archard {
+        model: Sel,
+        radii: Vec<F>,
+        densities: Vec<F>,
+        modulus: F,
+        loads: Vec<F>,
+        generations: u8,
+        nulls: Nulls,
+    },
+    CantorContact {
+        descendants: u32,
+        generations: u32,
+        a: [F; 6],
+        depths: Vec<F>,
+        nulls: Nulls,
+    },
 }
 
 /// The handles and carried states of one input; all freed on drop.
@@ -780,7 +805,9 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
         | Op::DynStateSize { .. }
         | Op::DynStep { .. }
         | Op::DynBlock { .. }
-        | Op::DynFree { .. } => dynamic::call(ctx, op),
+        | Op::DynFree { .. }
+        | Op::GmsNew { .. } => dynamic::call(ctx, op),
+        Op::Archard { .. } | Op::CantorContact { .. } => hierarchical::call(op),
     }
 }
 

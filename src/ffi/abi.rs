@@ -73,6 +73,9 @@ const TYPES: &[TypeLayout] = crate::contact::normal_laws!(layouts!(
     "AsperitySliderOptions" => super::slider::AsperitySliderOptions,
     "AsperityFrictionMaterial" => crate::friction::FrictionMaterial,
     "AsperityLugreParams" => super::dynamic::AsperityLugreParams,
+    "AsperityCantorProfile" => crate::hierarchical::CantorProfile,
+    "AsperityCantorContact" => crate::hierarchical::CantorContact,
+    "AsperityGeneralizedMaxwellSlipParams" => super::dynamic::AsperityGeneralizedMaxwellSlipParams,
     "AsperityPrandtlTomlinsonTwoSpringParams" => super::dynamic::AsperityPrandtlTomlinsonTwoSpringParams,
     "AsperityBurridgeKnopoffParams" => super::dynamic::AsperityBurridgeKnopoffParams,
 ));

@@ -3,7 +3,9 @@
 //! springs, the Burridge–Knopoff chain) as per-increment friction steps.
 //!
 //! Each constructor (`asperity_friction_lugre_new`,
-//! `asperity_friction_maxwell_slip_new`, `asperity_friction_bristles_new`,
+//! `asperity_friction_maxwell_slip_new`,
+//! `asperity_friction_generalized_maxwell_slip_new`,
+//! `asperity_friction_bristles_new`,
 //! `asperity_friction_prandtl_tomlinson_new`,
 //! `asperity_friction_prandtl_tomlinson_two_spring_new`,
 //! `asperity_friction_burridge_knopoff_new`) validates its parameter struct
@@ -28,7 +30,8 @@ macro_rules! from_params {
 use crate::error::Result;
 use crate::friction::dynamic::burridge_knopoff::MAX_BLOCKS;
 use crate::friction::dynamic::{
-    Bristles, BurridgeKnopoff, DynamicModel, LuGre, MaxwellSlip, PrandtlTomlinson,
+    Bristles, BurridgeKnopoff, DynamicModel, GeneralizedMaxwellSlip, LuGre, MaxwellSlip,
+    PrandtlTomlinson,
 };
 
 /// The largest Burridge-Knopoff chain (blocks).
@@ -56,6 +59,26 @@ pub struct AsperityLugreParams {
     /// Velocity v_d (m/s) of the damping's decay sigma_1 exp(-(v/v_d)^2),
     /// > 0; +infinity only when sigma_1 = 0.
     pub damping_velocity: f64,
+    /// Viscous coefficient sigma_2 (N s/m), finite and >= 0.
+    pub sigma2: f64,
+}
+
+/// The generalised Maxwell-slip model's Stribeck curve and rates (see
+/// `GeneralizedMaxwellSlip::new`; the elements come as arrays). SI units.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AsperityGeneralizedMaxwellSlipParams {
+    /// Coulomb coefficient mu_c of the Stribeck curve, finite and > 0.
+    pub mu_coulomb: f64,
+    /// Static coefficient mu_s of the Stribeck curve, finite and > 0.
+    pub mu_static: f64,
+    /// Stribeck velocity v_s (m/s), finite and > 0.
+    pub stribeck_velocity: f64,
+    /// Stribeck exponent delta, finite and > 0 (2: Gaussian).
+    pub stribeck_exponent: f64,
+    /// Attraction rate C of the slip law per unit normal force (1/s), > 0;
+    /// +infinity for the instantaneous limit.
+    pub attraction: f64,
     /// Viscous coefficient sigma_2 (N s/m), finite and >= 0.
     pub sigma2: f64,
 }
@@ -169,6 +192,58 @@ pub unsafe extern "C" fn asperity_friction_maxwell_slip_new(
             core::slice::from_raw_parts(m, n),
         );
         MaxwellSlip::new(k, m, sigma2).map(DynamicModel::MaxwellSlip)
+    })
+}
+
+/// Build the generalised Maxwell-slip model (Al-Bender, Lampaert and
+/// Swevers 2005): `n` >= 1 elements of stiffnesses `stiffness[i]` (1/m per
+/// unit normal force, > 0) and weights `weight[i]` (>= 0) whose slip is
+/// attracted to their share weight[i] s(v) of the Stribeck curve of
+/// `*params`. One-dimensional: increments need `slip[1]` = 0, and dt > 0
+/// with a non-zero slip. Writes a new handle to `*out` (NULL on failure);
+/// errors name the array or the field (`params.attraction`, ...).
+#[no_mangle]
+pub unsafe extern "C" fn asperity_friction_generalized_maxwell_slip_new(
+    stiffness: *const f64,
+    weight: *const f64,
+    n: usize,
+    params: *const AsperityGeneralizedMaxwellSlipParams,
+    out: *mut *mut AsperityFriction,
+) -> i32 {
+    emit(out, || {
+        let k = input(stiffness, "stiffness")?;
+        let a = input(weight, "weight")?;
+        let p = *input(params, "params")?;
+        // SAFETY: the caller provides `n` readable values at each pointer.
+        let (k, a) = (
+            core::slice::from_raw_parts(k, n),
+            core::slice::from_raw_parts(a, n),
+        );
+        GeneralizedMaxwellSlip::new(
+            k,
+            a,
+            p.mu_coulomb,
+            p.mu_static,
+            p.stribeck_velocity,
+            p.stribeck_exponent,
+            p.attraction,
+            p.sigma2,
+        )
+        .map_err(|e| {
+            let mut e = e.renamed("weight.len()", "n");
+            for (from, to) in [
+                ("mu_coulomb", "params.mu_coulomb"),
+                ("mu_static", "params.mu_static"),
+                ("stribeck_velocity", "params.stribeck_velocity"),
+                ("stribeck_exponent", "params.stribeck_exponent"),
+                ("attraction", "params.attraction"),
+                ("sigma2", "params.sigma2"),
+            ] {
+                e = e.renamed(from, to);
+            }
+            e
+        })
+        .map(DynamicModel::GeneralizedMaxwellSlip)
     })
 }
 

@@ -51,7 +51,8 @@ pub const ASPERITY_FRICTION_STATE_SLIP_PATH: usize = 1;
 /// position b (m, NaN: none), the dissipation by mechanism (J), the n rod
 /// heights (m), the n rods' stored energies (J). LuGre: the bristle
 /// deflection z (x, y; m). Maxwell-slip: the element deflections (x, y per
-/// element; m). Bristles: the bristle deflections (m). Prandtl-Tomlinson:
+/// element; m). Generalised Maxwell-slip: per element the force per unit
+/// normal force and the mode (0 sticking, +-1 slipping). Bristles: the bristle deflections (m). Prandtl-Tomlinson:
 /// x - x_s (m), tip velocity (m/s), support position x_s (m), then with two
 /// springs the cantilever body's x_c - x_s (m) and velocity (m/s).
 /// Burridge-Knopoff: x_i - x_d (m) and v_i (m/s) per block, then the driver
@@ -143,7 +144,8 @@ pub unsafe extern "C" fn asperity_friction_free(law: *mut AsperityFriction) {
 }
 
 /// Write the number of doubles of one point's state to `*n` (homogenised:
-/// 9; slider: 9 + 2 x rods; LuGre: 4; Maxwell-slip: 2 + 2 x elements;
+/// 9; slider: 9 + 2 x rods; LuGre: 4; Maxwell-slip and generalised
+/// Maxwell-slip: 2 + 2 x elements;
 /// bristles: 2 + bristles; Prandtl-Tomlinson: 5, with two springs 7;
 /// Burridge-Knopoff: 3 + 2 x blocks).
 #[no_mangle]

@@ -15,6 +15,7 @@ pub mod dynamic;
 pub mod fidelity;
 pub mod friction;
 pub mod friction_law;
+pub mod hierarchical;
 pub mod homogenised;
 pub mod indentation;
 pub mod lj_sphere;

@@ -28,6 +28,7 @@
 //! |---|---|---|
 //! | `lugre` | [`LuGre::new`] | `mu_coulomb`, `mu_static`, `stribeck_velocity` (m/s), `stribeck_exponent` (2), `sigma0` (1/m), `sigma1` (s/m; 0), `damping_velocity` (m/s; absent = +∞, only with `sigma1` = 0), `sigma2` (N·s/m; 0) |
 //! | `maxwell_slip` | [`MaxwellSlip::new`] | `stiffness` (1/m, a list), `capacity` (a list of the same length), `sigma2` (N·s/m; 0) |
+//! | `generalized_maxwell_slip` | [`GeneralizedMaxwellSlip::new`] | `stiffness` (1/m, a list), `weight` (a list of the same length), `mu_coulomb`, `mu_static`, `stribeck_velocity` (m/s), `stribeck_exponent` (2), `attraction` (1/s; absent = +∞), `sigma2` (N·s/m; 0) |
 //! | `prandtl_tomlinson` | [`PrandtlTomlinson::new`] | `amplitude` (J), `period` (m), `stiffness` (N/m), `mass` (kg), `damping` (kg/s; 0), `tolerance` (1e-8) |
 //! | `prandtl_tomlinson_two_spring` | [`PrandtlTomlinson::two_spring`] | `amplitude` (J), `period` (m), `tip_stiffness` (N/m), `tip_mass` (kg), `tip_damping` (kg/s; 0), `cantilever_stiffness` (N/m), `cantilever_mass` (kg), `cantilever_damping` (kg/s; 0), `tolerance` (1e-8) |
 //! | `bristles` | [`Bristles::new`] | `stiffness` (1/m, a list), `break_deflection` (m, a list of the same length), `sigma2` (N·s/m; 0) |
@@ -56,8 +57,8 @@
 use crate::contact::BatchError;
 use crate::error::{check, Error, Result};
 use crate::friction::dynamic::{
-    Bristles, BurridgeKnopoff, DynamicModel, FrictionIncrement, FrictionLaw, LuGre, MaxwellSlip,
-    PrandtlTomlinson, STATE_DISSIPATION,
+    Bristles, BurridgeKnopoff, DynamicModel, FrictionIncrement, FrictionLaw,
+    GeneralizedMaxwellSlip, LuGre, MaxwellSlip, PrandtlTomlinson, STATE_DISSIPATION,
 };
 use crate::friction::slider::SlideRun;
 use serde::de::{self, DeserializeSeed, Deserializer, EnumAccess, MapAccess, VariantAccess};
@@ -130,6 +131,48 @@ impl MaxwellSlipSpec {
     /// The model ([`MaxwellSlip::new`]; its errors name the argument).
     pub fn build(&self) -> Result<MaxwellSlip> {
         MaxwellSlip::new(&self.stiffness, &self.capacity, self.sigma2)
+    }
+}
+
+/// Parameters of [`GeneralizedMaxwellSlip::new`], under the same names.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GeneralizedMaxwellSlipSpec {
+    /// Element stiffnesses kᵢ per unit normal force (1/m).
+    pub stiffness: Vec<f64>,
+    /// Element weights αᵢ, as many as `stiffness`.
+    pub weight: Vec<f64>,
+    /// Coulomb coefficient μ_c of the Stribeck curve.
+    pub mu_coulomb: f64,
+    /// Static coefficient μ_s of the Stribeck curve.
+    pub mu_static: f64,
+    /// Stribeck velocity v_s (m/s).
+    pub stribeck_velocity: f64,
+    /// Stribeck exponent δ (default 2).
+    #[serde(default = "two")]
+    pub stribeck_exponent: f64,
+    /// Attraction rate C (1/s; absent = +∞, instantaneous).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub attraction: Option<f64>,
+    /// Viscous coefficient σ₂ (N·s/m; default 0).
+    #[serde(default)]
+    pub sigma2: f64,
+}
+
+impl GeneralizedMaxwellSlipSpec {
+    /// The model ([`GeneralizedMaxwellSlip::new`]; its errors name the
+    /// argument).
+    pub fn build(&self) -> Result<GeneralizedMaxwellSlip> {
+        GeneralizedMaxwellSlip::new(
+            &self.stiffness,
+            &self.weight,
+            self.mu_coulomb,
+            self.mu_static,
+            self.stribeck_velocity,
+            self.stribeck_exponent,
+            self.attraction.unwrap_or(f64::INFINITY),
+            self.sigma2,
+        )
     }
 }
 
@@ -321,6 +364,8 @@ model_specs! {
     LuGre(LuGreSpec) => LuGre = "lugre",
     /// [`MaxwellSlip`].
     MaxwellSlip(MaxwellSlipSpec) => MaxwellSlip = "maxwell_slip",
+    /// [`GeneralizedMaxwellSlip`].
+    GeneralizedMaxwellSlip(GeneralizedMaxwellSlipSpec) => GeneralizedMaxwellSlip = "generalized_maxwell_slip",
     /// [`PrandtlTomlinson`] (one spring).
     PrandtlTomlinson(PrandtlTomlinsonSpec) => PrandtlTomlinson = "prandtl_tomlinson",
     /// [`PrandtlTomlinson::two_spring`] (tip and cantilever).

@@ -33,7 +33,8 @@
 #![allow(dead_code)]
 
 use asperity::ffi::dynamic::{
-    AsperityBurridgeKnopoffParams, AsperityLugreParams, AsperityPrandtlTomlinsonTwoSpringParams,
+    AsperityBurridgeKnopoffParams, AsperityGeneralizedMaxwellSlipParams, AsperityLugreParams,
+    AsperityPrandtlTomlinsonTwoSpringParams,
 };
 use asperity::ffi::friction_law::*;
 use asperity::ffi::slider::{
@@ -41,7 +42,7 @@ use asperity::ffi::slider::{
 };
 use asperity::ffi::{asperity_last_error_message, ASPERITY_OK};
 use asperity::friction::dynamic::{
-    Bristles, BurridgeKnopoff, LuGre, MaxwellSlip, PrandtlTomlinson,
+    Bristles, BurridgeKnopoff, GeneralizedMaxwellSlip, LuGre, MaxwellSlip, PrandtlTomlinson,
 };
 use asperity::friction::{
     BlockStates, CofForm, Dissipation, FrictionBlock, FrictionIncrement, FrictionLaw,
@@ -252,6 +253,39 @@ pub fn maxwell_slip() -> MaxwellSlip {
     MaxwellSlip::new(&MAXWELL_K, &MAXWELL_MU, 0.1).unwrap()
 }
 
+/// The generalised Maxwell-slip model on the elements of [`maxwell_slip`]
+/// (weights αᵢ = μᵢ/Σμ), μ_c = 0.3, μ_s = 0.5, v_s = 1 mm/s, C = 40/s,
+/// σ₂ = 0.1 N·s/m.
+pub const GMS_ALPHA: [f64; 3] = [0.4, 0.4, 0.2];
+
+pub fn generalized_maxwell_slip() -> GeneralizedMaxwellSlip {
+    let p = gms_params();
+    GeneralizedMaxwellSlip::new(
+        &MAXWELL_K,
+        &GMS_ALPHA,
+        p.mu_coulomb,
+        p.mu_static,
+        p.stribeck_velocity,
+        p.stribeck_exponent,
+        p.attraction,
+        p.sigma2,
+    )
+    .unwrap()
+}
+
+/// [`generalized_maxwell_slip`] for
+/// `asperity_friction_generalized_maxwell_slip_new`.
+pub fn gms_params() -> AsperityGeneralizedMaxwellSlipParams {
+    AsperityGeneralizedMaxwellSlipParams {
+        mu_coulomb: 0.3,
+        mu_static: 0.5,
+        stribeck_velocity: 1e-3,
+        stribeck_exponent: 2.0,
+        attraction: 40.0,
+        sigma2: 0.1,
+    }
+}
+
 /// Three bristles.
 pub const BRISTLE_K: [f64; 3] = [1e5, 2e5, 5e4];
 /// Their break deflections (m).
@@ -453,6 +487,12 @@ pub fn dynamic_cases() -> Vec<Case> {
         dt: 1e-3,
         ..Default::default()
     });
+    let gms_incs = along(24, 0x17, |k, rng| FrictionIncrement {
+        normal_force: 1.0 + 2.0 * rng.f(),
+        slip: slip1(k, rng, 4e-6),
+        dt: 1e-3,
+        ..Default::default()
+    });
     let pt_incs = |seed| {
         along(16, seed, |k, rng| FrictionIncrement {
             normal_force: 1.0,
@@ -489,6 +529,15 @@ pub fn dynamic_cases() -> Vec<Case> {
             law: Box::new(maxwell_slip()),
             bad: common_bad(maxwell_incs[0]),
             incs: maxwell_incs,
+        },
+        Case {
+            name: "generalized_maxwell_slip",
+            law: Box::new(generalized_maxwell_slip()),
+            bad: with(
+                common_bad(gms_incs[0]),
+                vec![rate(gms_incs[0]), track(gms_incs[0])],
+            ),
+            incs: gms_incs,
         },
         Case {
             name: "bristles",

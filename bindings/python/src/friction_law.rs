@@ -28,8 +28,8 @@ enum Concrete {
 /// ``state_len`` values, all zero when fresh: ``[D, S, law…]`` with the
 /// accumulated dissipation D (J) and slip path S (m) first. Instances are
 /// ``HomogenisedFriction``, ``Slider`` and the dynamic models (``LuGre``,
-/// ``MaxwellSlip``, ``PrandtlTomlinson``, ``BurridgeKnopoff``, ``Bristles``,
-/// or ``friction_model(spec)``). Immutable; share it between threads (the
+/// ``MaxwellSlip``, ``GeneralizedMaxwellSlip``, ``PrandtlTomlinson``,
+/// ``BurridgeKnopoff``, ``Bristles``, or ``friction_model(spec)``). Immutable; share it between threads (the
 /// GIL is released during steps).
 #[pyclass(module = "asperity", frozen, subclass, name = "FrictionLaw")]
 pub struct PyFrictionLaw {
@@ -819,6 +819,7 @@ fn build_dynamic(key: &str, kwargs: &Bound<'_, PyDict>) -> PyResult<DynamicModel
 
 dynamic_class!(LuGre, "lugre", "LuGre(mu_coulomb, mu_static, stribeck_velocity, sigma0, stribeck_exponent=2, sigma1=0, damping_velocity=inf, sigma2=0)\n\nThe LuGre model (Canudas de Wit et al. 1995) with Stribeck weakening, integrated exactly per increment: coefficients μ_c, μ_s, Stribeck velocity v_s (m/s), bristle stiffness σ0 and damping σ1 per unit normal force (1/m, s/m), viscous σ2 (N·s/m). Keyword arguments, named as the Rust constructor's.");
 dynamic_class!(MaxwellSlip, "maxwell_slip", "MaxwellSlip(stiffness, capacity, sigma2=0)\n\nMaxwell-slip elements (pre-sliding hysteresis, Masing rules): element stiffnesses k_i per unit normal force (1/m) and break-away coefficients μ_i (lists), viscous σ2 (N·s/m). Keyword arguments.");
+dynamic_class!(GeneralizedMaxwellSlip, "generalized_maxwell_slip", "GeneralizedMaxwellSlip(stiffness, weight, mu_coulomb, mu_static, stribeck_velocity, stribeck_exponent=2, attraction=inf, sigma2=0)\n\nThe generalised Maxwell-slip model (Al-Bender, Lampaert and Swevers 2005): element stiffnesses k_i per unit normal force (1/m) and weights α_i (lists), the elements' slip attracted at rate C (1/s; absent: instantaneous) to α_i s(v) on the Stribeck curve s(v) = μ_c + (μ_s − μ_c) exp(−|v/v_s|^δ), viscous σ2 (N·s/m). One-dimensional (slip[1] = 0), rate dependent. Keyword arguments.");
 dynamic_class!(PrandtlTomlinson, "prandtl_tomlinson", "PrandtlTomlinson(**parameters)\n\nThe Prandtl–Tomlinson tip in a sinusoidal potential pulled through one spring (keyword arguments named as the Rust constructor's: see the scene key `prandtl_tomlinson`).");
 dynamic_class!(PrandtlTomlinsonTwoSpring, "prandtl_tomlinson_two_spring", "PrandtlTomlinsonTwoSpring(**parameters)\n\nThe Prandtl–Tomlinson tip with tip and cantilever springs (scene key `prandtl_tomlinson_two_spring`; keyword arguments named as the Rust constructor's).");
 dynamic_class!(BurridgeKnopoff, "burridge_knopoff", "BurridgeKnopoff(**parameters)\n\nThe Burridge–Knopoff block chain with static and velocity-weakening friction, every stick and slip located as an event (scene key `burridge_knopoff`; keyword arguments named as the Rust constructor's).");
@@ -828,6 +829,7 @@ dynamic_class!(Bristles, "bristles", "Bristles(stiffness, break_deflection, sigm
 ///
 /// A dynamic friction model from its scene entry: ``{"lugre": {...}}`` (or
 /// with a ``"name"``), the keys ``lugre``, ``maxwell_slip``,
+/// ``generalized_maxwell_slip``,
 /// ``prandtl_tomlinson``, ``prandtl_tomlinson_two_spring``,
 /// ``burridge_knopoff``, ``bristles`` and the parameters named as the Rust
 /// constructors' arguments.
@@ -852,6 +854,9 @@ fn friction_model(py: Python<'_>, spec: &Bound<'_, PyDict>) -> PyResult<Py<PyAny
     let obj = match key.as_str() {
         "lugre" => Py::new(py, LuGre::new(py, Some(params))?)?.into_any(),
         "maxwell_slip" => Py::new(py, MaxwellSlip::new(py, Some(params))?)?.into_any(),
+        "generalized_maxwell_slip" => {
+            Py::new(py, GeneralizedMaxwellSlip::new(py, Some(params))?)?.into_any()
+        }
         "prandtl_tomlinson" => Py::new(py, PrandtlTomlinson::new(py, Some(params))?)?.into_any(),
         "prandtl_tomlinson_two_spring" => {
             Py::new(py, PrandtlTomlinsonTwoSpring::new(py, Some(params))?)?.into_any()
@@ -918,6 +923,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Slider>()?;
     m.add_class::<LuGre>()?;
     m.add_class::<MaxwellSlip>()?;
+    m.add_class::<GeneralizedMaxwellSlip>()?;
     m.add_class::<PrandtlTomlinson>()?;
     m.add_class::<PrandtlTomlinsonTwoSpring>()?;
     m.add_class::<BurridgeKnopoff>()?;

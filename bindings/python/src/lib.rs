@@ -10,6 +10,7 @@ mod common;
 mod contact;
 mod friction;
 mod friction_law;
+mod hierarchical;
 mod lj_sphere;
 mod materials;
 mod rescaling;
@@ -32,5 +33,6 @@ fn _asperity(m: &Bound<'_, PyModule>) -> PyResult<()> {
     statistics::register(m)?;
     friction::register(m)?;
     friction_law::register(m)?;
+    hierarchical::register(m)?;
     Ok(())
 }

@@ -30,6 +30,42 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 });
             }
         }
+        Op::GmsNew {
+            elements,
+            params,
+            nulls,
+        } => {
+            let (k, a) = elements.make();
+            let [mc, ms, vs, de, c, s2] = fs(*params);
+            let p = AsperityGeneralizedMaxwellSlipParams {
+                mu_coulomb: mc,
+                mu_static: ms,
+                stribeck_velocity: vs,
+                stribeck_exponent: de,
+                attraction: c,
+                sigma2: s2,
+            };
+            let mut out = null_mut();
+            let s = asperity_friction_generalized_maxwell_slip_new(
+                bufp(&k, nulls.at(0)),
+                bufp(&a, nulls.at(1)),
+                k.len(),
+                cp(&p, nulls.at(2)),
+                mp(&mut out, nulls.at(3)),
+            );
+            if let Some(d) = made(
+                s,
+                out,
+                !nulls.at(3),
+                "friction_generalized_maxwell_slip_new",
+            ) {
+                ctx.dynamics.push(Dynamic {
+                    model: d,
+                    pt: None,
+                    heavy: false,
+                });
+            }
+        }
         Op::MaxwellNew {
             elements,
             sigma2,

@@ -1,5 +1,5 @@
 //! Maxwell-slip elements in parallel (Al-Bender, Lampaert and Swevers 2004;
-//! Lampaert, Al-Bender and Swevers 2003; thesis 5.3.7, (5-9)..(5-12) reduced
+//! Lampaert, Al-Bender and Swevers 2003; thesis 5.3.8, (5-9)..(5-12) reduced
 //! to the tangential direction), scaled by the normal force: pre-sliding
 //! hysteresis with non-local memory.
 //!

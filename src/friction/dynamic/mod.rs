@@ -20,8 +20,11 @@
 //!   cantilever springs in series ([`PrandtlTomlinson::two_spring`]),
 //!   integrated with error control; stick-slip when 4π²U₀/(k_eff a²) > 1.
 //! * [`MaxwellSlip`]: N Maxwell-slip elements in parallel (Al-Bender,
-//!   Lampaert and Swevers 2004; thesis 5.3.7, (5-9)..(5-12) reduced to the
+//!   Lampaert and Swevers 2004; thesis 5.3.8, (5-9)..(5-12) reduced to the
 //!   tangential direction): pre-sliding hysteresis with non-local memory.
+//! * [`GeneralizedMaxwellSlip`]: the generalised Maxwell-slip model
+//!   (Al-Bender, Lampaert and Swevers 2005; thesis 5.3.8): the elements'
+//!   slip attracted to a Stribeck curve, integrated exactly per increment.
 //! * [`BurridgeKnopoff`]: a chain of blocks coupled by springs and pulled
 //!   from a driver plate over velocity-weakening friction (Burridge and
 //!   Knopoff 1967, Carlson and Langer 1989; thesis (5-14)), with the stick
@@ -66,6 +69,7 @@
 pub mod bristles;
 pub mod burridge_knopoff;
 mod dormand_prince;
+pub mod generalized_maxwell_slip;
 pub mod lugre;
 pub mod maxwell_slip;
 pub mod prandtl_tomlinson;
@@ -73,6 +77,7 @@ pub mod stick_slip;
 
 pub use bristles::Bristles;
 pub use burridge_knopoff::BurridgeKnopoff;
+pub use generalized_maxwell_slip::GeneralizedMaxwellSlip;
 pub use lugre::LuGre;
 pub use maxwell_slip::MaxwellSlip;
 pub use prandtl_tomlinson::{ForcePull, PrandtlTomlinson};
@@ -92,6 +97,8 @@ pub enum DynamicModel {
     LuGre(LuGre),
     /// [`MaxwellSlip`].
     MaxwellSlip(MaxwellSlip),
+    /// [`GeneralizedMaxwellSlip`].
+    GeneralizedMaxwellSlip(GeneralizedMaxwellSlip),
     /// [`PrandtlTomlinson`] (one or two springs).
     PrandtlTomlinson(PrandtlTomlinson),
     /// [`BurridgeKnopoff`].
@@ -105,6 +112,7 @@ macro_rules! each_model {
         match $self {
             DynamicModel::LuGre($m) => $e,
             DynamicModel::MaxwellSlip($m) => $e,
+            DynamicModel::GeneralizedMaxwellSlip($m) => $e,
             DynamicModel::PrandtlTomlinson($m) => $e,
             DynamicModel::BurridgeKnopoff($m) => $e,
             DynamicModel::Bristles($m) => $e,
@@ -121,6 +129,9 @@ impl FrictionLaw for DynamicModel {
     }
     fn check(&self, increment: &FrictionIncrement) -> Result<()> {
         each_model!(self, m => m.check(increment))
+    }
+    fn check_state(&self, state: &[f64], what: &'static str) -> Result<()> {
+        each_model!(self, m => m.check_state(state, what))
     }
     fn advance(
         &self,
@@ -146,7 +157,8 @@ pub(crate) fn track_only(increment: &FrictionIncrement) -> Result<()> {
     Ok(())
 }
 
-/// The shared checks of parallel elements (Maxwell-slip, bristles):
+/// The shared checks of parallel elements (Maxwell-slip, generalised
+/// Maxwell-slip, bristles):
 /// `stiffness` not empty, every value finite and > 0, and `other` as long
 /// (its length error names `other_len`, e.g. `capacity.len()`). The caller
 /// checks `other`'s values.

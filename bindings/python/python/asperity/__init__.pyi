@@ -626,6 +626,9 @@ class LuGre(FrictionLaw):
 class MaxwellSlip(FrictionLaw):
     def __init__(self, **parameters: Any) -> None: ...
 
+class GeneralizedMaxwellSlip(FrictionLaw):
+    def __init__(self, **parameters: Any) -> None: ...
+
 class PrandtlTomlinson(FrictionLaw):
     def __init__(self, **parameters: Any) -> None: ...
 
@@ -639,4 +642,30 @@ class Bristles(FrictionLaw):
     def __init__(self, **parameters: Any) -> None: ...
 
 def friction_model(spec: Dict[str, Any]) -> FrictionLaw: ...
+
+# --- hierarchical roughness (thesis 5.4) -------------------------------------
+
+def archard_exponent(model: Literal["uniform", "non_uniform"], generations: int) -> float: ...
+@overload
+def archard_area(
+    model: Literal["uniform", "non_uniform"], radii: ArrayLike, densities: ArrayLike, contact_modulus: Real, load: float
+) -> float: ...
+@overload
+def archard_area(
+    model: Literal["uniform", "non_uniform"], radii: ArrayLike, densities: ArrayLike, contact_modulus: Real, load: ArrayLike
+) -> Array: ...
+def cantor_contact(
+    descendants: int,
+    width_ratio: Real,
+    height_ratio: Real,
+    base_width: Real,
+    base_height: Real,
+    generations: int,
+    depth: Reals,
+    stiffness: Optional[Real] = None,
+    hardness: Optional[Real] = None,
+) -> Dict[str, Any]: ...
+def cantor_exponents(
+    descendants: int, width_ratio: Real, height_ratio: Real, base_width: Real, base_height: Real, generations: int
+) -> Dict[str, float]: ...
 def stick_slip(forces: ArrayLike, slips: ArrayLike, min_drop: Real) -> Dict[str, Any]: ...
