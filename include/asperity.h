@@ -1851,7 +1851,7 @@ int32_t asperity_friction_maxwell_slip_new(const double *stiffness,
 // Build the generalised Maxwell-slip model (Al-Bender, Lampaert and
 // Swevers 2005): `n` >= 1 elements of stiffnesses `stiffness[i]` (1/m per
 // unit normal force, > 0) and weights `weight[i]` (>= 0) whose slip is
-// attracted to their share weight[i] s(v) of the Stribeck curve of
+// attracted to their share weight\[i\] s(v) of the Stribeck curve of
 // `*params`. One-dimensional: increments need `slip[1]` = 0, and dt > 0
 // with a non-zero slip. Writes a new handle to `*out` (NULL on failure);
 // errors name the array or the field (`params.attraction`, ...).

@@ -13,7 +13,7 @@
 //!    adds is tapered away the same way. The ordinates k = 1, 2 (shaped by
 //!    the form removal and the taper) and the Nyquist ordinate are left out.
 //! 3. **The taper's smoothing is modelled**, not ignored: the Hann window
-//!    averages neighbouring harmonics, E[G_k] = ⅔G(q_k) + ⅙(G(q_{k−1}) +
+//!    averages neighbouring harmonics, E\[G_k\] = ⅔G(q_k) + ⅙(G(q_{k−1}) +
 //!    G(q_{k+1})), which lifts a steep spectrum at its lowest harmonics (by
 //!    e(e+1)/(6k²) for G ∝ q^{−e}: 11 % at k = 4 for H = 0.8) and would
 //!    flatten the fit. The fit subtracts log₁₀ of that factor for the
