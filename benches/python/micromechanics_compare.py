@@ -176,6 +176,13 @@ def run_micromechanics(ind, t, h_m, p_n, ilhu=None):
     else:
         tt = t
     ind.setRawData(h, p, tt)
+    e_analyse = None
+    if ilhu is None:
+        # Its whole chain in one call, to check the stage calls below.
+        with contextlib.redirect_stdout(io.StringIO()):
+            ind.analyse()
+        e_analyse = ind.metaUser.get("E_GPa", [None])[0]
+        ind.setRawData(h, p, tt)
     with contextlib.redirect_stdout(io.StringIO()) as out:
         if ilhu is None:
             ind.identifyLoadHoldUnload()
@@ -226,6 +233,7 @@ def run_micromechanics(ind, t, h_m, p_n, ilhu=None):
         "A": float(np.ravel(a)[0]) * 1e-12,
         "Er": float(np.ravel(er)[0]) * 1e9,
         "E": e * 1e9,
+        "E_analyse": None if e_analyse is None else float(e_analyse) * 1e9,
         "H": pmax / float(np.ravel(a)[0]) * 1e9,
     }
 
@@ -282,6 +290,7 @@ ROWS = [
     ("Er", "E_r (GPa)", 1e-9, "{:.3f}"),
     ("E", "E sample (GPa)", 1e-9, "{:.3f}"),
     ("H", "H (GPa)", 1e-9, "{:.4f}"),
+    ("E_analyse", "E sample, micromechanics' own analyse() (GPa)", 1e-9, "{:.3f}"),
 ]
 
 
