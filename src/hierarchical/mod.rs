@@ -34,6 +34,8 @@
 
 pub mod archard;
 pub mod cantor;
+pub mod schmittbuhl;
 
 pub use archard::{archard_exponent, Archard, ArchardModel};
 pub use cantor::{CantorContact, CantorProfile};
+pub use schmittbuhl::{Generation, Schmittbuhl};
