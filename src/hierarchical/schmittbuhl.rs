@@ -52,19 +52,23 @@
 //! [`stick_slip`](crate::friction::dynamic::stick_slip()) (drops of at
 //! least [`MIN_DROP`] times the chain's static capacity N F_s):
 //!
-//! * the **static friction** of generation g is the largest force up to the
-//!   peak of the first slip event (the whole run's largest when there is
-//!   none), μ_s^g = F_peak / n_g;
-//! * the **kinetic friction** is the work per unit slip over whole
-//!   stick-slip cycles, from the first event's peak to the last one's
-//!   (from the first event to the end with one event, over the second half
-//!   of the run with none: steady sliding), the `kinetic_force` of
-//!   `stick_slip` on that window, μ_k^g = F_k / n_g, taken no larger than
-//!   μ_s^g (they differ by the quasi-static error when the law is
-//!   Coulomb's).
+//! * the **static friction** of generation g is the mean peak force of the
+//!   events, the force at which the chain breaks loose (the run's largest
+//!   force when there is none: steady sliding), μ_s^g = F_s / n_g. (The
+//!   peak before the first event alone is not used: with a pre-stress the
+//!   first event is one block's, breaking loose under a partly loaded
+//!   chain, and its peak can lie below the kinetic friction.)
+//! * the **kinetic friction** is the friction work per unit slip of the
+//!   blocks, F_k = D/s̄, with D the chain's dissipation (the friction work
+//!   the Burridge–Knopoff response books) and s̄ the blocks' mean slip
+//!   (the driver's plus the change of the mean lag Σ(x_i − x_d)/N) over a
+//!   window from the first event's peak to the last one's (to the end of
+//!   the run with one event, the second half of the run with none: steady
+//!   sliding); μ_k^g = F_k / n_g, taken no larger than μ_s^g (they differ
+//!   by the quasi-static error when the law is Coulomb's).
 //!
-//! Over periodic cycles the driver's work equals the dissipation, so the
-//! work per unit slip is the slip-weighted mean of the blocks' friction:
+//! The friction work per unit slip is the slip-weighted mean of the
+//! blocks' friction:
 //! with Coulomb friction μ_s = μ_k (v_c = ∞) the law is a fixed point
 //! (every sliding block resists with μ_s n, the chain with μ_s N n), up to
 //! the quasi-static error V√(k_p m)/F_s of the inertial overshoot; with
@@ -316,33 +320,33 @@ impl Schmittbuhl {
             ..Default::default()
         };
         let mut work = chain.work();
+        // Per sample: the force on the driver, the dissipation of the
+        // increment, Σ_i (x_i − x_d) at its end.
         let mut forces = Vec::with_capacity(samples);
+        let mut dissipated = Vec::with_capacity(samples);
+        let lag = |state: &[f64]| (0..m).map(|i| state[state_block(i)]).sum::<f64>();
+        let mut lags = Vec::with_capacity(samples);
         for _ in 0..samples {
             let r = chain.step_in_place(&mut state, &inc, &mut work)?;
             forces.push(-r.force[0]);
+            dissipated.push(r.dissipated);
+            lags.push(lag(&state));
         }
         let slips = vec![ds; samples];
         let min_drop = MIN_DROP * m as f64 * block_static;
         let whole = stick_slip(&forces, &slips, min_drop)?;
         let events = &whole.events;
-        let (peak, window) = match (events.first(), events.last()) {
-            (Some(first), Some(last)) => {
-                let peak = forces[..=first.peak_index]
-                    .iter()
-                    .copied()
-                    .fold(f64::NEG_INFINITY, f64::max);
-                let end = if events.len() >= 2 {
-                    last.peak_index
-                } else {
-                    samples - 1
-                };
-                (peak, first.peak_index..end)
-            }
-            _ => (whole.max_force, samples / 2..samples),
+        let (a, b) = match (events.first(), events.last()) {
+            (Some(first), Some(last)) if events.len() >= 2 => (first.peak_index, last.peak_index),
+            (Some(first), _) => (first.peak_index, samples - 1),
+            _ => (samples / 2, samples - 1),
         };
-        let kinetic = stick_slip(&forces[window.clone()], &slips[window], min_drop)?
-            .kinetic_force;
-        let mu_s = (peak / normal).max(0.0);
+        // The blocks' mean slip over the window (samples a+1 ..= b): the
+        // driver's plus the change of the mean lag.
+        let slip = (b - a) as f64 * ds + (lags[b] - lags[a]) / m as f64;
+        let work_done: f64 = dissipated[a + 1..=b].iter().sum();
+        let kinetic = if slip > 0.0 { work_done / slip } else { 0.0 };
+        let mu_s = (whole.static_force / normal).max(0.0);
         let mu_k = (kinetic / normal).clamp(0.0, mu_s);
         Ok(((mu_s, mu_k), events.len()))
     }
