@@ -5,9 +5,9 @@
 //! inertial overshoot of a sliding block, 2e-5 at generation 0 of the
 //! default model, growing as Nᵍ with d = 3) and sampled at
 //! [`SAMPLES_PER_REACH`] increments per static reach F_s/k_p: a peak is
-//! sampled up to one increment's load rise k_p Δs = F_s/400 low, and the
-//! work per unit slip is a rectangle rule biased by half an increment's
-//! rise, (F_s/800)/F_k ≈ 2.1e-3 for μ_s/μ_k = 5/3.
+//! sampled up to one increment's load rise k_p Δs = F_s/400 low.
+//! The kinetic friction is the friction work per unit slip of the blocks,
+//! exact for Coulomb friction up to the integration tolerance.
 
 use asperity::hierarchical::schmittbuhl::SAMPLES_PER_REACH;
 use asperity::hierarchical::Schmittbuhl;
@@ -53,10 +53,8 @@ fn coulomb_law_is_a_fixed_point_of_the_renormalisation() {
 fn identical_blocks_keep_a_stick_slip_law() {
     // No pre-stress: the chain's blocks switch together and move as one
     // block, whose stick-slip breaks loose at F_s and whose work per unit
-    // slip over whole cycles is F_k (driver work = dissipation): the law
-    // (μ_s, μ_k) is a fixed point up to the sampling, one increment's rise
-    // per generation for the peak, half of one for the work per slip (and
-    // as much again for the window's ends, sampled peaks).
+    // slip is F_k: the law (μ_s, μ_k) is a fixed point, up to the
+    // sampling of the peaks (one increment's rise per generation).
     for (mu_s, mu_k) in [(0.5, 0.3), (0.8, 0.2), (0.3, 0.25)] {
         for ratio in [2, 3, 4] {
             let model = Schmittbuhl {
@@ -76,11 +74,9 @@ fn identical_blocks_keep_a_stick_slip_law() {
                     g.mu_static >= mu_s * (1.0 - 1.5 * SAMPLE * g.index as f64),
                     "{what}"
                 );
-                let bias = 0.5 * SAMPLE * mu_s / mu_k;
-                assert!(
-                    (g.mu_kinetic / mu_k - 1.0).abs() < 2.0 * bias,
-                    "{what} {bias}"
-                );
+                // The friction work per unit slip of the blocks: F_k, up to
+                // the kinetic energy booked at stops (integration tolerance).
+                assert!((g.mu_kinetic / mu_k - 1.0).abs() < 1e-4, "{what}");
             }
         }
     }
@@ -107,10 +103,16 @@ fn pre_stress_closes_the_static_kinetic_gap() {
                 let what = format!("δ {disorder} N {ratio}: {w:?}");
                 assert!(w[1].mu_static <= w[0].mu_static * (1.0 + SAMPLE), "{what}");
                 assert!(w[1].mu_kinetic <= w[1].mu_static, "{what}");
-                assert!(w[1].mu_kinetic >= 0.9 * w[0].mu_kinetic, "{what}");
+                // Coulomb kinetic friction: the friction work per unit
+                // slip is F_k whatever the order of the slips (taken no
+                // larger than the static friction, the mean break-away peak,
+                // which many partial events can put just below F_k).
+                let k = w[1].mu_kinetic;
+                assert!((k / 0.3 - 1.0).abs() < 1e-4 || k == w[1].mu_static, "{what}");
+                assert!(w[1].mu_static > 0.3 * 0.98, "{what}");
             }
             let (first, last) = (law[0].ratio, law.last().unwrap().ratio);
-            assert!(last > first + 0.1, "δ {disorder} N {ratio}: {law:?}");
+            assert!(last > first + 0.2, "δ {disorder} N {ratio}: {law:?}");
             assert!(last <= 1.0);
         }
     }
