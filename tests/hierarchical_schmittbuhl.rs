@@ -108,7 +108,10 @@ fn pre_stress_closes_the_static_kinetic_gap() {
                 // larger than the static friction, the mean break-away peak,
                 // which many partial events can put just below F_k).
                 let k = w[1].mu_kinetic;
-                assert!((k / 0.3 - 1.0).abs() < 1e-4 || k == w[1].mu_static, "{what}");
+                assert!(
+                    (k / 0.3 - 1.0).abs() < 1e-4 || k == w[1].mu_static,
+                    "{what}"
+                );
                 assert!(w[1].mu_static > 0.3 * 0.98, "{what}");
             }
             let (first, last) = (law[0].ratio, law.last().unwrap().ratio);
@@ -140,12 +143,18 @@ fn velocity_weakening_flows_down_and_stays_finite() {
                 for w in law.windows(2) {
                     let what = format!("v_c {vc} δ {disorder} N {ratio} d {dimension}: {w:?}");
                     let (a, b) = (&w[0], &w[1]);
-                    assert!(b.mu_static.is_finite() && b.mu_kinetic.is_finite(), "{what}");
+                    assert!(
+                        b.mu_static.is_finite() && b.mu_kinetic.is_finite(),
+                        "{what}"
+                    );
                     assert!(b.mu_static > 0.0 && b.mu_kinetic >= 0.0, "{what}");
                     assert!(b.mu_static <= a.mu_static * (1.0 + SAMPLE), "{what}");
                     // The window's ends are sampled: up to one increment's rise,
                     // F_s/400 a block, off a whole number of cycles.
-                    assert!(b.mu_kinetic <= a.mu_kinetic + SAMPLE * a.mu_static, "{what}");
+                    assert!(
+                        b.mu_kinetic <= a.mu_kinetic + SAMPLE * a.mu_static,
+                        "{what}"
+                    );
                     assert!(b.mu_kinetic <= b.mu_static, "{what}");
                 }
             }
@@ -206,25 +215,121 @@ fn generations_scale_as_an_elastic_continuum() {
 fn bad_inputs_are_named_errors() {
     let base = Schmittbuhl::default();
     let cases: Vec<(&str, Schmittbuhl)> = vec![
-        ("mu_static", Schmittbuhl { mu_static: -0.1, ..base }),
-        ("mu_static", Schmittbuhl { mu_static: f64::NAN, ..base }),
-        ("mu_kinetic", Schmittbuhl { mu_kinetic: 0.6, ..base }),
-        ("mu_kinetic", Schmittbuhl { mu_kinetic: -1.0, ..base }),
-        ("weakening_velocity", Schmittbuhl { weakening_velocity: 0.0, ..base }),
-        ("weakening_velocity", Schmittbuhl { weakening_velocity: f64::NAN, ..base }),
+        (
+            "mu_static",
+            Schmittbuhl {
+                mu_static: -0.1,
+                ..base
+            },
+        ),
+        (
+            "mu_static",
+            Schmittbuhl {
+                mu_static: f64::NAN,
+                ..base
+            },
+        ),
+        (
+            "mu_kinetic",
+            Schmittbuhl {
+                mu_kinetic: 0.6,
+                ..base
+            },
+        ),
+        (
+            "mu_kinetic",
+            Schmittbuhl {
+                mu_kinetic: -1.0,
+                ..base
+            },
+        ),
+        (
+            "weakening_velocity",
+            Schmittbuhl {
+                weakening_velocity: 0.0,
+                ..base
+            },
+        ),
+        (
+            "weakening_velocity",
+            Schmittbuhl {
+                weakening_velocity: f64::NAN,
+                ..base
+            },
+        ),
         ("ratio", Schmittbuhl { ratio: 1, ..base }),
         ("ratio", Schmittbuhl { ratio: 65, ..base }),
-        ("generations", Schmittbuhl { generations: 0, ..base }),
-        ("generations", Schmittbuhl { generations: 13, ..base }),
-        ("dimension", Schmittbuhl { dimension: 1, ..base }),
-        ("dimension", Schmittbuhl { dimension: 4, ..base }),
+        (
+            "generations",
+            Schmittbuhl {
+                generations: 0,
+                ..base
+            },
+        ),
+        (
+            "generations",
+            Schmittbuhl {
+                generations: 13,
+                ..base
+            },
+        ),
+        (
+            "dimension",
+            Schmittbuhl {
+                dimension: 1,
+                ..base
+            },
+        ),
+        (
+            "dimension",
+            Schmittbuhl {
+                dimension: 4,
+                ..base
+            },
+        ),
         ("mass", Schmittbuhl { mass: 0.0, ..base }),
-        ("coupling_stiffness", Schmittbuhl { coupling_stiffness: -1.0, ..base }),
-        ("pulling_stiffness", Schmittbuhl { pulling_stiffness: f64::INFINITY, ..base }),
-        ("normal_force", Schmittbuhl { normal_force: 0.0, ..base }),
-        ("velocity", Schmittbuhl { velocity: -1e-4, ..base }),
-        ("disorder", Schmittbuhl { disorder: 1.0, ..base }),
-        ("disorder", Schmittbuhl { disorder: -0.1, ..base }),
+        (
+            "coupling_stiffness",
+            Schmittbuhl {
+                coupling_stiffness: -1.0,
+                ..base
+            },
+        ),
+        (
+            "pulling_stiffness",
+            Schmittbuhl {
+                pulling_stiffness: f64::INFINITY,
+                ..base
+            },
+        ),
+        (
+            "normal_force",
+            Schmittbuhl {
+                normal_force: 0.0,
+                ..base
+            },
+        ),
+        (
+            "velocity",
+            Schmittbuhl {
+                velocity: -1e-4,
+                ..base
+            },
+        ),
+        (
+            "disorder",
+            Schmittbuhl {
+                disorder: 1.0,
+                ..base
+            },
+        ),
+        (
+            "disorder",
+            Schmittbuhl {
+                disorder: -0.1,
+                ..base
+            },
+        ),
     ];
     for (name, model) in cases {
         match model.run() {
