@@ -11,6 +11,14 @@
 //!   Winkler–Fuss elastic foundation (Borodich and Onishchenko) or a
 //!   rigid-perfectly plastic one (Warren and Krajcinovic 1995), and the
 //!   series-spring compliance of Plesha and Ni (5-13).
+//! * [`schmittbuhl`]: Schmittbuhl, Vilotte and Roux's hierarchical model
+//!   (1996; thesis 5.4.3): blocks N times larger per generation, each
+//!   generation's law found from a Burridge–Knopoff chain of N blocks of the
+//!   finer one (static friction: the mean break-away peak; kinetic: the
+//!   friction work per unit slip), springs and masses rescaled as an
+//!   elastic continuum of dimension 2 or 3. Coulomb friction is a fixed
+//!   point; identical blocks keep a stick-slip law; a pre-stress drives
+//!   μ_s towards μ_k; velocity weakening lowers both.
 //!
 //! Units: SI; loads W (N), areas A (m²) for Archard's three-dimensional
 //! spheres; for the two-dimensional Cantor profiles loads and contact widths
@@ -28,12 +36,17 @@
 //! * T. L. Warren, D. Krajcinovic, "Fractal models of elastic-perfectly
 //!   plastic contact of rough surfaces based on the Cantor set", Int. J.
 //!   Solids Struct. 32 (1995) 2907–2922.
+//! * J. Schmittbuhl, J.-P. Vilotte, S. Roux, "Velocity weakening friction:
+//!   a renormalization approach", J. Geophys. Res. 101(B12) (1996)
+//!   27741–27764.
 //! * M. E. Plesha, D. Ni, "Scaling of geological discontinuity normal load–
 //!   deformation response using fractal geometry", Int. J. Numer. Anal.
 //!   Meth. Geomech. 25 (2001) 741–756.
 
 pub mod archard;
 pub mod cantor;
+pub mod schmittbuhl;
 
 pub use archard::{archard_exponent, Archard, ArchardModel};
 pub use cantor::{CantorContact, CantorProfile};
+pub use schmittbuhl::{Generation, Schmittbuhl};
