@@ -34,13 +34,13 @@ stage fails in either package is skipped with the reason.
 
 Setup (micromechanics only in this script's environment, outside the tree)::
 
-    python3 -m venv /work/venv-micro
-    /work/venv-micro/bin/pip install micromechanics==1.3.5
+    python3 -m venv ~/.cache/asperity/micro-venv
+    ~/.cache/asperity/micro-venv/bin/pip install micromechanics==1.3.5
     cargo build --release --features cli
 
 Run (from the repository root)::
 
-    /work/venv-micro/bin/python benches/python/micromechanics_compare.py
+    ~/.cache/asperity/micro-venv/bin/python benches/python/micromechanics_compare.py
     # --asperity PATH (default $CARGO_TARGET_DIR/release/asperity, else
     # target/release/asperity), --data DIR (default ../shared/data/indentation)
 
