@@ -728,6 +728,31 @@ mod tests {
     }
 
     #[test]
+    fn spikes_narrower_than_the_width_discrimination_are_no_elements() {
+        // A flat base just below the mean line with a tall spike every 100
+        // samples (the shape of the Hommel scan at λc = 0.8 mm: 38 of its 39
+        // peaks above 10 % of Rp are narrower than 1 % of λc). Spikes of 3
+        // samples under a width discrimination of 10 merge into the base:
+        // one valley, no element (ISO 4287 §3.2.8–3.2.9). Spikes of 20
+        // samples are elements of width 100.
+        let spiky = |width: usize| -> Vec<f64> {
+            (0..1000)
+                .map(|j| if j % 100 < width { 1.0 } else { -0.05 })
+                .collect()
+        };
+        let disc = Discrimination {
+            peak: 0.1,
+            valley: 0.01,
+            both_directions: true,
+            ..D4287
+        };
+        assert!(elements(&spiky(3), 0.0, disc).is_none());
+        let (xs, zt) = elements(&spiky(20), 0.0, disc).unwrap();
+        assert!((xs - 100.0).abs() < 1e-9, "{xs}");
+        assert!((zt - 1.05).abs() < 1e-12, "{zt}");
+    }
+
+    #[test]
     fn small_wiggles_merge_into_the_preceding_part() {
         // Peak, tiny dip below the line, peak, valley, peak: one complete
         // peak-valley element.

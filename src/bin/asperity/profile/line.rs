@@ -107,6 +107,11 @@ pub(super) fn analyse_line(
     })
 }
 
+/// Why Rc and RSm are n/a: no profile element survives the rules.
+const NO_ELEMENTS: &str = "no profile element passes the convention's height (10 %) and width \
+     (1 % of the sampling length) discriminations: a form-dominated profile (give --cutoff λc) or \
+     tall peaks narrower than the width discrimination";
+
 /// `asperity profile` on a line scan: analyses it, prints the table or the
 /// JSON, and writes the plots.
 pub(super) fn line_scan(
@@ -160,6 +165,7 @@ pub(super) fn line_scan(
             "psd_hurst_uncertainty": a.fit.map(|f| f.hurst_uncertainty),
             "psd_fit": a.fit,
             "psd_fit_reason": a.no_fit,
+            "profile_elements_reason": p.rc.is_none().then_some(NO_ELEMENTS),
             "plots": plots,
         });
         if let Value::Object(extra) = extra {
@@ -299,6 +305,9 @@ pub(super) fn line_scan(
         ),
     ];
     print_rows(&rows);
+    if p.rc.is_none() {
+        outln!("Rc, RSm: {NO_ELEMENTS}");
+    }
     if let Some(f) = &a.fit {
         outln!(
             "PSD power law G = A q^{:.4} over q = {:.3e} … {:.3e} rad/m (band from the data, \
