@@ -148,8 +148,8 @@ enum Command {
     /// jump-in, pull-off, adhesion energy, contact-law fits (E*, w or E*√R,
     /// wR with standard errors, Tabor parameter) and the recommended model.
     Afm(afm::AfmArgs),
-    /// ISO 4287 parameters, spectrum and plots of a measured line scan (or the
-    /// areal parameters of a height map).
+    /// ISO 21920-2 (or ISO 4287) parameters, spectrum and plots of a measured
+    /// line scan (or the areal parameters of a height map).
     Profile(profile::ProfileArgs),
     /// Slide a hierarchical slider over a counter-surface (a scene, JSON):
     /// CSV of every step, SVG plots, a summary (`--json`: one JSON object).
