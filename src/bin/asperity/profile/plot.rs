@@ -117,22 +117,49 @@ pub(super) fn linear_chart(
     y_desc: &str,
     lines: &[Line],
 ) -> Res<()> {
-    let (x0, x1) = range(lines, true, 0.0);
-    let (y0, y1) = range(lines, false, 0.05);
-    let (fx, fy) = (ticks(x0, x1), ticks(y0, y1));
+    let x = range(lines, true, 0.0);
+    let y = range(lines, false, 0.05);
+    let (fx, fy) = (ticks(x.0, x.1), ticks(y.0, y.1));
+    cartesian(
+        area,
+        caption,
+        (x_desc, y_desc),
+        lines,
+        (x, y),
+        (&*fx, &*fy),
+        None,
+    )
+}
+
+/// Formats an axis value.
+type Label = dyn Fn(&f64) -> String;
+
+/// Draws `lines` in `area` over the ranges `x` and `y`, the axes labelled by
+/// `labels`; `light_lines` caps plotters' minor grid lines.
+fn cartesian(
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    caption: &str,
+    (x_desc, y_desc): (&str, &str),
+    lines: &[Line],
+    (x, y): ((f64, f64), (f64, f64)),
+    labels: (&Label, &Label),
+    light_lines: Option<usize>,
+) -> Res<()> {
     let mut chart = ChartBuilder::on(area)
         .caption(caption, ("sans-serif", 20))
         .margin(15)
         .x_label_area_size(45)
         .y_label_area_size(75)
-        .build_cartesian_2d(x0..x1, y0..y1)?;
-    chart
-        .configure_mesh()
-        .x_desc(x_desc)
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)?;
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(x_desc)
         .y_desc(y_desc)
-        .x_label_formatter(&*fx)
-        .y_label_formatter(&*fy)
-        .draw()?;
+        .x_label_formatter(labels.0)
+        .y_label_formatter(labels.1);
+    if let Some(n) = light_lines {
+        mesh.max_light_lines(n);
+    }
+    mesh.draw()?;
     draw_lines(&mut chart, lines)
 }
 
@@ -207,23 +234,17 @@ pub(super) fn log_chart(
             ..l
         })
         .collect();
-    let (x0, x1) = range(&lines, true, 0.0);
-    let (y0, y1) = range(&lines, false, 0.03);
-    let mut chart = ChartBuilder::on(area)
-        .caption(caption, ("sans-serif", 20))
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(75)
-        .build_cartesian_2d(x0..x1, y0..y1)?;
-    chart
-        .configure_mesh()
-        .x_desc(x_desc)
-        .y_desc(y_desc)
-        .max_light_lines(0)
-        .x_label_formatter(&decade_label)
-        .y_label_formatter(&decade_label)
-        .draw()?;
-    draw_lines(&mut chart, &lines)
+    let x = range(&lines, true, 0.0);
+    let y = range(&lines, false, 0.03);
+    cartesian(
+        area,
+        caption,
+        (x_desc, y_desc),
+        &lines,
+        (x, y),
+        (&decade_label, &decade_label),
+        Some(0),
+    )
 }
 
 /// The Abbott–Firestone curve of `heights` (m): level c from the mean line
