@@ -137,6 +137,61 @@ impl From<HurstFit> for AsperityHurstFit {
     }
 }
 
+/// The power-law fit of a PSD with its uncertainty and band, from
+/// `asperity_profile_hurst_estimate` (the fit of `AsperityHurstFit` with
+/// the fields that struct, frozen at ABI 0.2, lacks).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AsperityHurstEstimate {
+    /// Hurst exponent H = −(s + 1)/2 (dimensionless).
+    pub hurst: f64,
+    /// Standard error of H (dimensionless, one standard deviation; the
+    /// statistical error of the fit in the band, inflated by √(χ²/ν) when
+    /// the residuals exceed the periodogram's scatter; not the systematic
+    /// error of the band choice).
+    pub hurst_uncertainty: f64,
+    /// Fitted log–log slope s (dimensionless).
+    pub slope: f64,
+    /// Standard error of s (dimensionless, 2 × `hurst_uncertainty`).
+    pub slope_uncertainty: f64,
+    /// Prefactor A of G = A q^s (m³·(rad/m)^{−s}).
+    pub prefactor: f64,
+    /// Coefficient of determination r² of the weighted log–log fit.
+    pub r_squared: f64,
+    /// χ²/ν of the fit (dimensionless; about 1 for a power law).
+    pub chi2_per_dof: f64,
+    /// Lowest wavenumber fitted (rad/m).
+    pub q_min: f64,
+    /// Highest wavenumber fitted (rad/m).
+    pub q_max: f64,
+    /// Shortest wavelength of the band, 2π/q_max (m).
+    pub wavelength_min: f64,
+    /// Longest wavelength of the band, 2π/q_min (m).
+    pub wavelength_max: f64,
+    /// Number of populated log bins fitted (10 per decade).
+    pub bins: u64,
+}
+
+impl From<HurstFit> for AsperityHurstEstimate {
+    fn from(f: HurstFit) -> Self {
+        let tau = core::f64::consts::TAU;
+        Self {
+            hurst: f.hurst,
+            hurst_uncertainty: f.hurst_uncertainty,
+            slope: f.slope,
+            slope_uncertainty: f.slope_uncertainty,
+            prefactor: f.prefactor,
+            r_squared: f.r_squared,
+            chi2_per_dof: f.chi2_per_dof,
+            q_min: f.q_min,
+            q_max: f.q_max,
+            wavelength_min: tau / f.q_max,
+            wavelength_max: tau / f.q_min,
+            bins: f.bins as u64,
+        }
+    }
+}
+
 /// Statistics of the peaks of a profile (3-point maxima), from
 /// `asperity_profile_peak_statistics`.
 #[repr(C)]
@@ -459,6 +514,31 @@ pub unsafe extern "C" fn asperity_profile_hurst_fit(
     q_min: f64,
     q_max: f64,
     out: *mut AsperityHurstFit,
+) -> i32 {
+    guard(|| {
+        let h = array(heights, n, "heights")?;
+        let out = output(out, "out")?;
+        let band = (q_min != 0.0 || q_max != 0.0).then_some((q_min, q_max));
+        *out = hurst_fit(h, dx, band)?.into();
+        Ok(())
+    })
+}
+
+/// `asperity_profile_hurst_fit` reporting H with its standard error, the
+/// fit's χ²/ν and the band in wavenumbers (rad/m) and wavelengths (m):
+/// the power-law fit of the PSD of `heights` (`n` values, m, spacing `dx`
+/// m) over `q_min ≤ q ≤ q_max` (rad/m), or, with `q_min` = `q_max` = 0, over
+/// the band chosen from the data (the widest run of at least one decade
+/// that is a power law with 0 ≤ H ≤ 1). Errors: as
+/// `asperity_profile_hurst_fit`.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_profile_hurst_estimate(
+    n: usize,
+    heights: *const f64,
+    dx: f64,
+    q_min: f64,
+    q_max: f64,
+    out: *mut AsperityHurstEstimate,
 ) -> i32 {
     guard(|| {
         let h = array(heights, n, "heights")?;
