@@ -1997,6 +1997,19 @@ struct Psd {
     return out;
 }
 
+/// `asperity_profile_hurst_estimate`: `profile_hurst_fit` with H's standard
+/// error, the fit's chi^2/dof and the band in rad/m and in m, over
+/// `q_min <= q <= q_max` (rad/m; both 0: the band chosen from the data).
+[[nodiscard]] inline AsperityHurstEstimate profile_hurst_estimate(span<const double> heights,
+                                                                  double dx, double q_min = 0.0,
+                                                                  double q_max = 0.0)
+{
+    AsperityHurstEstimate out{};
+    check(asperity_profile_hurst_estimate(heights.size(), detail::required(heights), dx, q_min,
+                                          q_max, &out));
+    return out;
+}
+
 /// `asperity_profile_peak_statistics`: statistics of the 3-point peaks of
 /// `heights` (m, spacing `dx`).
 [[nodiscard]] inline AsperityPeakStatistics profile_peak_statistics(span<const double> heights,
@@ -2129,6 +2142,55 @@ struct CantorExponents {
     check(asperity_cantor_exponents(&profile, &e.fractal_dimension, &e.width_exponent,
                                     &e.load_area_exponent));
     return e;
+}
+
+/// `asperity_borodich_kryukova_normal_force`: the layers' elastic normal
+/// force (N) of the Borodich-Kryukova slider `bk` at position `x` (m),
+/// mean-line distance `y` (m) and time `time` (s).
+[[nodiscard]] inline double borodich_kryukova_normal_force(const AsperityBorodichKryukova& bk,
+                                                           double x, double y, double time = 0.0)
+{
+    double f = 0.0;
+    check(asperity_borodich_kryukova_normal_force(&bk, x, y, time, &f));
+    return f;
+}
+
+/// `asperity_borodich_kryukova_run`: Runge-Kutta 4 from `start` for `steps`
+/// steps of `dt` (s), the start and every `every`-th step recorded
+/// (steps/every + 1 samples).
+[[nodiscard]] inline std::vector<AsperityBorodichKryukovaSample>
+borodich_kryukova_run(const AsperityBorodichKryukova& bk,
+                      const AsperityBorodichKryukovaState& start, double dt, std::uint32_t steps,
+                      std::uint32_t every = 1)
+{
+    // every = 0: the library reports it (naming `every`).
+    std::vector<AsperityBorodichKryukovaSample> out(every == 0 ? 1
+                                                               : std::size_t(steps / every) + 1);
+    std::size_t written = 0;
+    check(asperity_borodich_kryukova_run(&bk, &start, dt, steps, every, out.size(), out.data(),
+                                         &written));
+    out.resize(written);
+    return out;
+}
+
+/// `asperity_schmittbuhl_default`: the library's default Schmittbuhl model.
+[[nodiscard]] inline AsperitySchmittbuhl schmittbuhl_default()
+{
+    AsperitySchmittbuhl out{};
+    check(asperity_schmittbuhl_default(&out));
+    return out;
+}
+
+/// `asperity_schmittbuhl_run`: the renormalised friction laws of
+/// generations 0 to `model.generations`.
+[[nodiscard]] inline std::vector<AsperitySchmittbuhlGeneration>
+schmittbuhl_run(const AsperitySchmittbuhl& model)
+{
+    std::vector<AsperitySchmittbuhlGeneration> out(std::size_t(model.generations) + 1);
+    std::size_t written = 0;
+    check(asperity_schmittbuhl_run(&model, out.size(), out.data(), &written));
+    out.resize(written);
+    return out;
 }
 
 } // namespace asperity
