@@ -128,6 +128,22 @@ pub(super) unsafe fn call(op: &Op) {
                 mp(&mut out, nulls.at(1)),
             );
             ok(s, "hurst_fit");
+            let mut e: AsperityHurstEstimate = zeroed();
+            let s = asperity_profile_hurst_estimate(
+                z.len(),
+                bufp(&z, nulls.at(0)),
+                dx.0,
+                q[0].0,
+                q[1].0,
+                mp(&mut e, nulls.at(1)),
+            );
+            if ok(s, "hurst_estimate") {
+                assert_eq!(e.hurst.to_bits(), out.hurst.to_bits());
+                assert!(
+                    e.hurst_uncertainty >= 0.0 && e.wavelength_min <= e.wavelength_max,
+                    "{e:?}"
+                );
+            }
         }
         Op::Peaks { h, dx, nulls } => {
             let z = h.make();
