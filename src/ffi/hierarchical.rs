@@ -154,8 +154,8 @@ pub struct AsperitySchmittbuhl {
     /// Horizontal (coupling) spring k_c,0 between generation-0 blocks (N/m,
     /// finite, ≥ 0).
     pub coupling_stiffness: f64,
-    /// Vertical spring k_p,0 from a generation-0 block to its parent (N/m,
-    /// > 0).
+    /// Vertical spring k_p,0 from a generation-0 block to its parent
+    /// (N/m, > 0).
     pub pulling_stiffness: f64,
     /// Normal force n₀ on a generation-0 block (N, > 0).
     pub normal_force: f64,

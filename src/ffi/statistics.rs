@@ -717,8 +717,8 @@ pub unsafe extern "C" fn asperity_borodich_kryukova_normal_force(
     })
 }
 
-/// Integrate the slider `bk` from `*start` for `steps` steps of `dt` (s,
-/// > 0) by classical Runge–Kutta 4, recording the start and every
+/// Integrate the slider `bk` from `*start` for `steps` steps of `dt`
+/// (s, > 0) by classical Runge–Kutta 4, recording the start and every
 /// `every`-th step (≥ 1): steps/every + 1 samples written to `samples`,
 /// which has room for `capacity` (checked first: a smaller capacity is an
 /// error naming it, and nothing is integrated). The number written goes to

@@ -245,11 +245,8 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             );
             let steps = u32::from(*steps);
             let every = u32::from(*every % 8);
-            let want = if every == 0 {
-                1
-            } else {
-                (steps / every) as usize + 1
-            };
+            // every = 0 is refused: room for one sample then.
+            let want = steps.checked_div(every).map_or(1, |k| k as usize + 1);
             let cap = match room % 4 {
                 0 => want - 1,
                 1 => want + 3,
