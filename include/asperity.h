@@ -1084,8 +1084,8 @@ typedef struct AsperitySchmittbuhl {
     // Horizontal (coupling) spring k_c,0 between generation-0 blocks (N/m,
     // finite, ≥ 0).
     double coupling_stiffness;
-    // Vertical spring k_p,0 from a generation-0 block to its parent (N/m,
-    // > 0).
+    // Vertical spring k_p,0 from a generation-0 block to its parent
+    // (N/m, > 0).
     double pulling_stiffness;
     // Normal force n₀ on a generation-0 block (N, > 0).
     double normal_force;
@@ -2760,8 +2760,8 @@ int32_t asperity_borodich_kryukova_normal_force(const struct AsperityBorodichKry
                                                 double time,
                                                 double *out);
 
-// Integrate the slider `bk` from `*start` for `steps` steps of `dt` (s,
-// > 0) by classical Runge–Kutta 4, recording the start and every
+// Integrate the slider `bk` from `*start` for `steps` steps of `dt`
+// (s, > 0) by classical Runge–Kutta 4, recording the start and every
 // `every`-th step (≥ 1): steps/every + 1 samples written to `samples`,
 // which has room for `capacity` (checked first: a smaller capacity is an
 // error naming it, and nothing is integrated). The number written goes to
@@ -2997,6 +2997,55 @@ int32_t asperity_generate_cantor_borodich(uint32_t descendants,
                                           double length,
                                           size_t n,
                                           double *heights);
+
+// ISO 16610-61 areal Gaussian filter of the map of `nx` × `ny` heights
+// `heights` (m, row-major: `heights[i + nx*j]` at x = i·dx, y = j·dy;
+// spacings `dx`, `dy` in m; nx, ny ≥ 2) with cut-off (nesting index)
+// `cutoff` λc (m): writes the roughness (S-L) surface to `roughness` and,
+// if not NULL, the Gaussian mean surface to `mean_surface` (row-major on
+// the retained grid; each needs room for nx·ny values; either may be
+// `heights` itself), the retained grid's size to `*nx_out`, `*ny_out`, and
+// the input indices of its first point to `*first_x`, `*first_y` (either
+// may be NULL). `ends` is `ASPERITY_FILTER_ENDS_DISCARD` (λc/2 dropped on
+// every side) or `ASPERITY_FILTER_ENDS_KEEP` (the whole grid, edge weights
+// renormalised). Errors: `cutoff` not finite and > 0, shorter than 5
+// spacings or not shorter than the map along x or y, fewer than 2 points
+// left after discarding.
+int32_t asperity_map_gaussian_filter(size_t nx,
+                                     size_t ny,
+                                     double dx,
+                                     double dy,
+                                     const double *heights,
+                                     double cutoff,
+                                     int32_t ends,
+                                     double *roughness,
+                                     double *mean_surface,
+                                     size_t *nx_out,
+                                     size_t *ny_out,
+                                     size_t *first_x,
+                                     size_t *first_y);
+
+// The radially averaged 2-D PSD of the map of `nx` × `ny` heights
+// `heights` (m, row-major as `asperity_map_gaussian_filter`; spacings
+// `dx`, `dy` in m; mean removed) with `window` (`ASPERITY_WINDOW_*`):
+// annuli of width max(Δq_x, Δq_y) centred on m·Δq up to the smaller
+// Nyquist wavenumber, empty annuli skipped. Writes for each annulus its
+// mean |q| to `q` (rad/m; may be NULL), the mean PSD over it to `psd`
+// (m⁴) and its number of grid points to `count` (may be NULL), and the
+// number of annuli to `*written`. The arrays have room for `capacity`
+// values; min(nx, ny)/2 + 1 always suffices, and a smaller capacity than
+// the annuli found is an error naming `capacity`.
+int32_t asperity_map_psd_radial(size_t nx,
+                                size_t ny,
+                                double dx,
+                                double dy,
+                                const double *heights,
+                                int32_t window,
+                                size_t capacity,
+                                double *q,
+                                double *psd,
+                                size_t *count,
+                                size_t *written);
 
 // Build the table of a Maugis–Dugdale sphere: radius (m), E* (Pa), work of
 // adhesion (J/m²), Dugdale stress σ₀ (Pa), relative `tolerance` in
