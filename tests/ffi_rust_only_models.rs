@@ -465,3 +465,283 @@ fn hurst_estimate_reports_the_uncertainty_and_the_band() {
     }
     assert_eq!(e, before);
 }
+
+/// A cosine along x of wavenumber `k` (rad/m) on `nx` × `ny` points.
+fn wave_map(nx: usize, ny: usize, d: f64, k: f64, amplitude: f64) -> Vec<f64> {
+    let mut h = Vec::with_capacity(nx * ny);
+    for _j in 0..ny {
+        for i in 0..nx {
+            h.push(amplitude * (k * i as f64 * d).cos());
+        }
+    }
+    h
+}
+
+#[test]
+fn map_gaussian_filter_c_transmits_half_at_the_cutoff() {
+    // ISO 16610-61: a sinusoid of wavelength λc keeps half its amplitude in
+    // the mean surface (to 0.01 on this grid, as tests/surface_topography.rs).
+    let (nx, ny, d, lc) = (256usize, 96usize, 1e-6, 32e-6);
+    let h = wave_map(nx, ny, d, TAU / lc, 1e-6);
+    let (mut r, mut m) = (vec![0.0; nx * ny], vec![0.0; nx * ny]);
+    let (mut mx, mut my, mut fx, mut fy) = (0usize, 0usize, 9usize, 9usize);
+    unsafe {
+        ok(asperity_map_gaussian_filter(
+            nx,
+            ny,
+            d,
+            d,
+            h.as_ptr(),
+            lc,
+            ASPERITY_FILTER_ENDS_DISCARD,
+            r.as_mut_ptr(),
+            m.as_mut_ptr(),
+            &mut mx,
+            &mut my,
+            &mut fx,
+            &mut fy,
+        ));
+    }
+    assert_eq!((mx, my, fx, fy), (nx - 32, ny - 32, 16, 16));
+    let map = asperity::surface::Topography::new(nx, ny, d, d, h.clone()).unwrap();
+    let want =
+        asperity::surface::areal_gaussian_filter(&map, lc, asperity::surface::FilterEnds::Discard)
+            .unwrap();
+    assert_eq!(&r[..mx * my], want.roughness.heights());
+    assert_eq!(&m[..mx * my], want.mean_surface.heights());
+    let rms = (m[..mx * my].iter().map(|v| v * v).sum::<f64>() / (mx * my) as f64).sqrt();
+    let got = rms * 2f64.sqrt() / 1e-6;
+    assert!((got - 0.5).abs() < 0.01, "{got}");
+    for k in 0..mx * my {
+        let (i, j) = (k % mx + fx, k / mx + fy);
+        // r = z − mean, to rounding of the 1 µm heights.
+        assert!((r[k] + m[k] - h[i + nx * j]).abs() < 1e-21);
+    }
+    // Keep: the whole grid, in place, optional outputs NULL.
+    let mut inout = h.clone();
+    unsafe {
+        ok(asperity_map_gaussian_filter(
+            nx,
+            ny,
+            d,
+            d,
+            inout.as_ptr(),
+            lc,
+            ASPERITY_FILTER_ENDS_KEEP,
+            inout.as_mut_ptr(),
+            null_mut(),
+            &mut mx,
+            &mut my,
+            null_mut(),
+            null_mut(),
+        ));
+    }
+    assert_eq!((mx, my), (nx, ny));
+    let keep =
+        asperity::surface::areal_gaussian_filter(&map, lc, asperity::surface::FilterEnds::Keep)
+            .unwrap();
+    assert_eq!(inout, keep.roughness.heights());
+    // Errors name the argument.
+    unsafe {
+        for (cutoff, ends, name) in [
+            (2e-6, ASPERITY_FILTER_ENDS_KEEP, "`cutoff`"),
+            (f64::NAN, ASPERITY_FILTER_ENDS_KEEP, "`cutoff`"),
+            (lc, 7, "`ends`"),
+        ] {
+            expect_error(
+                asperity_map_gaussian_filter(
+                    nx,
+                    ny,
+                    d,
+                    d,
+                    h.as_ptr(),
+                    cutoff,
+                    ends,
+                    r.as_mut_ptr(),
+                    null_mut(),
+                    &mut mx,
+                    &mut my,
+                    null_mut(),
+                    null_mut(),
+                ),
+                ASPERITY_ERR_INVALID_ARGUMENT,
+                name,
+            );
+        }
+        expect_error(
+            asperity_map_gaussian_filter(
+                1,
+                ny,
+                d,
+                d,
+                h.as_ptr(),
+                lc,
+                ASPERITY_FILTER_ENDS_KEEP,
+                r.as_mut_ptr(),
+                null_mut(),
+                &mut mx,
+                &mut my,
+                null_mut(),
+                null_mut(),
+            ),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "`nx`",
+        );
+        expect_error(
+            asperity_map_gaussian_filter(
+                nx,
+                ny,
+                d,
+                d,
+                h.as_ptr(),
+                lc,
+                ASPERITY_FILTER_ENDS_KEEP,
+                null_mut(),
+                null_mut(),
+                &mut mx,
+                &mut my,
+                null_mut(),
+                null_mut(),
+            ),
+            ASPERITY_ERR_NULL_POINTER,
+            "`roughness`",
+        );
+        expect_error(
+            asperity_map_gaussian_filter(
+                nx,
+                ny,
+                d,
+                d,
+                null(),
+                lc,
+                ASPERITY_FILTER_ENDS_KEEP,
+                r.as_mut_ptr(),
+                null_mut(),
+                &mut mx,
+                &mut my,
+                null_mut(),
+                null_mut(),
+            ),
+            ASPERITY_ERR_NULL_POINTER,
+            "`heights`",
+        );
+    }
+}
+
+#[test]
+fn map_psd_radial_c_peaks_at_the_wave_and_matches_rust() {
+    // A cosine of k periods along x of a periodic map: with the
+    // rectangular window all power sits at |q| = 2πk/L, the annulus m = k.
+    for (nx, ny, k) in [(64usize, 64usize, 5usize), (128, 48, 9), (40, 100, 3)] {
+        let d = 1e-6;
+        let q0 = TAU * k as f64 / (nx as f64 * d);
+        let h = wave_map(nx, ny, d, q0, 1e-7);
+        let cap = nx.min(ny) / 2 + 1;
+        let (mut q, mut g, mut c) = (vec![0.0; cap], vec![0.0; cap], vec![0usize; cap]);
+        let mut m = 0usize;
+        unsafe {
+            ok(asperity_map_psd_radial(
+                nx,
+                ny,
+                d,
+                d,
+                h.as_ptr(),
+                ASPERITY_WINDOW_RECTANGULAR,
+                cap,
+                q.as_mut_ptr(),
+                g.as_mut_ptr(),
+                c.as_mut_ptr(),
+                &mut m,
+            ));
+        }
+        assert!(m >= 2 && m <= cap);
+        let map = asperity::surface::Topography::new(nx, ny, d, d, h.clone()).unwrap();
+        let want = asperity::surface::psd_2d(&map, asperity::surface::Window::Rectangular)
+            .unwrap()
+            .radial();
+        assert_eq!(&q[..m], want.r);
+        assert_eq!(&g[..m], want.value);
+        assert_eq!(&c[..m], want.count);
+        let top = (0..m).max_by(|&a, &b| g[a].total_cmp(&g[b])).unwrap();
+        let dq = (TAU / (nx as f64 * d)).max(TAU / (ny as f64 * d));
+        assert!((q[top] - q0).abs() <= 0.5 * dq, "{} vs {q0}", q[top]);
+        // One annulus too few is refused, naming the capacity.
+        let before = g.clone();
+        unsafe {
+            expect_error(
+                asperity_map_psd_radial(
+                    nx,
+                    ny,
+                    d,
+                    d,
+                    h.as_ptr(),
+                    ASPERITY_WINDOW_HANN,
+                    m - 1,
+                    null_mut(),
+                    g.as_mut_ptr(),
+                    null_mut(),
+                    &mut m,
+                ),
+                ASPERITY_ERR_INVALID_ARGUMENT,
+                "`capacity`",
+            );
+        }
+        assert_eq!(g, before);
+    }
+    let h = vec![0.0; 16];
+    let mut g = [0.0; 8];
+    let mut m = 0usize;
+    unsafe {
+        expect_error(
+            asperity_map_psd_radial(
+                4,
+                4,
+                1e-6,
+                1e-6,
+                h.as_ptr(),
+                9,
+                8,
+                null_mut(),
+                g.as_mut_ptr(),
+                null_mut(),
+                &mut m,
+            ),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "`window`",
+        );
+        expect_error(
+            asperity_map_psd_radial(
+                4,
+                4,
+                1e-6,
+                1e-6,
+                h.as_ptr(),
+                0,
+                8,
+                null_mut(),
+                g.as_mut_ptr(),
+                null_mut(),
+                null_mut(),
+            ),
+            ASPERITY_ERR_NULL_POINTER,
+            "`written`",
+        );
+        expect_error(
+            asperity_map_psd_radial(
+                4,
+                4,
+                -1e-6,
+                1e-6,
+                h.as_ptr(),
+                0,
+                8,
+                null_mut(),
+                g.as_mut_ptr(),
+                null_mut(),
+                &mut m,
+            ),
+            ASPERITY_ERR_INVALID_ARGUMENT,
+            "`dx`",
+        );
+    }
+}
