@@ -2010,6 +2010,69 @@ struct Psd {
     return out;
 }
 
+/// The result of `asperity::map_gaussian_filter`: the retained grid,
+/// row-major (`roughness[i + nx*j]`).
+struct FilteredMap {
+    /// The roughness (S-L) surface (m).
+    std::vector<double> roughness;
+    /// The Gaussian mean surface (m).
+    std::vector<double> mean_surface;
+    /// Points of the retained grid along x and y.
+    std::size_t nx;
+    std::size_t ny;
+    /// Input indices of the retained grid's first point.
+    std::size_t first_x;
+    std::size_t first_y;
+};
+
+/// `asperity_map_gaussian_filter`: the ISO 16610-61 areal Gaussian filter
+/// of the `nx` x `ny` map `heights` (m, row-major, spacings `dx`, `dy`) at
+/// `cutoff` (m) with `ends` (`ASPERITY_FILTER_ENDS_*`).
+[[nodiscard]] inline FilteredMap map_gaussian_filter(std::size_t nx, std::size_t ny, double dx,
+                                                     double dy, span<const double> heights,
+                                                     double cutoff, std::int32_t ends)
+{
+    const char* f = "asperity::map_gaussian_filter";
+    const double* h = detail::exactly(heights, nx * ny, f, "heights");
+    FilteredMap out{std::vector<double>(nx * ny), std::vector<double>(nx * ny), 0, 0, 0, 0};
+    check(asperity_map_gaussian_filter(nx, ny, dx, dy, h, cutoff, ends, out.roughness.data(),
+                                       out.mean_surface.data(), &out.nx, &out.ny, &out.first_x,
+                                       &out.first_y));
+    out.roughness.resize(out.nx * out.ny);
+    out.mean_surface.resize(out.nx * out.ny);
+    return out;
+}
+
+/// The result of `asperity::map_psd_radial`, one element per annulus.
+struct RadialPsd {
+    /// Mean |q| of the annulus (rad/m).
+    std::vector<double> q;
+    /// Mean PSD over the annulus (m^4).
+    std::vector<double> psd;
+    /// Grid points in the annulus.
+    std::vector<std::size_t> count;
+};
+
+/// `asperity_map_psd_radial`: the radially averaged 2-D PSD of the `nx` x
+/// `ny` map `heights` (m, row-major, spacings `dx`, `dy`) with `window`
+/// (`ASPERITY_WINDOW_*`).
+[[nodiscard]] inline RadialPsd map_psd_radial(std::size_t nx, std::size_t ny, double dx, double dy,
+                                              span<const double> heights, std::int32_t window)
+{
+    const char* f = "asperity::map_psd_radial";
+    const double* h = detail::exactly(heights, nx * ny, f, "heights");
+    const std::size_t cap = (nx < ny ? nx : ny) / 2 + 1;
+    RadialPsd out{std::vector<double>(cap), std::vector<double>(cap),
+                  std::vector<std::size_t>(cap)};
+    std::size_t m = 0;
+    check(asperity_map_psd_radial(nx, ny, dx, dy, h, window, cap, out.q.data(), out.psd.data(),
+                                  out.count.data(), &m));
+    out.q.resize(m);
+    out.psd.resize(m);
+    out.count.resize(m);
+    return out;
+}
+
 /// `asperity_profile_peak_statistics`: statistics of the 3-point peaks of
 /// `heights` (m, spacing `dx`).
 [[nodiscard]] inline AsperityPeakStatistics profile_peak_statistics(span<const double> heights,

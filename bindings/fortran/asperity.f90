@@ -3301,6 +3301,51 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_profile_gaussian_filter
 
+    !> ISO 16610-61 areal Gaussian filter of the `nx` × `ny` map `heights` (m, x fastest):
+    !  roughness (and, unless NULL, mean) surface on the retained grid, its size, and (unless
+    !  NULL) the input indices of its first point.
+    function c_asperity_map_gaussian_filter(nx, ny, dx, dy, heights, cutoff, ends, roughness, &
+        mean_surface, nx_out, ny_out, first_x, first_y) result(r) bind(c, &
+        name="asperity_map_gaussian_filter")
+      import
+      implicit none
+      integer(c_size_t), value :: nx
+      integer(c_size_t), value :: ny
+      real(c_double), value :: dx
+      real(c_double), value :: dy
+      real(c_double), intent(in) :: heights(*)
+      real(c_double), value :: cutoff
+      integer(c_int32_t), value :: ends
+      real(c_double), intent(inout) :: roughness(*)
+      type(c_ptr), value :: mean_surface
+      integer(c_size_t), intent(out) :: nx_out
+      integer(c_size_t), intent(out) :: ny_out
+      type(c_ptr), value :: first_x
+      type(c_ptr), value :: first_y
+      integer(c_int32_t) :: r
+    end function c_asperity_map_gaussian_filter
+
+    !> Radially averaged 2-D PSD of the `nx` × `ny` map `heights` (m, x fastest): per annulus
+    !  the mean |q| (rad/m; `q` may be NULL), the mean PSD (m⁴) and the point count (`count`
+    !  may be NULL); room for `capacity` (min(nx, ny)/2 + 1 suffices); the number to `written`.
+    function c_asperity_map_psd_radial(nx, ny, dx, dy, heights, window, capacity, q, psd, &
+        count, written) result(r) bind(c, name="asperity_map_psd_radial")
+      import
+      implicit none
+      integer(c_size_t), value :: nx
+      integer(c_size_t), value :: ny
+      real(c_double), value :: dx
+      real(c_double), value :: dy
+      real(c_double), intent(in) :: heights(*)
+      integer(c_int32_t), value :: window
+      integer(c_size_t), value :: capacity
+      type(c_ptr), value :: q
+      real(c_double), intent(inout) :: psd(*)
+      type(c_ptr), value :: count
+      integer(c_size_t), intent(out) :: written
+      integer(c_int32_t) :: r
+    end function c_asperity_map_psd_radial
+
     !> The material-ratio (Abbott–Firestone) curve of `heights` (`n` values, m) at `n_points` ≥
     !  2 equally spaced ratios Rmr = i/(n_points − 1): `ratio[i]` (dimensionless, 0 … 1; may be
     !  NULL) and `level[i]`, the height c(Rmr) above the mean line (m; the highest peak at 0,
@@ -3740,6 +3785,8 @@ module asperity
   public :: c_asperity_profile_psd
   public :: c_asperity_profile_hurst_fit
   public :: c_asperity_profile_hurst_estimate
+  public :: c_asperity_map_gaussian_filter
+  public :: c_asperity_map_psd_radial
   public :: c_asperity_profile_peak_statistics
   public :: c_asperity_generate_self_affine
   public :: c_asperity_generate_weierstrass_mandelbrot
@@ -3884,6 +3931,8 @@ module asperity
   public :: asperity_profile_psd
   public :: asperity_profile_hurst_fit
   public :: asperity_profile_hurst_estimate
+  public :: asperity_map_gaussian_filter
+  public :: asperity_map_psd_radial
   public :: asperity_profile_peak_statistics
   public :: asperity_generate_self_affine
   public :: asperity_generate_weierstrass_mandelbrot
@@ -6064,6 +6113,72 @@ contains
     call check(c_asperity_profile_hurst_estimate(size(heights, kind=c_size_t), heights, dx, &
         q_min, q_max, out), 'asperity_profile_hurst_estimate', status)
   end subroutine asperity_profile_hurst_estimate
+
+  !> ISO 16610-61 areal Gaussian filter of the map `heights(nx, ny)` (m, x fastest; spacings
+  !> `dx`, `dy` in m) at `cutoff` (m) with `ends` (`ASPERITY_FILTER_ENDS_*`): the roughness
+  !> surface of the retained `nx_out` x `ny_out` grid in `roughness(1:nx_out*ny_out)` (x
+  !> fastest; room for size(heights)), and when given the mean surface likewise and the
+  !> (0-based) input indices of the retained grid's first point.
+  subroutine asperity_map_gaussian_filter(heights, dx, dy, cutoff, ends, roughness, nx_out, &
+      ny_out, mean_surface, first_x, first_y, status)
+    real(c_double), intent(in), contiguous :: heights(:, :)
+    real(c_double), intent(in) :: dx, dy, cutoff
+    integer(c_int32_t), intent(in) :: ends
+    real(c_double), intent(inout) :: roughness(:)
+    integer, intent(out) :: nx_out, ny_out
+    real(c_double), intent(inout), optional, target, contiguous :: mean_surface(:)
+    integer, intent(out), optional :: first_x, first_y
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_map_gaussian_filter'
+    integer(c_size_t), target :: c_nx, c_ny, c_fx, c_fy
+    integer :: n
+    n = size(heights)
+    nx_out = 0
+    ny_out = 0
+    if (present(first_x)) first_x = 0
+    if (present(first_y)) first_y = 0
+    if (too_small(what, 'roughness', size(roughness), n, 'the size of `heights`', status)) return
+    if (present(mean_surface)) then
+      if (too_small(what, 'mean_surface', size(mean_surface), n, 'the size of `heights`', &
+          status)) return
+    end if
+    c_nx = 0
+    c_ny = 0
+    c_fx = 0
+    c_fy = 0
+    call check(c_asperity_map_gaussian_filter(size(heights, 1, kind=c_size_t), &
+        size(heights, 2, kind=c_size_t), dx, dy, heights, cutoff, ends, roughness, &
+        loc_d(mean_surface), c_nx, c_ny, c_loc(c_fx), c_loc(c_fy)), what, status)
+    nx_out = int(c_nx)
+    ny_out = int(c_ny)
+    if (present(first_x)) first_x = int(c_fx)
+    if (present(first_y)) first_y = int(c_fy)
+  end subroutine asperity_map_gaussian_filter
+
+  !> Radially averaged 2-D PSD of the map `heights(nx, ny)` (m, x fastest; spacings `dx`,
+  !> `dy` in m) with `window` (`ASPERITY_WINDOW_*`): `written` annuli, their mean PSD (m^4)
+  !> in `psd` and, when given, their mean |q| (rad/m) in `q` (as long as `psd`; min(nx, ny)/2
+  !> + 1 elements always suffice).
+  subroutine asperity_map_psd_radial(heights, dx, dy, window, psd, written, q, status)
+    real(c_double), intent(in), contiguous :: heights(:, :)
+    real(c_double), intent(in) :: dx, dy
+    integer(c_int32_t), intent(in) :: window
+    real(c_double), intent(inout) :: psd(:)
+    integer, intent(out) :: written
+    real(c_double), intent(inout), optional, target, contiguous :: q(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_map_psd_radial'
+    integer(c_size_t) :: c_written
+    written = 0
+    if (present(q)) then
+      if (too_small(what, 'q', size(q), size(psd), 'the size of `psd`', status)) return
+    end if
+    c_written = 0
+    call check(c_asperity_map_psd_radial(size(heights, 1, kind=c_size_t), &
+        size(heights, 2, kind=c_size_t), dx, dy, heights, window, size(psd, kind=c_size_t), &
+        loc_d(q), psd, c_null_ptr, c_written), what, status)
+    written = int(c_written)
+  end subroutine asperity_map_psd_radial
 
   !> Statistics of the peaks of `heights`.
   subroutine asperity_profile_peak_statistics(heights, dx, out, status)

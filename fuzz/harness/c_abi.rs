@@ -658,6 +658,23 @@ pub enum Op {
         room: u8,
         nulls: Nulls,
     },
+    // Maps: the areal Gaussian filter and the radial 2-D PSD (added last:
+    // the existing corpus keeps its meaning).
+    MapFilter {
+        h: Heights,
+        nx: u8,
+        d: [F; 3],
+        ends: Sel,
+        nulls: Nulls,
+    },
+    MapPsdRadial {
+        h: Heights,
+        nx: u8,
+        d: [F; 2],
+        window: Sel,
+        room: u8,
+        nulls: Nulls,
+    },
 }
 
 /// The handles and carried states of one input; all freed on drop.
@@ -835,6 +852,7 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
         Op::Archard { .. } | Op::CantorContact { .. } => hierarchical::call(op),
         Op::BorodichKryukova { .. } => statistics::call(ctx, op),
         Op::Schmittbuhl { .. } => hierarchical::call_schmittbuhl(ctx, op),
+        Op::MapFilter { .. } | Op::MapPsdRadial { .. } => surface::call(op),
     }
 }
 
