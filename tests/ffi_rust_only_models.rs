@@ -688,7 +688,7 @@ fn map_psd_radial_c_peaks_at_the_wave_and_matches_rust() {
         }
         assert_eq!(g, before);
     }
-    let h = vec![0.0; 16];
+    let h = [0.0; 16];
     let mut g = [0.0; 8];
     let mut m = 0usize;
     unsafe {
