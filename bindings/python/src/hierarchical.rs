@@ -198,13 +198,21 @@ fn schmittbuhl_run(
     let model = Schmittbuhl {
         mu_static: or(mu_static, "mu_static", d.mu_static)?,
         mu_kinetic: or(mu_kinetic, "mu_kinetic", d.mu_kinetic)?,
-        weakening_velocity: or(weakening_velocity, "weakening_velocity", d.weakening_velocity)?,
+        weakening_velocity: or(
+            weakening_velocity,
+            "weakening_velocity",
+            d.weakening_velocity,
+        )?,
         ratio: int(ratio, "ratio", d.ratio)?,
         generations: int(generations, "generations", d.generations)?,
         dimension: u32::try_from(int(dimension, "dimension", d.dimension as usize)?)
             .map_err(|_| crate::common::arg_error("dimension", "2 or 3"))?,
         mass: or(mass, "mass", d.mass)?,
-        coupling_stiffness: or(coupling_stiffness, "coupling_stiffness", d.coupling_stiffness)?,
+        coupling_stiffness: or(
+            coupling_stiffness,
+            "coupling_stiffness",
+            d.coupling_stiffness,
+        )?,
         pulling_stiffness: or(pulling_stiffness, "pulling_stiffness", d.pulling_stiffness)?,
         normal_force: or(normal_force, "normal_force", d.normal_force)?,
         velocity: or(velocity, "velocity", d.velocity)?,

@@ -989,7 +989,10 @@ impl BorodichKryukova {
         d.set_item("vx", numpy::PyArray1::from_vec(py, col(|s| s.state.vx)))?;
         d.set_item("y", numpy::PyArray1::from_vec(py, col(|s| s.state.y)))?;
         d.set_item("vy", numpy::PyArray1::from_vec(py, col(|s| s.state.vy)))?;
-        d.set_item("normal_force", numpy::PyArray1::from_vec(py, col(|s| s.normal_force)))?;
+        d.set_item(
+            "normal_force",
+            numpy::PyArray1::from_vec(py, col(|s| s.normal_force)),
+        )?;
         d.set_item(
             "friction_force",
             numpy::PyArray1::from_vec(py, col(|s| s.friction_force)),
