@@ -1065,6 +1065,70 @@ typedef struct AsperityCantorContact {
     double plastic_load;
 } AsperityCantorContact;
 
+// Schmittbuhl's hierarchical model (Schmittbuhl, Vilotte and Roux 1996;
+// thesis 5.4.3), by value: the friction law of a slider renormalised
+// generation by generation, each step a Burridge–Knopoff chain of `ratio`
+// blocks. `asperity_schmittbuhl_default` gives the library's defaults.
+typedef struct AsperitySchmittbuhl {
+    // Static coefficient μ_s⁰ of a generation-0 block (dimensionless,
+    // finite, ≥ 0).
+    double mu_static;
+    // Kinetic coefficient μ_k⁰ at the onset of slip (dimensionless, in
+    // [0, μ_s⁰]).
+    double mu_kinetic;
+    // Weakening velocity v_c of μ_k/(1 + v/v_c) (m/s, > 0; +infinity:
+    // constant kinetic friction).
+    double weakening_velocity;
+    // Mass m₀ of a generation-0 block (kg, > 0).
+    double mass;
+    // Horizontal (coupling) spring k_c,0 between generation-0 blocks (N/m,
+    // finite, ≥ 0).
+    double coupling_stiffness;
+    // Vertical spring k_p,0 from a generation-0 block to its parent
+    // (N/m, > 0).
+    double pulling_stiffness;
+    // Normal force n₀ on a generation-0 block (N, > 0).
+    double normal_force;
+    // Plate velocity V (m/s, > 0).
+    double velocity;
+    // Pre-stress disorder δ of a chain (dimensionless, in [0, 1)).
+    double disorder;
+    // Ratio N of sizes between generations (blocks per chain), in [2, 64].
+    uint32_t ratio;
+    // Generations G renormalised above generation 0, in [1, 12].
+    uint32_t generations;
+    // Dimension d of the elastic continuum the rescaling follows, 2 or 3.
+    uint32_t dimension;
+    // Reserved, 0.
+    uint32_t reserved;
+} AsperitySchmittbuhl;
+
+// The friction law of one generation of Schmittbuhl's model and its blocks.
+typedef struct AsperitySchmittbuhlGeneration {
+    // Block size relative to generation 0, Nᵍ (dimensionless).
+    double size;
+    // Block mass m_g (kg).
+    double mass;
+    // Horizontal spring k_c,g (N/m).
+    double coupling_stiffness;
+    // Vertical spring k_p,g (N/m).
+    double pulling_stiffness;
+    // Normal force n_g on a block (N).
+    double normal_force;
+    // Static coefficient μ_s^g (dimensionless).
+    double mu_static;
+    // Kinetic coefficient μ_k^g at the onset of slip (dimensionless).
+    double mu_kinetic;
+    // Weakening velocity v_c (m/s), the same at every generation.
+    double weakening_velocity;
+    // μ_k^g / μ_s^g (dimensionless; 1 when μ_s^g = 0).
+    double kinetic_to_static;
+    // The generation g (0: the imposed law).
+    uint32_t index;
+    // Slip events of the chain run that gave this law (0 at g = 0).
+    uint32_t events;
+} AsperitySchmittbuhlGeneration;
+
 // The slider model's response at one nominal pressure: one row of the
 // homogenised table. A plain `repr(C)` value (the C ABI's
 // `AsperityHomogenisedSample`); serde reads plain JSON numbers as well as
@@ -1440,6 +1504,67 @@ typedef struct AsperityZhuravlevFriction {
 typedef double (*AsperitySummitDensity)(double xi,
                                         void *user_data);
 
+// The Borodich–Kryukova slider (thesis §5.3.7), by value: a rigid block
+// of length 2a and mass M on a horizontal spring k_x, on a belt moving at
+// speed U, both faces carrying a layer of linear springs (stiffness ε per
+// unit length) over sinusoidal profiles A cos(2πξ/λ). An all-zero value
+// is invalid.
+typedef struct AsperityBorodichKryukova {
+    // Half-length a of the block (m, > 0).
+    double half_length;
+    // Mass M (kg, > 0).
+    double mass;
+    // Belt speed U (m/s, finite).
+    double belt_speed;
+    // Horizontal spring stiffness k_x (N/m, > 0).
+    double spring_stiffness;
+    // Layer stiffness ε (N/m per m of block length, N/m², > 0).
+    double layer_stiffness;
+    // Friction coefficient μ (dimensionless, finite, ≥ 0).
+    double friction_coefficient;
+    // Gravity g (m/s², finite, ≥ 0).
+    double gravity;
+    // Smoothing speed v_s of the friction sign, clamp((U − ẋ)/v_s, −1, 1)
+    // (m/s, > 0).
+    double sign_speed;
+    // Amplitude of the block's profile f_s (m, finite, ≥ 0).
+    double slider_amplitude;
+    // Wavelength of the block's profile f_s (m, > 0).
+    double slider_wavelength;
+    // Amplitude of the belt's profile f_b (m, finite, ≥ 0).
+    double belt_amplitude;
+    // Wavelength of the belt's profile f_b (m, > 0).
+    double belt_wavelength;
+    // Midpoint cells along the block (1..=100000).
+    uint32_t nodes;
+    // Reserved, 0.
+    uint32_t reserved;
+} AsperityBorodichKryukova;
+
+// The state of a Borodich–Kryukova block.
+typedef struct AsperityBorodichKryukovaState {
+    // Time t (s).
+    double time;
+    // Horizontal position x (m; the spring is unstretched at 0).
+    double x;
+    // Horizontal velocity ẋ (m/s).
+    double vx;
+    // Distance y between the profiles' mean lines (m; < 0: overlap).
+    double y;
+    // Vertical velocity ẏ (m/s).
+    double vy;
+} AsperityBorodichKryukovaState;
+
+// One recorded sample of a Borodich–Kryukova run.
+typedef struct AsperityBorodichKryukovaSample {
+    // The state.
+    struct AsperityBorodichKryukovaState state;
+    // Elastic normal force F_el,y of the layers (N).
+    double normal_force;
+    // Friction force F_fr,x on the block (N).
+    double friction_force;
+} AsperityBorodichKryukovaSample;
+
 // A Bush–Gibson–Thomas rough surface (thesis §5.3.3), by value: an
 // isotropic Gaussian surface of spectral moments m₀, m₂, m₄ (Nayak 1971)
 // whose summits are elliptic paraboloids in Hertz contact with a flat.
@@ -1567,6 +1692,39 @@ typedef struct AsperityHurstFit {
     // Number of populated log bins fitted (10 per decade).
     size_t bins;
 } AsperityHurstFit;
+
+// The power-law fit of a PSD with its uncertainty and band, from
+// `asperity_profile_hurst_estimate` (the fit of `AsperityHurstFit` with
+// the fields that struct, frozen at ABI 0.2, lacks).
+typedef struct AsperityHurstEstimate {
+    // Hurst exponent H = −(s + 1)/2 (dimensionless).
+    double hurst;
+    // Standard error of H (dimensionless, one standard deviation; the
+    // statistical error of the fit in the band, inflated by √(χ²/ν) when
+    // the residuals exceed the periodogram's scatter; not the systematic
+    // error of the band choice).
+    double hurst_uncertainty;
+    // Fitted log–log slope s (dimensionless).
+    double slope;
+    // Standard error of s (dimensionless, 2 × `hurst_uncertainty`).
+    double slope_uncertainty;
+    // Prefactor A of G = A q^s (m³·(rad/m)^{−s}).
+    double prefactor;
+    // Coefficient of determination r² of the weighted log–log fit.
+    double r_squared;
+    // χ²/ν of the fit (dimensionless; about 1 for a power law).
+    double chi2_per_dof;
+    // Lowest wavenumber fitted (rad/m).
+    double q_min;
+    // Highest wavenumber fitted (rad/m).
+    double q_max;
+    // Shortest wavelength of the band, 2π/q_max (m).
+    double wavelength_min;
+    // Longest wavelength of the band, 2π/q_min (m).
+    double wavelength_max;
+    // Number of populated log bins fitted (10 per decade).
+    uint64_t bins;
+} AsperityHurstEstimate;
 
 // Statistics of the peaks of a profile (3-point maxima), from
 // `asperity_profile_peak_statistics`.
@@ -2154,6 +2312,22 @@ int32_t asperity_cantor_exponents(const struct AsperityCantorProfile *profile,
                                   double *width_exponent,
                                   double *load_area_exponent);
 
+// The library's default Schmittbuhl model to `*out`: μ_s = 0.5, μ_k = 0.3,
+// v_c = 0.05 m/s, N = 3, G = 3, d = 3, blocks of 10 mg on 1000 N/m
+// springs (coupling and pulling), n₀ = 1 N, V = 1e-4 m/s, δ = 0.5.
+int32_t asperity_schmittbuhl_default(struct AsperitySchmittbuhl *out);
+
+// The renormalised friction laws of generations 0 (the imposed one) to G
+// of `*model`: G + 1 entries written to `out`, which has room for
+// `capacity` (checked before the chains run: a smaller capacity is an
+// error naming it); the number written goes to `*written` unless it is
+// NULL. Errors: a field out of range (named), a chain integration that
+// fails (`ASPERITY_ERR_NOT_CONVERGED`).
+int32_t asperity_schmittbuhl_run(const struct AsperitySchmittbuhl *model,
+                                 size_t capacity,
+                                 struct AsperitySchmittbuhlGeneration *out,
+                                 size_t *written);
+
 // Build the law from `n` >= 1 samples at strictly increasing nominal
 // pressures (Pa), their `cof` read as the Derjaguin coefficient
 // F/(N + A) (thesis (4-3); other forms through JSON). Writes a new handle
@@ -2577,6 +2751,31 @@ int32_t asperity_zhuravlev_eval(const struct AsperityZhuravlev *model,
                                 size_t order,
                                 struct AsperityZhuravlevResponse *out);
 
+// The elastic normal force F_el,y = ε ∫ max(f_s(ξ) + f_b(ξ + x − Ut) − y, 0) dξ
+// (N, midpoint rule on `nodes` cells) of the slider `bk` at position `x`
+// (m), mean-line distance `y` (m) and time `time` (s), to `*out`.
+int32_t asperity_borodich_kryukova_normal_force(const struct AsperityBorodichKryukova *bk,
+                                                double x,
+                                                double y,
+                                                double time,
+                                                double *out);
+
+// Integrate the slider `bk` from `*start` for `steps` steps of `dt`
+// (s, > 0) by classical Runge–Kutta 4, recording the start and every
+// `every`-th step (≥ 1): steps/every + 1 samples written to `samples`,
+// which has room for `capacity` (checked first: a smaller capacity is an
+// error naming it, and nothing is integrated). The number written goes to
+// `*written` unless it is NULL. Errors: parameters out of range (named),
+// a state that stops being finite (`ASPERITY_ERR_NOT_CONVERGED`).
+int32_t asperity_borodich_kryukova_run(const struct AsperityBorodichKryukova *bk,
+                                       const struct AsperityBorodichKryukovaState *start,
+                                       double dt,
+                                       uint32_t steps,
+                                       uint32_t every,
+                                       size_t capacity,
+                                       struct AsperityBorodichKryukovaSample *samples,
+                                       size_t *written);
+
 // Bush–Gibson–Thomas load, real area, number of contacts and stiffness at
 // `separation` d (m, finite; the flat's height above the mean plane of the
 // surface).
@@ -2735,6 +2934,20 @@ int32_t asperity_profile_hurst_fit(size_t n,
                                    double q_max,
                                    struct AsperityHurstFit *out);
 
+// `asperity_profile_hurst_fit` reporting H with its standard error, the
+// fit's χ²/ν and the band in wavenumbers (rad/m) and wavelengths (m):
+// the power-law fit of the PSD of `heights` (`n` values, m, spacing `dx`
+// m) over `q_min ≤ q ≤ q_max` (rad/m), or, with `q_min` = `q_max` = 0, over
+// the band chosen from the data (the widest run of at least one decade
+// that is a power law with 0 ≤ H ≤ 1). Errors: as
+// `asperity_profile_hurst_fit`.
+int32_t asperity_profile_hurst_estimate(size_t n,
+                                        const double *heights,
+                                        double dx,
+                                        double q_min,
+                                        double q_max,
+                                        struct AsperityHurstEstimate *out);
+
 // Statistics of the peaks (3-point maxima, heights from the mean line,
 // curvature −z″) of `heights` (`n` ≥ 3 values, m, spacing `dx` m); the
 // density is per profile length n·dx.
@@ -2784,6 +2997,55 @@ int32_t asperity_generate_cantor_borodich(uint32_t descendants,
                                           double length,
                                           size_t n,
                                           double *heights);
+
+// ISO 16610-61 areal Gaussian filter of the map of `nx` × `ny` heights
+// `heights` (m, row-major: `heights[i + nx*j]` at x = i·dx, y = j·dy;
+// spacings `dx`, `dy` in m; nx, ny ≥ 2) with cut-off (nesting index)
+// `cutoff` λc (m): writes the roughness (S-L) surface to `roughness` and,
+// if not NULL, the Gaussian mean surface to `mean_surface` (row-major on
+// the retained grid; each needs room for nx·ny values; either may be
+// `heights` itself), the retained grid's size to `*nx_out`, `*ny_out`, and
+// the input indices of its first point to `*first_x`, `*first_y` (either
+// may be NULL). `ends` is `ASPERITY_FILTER_ENDS_DISCARD` (λc/2 dropped on
+// every side) or `ASPERITY_FILTER_ENDS_KEEP` (the whole grid, edge weights
+// renormalised). Errors: `cutoff` not finite and > 0, shorter than 5
+// spacings or not shorter than the map along x or y, fewer than 2 points
+// left after discarding.
+int32_t asperity_map_gaussian_filter(size_t nx,
+                                     size_t ny,
+                                     double dx,
+                                     double dy,
+                                     const double *heights,
+                                     double cutoff,
+                                     int32_t ends,
+                                     double *roughness,
+                                     double *mean_surface,
+                                     size_t *nx_out,
+                                     size_t *ny_out,
+                                     size_t *first_x,
+                                     size_t *first_y);
+
+// The radially averaged 2-D PSD of the map of `nx` × `ny` heights
+// `heights` (m, row-major as `asperity_map_gaussian_filter`; spacings
+// `dx`, `dy` in m; mean removed) with `window` (`ASPERITY_WINDOW_*`):
+// annuli of width max(Δq_x, Δq_y) centred on m·Δq up to the smaller
+// Nyquist wavenumber, empty annuli skipped. Writes for each annulus its
+// mean |q| to `q` (rad/m; may be NULL), the mean PSD over it to `psd`
+// (m⁴) and its number of grid points to `count` (may be NULL), and the
+// number of annuli to `*written`. The arrays have room for `capacity`
+// values; min(nx, ny)/2 + 1 always suffices, and a smaller capacity than
+// the annuli found is an error naming `capacity`.
+int32_t asperity_map_psd_radial(size_t nx,
+                                size_t ny,
+                                double dx,
+                                double dy,
+                                const double *heights,
+                                int32_t window,
+                                size_t capacity,
+                                double *q,
+                                double *psd,
+                                size_t *count,
+                                size_t *written);
 
 // Build the table of a Maugis–Dugdale sphere: radius (m), E* (Pa), work of
 // adhesion (J/m²), Dugdale stress σ₀ (Pa), relative `tolerance` in

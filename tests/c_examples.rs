@@ -991,6 +991,7 @@ fn every_other_example_runs() {
         "pull_off_table",
         "slider_patch",
         "tabulated_threads",
+        "thesis_models",
     ];
     for name in built()
         .binaries
@@ -1208,4 +1209,58 @@ fn profile_characterise_static() {
 #[test]
 fn profile_characterise_shared() {
     check_profile_characterise(Linkage::Shared);
+}
+
+const BELT: &str = "Borodich–Kryukova (src/statistics/borodich_kryukova.rs, src/ffi/statistics.rs)";
+const CHAIN: &str = "Schmittbuhl (src/hierarchical/schmittbuhl.rs, src/ffi/hierarchical.rs)";
+
+/// `thesis_models`: Borodich–Kryukova on flat layers (rest force = weight,
+/// x = x*(1 − cos ω t)), Schmittbuhl's Coulomb fixed point, the Hurst
+/// estimate of a generated H = 0.7 profile (2¹⁶ points: within 0.02, module
+/// docs of src/surface/power_law.rs), the areal filter's 50 % transmission
+/// at the cut-off and the radial PSD's peak at the wave.
+fn check_thesis_models(linkage: Linkage) {
+    let r = run("thesis_models", linkage);
+    let mut c = Report::new(&r);
+    c.exit_ok(FFI);
+    c.close(BELT, "bk_rest_force_over_weight", 1.0, 1e-12);
+    c.close(BELT, "bk_samples", 301.0, 0.0);
+    c.close(BELT, "bk_end_time", 0.3, 1e-12);
+    c.close(BELT, "bk_x_star", 0.3 * 9.81 / 1e3, 1e-15);
+    // RK4 at ω dt = 3e-4: the error is rounding.
+    c.within(BELT, "bk_x_max_error", 0.0, 1e-9);
+    c.close(FFI, "bk_short_capacity_status", -2.0, 0.0);
+    c.close(CHAIN, "schmittbuhl_default_ratio", 3.0, 0.0);
+    c.close(CHAIN, "schmittbuhl_generations", 3.0, 0.0);
+    c.close(CHAIN, "schmittbuhl_top_size", 4.0, 0.0);
+    // The quasi-static overshoot bound of the module docs.
+    c.within(CHAIN, "schmittbuhl_coulomb_max_rel_error", 0.0, 2.5e-3);
+    c.close(SURFACE, "hurst", 0.7, 0.02);
+    c.within(SURFACE, "hurst_uncertainty", 1e-4, 0.02);
+    c.within(SURFACE, "hurst_band_decades", 1.0, 6.0);
+    c.close(
+        SURFACE,
+        "hurst_wavelength_min_times_q_max",
+        2.0 * std::f64::consts::PI,
+        1e-12,
+    );
+    // λc/2 = 16 points dropped at each edge of 256.
+    c.close(SURFACE, "map_nx_out", 224.0, 0.0);
+    c.close(SURFACE, "map_first_x", 16.0, 0.0);
+    // exp(−π α²) = 1/2 at λ = λc, to 0.01 on this grid.
+    c.close(SURFACE, "map_mean_amplitude_ratio", 0.5, 0.01);
+    // The annulus holding the wave: its mean |q| within half an annulus
+    // width (2π/(96 µm)) of the wave's 2π/(32 µm).
+    c.close(SURFACE, "map_psd_peak_q_over_wave_q", 1.0, 1.0 / 6.0);
+    c.finish();
+}
+
+#[test]
+fn thesis_models_static() {
+    check_thesis_models(Linkage::Static);
+}
+
+#[test]
+fn thesis_models_shared() {
+    check_thesis_models(Linkage::Shared);
 }

@@ -1997,6 +1997,82 @@ struct Psd {
     return out;
 }
 
+/// `asperity_profile_hurst_estimate`: `profile_hurst_fit` with H's standard
+/// error, the fit's chi^2/dof and the band in rad/m and in m, over
+/// `q_min <= q <= q_max` (rad/m; both 0: the band chosen from the data).
+[[nodiscard]] inline AsperityHurstEstimate profile_hurst_estimate(span<const double> heights,
+                                                                  double dx, double q_min = 0.0,
+                                                                  double q_max = 0.0)
+{
+    AsperityHurstEstimate out{};
+    check(asperity_profile_hurst_estimate(heights.size(), detail::required(heights), dx, q_min,
+                                          q_max, &out));
+    return out;
+}
+
+/// The result of `asperity::map_gaussian_filter`: the retained grid,
+/// row-major (`roughness[i + nx*j]`).
+struct FilteredMap {
+    /// The roughness (S-L) surface (m).
+    std::vector<double> roughness;
+    /// The Gaussian mean surface (m).
+    std::vector<double> mean_surface;
+    /// Points of the retained grid along x and y.
+    std::size_t nx;
+    std::size_t ny;
+    /// Input indices of the retained grid's first point.
+    std::size_t first_x;
+    std::size_t first_y;
+};
+
+/// `asperity_map_gaussian_filter`: the ISO 16610-61 areal Gaussian filter
+/// of the `nx` x `ny` map `heights` (m, row-major, spacings `dx`, `dy`) at
+/// `cutoff` (m) with `ends` (`ASPERITY_FILTER_ENDS_*`).
+[[nodiscard]] inline FilteredMap map_gaussian_filter(std::size_t nx, std::size_t ny, double dx,
+                                                     double dy, span<const double> heights,
+                                                     double cutoff, std::int32_t ends)
+{
+    const char* f = "asperity::map_gaussian_filter";
+    const double* h = detail::exactly(heights, nx * ny, f, "heights");
+    FilteredMap out{std::vector<double>(nx * ny), std::vector<double>(nx * ny), 0, 0, 0, 0};
+    check(asperity_map_gaussian_filter(nx, ny, dx, dy, h, cutoff, ends, out.roughness.data(),
+                                       out.mean_surface.data(), &out.nx, &out.ny, &out.first_x,
+                                       &out.first_y));
+    out.roughness.resize(out.nx * out.ny);
+    out.mean_surface.resize(out.nx * out.ny);
+    return out;
+}
+
+/// The result of `asperity::map_psd_radial`, one element per annulus.
+struct RadialPsd {
+    /// Mean |q| of the annulus (rad/m).
+    std::vector<double> q;
+    /// Mean PSD over the annulus (m^4).
+    std::vector<double> psd;
+    /// Grid points in the annulus.
+    std::vector<std::size_t> count;
+};
+
+/// `asperity_map_psd_radial`: the radially averaged 2-D PSD of the `nx` x
+/// `ny` map `heights` (m, row-major, spacings `dx`, `dy`) with `window`
+/// (`ASPERITY_WINDOW_*`).
+[[nodiscard]] inline RadialPsd map_psd_radial(std::size_t nx, std::size_t ny, double dx, double dy,
+                                              span<const double> heights, std::int32_t window)
+{
+    const char* f = "asperity::map_psd_radial";
+    const double* h = detail::exactly(heights, nx * ny, f, "heights");
+    const std::size_t cap = (nx < ny ? nx : ny) / 2 + 1;
+    RadialPsd out{std::vector<double>(cap), std::vector<double>(cap),
+                  std::vector<std::size_t>(cap)};
+    std::size_t m = 0;
+    check(asperity_map_psd_radial(nx, ny, dx, dy, h, window, cap, out.q.data(), out.psd.data(),
+                                  out.count.data(), &m));
+    out.q.resize(m);
+    out.psd.resize(m);
+    out.count.resize(m);
+    return out;
+}
+
 /// `asperity_profile_peak_statistics`: statistics of the 3-point peaks of
 /// `heights` (m, spacing `dx`).
 [[nodiscard]] inline AsperityPeakStatistics profile_peak_statistics(span<const double> heights,
@@ -2129,6 +2205,55 @@ struct CantorExponents {
     check(asperity_cantor_exponents(&profile, &e.fractal_dimension, &e.width_exponent,
                                     &e.load_area_exponent));
     return e;
+}
+
+/// `asperity_borodich_kryukova_normal_force`: the layers' elastic normal
+/// force (N) of the Borodich-Kryukova slider `bk` at position `x` (m),
+/// mean-line distance `y` (m) and time `time` (s).
+[[nodiscard]] inline double borodich_kryukova_normal_force(const AsperityBorodichKryukova& bk,
+                                                           double x, double y, double time = 0.0)
+{
+    double f = 0.0;
+    check(asperity_borodich_kryukova_normal_force(&bk, x, y, time, &f));
+    return f;
+}
+
+/// `asperity_borodich_kryukova_run`: Runge-Kutta 4 from `start` for `steps`
+/// steps of `dt` (s), the start and every `every`-th step recorded
+/// (steps/every + 1 samples).
+[[nodiscard]] inline std::vector<AsperityBorodichKryukovaSample>
+borodich_kryukova_run(const AsperityBorodichKryukova& bk,
+                      const AsperityBorodichKryukovaState& start, double dt, std::uint32_t steps,
+                      std::uint32_t every = 1)
+{
+    // every = 0: the library reports it (naming `every`).
+    std::vector<AsperityBorodichKryukovaSample> out(every == 0 ? 1
+                                                               : std::size_t(steps / every) + 1);
+    std::size_t written = 0;
+    check(asperity_borodich_kryukova_run(&bk, &start, dt, steps, every, out.size(), out.data(),
+                                         &written));
+    out.resize(written);
+    return out;
+}
+
+/// `asperity_schmittbuhl_default`: the library's default Schmittbuhl model.
+[[nodiscard]] inline AsperitySchmittbuhl schmittbuhl_default()
+{
+    AsperitySchmittbuhl out{};
+    check(asperity_schmittbuhl_default(&out));
+    return out;
+}
+
+/// `asperity_schmittbuhl_run`: the renormalised friction laws of
+/// generations 0 to `model.generations`.
+[[nodiscard]] inline std::vector<AsperitySchmittbuhlGeneration>
+schmittbuhl_run(const AsperitySchmittbuhl& model)
+{
+    std::vector<AsperitySchmittbuhlGeneration> out(std::size_t(model.generations) + 1);
+    std::size_t written = 0;
+    check(asperity_schmittbuhl_run(&model, out.size(), out.data(), &written));
+    out.resize(written);
+    return out;
 }
 
 } // namespace asperity

@@ -929,6 +929,62 @@ module asperity
     real(c_double) :: plastic_load = 0.0_c_double
   end type asperity_cantor_contact
 
+  !> `AsperitySchmittbuhl`
+  type, bind(c), public :: asperity_schmittbuhl
+    !> Static coefficient of a generation-0 block (finite, ≥ 0).
+    real(c_double) :: mu_static = 0.0_c_double
+    !> Kinetic coefficient at the onset of slip (in [0, mu_static]).
+    real(c_double) :: mu_kinetic = 0.0_c_double
+    !> Weakening velocity v_c (m/s, > 0; +infinity: none).
+    real(c_double) :: weakening_velocity = 0.0_c_double
+    !> Mass of a generation-0 block (kg, > 0).
+    real(c_double) :: mass = 0.0_c_double
+    !> Coupling spring between generation-0 blocks (N/m, ≥ 0).
+    real(c_double) :: coupling_stiffness = 0.0_c_double
+    !> Spring from a generation-0 block to its parent (N/m, > 0).
+    real(c_double) :: pulling_stiffness = 0.0_c_double
+    !> Normal force on a generation-0 block (N, > 0).
+    real(c_double) :: normal_force = 0.0_c_double
+    !> Plate velocity V (m/s, > 0).
+    real(c_double) :: velocity = 0.0_c_double
+    !> Pre-stress disorder (in [0, 1)).
+    real(c_double) :: disorder = 0.0_c_double
+    !> Blocks per chain N, in [2, 64].
+    integer(c_int32_t) :: ratio = 0_c_int32_t
+    !> Generations G above generation 0, in [1, 12].
+    integer(c_int32_t) :: generations = 0_c_int32_t
+    !> Dimension of the elastic continuum, 2 or 3.
+    integer(c_int32_t) :: dimension = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_schmittbuhl
+
+  !> `AsperitySchmittbuhlGeneration`
+  type, bind(c), public :: asperity_schmittbuhl_generation
+    !> Block size relative to generation 0.
+    real(c_double) :: size = 0.0_c_double
+    !> Block mass (kg).
+    real(c_double) :: mass = 0.0_c_double
+    !> Coupling spring (N/m).
+    real(c_double) :: coupling_stiffness = 0.0_c_double
+    !> Pulling spring (N/m).
+    real(c_double) :: pulling_stiffness = 0.0_c_double
+    !> Normal force on a block (N).
+    real(c_double) :: normal_force = 0.0_c_double
+    !> Static coefficient.
+    real(c_double) :: mu_static = 0.0_c_double
+    !> Kinetic coefficient at the onset of slip.
+    real(c_double) :: mu_kinetic = 0.0_c_double
+    !> Weakening velocity (m/s).
+    real(c_double) :: weakening_velocity = 0.0_c_double
+    !> mu_kinetic / mu_static (1 when mu_static = 0).
+    real(c_double) :: kinetic_to_static = 0.0_c_double
+    !> The generation (0: the imposed law).
+    integer(c_int32_t) :: index = 0_c_int32_t
+    !> Slip events of the chain run that gave this law.
+    integer(c_int32_t) :: events = 0_c_int32_t
+  end type asperity_schmittbuhl_generation
+
   !> `AsperityPrandtlTomlinsonTwoSpringParams`: the tip-cantilever Prandtl-Tomlinson model (SI).
   type, bind(c), public :: asperity_prandtl_tomlinson_two_spring_params
     !> Lattice potential amplitude U0 (J), > 0.
@@ -1170,6 +1226,62 @@ module asperity
     integer(c_int32_t) :: reserved = 0_c_int32_t
   end type asperity_bora_response
 
+  !> `AsperityBorodichKryukova`
+  type, bind(c), public :: asperity_borodich_kryukova
+    !> Half-length a of the block (m, > 0).
+    real(c_double) :: half_length = 0.0_c_double
+    !> Mass M (kg, > 0).
+    real(c_double) :: mass = 0.0_c_double
+    !> Belt speed U (m/s, finite).
+    real(c_double) :: belt_speed = 0.0_c_double
+    !> Horizontal spring stiffness k_x (N/m, > 0).
+    real(c_double) :: spring_stiffness = 0.0_c_double
+    !> Layer stiffness ε (N/m², > 0).
+    real(c_double) :: layer_stiffness = 0.0_c_double
+    !> Friction coefficient μ (finite, ≥ 0).
+    real(c_double) :: friction_coefficient = 0.0_c_double
+    !> Gravity g (m/s², finite, ≥ 0).
+    real(c_double) :: gravity = 0.0_c_double
+    !> Smoothing speed v_s of the friction sign (m/s, > 0).
+    real(c_double) :: sign_speed = 0.0_c_double
+    !> Amplitude of the block's profile (m, ≥ 0).
+    real(c_double) :: slider_amplitude = 0.0_c_double
+    !> Wavelength of the block's profile (m, > 0).
+    real(c_double) :: slider_wavelength = 0.0_c_double
+    !> Amplitude of the belt's profile (m, ≥ 0).
+    real(c_double) :: belt_amplitude = 0.0_c_double
+    !> Wavelength of the belt's profile (m, > 0).
+    real(c_double) :: belt_wavelength = 0.0_c_double
+    !> Midpoint cells along the block (1..=100000).
+    integer(c_int32_t) :: nodes = 0_c_int32_t
+    !> Reserved, 0.
+    integer(c_int32_t) :: reserved = 0_c_int32_t
+  end type asperity_borodich_kryukova
+
+  !> `AsperityBorodichKryukovaState`
+  type, bind(c), public :: asperity_borodich_kryukova_state
+    !> Time t (s).
+    real(c_double) :: time = 0.0_c_double
+    !> Horizontal position x (m).
+    real(c_double) :: x = 0.0_c_double
+    !> Horizontal velocity (m/s).
+    real(c_double) :: vx = 0.0_c_double
+    !> Distance y between the profiles' mean lines (m).
+    real(c_double) :: y = 0.0_c_double
+    !> Vertical velocity (m/s).
+    real(c_double) :: vy = 0.0_c_double
+  end type asperity_borodich_kryukova_state
+
+  !> `AsperityBorodichKryukovaSample`
+  type, bind(c), public :: asperity_borodich_kryukova_sample
+    !> The state.
+    type(asperity_borodich_kryukova_state) :: state
+    !> Elastic normal force F_el,y of the layers (N).
+    real(c_double) :: normal_force = 0.0_c_double
+    !> Friction force F_fr,x on the block (N).
+    real(c_double) :: friction_force = 0.0_c_double
+  end type asperity_borodich_kryukova_sample
+
   !> `AsperityZhuravlev`
   type, bind(c), public :: asperity_zhuravlev
     !> Cap radius R of both surfaces (m, > 0), or 0.
@@ -1280,6 +1392,34 @@ module asperity
     !> Number of populated log bins fitted (10 per decade).
     integer(c_size_t) :: bins = 0_c_size_t
   end type asperity_hurst_fit
+
+  !> `AsperityHurstEstimate`
+  type, bind(c), public :: asperity_hurst_estimate
+    !> Hurst exponent H = −(s + 1)/2 (dimensionless).
+    real(c_double) :: hurst = 0.0_c_double
+    !> Standard error of H (one standard deviation, statistical).
+    real(c_double) :: hurst_uncertainty = 0.0_c_double
+    !> Fitted log–log slope s.
+    real(c_double) :: slope = 0.0_c_double
+    !> Standard error of s.
+    real(c_double) :: slope_uncertainty = 0.0_c_double
+    !> Prefactor A (m³·(rad/m)^{−s}).
+    real(c_double) :: prefactor = 0.0_c_double
+    !> Coefficient of determination r² of the weighted log–log fit.
+    real(c_double) :: r_squared = 0.0_c_double
+    !> χ²/ν of the fit.
+    real(c_double) :: chi2_per_dof = 0.0_c_double
+    !> Lowest wavenumber fitted (rad/m).
+    real(c_double) :: q_min = 0.0_c_double
+    !> Highest wavenumber fitted (rad/m).
+    real(c_double) :: q_max = 0.0_c_double
+    !> Shortest wavelength of the band, 2π/q_max (m).
+    real(c_double) :: wavelength_min = 0.0_c_double
+    !> Longest wavelength of the band, 2π/q_min (m).
+    real(c_double) :: wavelength_max = 0.0_c_double
+    !> Number of populated log bins fitted.
+    integer(c_int64_t) :: bins = 0_c_int64_t
+  end type asperity_hurst_estimate
 
   !> `AsperityPeakStatistics`
   type, bind(c), public :: asperity_peak_statistics
@@ -2449,6 +2589,59 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_cantor_exponents
 
+    !> The renormalised friction laws of generations 0..G of `model` into `out` (room for
+    !  `capacity`); the number written to `written` unless NULL.
+    function c_asperity_schmittbuhl_run(model, capacity, out, written) result(r) bind(c, &
+        name="asperity_schmittbuhl_run")
+      import
+      implicit none
+      type(asperity_schmittbuhl), intent(in) :: model
+      integer(c_size_t), value :: capacity
+      type(asperity_schmittbuhl_generation), intent(inout) :: out(*)
+      integer(c_size_t), intent(inout) :: written
+      integer(c_int32_t) :: r
+    end function c_asperity_schmittbuhl_run
+
+    !> The library's default Schmittbuhl model.
+    function c_asperity_schmittbuhl_default(out) result(r) bind(c, &
+        name="asperity_schmittbuhl_default")
+      import
+      implicit none
+      type(asperity_schmittbuhl), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_schmittbuhl_default
+
+    !> The layers' elastic normal force (N) of a Borodich-Kryukova slider at `x` (m), `y` (m),
+    !  `time` (s).
+    function c_asperity_borodich_kryukova_normal_force(bk, x, y, time, out) result(r) bind(c, &
+        name="asperity_borodich_kryukova_normal_force")
+      import
+      implicit none
+      type(asperity_borodich_kryukova), intent(in) :: bk
+      real(c_double), value :: x
+      real(c_double), value :: y
+      real(c_double), value :: time
+      real(c_double), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_borodich_kryukova_normal_force
+
+    !> Runge-Kutta 4 of a Borodich-Kryukova slider from `start`: steps/every + 1 samples into
+    !  `samples` (room for `capacity`); the number written to `written` unless NULL.
+    function c_asperity_borodich_kryukova_run(bk, start, dt, steps, every, capacity, samples, &
+        written) result(r) bind(c, name="asperity_borodich_kryukova_run")
+      import
+      implicit none
+      type(asperity_borodich_kryukova), intent(in) :: bk
+      type(asperity_borodich_kryukova_state), intent(in) :: start
+      real(c_double), value :: dt
+      integer(c_int32_t), value :: steps
+      integer(c_int32_t), value :: every
+      integer(c_size_t), value :: capacity
+      type(asperity_borodich_kryukova_sample), intent(inout) :: samples(*)
+      integer(c_size_t), intent(inout) :: written
+      integer(c_int32_t) :: r
+    end function c_asperity_borodich_kryukova_run
+
     !> Build a Prandtl-Tomlinson tip (one-dimensional). Writes a new handle to `*out`.
     function c_asperity_friction_prandtl_tomlinson_new(amplitude, period, stiffness, mass, &
         damping, tolerance, out) result(r) bind(c, name="asperity_friction_prandtl_tomlinson_new")
@@ -3108,6 +3301,51 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_profile_gaussian_filter
 
+    !> ISO 16610-61 areal Gaussian filter of the `nx` × `ny` map `heights` (m, x fastest):
+    !  roughness (and, unless NULL, mean) surface on the retained grid, its size, and (unless
+    !  NULL) the input indices of its first point.
+    function c_asperity_map_gaussian_filter(nx, ny, dx, dy, heights, cutoff, ends, roughness, &
+        mean_surface, nx_out, ny_out, first_x, first_y) result(r) bind(c, &
+        name="asperity_map_gaussian_filter")
+      import
+      implicit none
+      integer(c_size_t), value :: nx
+      integer(c_size_t), value :: ny
+      real(c_double), value :: dx
+      real(c_double), value :: dy
+      real(c_double), intent(in) :: heights(*)
+      real(c_double), value :: cutoff
+      integer(c_int32_t), value :: ends
+      real(c_double), intent(inout) :: roughness(*)
+      type(c_ptr), value :: mean_surface
+      integer(c_size_t), intent(out) :: nx_out
+      integer(c_size_t), intent(out) :: ny_out
+      type(c_ptr), value :: first_x
+      type(c_ptr), value :: first_y
+      integer(c_int32_t) :: r
+    end function c_asperity_map_gaussian_filter
+
+    !> Radially averaged 2-D PSD of the `nx` × `ny` map `heights` (m, x fastest): per annulus
+    !  the mean |q| (rad/m; `q` may be NULL), the mean PSD (m⁴) and the point count (`count`
+    !  may be NULL); room for `capacity` (min(nx, ny)/2 + 1 suffices); the number to `written`.
+    function c_asperity_map_psd_radial(nx, ny, dx, dy, heights, window, capacity, q, psd, &
+        count, written) result(r) bind(c, name="asperity_map_psd_radial")
+      import
+      implicit none
+      integer(c_size_t), value :: nx
+      integer(c_size_t), value :: ny
+      real(c_double), value :: dx
+      real(c_double), value :: dy
+      real(c_double), intent(in) :: heights(*)
+      integer(c_int32_t), value :: window
+      integer(c_size_t), value :: capacity
+      type(c_ptr), value :: q
+      real(c_double), intent(inout) :: psd(*)
+      type(c_ptr), value :: count
+      integer(c_size_t), intent(out) :: written
+      integer(c_int32_t) :: r
+    end function c_asperity_map_psd_radial
+
     !> The material-ratio (Abbott–Firestone) curve of `heights` (`n` values, m) at `n_points` ≥
     !  2 equally spaced ratios Rmr = i/(n_points − 1): `ratio[i]` (dimensionless, 0 … 1; may be
     !  NULL) and `level[i]`, the height c(Rmr) above the mean line (m; the highest peak at 0,
@@ -3159,6 +3397,20 @@ module asperity
       type(asperity_hurst_fit), intent(inout) :: out
       integer(c_int32_t) :: r
     end function c_asperity_profile_hurst_fit
+
+    !> `asperity_profile_hurst_fit` with H's standard error, χ²/ν and the band in rad/m and m.
+    function c_asperity_profile_hurst_estimate(n, heights, dx, q_min, q_max, out) result(r) &
+        bind(c, name="asperity_profile_hurst_estimate")
+      import
+      implicit none
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: heights(*)
+      real(c_double), value :: dx
+      real(c_double), value :: q_min
+      real(c_double), value :: q_max
+      type(asperity_hurst_estimate), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_profile_hurst_estimate
 
     !> Statistics of the peaks (3-point maxima, heights from the mean line, curvature −z″) of
     !  `heights` (`n` ≥ 3 values, m, spacing `dx` m); the density is per profile length n·dx.
@@ -3475,6 +3727,10 @@ module asperity
   public :: c_asperity_archard_area_batch
   public :: c_asperity_cantor_contact_batch
   public :: c_asperity_cantor_exponents
+  public :: c_asperity_schmittbuhl_run
+  public :: c_asperity_schmittbuhl_default
+  public :: c_asperity_borodich_kryukova_normal_force
+  public :: c_asperity_borodich_kryukova_run
   public :: c_asperity_friction_bristles_new
   public :: c_asperity_friction_prandtl_tomlinson_new
   public :: c_asperity_friction_prandtl_tomlinson_two_spring_new
@@ -3528,6 +3784,9 @@ module asperity
   public :: c_asperity_material_ratio_curve
   public :: c_asperity_profile_psd
   public :: c_asperity_profile_hurst_fit
+  public :: c_asperity_profile_hurst_estimate
+  public :: c_asperity_map_gaussian_filter
+  public :: c_asperity_map_psd_radial
   public :: c_asperity_profile_peak_statistics
   public :: c_asperity_generate_self_affine
   public :: c_asperity_generate_weierstrass_mandelbrot
@@ -3582,6 +3841,10 @@ module asperity
   public :: asperity_archard_area_batch
   public :: asperity_cantor_contact_batch
   public :: asperity_cantor_exponents
+  public :: asperity_schmittbuhl_run
+  public :: asperity_schmittbuhl_default
+  public :: asperity_borodich_kryukova_normal_force
+  public :: asperity_borodich_kryukova_run
   public :: asperity_friction_bristles_new
   public :: asperity_friction_prandtl_tomlinson_new
   public :: asperity_friction_prandtl_tomlinson_two_spring_new
@@ -3667,6 +3930,9 @@ module asperity
   public :: asperity_material_ratio_curve
   public :: asperity_profile_psd
   public :: asperity_profile_hurst_fit
+  public :: asperity_profile_hurst_estimate
+  public :: asperity_map_gaussian_filter
+  public :: asperity_map_psd_radial
   public :: asperity_profile_peak_statistics
   public :: asperity_generate_self_affine
   public :: asperity_generate_weierstrass_mandelbrot
@@ -4747,6 +5013,55 @@ contains
         load_area_exponent), 'asperity_cantor_exponents', status)
   end subroutine asperity_cantor_exponents
 
+  !> The renormalised friction laws of generations 0..`model%generations` into `laws` (at least
+  !> generations + 1 elements); `written` receives the number written.
+  subroutine asperity_schmittbuhl_run(model, laws, written, status)
+    type(asperity_schmittbuhl), intent(in) :: model
+    type(asperity_schmittbuhl_generation), intent(inout) :: laws(:)
+    integer(c_size_t), intent(out) :: written
+    integer(c_int32_t), intent(out), optional :: status
+    written = 0
+    call check(c_asperity_schmittbuhl_run(model, size(laws, kind=c_size_t), laws, written), &
+        'asperity_schmittbuhl_run', status)
+  end subroutine asperity_schmittbuhl_run
+
+  !> The library's default Schmittbuhl model (mu_s 0.5, mu_k 0.3, v_c 0.05 m/s, N 3, G 3, d 3).
+  subroutine asperity_schmittbuhl_default(model, status)
+    type(asperity_schmittbuhl), intent(out) :: model
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_schmittbuhl_default(model), 'asperity_schmittbuhl_default', status)
+  end subroutine asperity_schmittbuhl_default
+
+  !> The layers' elastic normal force `force` (N) of the Borodich-Kryukova slider `bk` at
+  !> position `x` (m), mean-line distance `y` (m) and time `time` (s).
+  subroutine asperity_borodich_kryukova_normal_force(bk, x, y, time, force, status)
+    type(asperity_borodich_kryukova), intent(in) :: bk
+    real(c_double), intent(in) :: x, y, time
+    real(c_double), intent(out) :: force
+    integer(c_int32_t), intent(out), optional :: status
+    force = 0
+    call check(c_asperity_borodich_kryukova_normal_force(bk, x, y, time, force), &
+        'asperity_borodich_kryukova_normal_force', status)
+  end subroutine asperity_borodich_kryukova_normal_force
+
+  !> Runge-Kutta 4 of the slider `bk` from `start` for `steps` steps of `dt` (s), the start and
+  !> every `every`-th step into `samples` (at least steps/every + 1 elements); `written`
+  !> receives the number written.
+  subroutine asperity_borodich_kryukova_run(bk, start, dt, steps, every, samples, written, &
+      status)
+    type(asperity_borodich_kryukova), intent(in) :: bk
+    type(asperity_borodich_kryukova_state), intent(in) :: start
+    real(c_double), intent(in) :: dt
+    integer(c_int32_t), intent(in) :: steps, every
+    type(asperity_borodich_kryukova_sample), intent(inout) :: samples(:)
+    integer(c_size_t), intent(out) :: written
+    integer(c_int32_t), intent(out), optional :: status
+    written = 0
+    call check(c_asperity_borodich_kryukova_run(bk, start, dt, steps, every, &
+        size(samples, kind=c_size_t), samples, written), 'asperity_borodich_kryukova_run', &
+        status)
+  end subroutine asperity_borodich_kryukova_run
+
   !> Bristles of stiffnesses `stiffness` (1/m per unit normal force) and break
   !> deflections `break_deflection` (m, same size), viscous `sigma2` (N s/m), into `law`.
   subroutine asperity_friction_bristles_new(stiffness, break_deflection, sigma2, law, status)
@@ -5787,6 +6102,83 @@ contains
     call check(c_asperity_profile_hurst_fit(size(heights, kind=c_size_t), heights, dx, q_min, &
         q_max, out), 'asperity_profile_hurst_fit', status)
   end subroutine asperity_profile_hurst_fit
+
+  !> `asperity_profile_hurst_fit` with H's standard error, chi^2/dof and the band in rad/m and m
+  !> (`q_min` = `q_max` = 0: the band chosen from the data).
+  subroutine asperity_profile_hurst_estimate(heights, dx, q_min, q_max, out, status)
+    real(c_double), intent(in) :: heights(:)
+    real(c_double), intent(in) :: dx, q_min, q_max
+    type(asperity_hurst_estimate), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_profile_hurst_estimate(size(heights, kind=c_size_t), heights, dx, &
+        q_min, q_max, out), 'asperity_profile_hurst_estimate', status)
+  end subroutine asperity_profile_hurst_estimate
+
+  !> ISO 16610-61 areal Gaussian filter of the map `heights(nx, ny)` (m, x fastest; spacings
+  !> `dx`, `dy` in m) at `cutoff` (m) with `ends` (`ASPERITY_FILTER_ENDS_*`): the roughness
+  !> surface of the retained `nx_out` x `ny_out` grid in `roughness(1:nx_out*ny_out)` (x
+  !> fastest; room for size(heights)), and when given the mean surface likewise and the
+  !> (0-based) input indices of the retained grid's first point.
+  subroutine asperity_map_gaussian_filter(heights, dx, dy, cutoff, ends, roughness, nx_out, &
+      ny_out, mean_surface, first_x, first_y, status)
+    real(c_double), intent(in), contiguous :: heights(:, :)
+    real(c_double), intent(in) :: dx, dy, cutoff
+    integer(c_int32_t), intent(in) :: ends
+    real(c_double), intent(inout) :: roughness(:)
+    integer, intent(out) :: nx_out, ny_out
+    real(c_double), intent(inout), optional, target, contiguous :: mean_surface(:)
+    integer, intent(out), optional :: first_x, first_y
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_map_gaussian_filter'
+    integer(c_size_t), target :: c_nx, c_ny, c_fx, c_fy
+    integer :: n
+    n = size(heights)
+    nx_out = 0
+    ny_out = 0
+    if (present(first_x)) first_x = 0
+    if (present(first_y)) first_y = 0
+    if (too_small(what, 'roughness', size(roughness), n, 'the size of `heights`', status)) return
+    if (present(mean_surface)) then
+      if (too_small(what, 'mean_surface', size(mean_surface), n, 'the size of `heights`', &
+          status)) return
+    end if
+    c_nx = 0
+    c_ny = 0
+    c_fx = 0
+    c_fy = 0
+    call check(c_asperity_map_gaussian_filter(size(heights, 1, kind=c_size_t), &
+        size(heights, 2, kind=c_size_t), dx, dy, heights, cutoff, ends, roughness, &
+        loc_d(mean_surface), c_nx, c_ny, c_loc(c_fx), c_loc(c_fy)), what, status)
+    nx_out = int(c_nx)
+    ny_out = int(c_ny)
+    if (present(first_x)) first_x = int(c_fx)
+    if (present(first_y)) first_y = int(c_fy)
+  end subroutine asperity_map_gaussian_filter
+
+  !> Radially averaged 2-D PSD of the map `heights(nx, ny)` (m, x fastest; spacings `dx`,
+  !> `dy` in m) with `window` (`ASPERITY_WINDOW_*`): `written` annuli, their mean PSD (m^4)
+  !> in `psd` and, when given, their mean |q| (rad/m) in `q` (as long as `psd`; min(nx, ny)/2
+  !> + 1 elements always suffice).
+  subroutine asperity_map_psd_radial(heights, dx, dy, window, psd, written, q, status)
+    real(c_double), intent(in), contiguous :: heights(:, :)
+    real(c_double), intent(in) :: dx, dy
+    integer(c_int32_t), intent(in) :: window
+    real(c_double), intent(inout) :: psd(:)
+    integer, intent(out) :: written
+    real(c_double), intent(inout), optional, target, contiguous :: q(:)
+    integer(c_int32_t), intent(out), optional :: status
+    character(len=*), parameter :: what = 'asperity_map_psd_radial'
+    integer(c_size_t) :: c_written
+    written = 0
+    if (present(q)) then
+      if (too_small(what, 'q', size(q), size(psd), 'the size of `psd`', status)) return
+    end if
+    c_written = 0
+    call check(c_asperity_map_psd_radial(size(heights, 1, kind=c_size_t), &
+        size(heights, 2, kind=c_size_t), dx, dy, heights, window, size(psd, kind=c_size_t), &
+        loc_d(q), psd, c_null_ptr, c_written), what, status)
+    written = int(c_written)
+  end subroutine asperity_map_psd_radial
 
   !> Statistics of the peaks of `heights`.
   subroutine asperity_profile_peak_statistics(heights, dx, out, status)

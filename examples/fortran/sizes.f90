@@ -10,7 +10,7 @@ program sizes
   use asperity
   use, intrinsic :: iso_c_binding, only: c_sizeof
   implicit none
-  integer, parameter :: max_types = 64
+  integer, parameter :: max_types = 128
   character(len=64) :: seen(max_types)
   integer :: n_seen = 0, mismatches = 0, missing = 0
   integer(c_size_t) :: i
@@ -65,6 +65,12 @@ program sizes
   type(asperity_roughness) :: roughness
   type(asperity_hurst_fit) :: hurst_fit
   type(asperity_peak_statistics) :: peak_statistics
+  type(asperity_borodich_kryukova) :: borodich_kryukova
+  type(asperity_borodich_kryukova_state) :: borodich_kryukova_state
+  type(asperity_borodich_kryukova_sample) :: borodich_kryukova_sample
+  type(asperity_schmittbuhl) :: schmittbuhl
+  type(asperity_schmittbuhl_generation) :: schmittbuhl_generation
+  type(asperity_hurst_estimate) :: hurst_estimate
 
   call row('AsperityHertzParams', c_sizeof(hertz))
   call row('AsperityPowerPunchParams', c_sizeof(power_punch))
@@ -112,6 +118,12 @@ program sizes
   call row('AsperityRoughness', c_sizeof(roughness))
   call row('AsperityHurstFit', c_sizeof(hurst_fit))
   call row('AsperityPeakStatistics', c_sizeof(peak_statistics))
+  call row('AsperityBorodichKryukova', c_sizeof(borodich_kryukova))
+  call row('AsperityBorodichKryukovaState', c_sizeof(borodich_kryukova_state))
+  call row('AsperityBorodichKryukovaSample', c_sizeof(borodich_kryukova_sample))
+  call row('AsperitySchmittbuhl', c_sizeof(schmittbuhl))
+  call row('AsperitySchmittbuhlGeneration', c_sizeof(schmittbuhl_generation))
+  call row('AsperityHurstEstimate', c_sizeof(hurst_estimate))
 
   ! Every type the library knows has a row above.
   do i = 0, asperity_type_count() - 1

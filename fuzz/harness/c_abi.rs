@@ -39,7 +39,12 @@
 //! stepped; a Prandtl–Tomlinson increment expected to take more than 2·10⁴
 //! integration sub-steps (the library stops at 10⁶) runs once per input,
 //! like the other expensive calls; `asperity_afm_analyze` gets at most 48
-//! points (it fits up to four laws by Levenberg–Marquardt).
+//! points (it fits up to four laws by Levenberg–Marquardt);
+//! `asperity_borodich_kryukova_run` at most 255 steps on at most 2047
+//! cells; `asperity_schmittbuhl_run` the fuzzed fields only where its
+//! validation rejects them (a valid field takes the default: the chain runs
+//! cost with the stiffness and mass ratios), at most N = 4 and G = 2, once
+//! per input.
 //!
 //! Shared by `fuzz/fuzz_targets/c_abi.rs` (libFuzzer) and
 //! `tests/fuzz_corpus.rs` (corpus replay on stable).
@@ -633,6 +638,43 @@ pub enum Op {
         depths: Vec<F>,
         nulls: Nulls,
     },
+    // Borodich–Kryukova and Schmittbuhl (added last: the existing corpus
+    // keeps its meaning).
+    BorodichKryukova {
+        a: [F; 12],
+        nodes: u16,
+        start: [F; 5],
+        dt: F,
+        steps: u8,
+        every: u8,
+        room: u8,
+        nulls: Nulls,
+    },
+    Schmittbuhl {
+        a: [F; 9],
+        ratio: u8,
+        generations: u8,
+        dimension: u8,
+        room: u8,
+        nulls: Nulls,
+    },
+    // Maps: the areal Gaussian filter and the radial 2-D PSD (added last:
+    // the existing corpus keeps its meaning).
+    MapFilter {
+        h: Heights,
+        nx: u8,
+        d: [F; 3],
+        ends: Sel,
+        nulls: Nulls,
+    },
+    MapPsdRadial {
+        h: Heights,
+        nx: u8,
+        d: [F; 2],
+        window: Sel,
+        room: u8,
+        nulls: Nulls,
+    },
 }
 
 /// The handles and carried states of one input; all freed on drop.
@@ -808,6 +850,9 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
         | Op::DynFree { .. }
         | Op::GmsNew { .. } => dynamic::call(ctx, op),
         Op::Archard { .. } | Op::CantorContact { .. } => hierarchical::call(op),
+        Op::BorodichKryukova { .. } => statistics::call(ctx, op),
+        Op::Schmittbuhl { .. } => hierarchical::call_schmittbuhl(ctx, op),
+        Op::MapFilter { .. } | Op::MapPsdRadial { .. } => surface::call(op),
     }
 }
 

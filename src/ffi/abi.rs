@@ -78,6 +78,12 @@ const TYPES: &[TypeLayout] = crate::contact::normal_laws!(layouts!(
     "AsperityGeneralizedMaxwellSlipParams" => super::dynamic::AsperityGeneralizedMaxwellSlipParams,
     "AsperityPrandtlTomlinsonTwoSpringParams" => super::dynamic::AsperityPrandtlTomlinsonTwoSpringParams,
     "AsperityBurridgeKnopoffParams" => super::dynamic::AsperityBurridgeKnopoffParams,
+    "AsperityBorodichKryukova" => super::statistics::AsperityBorodichKryukova,
+    "AsperityBorodichKryukovaState" => super::statistics::AsperityBorodichKryukovaState,
+    "AsperityBorodichKryukovaSample" => super::statistics::AsperityBorodichKryukovaSample,
+    "AsperitySchmittbuhl" => super::hierarchical::AsperitySchmittbuhl,
+    "AsperitySchmittbuhlGeneration" => super::hierarchical::AsperitySchmittbuhlGeneration,
+    "AsperityHurstEstimate" => super::surface::AsperityHurstEstimate,
 ));
 
 /// The size `*size` and alignment `*align` in bytes of the `repr(C)` type

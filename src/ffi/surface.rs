@@ -1,7 +1,8 @@
 //! C ABI for `crate::surface`: ISO 4287 parameters of a profile given as an
 //! array (with form removal and the Gaussian filter on the way), the
-//! material-ratio curve, the PSD, the Hurst fit, peak statistics, and the
-//! generators writing into caller arrays.
+//! material-ratio curve, the PSD, the Hurst fit, peak statistics, the
+//! generators writing into caller arrays, and of maps (row-major arrays)
+//! the areal Gaussian filter and the radially averaged 2-D PSD.
 //!
 //! Profiles are plain arrays: `n` heights (m) at a uniform spacing `dx` (m).
 //! Input arrays are never written. Functions that write arrays write exactly
@@ -133,6 +134,61 @@ impl From<HurstFit> for AsperityHurstFit {
             q_min: f.q_min,
             q_max: f.q_max,
             bins: f.bins,
+        }
+    }
+}
+
+/// The power-law fit of a PSD with its uncertainty and band, from
+/// `asperity_profile_hurst_estimate` (the fit of `AsperityHurstFit` with
+/// the fields that struct, frozen at ABI 0.2, lacks).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AsperityHurstEstimate {
+    /// Hurst exponent H = −(s + 1)/2 (dimensionless).
+    pub hurst: f64,
+    /// Standard error of H (dimensionless, one standard deviation; the
+    /// statistical error of the fit in the band, inflated by √(χ²/ν) when
+    /// the residuals exceed the periodogram's scatter; not the systematic
+    /// error of the band choice).
+    pub hurst_uncertainty: f64,
+    /// Fitted log–log slope s (dimensionless).
+    pub slope: f64,
+    /// Standard error of s (dimensionless, 2 × `hurst_uncertainty`).
+    pub slope_uncertainty: f64,
+    /// Prefactor A of G = A q^s (m³·(rad/m)^{−s}).
+    pub prefactor: f64,
+    /// Coefficient of determination r² of the weighted log–log fit.
+    pub r_squared: f64,
+    /// χ²/ν of the fit (dimensionless; about 1 for a power law).
+    pub chi2_per_dof: f64,
+    /// Lowest wavenumber fitted (rad/m).
+    pub q_min: f64,
+    /// Highest wavenumber fitted (rad/m).
+    pub q_max: f64,
+    /// Shortest wavelength of the band, 2π/q_max (m).
+    pub wavelength_min: f64,
+    /// Longest wavelength of the band, 2π/q_min (m).
+    pub wavelength_max: f64,
+    /// Number of populated log bins fitted (10 per decade).
+    pub bins: u64,
+}
+
+impl From<HurstFit> for AsperityHurstEstimate {
+    fn from(f: HurstFit) -> Self {
+        let tau = core::f64::consts::TAU;
+        Self {
+            hurst: f.hurst,
+            hurst_uncertainty: f.hurst_uncertainty,
+            slope: f.slope,
+            slope_uncertainty: f.slope_uncertainty,
+            prefactor: f.prefactor,
+            r_squared: f.r_squared,
+            chi2_per_dof: f.chi2_per_dof,
+            q_min: f.q_min,
+            q_max: f.q_max,
+            wavelength_min: tau / f.q_max,
+            wavelength_max: tau / f.q_min,
+            bins: f.bins as u64,
         }
     }
 }
@@ -469,6 +525,31 @@ pub unsafe extern "C" fn asperity_profile_hurst_fit(
     })
 }
 
+/// `asperity_profile_hurst_fit` reporting H with its standard error, the
+/// fit's χ²/ν and the band in wavenumbers (rad/m) and wavelengths (m):
+/// the power-law fit of the PSD of `heights` (`n` values, m, spacing `dx`
+/// m) over `q_min ≤ q ≤ q_max` (rad/m), or, with `q_min` = `q_max` = 0, over
+/// the band chosen from the data (the widest run of at least one decade
+/// that is a power law with 0 ≤ H ≤ 1). Errors: as
+/// `asperity_profile_hurst_fit`.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_profile_hurst_estimate(
+    n: usize,
+    heights: *const f64,
+    dx: f64,
+    q_min: f64,
+    q_max: f64,
+    out: *mut AsperityHurstEstimate,
+) -> i32 {
+    guard(|| {
+        let h = array(heights, n, "heights")?;
+        let out = output(out, "out")?;
+        let band = (q_min != 0.0 || q_max != 0.0).then_some((q_min, q_max));
+        *out = hurst_fit(h, dx, band)?.into();
+        Ok(())
+    })
+}
+
 /// Statistics of the peaks (3-point maxima, heights from the mean line,
 /// curvature −z″) of `heights` (`n` ≥ 3 values, m, spacing `dx` m); the
 /// density is per profile length n·dx.
@@ -562,6 +643,127 @@ pub unsafe extern "C" fn asperity_generate_cantor_borodich(
         let out = out_array(heights, "heights")?;
         let cb = CantorBorodich::new(descendants as usize, alpha, beta, height, levels)?;
         write(out, cb.profile(length, n)?.heights());
+        Ok(())
+    })
+}
+
+/// The map of `nx` × `ny` heights (m, row-major: `heights[i + nx*j]` at
+/// x = i·dx, y = j·dy) as a `Topography` (copied).
+unsafe fn map_of(
+    nx: usize,
+    ny: usize,
+    dx: f64,
+    dy: f64,
+    heights: *const f64,
+) -> Result<crate::surface::Topography> {
+    let n = nx.checked_mul(ny).ok_or(Error::InvalidArgument {
+        name: "ny",
+        value: ny as f64,
+        bound: "nx*ny within the address space",
+    })?;
+    let h = array(heights, n, "heights")?;
+    crate::surface::Topography::new(nx, ny, dx, dy, h.to_vec())
+}
+
+/// ISO 16610-61 areal Gaussian filter of the map of `nx` × `ny` heights
+/// `heights` (m, row-major: `heights[i + nx*j]` at x = i·dx, y = j·dy;
+/// spacings `dx`, `dy` in m; nx, ny ≥ 2) with cut-off (nesting index)
+/// `cutoff` λc (m): writes the roughness (S-L) surface to `roughness` and,
+/// if not NULL, the Gaussian mean surface to `mean_surface` (row-major on
+/// the retained grid; each needs room for nx·ny values; either may be
+/// `heights` itself), the retained grid's size to `*nx_out`, `*ny_out`, and
+/// the input indices of its first point to `*first_x`, `*first_y` (either
+/// may be NULL). `ends` is `ASPERITY_FILTER_ENDS_DISCARD` (λc/2 dropped on
+/// every side) or `ASPERITY_FILTER_ENDS_KEEP` (the whole grid, edge weights
+/// renormalised). Errors: `cutoff` not finite and > 0, shorter than 5
+/// spacings or not shorter than the map along x or y, fewer than 2 points
+/// left after discarding.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_map_gaussian_filter(
+    nx: usize,
+    ny: usize,
+    dx: f64,
+    dy: f64,
+    heights: *const f64,
+    cutoff: f64,
+    ends: i32,
+    roughness: *mut f64,
+    mean_surface: *mut f64,
+    nx_out: *mut usize,
+    ny_out: *mut usize,
+    first_x: *mut usize,
+    first_y: *mut usize,
+) -> i32 {
+    guard(|| {
+        let map = map_of(nx, ny, dx, dy, heights)?;
+        let r = out_array(roughness, "roughness")?;
+        output(nx_out, "nx_out")?;
+        output(ny_out, "ny_out")?;
+        let ends = ends_of(ends)?;
+        let f = crate::surface::areal_gaussian_filter(&map, cutoff, ends)?;
+        write(r, f.roughness.heights());
+        if !mean_surface.is_null() {
+            write(mean_surface, f.mean_surface.heights());
+        }
+        *nx_out = f.roughness.nx();
+        *ny_out = f.roughness.ny();
+        if !first_x.is_null() {
+            *first_x = f.first_index.0;
+        }
+        if !first_y.is_null() {
+            *first_y = f.first_index.1;
+        }
+        Ok(())
+    })
+}
+
+/// The radially averaged 2-D PSD of the map of `nx` × `ny` heights
+/// `heights` (m, row-major as `asperity_map_gaussian_filter`; spacings
+/// `dx`, `dy` in m; mean removed) with `window` (`ASPERITY_WINDOW_*`):
+/// annuli of width max(Δq_x, Δq_y) centred on m·Δq up to the smaller
+/// Nyquist wavenumber, empty annuli skipped. Writes for each annulus its
+/// mean |q| to `q` (rad/m; may be NULL), the mean PSD over it to `psd`
+/// (m⁴) and its number of grid points to `count` (may be NULL), and the
+/// number of annuli to `*written`. The arrays have room for `capacity`
+/// values; min(nx, ny)/2 + 1 always suffices, and a smaller capacity than
+/// the annuli found is an error naming `capacity`.
+#[no_mangle]
+pub unsafe extern "C" fn asperity_map_psd_radial(
+    nx: usize,
+    ny: usize,
+    dx: f64,
+    dy: f64,
+    heights: *const f64,
+    window: i32,
+    capacity: usize,
+    q: *mut f64,
+    psd: *mut f64,
+    count: *mut usize,
+    written: *mut usize,
+) -> i32 {
+    guard(|| {
+        let map = map_of(nx, ny, dx, dy, heights)?;
+        let window = window_of(window)?;
+        let g = out_array(psd, "psd")?;
+        let written = output(written, "written")?;
+        let radial = crate::surface::psd_2d(&map, window)?.radial();
+        let m = radial.r.len();
+        if capacity < m {
+            return Err(Error::InvalidArgument {
+                name: "capacity",
+                value: capacity as f64,
+                bound: ">= the number of annuli (min(nx, ny)/2 + 1 always suffices)",
+            }
+            .into());
+        }
+        write(g, &radial.value);
+        if !q.is_null() {
+            write(q, &radial.r);
+        }
+        if !count.is_null() {
+            core::ptr::copy_nonoverlapping(radial.count.as_ptr(), count, m);
+        }
+        *written = m;
         Ok(())
     })
 }

@@ -1,10 +1,11 @@
 //! Statistical multi-asperity models (`asperity::statistics`): height
 //! distributions, Greenwood–Williamson, Bush–Gibson–Thomas, Bora et al.,
+//! Borodich–Kryukova's block on a belt,
 //! Kragelsky rods and bearing curve,
 //! Zhuravlev, power-law asperities; every response on a float or an array of
 //! separations.
 
-use crate::common::{array, real, real_opt, rs, vectorize, vectorize_record};
+use crate::common::{array, count, real, real_opt, rs, vectorize, vectorize_record};
 use crate::rescaling::{KnownSolution, Rescaling};
 use asperity::statistics as st;
 use pyo3::prelude::*;
@@ -855,11 +856,157 @@ fn gaussian_tail_moment(
     vectorize(py, h, "h", |x| st::gaussian::tail_moment(q, x))
 }
 
+/// BorodichKryukova(half_length, mass, belt_speed, spring_stiffness, layer_stiffness, friction_coefficient, sign_speed, slider_amplitude=0, slider_wavelength=1, belt_amplitude=0, belt_wavelength=1, gravity=9.81, nodes=200)
+///
+/// Borodich & Kryukova (1997, thesis §5.3.7): a rigid block of half-length
+/// a (m) and mass M (kg) on a horizontal spring k_x (N/m), on a belt moving
+/// at speed U (m/s); both faces carry a layer of linear springs of stiffness
+/// ε (N/m²) over the profiles A cos(2πξ/λ) (amplitudes and wavelengths in
+/// m); friction μ F_el,y with the sign smoothed as clamp((U − ẋ)/v_s, −1, 1)
+/// (``sign_speed`` v_s, m/s); gravity g (m/s²); ``nodes`` midpoint cells
+/// along the block.
+#[pyclass(module = "asperity", frozen)]
+pub struct BorodichKryukova {
+    pub inner: st::BorodichKryukova,
+}
+
+#[pymethods]
+impl BorodichKryukova {
+    #[new]
+    #[pyo3(signature = (half_length, mass, belt_speed, spring_stiffness, layer_stiffness, friction_coefficient, sign_speed, slider_amplitude=None, slider_wavelength=None, belt_amplitude=None, belt_wavelength=None, gravity=None, nodes=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        half_length: &Bound<'_, PyAny>,
+        mass: &Bound<'_, PyAny>,
+        belt_speed: &Bound<'_, PyAny>,
+        spring_stiffness: &Bound<'_, PyAny>,
+        layer_stiffness: &Bound<'_, PyAny>,
+        friction_coefficient: &Bound<'_, PyAny>,
+        sign_speed: &Bound<'_, PyAny>,
+        slider_amplitude: Option<&Bound<'_, PyAny>>,
+        slider_wavelength: Option<&Bound<'_, PyAny>>,
+        belt_amplitude: Option<&Bound<'_, PyAny>>,
+        belt_wavelength: Option<&Bound<'_, PyAny>>,
+        gravity: Option<&Bound<'_, PyAny>>,
+        nodes: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let or = |v: Option<&Bound<'_, PyAny>>, name: &str, d: f64| -> PyResult<f64> {
+            Ok(real_opt(v, name)?.unwrap_or(d))
+        };
+        let nodes = match nodes {
+            Some(n) if !n.is_none() => u32::try_from(count(n, "nodes")?)
+                .map_err(|_| crate::common::arg_error("nodes", "in 1..=100000"))?,
+            _ => 200,
+        };
+        let inner = st::BorodichKryukova {
+            half_length: real(half_length, "half_length")?,
+            mass: real(mass, "mass")?,
+            belt_speed: real(belt_speed, "belt_speed")?,
+            spring_stiffness: real(spring_stiffness, "spring_stiffness")?,
+            layer_stiffness: real(layer_stiffness, "layer_stiffness")?,
+            friction_coefficient: real(friction_coefficient, "friction_coefficient")?,
+            gravity: or(gravity, "gravity", 9.81)?,
+            sign_speed: real(sign_speed, "sign_speed")?,
+            slider: st::Sinusoid {
+                amplitude: or(slider_amplitude, "slider_amplitude", 0.0)?,
+                wavelength: or(slider_wavelength, "slider_wavelength", 1.0)?,
+            },
+            belt: st::Sinusoid {
+                amplitude: or(belt_amplitude, "belt_amplitude", 0.0)?,
+                wavelength: or(belt_wavelength, "belt_wavelength", 1.0)?,
+            },
+            nodes,
+        };
+        inner.validate().map_err(rs)?;
+        Ok(Self { inner })
+    }
+
+    /// normal_force(x, y, time=0) -> float
+    ///
+    /// The layers' elastic normal force F_el,y (N) with the block at x (m),
+    /// the profiles' mean lines at distance y (m; < 0: overlap), at time t
+    /// (s).
+    #[pyo3(signature = (x, y, time=None))]
+    fn normal_force(
+        &self,
+        x: &Bound<'_, PyAny>,
+        y: &Bound<'_, PyAny>,
+        time: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<f64> {
+        let x = asperity::error::check::finite("x", real(x, "x")?).map_err(rs)?;
+        let y = asperity::error::check::finite("y", real(y, "y")?).map_err(rs)?;
+        let t = real_opt(time, "time")?.unwrap_or(0.0);
+        let t = asperity::error::check::finite("time", t).map_err(rs)?;
+        Ok(self.inner.normal_force(x, y, t))
+    }
+
+    /// run(dt, steps, every=1, time=0, x=0, vx=0, y=0, vy=0) -> dict
+    ///
+    /// Runge–Kutta 4 from the state (t, x, ẋ, y, ẏ) for ``steps`` steps of
+    /// ``dt`` (s), recording the start and every ``every``-th step: a dict
+    /// of arrays ``time`` (s), ``x`` (m), ``vx`` (m/s), ``y`` (m), ``vy``
+    /// (m/s), ``normal_force`` and ``friction_force`` (N).
+    #[pyo3(signature = (dt, steps, every=None, time=None, x=None, vx=None, y=None, vy=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn run(
+        &self,
+        py: Python<'_>,
+        dt: &Bound<'_, PyAny>,
+        steps: &Bound<'_, PyAny>,
+        every: Option<&Bound<'_, PyAny>>,
+        time: Option<&Bound<'_, PyAny>>,
+        x: Option<&Bound<'_, PyAny>>,
+        vx: Option<&Bound<'_, PyAny>>,
+        y: Option<&Bound<'_, PyAny>>,
+        vy: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        let small = |o: &Bound<'_, PyAny>, name: &str| -> PyResult<u32> {
+            u32::try_from(count(o, name)?)
+                .map_err(|_| crate::common::arg_error(name, "at most 4294967295"))
+        };
+        let steps = small(steps, "steps")?;
+        let every = match every {
+            Some(e) if !e.is_none() => small(e, "every")?,
+            _ => 1,
+        };
+        let zero = |v: Option<&Bound<'_, PyAny>>, name: &str| -> PyResult<f64> {
+            Ok(real_opt(v, name)?.unwrap_or(0.0))
+        };
+        let start = st::SliderState {
+            time: zero(time, "time")?,
+            x: zero(x, "x")?,
+            vx: zero(vx, "vx")?,
+            y: zero(y, "y")?,
+            vy: zero(vy, "vy")?,
+        };
+        let dt = real(dt, "dt")?;
+        let m = self.inner;
+        let run = py.detach(|| m.run(start, dt, steps, every)).map_err(rs)?;
+        let d = PyDict::new(py);
+        let col = |f: fn(&st::SliderSample) -> f64| -> Vec<f64> { run.iter().map(f).collect() };
+        d.set_item("time", numpy::PyArray1::from_vec(py, col(|s| s.state.time)))?;
+        d.set_item("x", numpy::PyArray1::from_vec(py, col(|s| s.state.x)))?;
+        d.set_item("vx", numpy::PyArray1::from_vec(py, col(|s| s.state.vx)))?;
+        d.set_item("y", numpy::PyArray1::from_vec(py, col(|s| s.state.y)))?;
+        d.set_item("vy", numpy::PyArray1::from_vec(py, col(|s| s.state.vy)))?;
+        d.set_item(
+            "normal_force",
+            numpy::PyArray1::from_vec(py, col(|s| s.normal_force)),
+        )?;
+        d.set_item(
+            "friction_force",
+            numpy::PyArray1::from_vec(py, col(|s| s.friction_force)),
+        )?;
+        Ok(d.into_any().unbind())
+    }
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<HeightDistribution>()?;
     m.add_class::<GreenwoodWilliamson>()?;
     m.add_class::<BushGibsonThomas>()?;
     m.add_class::<BoraTopography>()?;
+    m.add_class::<BorodichKryukova>()?;
     m.add_class::<KragelskyRods>()?;
     m.add_class::<BearingCurveRods>()?;
     m.add_class::<Zhuravlev>()?;

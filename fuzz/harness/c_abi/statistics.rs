@@ -1,6 +1,6 @@
 //! Multi-asperity statistics (`src/ffi/statistics.rs`): Greenwood–Williamson
 //! (parametric and empirical surfaces), plasticity index, deformation
-//! regime, Zhuravlev, Bush–Gibson–Thomas, Bora et al.
+//! regime, Zhuravlev, Bush–Gibson–Thomas, Bora et al., Borodich–Kryukova.
 
 use super::common::*;
 use super::{pick, take, Ctx, Op};
@@ -191,6 +191,94 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
                 asperity_bora_free(out);
             }
             asperity_bora_free(null_mut());
+        }
+        Op::BorodichKryukova {
+            a,
+            nodes,
+            start,
+            dt,
+            steps,
+            every,
+            room,
+            nulls,
+        } => {
+            let v = fs(*a);
+            let b = AsperityBorodichKryukova {
+                half_length: v[0],
+                mass: v[1],
+                belt_speed: v[2],
+                spring_stiffness: v[3],
+                layer_stiffness: v[4],
+                friction_coefficient: v[5],
+                gravity: v[6],
+                sign_speed: v[7],
+                slider_amplitude: v[8],
+                slider_wavelength: v[9],
+                belt_amplitude: v[10],
+                belt_wavelength: v[11],
+                // At most 2047 cells (0: invalid), or the invalid 100001.
+                nodes: if *nodes == u16::MAX {
+                    100_001
+                } else {
+                    u32::from(*nodes % 2048)
+                },
+                reserved: 0,
+            };
+            let [t, x, vx, y, vy] = fs(*start);
+            let st = AsperityBorodichKryukovaState {
+                time: t,
+                x,
+                vx,
+                y,
+                vy,
+            };
+            let mut f = 0.0;
+            ok(
+                asperity_borodich_kryukova_normal_force(
+                    cp(&b, nulls.at(0)),
+                    x,
+                    y,
+                    t,
+                    mp(&mut f, nulls.at(1)),
+                ),
+                "borodich_kryukova_normal_force",
+            );
+            let steps = u32::from(*steps);
+            let every = u32::from(*every % 8);
+            // every = 0 is refused: room for one sample then.
+            let want = steps.checked_div(every).map_or(1, |k| k as usize + 1);
+            let cap = match room % 4 {
+                0 => want - 1,
+                1 => want + 3,
+                _ => want,
+            };
+            let mut out = vec![AsperityBorodichKryukovaSample::default(); cap];
+            let mut written = usize::MAX;
+            let o = if nulls.at(3) {
+                null_mut()
+            } else {
+                out.as_mut_ptr()
+            };
+            let s = asperity_borodich_kryukova_run(
+                cp(&b, nulls.at(2)),
+                cp(&st, nulls.at(4)),
+                dt.0,
+                steps,
+                every,
+                cap,
+                o,
+                mp(&mut written, nulls.at(5)),
+            );
+            if ok(s, "borodich_kryukova_run") {
+                if !nulls.at(5) {
+                    assert_eq!(written, want);
+                }
+                for r in &out[..want] {
+                    assert!(r.state.x.is_finite() && r.normal_force >= 0.0, "{r:?}");
+                }
+            } else {
+                assert_eq!(written, usize::MAX, "a failed run wrote `written`");
+            }
         }
         Op::GwEmpiricalNew {
             a,

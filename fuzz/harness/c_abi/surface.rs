@@ -1,9 +1,12 @@
 //! Surface profiles (`src/ffi/surface.rs`): roughness parameters, form
-//! removal, filtering, material ratio, PSD, Hurst fit, peaks, generators.
+//! removal, filtering, material ratio, PSD, Hurst fit and estimate, peaks,
+//! generators; maps: the areal Gaussian filter and the radial 2-D PSD (at
+//! most 4096 points).
 
 use super::common::*;
 use super::Op;
 use asperity::ffi::surface::*;
+use std::ptr::null_mut;
 
 /// Runs one operation of this domain; `super::call` routes each variant
 /// to the module of its `src/ffi/` file.
@@ -128,6 +131,22 @@ pub(super) unsafe fn call(op: &Op) {
                 mp(&mut out, nulls.at(1)),
             );
             ok(s, "hurst_fit");
+            let mut e: AsperityHurstEstimate = zeroed();
+            let s = asperity_profile_hurst_estimate(
+                z.len(),
+                bufp(&z, nulls.at(0)),
+                dx.0,
+                q[0].0,
+                q[1].0,
+                mp(&mut e, nulls.at(1)),
+            );
+            if ok(s, "hurst_estimate") {
+                assert_eq!(e.hurst.to_bits(), out.hurst.to_bits());
+                assert!(
+                    e.hurst_uncertainty >= 0.0 && e.wavelength_min <= e.wavelength_max,
+                    "{e:?}"
+                );
+            }
         }
         Op::Peaks { h, dx, nulls } => {
             let z = h.make();
@@ -181,6 +200,86 @@ pub(super) unsafe fn call(op: &Op) {
                 bufm(&mut h, *null),
             );
             ok(s, "generate_cantor_borodich");
+        }
+        Op::MapFilter {
+            h,
+            nx,
+            d,
+            ends,
+            nulls,
+        } => {
+            // A map of at most 4096 points (the filter costs n·λc/dx).
+            let mut z = h.make();
+            z.truncate(4096);
+            let nx = (*nx as usize % 70).max(1);
+            let ny = z.len() / nx;
+            z.truncate(nx * ny);
+            let [dx, dy, cutoff] = fs(*d);
+            let (mut r, mut m) = (vec![0.0; nx * ny], vec![0.0; nx * ny]);
+            let (mut mx, mut my, mut fx, mut fy) = (0usize, 0usize, 0usize, 0usize);
+            let s = asperity_map_gaussian_filter(
+                nx,
+                ny,
+                dx,
+                dy,
+                bufp(&z, nulls.at(0)),
+                cutoff,
+                ends.0,
+                bufm(&mut r, nulls.at(1)),
+                bufm(&mut m, nulls.at(2)),
+                mp(&mut mx, nulls.at(3)),
+                mp(&mut my, nulls.at(4)),
+                mp(&mut fx, nulls.at(5)),
+                mp(&mut fy, nulls.at(6)),
+            );
+            if ok(s, "map_gaussian_filter") {
+                assert!(mx * my <= nx * ny && mx >= 2 && my >= 2, "{mx} x {my}");
+            }
+        }
+        Op::MapPsdRadial {
+            h,
+            nx,
+            d,
+            window,
+            room,
+            nulls,
+        } => {
+            let mut z = h.make();
+            z.truncate(4096);
+            let nx = (*nx as usize % 70).max(1);
+            let ny = z.len() / nx;
+            z.truncate(nx * ny);
+            let [dx, dy] = fs(*d);
+            let bound = nx.min(ny) / 2 + 1;
+            let cap = match room % 4 {
+                0 => bound.saturating_sub(2),
+                _ => bound,
+            };
+            let (mut q, mut g, mut c) = (vec![0.0; cap], vec![0.0; cap], vec![0usize; cap]);
+            let mut written = usize::MAX;
+            let co = if nulls.at(3) {
+                null_mut()
+            } else {
+                c.as_mut_ptr()
+            };
+            let s = asperity_map_psd_radial(
+                nx,
+                ny,
+                dx,
+                dy,
+                bufp(&z, nulls.at(0)),
+                window.0,
+                cap,
+                bufm(&mut q, nulls.at(1)),
+                bufm(&mut g, nulls.at(2)),
+                co,
+                mp(&mut written, nulls.at(4)),
+            );
+            if ok(s, "map_psd_radial") {
+                assert!(written <= cap, "{written} annuli, capacity {cap}");
+            } else {
+                assert_eq!(written, usize::MAX, "a failed call wrote `written`");
+            }
         }
         _ => unreachable!("not a surface operation: {op:?}"),
     }

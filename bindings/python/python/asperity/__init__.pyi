@@ -445,6 +445,36 @@ class BoraTopography:
     def load(self, separation: Reals) -> Any: ...
     def separation_at_load(self, load: Real) -> Dict[str, float]: ...
 
+class BorodichKryukova:
+    def __init__(
+        self,
+        half_length: Real,
+        mass: Real,
+        belt_speed: Real,
+        spring_stiffness: Real,
+        layer_stiffness: Real,
+        friction_coefficient: Real,
+        sign_speed: Real,
+        slider_amplitude: Optional[Real] = None,
+        slider_wavelength: Optional[Real] = None,
+        belt_amplitude: Optional[Real] = None,
+        belt_wavelength: Optional[Real] = None,
+        gravity: Optional[Real] = None,
+        nodes: Optional[int] = None,
+    ) -> None: ...
+    def normal_force(self, x: Real, y: Real, time: Optional[Real] = None) -> float: ...
+    def run(
+        self,
+        dt: Real,
+        steps: int,
+        every: Optional[int] = None,
+        time: Optional[Real] = None,
+        x: Optional[Real] = None,
+        vx: Optional[Real] = None,
+        y: Optional[Real] = None,
+        vy: Optional[Real] = None,
+    ) -> Dict[str, Any]: ...
+
 class KragelskyRods:
     rod_stiffness: float
     def __init__(self, rod_count: Real, rod_area: Real, rod_stiffness: Real, heights: HeightDistribution) -> None: ...
@@ -668,4 +698,18 @@ def cantor_contact(
 def cantor_exponents(
     descendants: int, width_ratio: Real, height_ratio: Real, base_width: Real, base_height: Real, generations: int
 ) -> Dict[str, float]: ...
+def schmittbuhl_run(
+    mu_static: Optional[Real] = None,
+    mu_kinetic: Optional[Real] = None,
+    weakening_velocity: Optional[Real] = None,
+    ratio: Optional[int] = None,
+    generations: Optional[int] = None,
+    dimension: Optional[int] = None,
+    mass: Optional[Real] = None,
+    coupling_stiffness: Optional[Real] = None,
+    pulling_stiffness: Optional[Real] = None,
+    normal_force: Optional[Real] = None,
+    velocity: Optional[Real] = None,
+    disorder: Optional[Real] = None,
+) -> List[Dict[str, Any]]: ...
 def stick_slip(forces: ArrayLike, slips: ArrayLike, min_drop: Real) -> Dict[str, Any]: ...
