@@ -848,8 +848,7 @@ pub unsafe extern "C" fn asperity_bora_separation_at_load(
 pub const ASPERITY_HEIGHTS_LIST: i32 = 0;
 
 /// The Sergienko–Bukharov model (thesis §5.3.5, in the library's formulation
-/// from the thesis's description: see `asperity::statistics::
-/// sergienko_bukharov`), by value: a rigid body of mass m under the load N₀
+/// from the thesis's description; Rust module `sergienko_bukharov`), by value: a rigid body of mass m under the load N₀
 /// on Kragelsky's independent springs, driven by the normal force
 /// F₀ sin ωt and/or a tangential impulse J turned upwards by flanks of slope
 /// tan θ; friction μ(P + p₀ A_rod n) (Derjaguin, thesis (1-3)). An all-zero
