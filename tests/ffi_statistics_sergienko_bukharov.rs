@@ -38,6 +38,7 @@ fn params() -> AsperitySergienkoBukharovParams {
         tangential_impulse: 1e-6,
         slope: 0.1,
         initial_offset: 0.0,
+        max_steps: 0,
     }
 }
 
@@ -72,6 +73,7 @@ fn sergienko_bukharov_c_matches_rust() {
                 average_periods: 4,
                 steps_per_natural_period: 64,
                 record_every: 0,
+                max_steps: 0,
             },
         )
         .unwrap();

@@ -126,6 +126,7 @@ fn small_impulse_gives_the_linear_oscillation() {
                 average_periods: 4,
                 steps_per_natural_period: 256,
                 record_every: 1,
+                max_steps: 0,
             },
         )
         .unwrap();
@@ -249,6 +250,7 @@ fn halving_the_step_changes_little() {
                 average_periods: 4,
                 steps_per_natural_period: spp,
                 record_every: 0,
+                max_steps: 0,
             },
         )
         .unwrap()
@@ -319,6 +321,13 @@ fn bad_input_is_named() {
     named(m.run(&driven(1.0, f64::INFINITY), &ok).unwrap_err(), "frequency");
     // An excitation far below the natural frequency needs too many steps.
     named(m.run(&driven(1.0, 1e-9 * w), &ok).unwrap_err(), "frequency");
+    // So does a run over the caller's budget.
+    let tight = Integration {
+        max_steps: 100,
+        ..ok
+    };
+    named(m.run(&driven(1.0, w), &tight).unwrap_err(), "frequency");
+    named(m.run(&Excitation::default(), &tight).unwrap_err(), "average_periods");
     let exc = |f: fn(&mut Excitation)| {
         let mut e = driven(0.5, w);
         f(&mut e);

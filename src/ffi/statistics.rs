@@ -894,6 +894,8 @@ pub struct AsperitySergienkoBukharovParams {
     pub slope: f64,
     /// Start position relative to the static equilibrium (m, > 0 above).
     pub initial_offset: f64,
+    /// Most time steps the run may take (0: 5e7); a longer run is refused.
+    pub max_steps: u64,
 }
 
 /// The result of a Sergienko–Bukharov run: static reference, averages over
@@ -986,6 +988,7 @@ impl AsperitySergienkoBukharovParams {
             average_periods: self.average_periods,
             steps_per_natural_period: self.steps_per_natural_period,
             record_every: 0,
+            max_steps: self.max_steps,
         };
         Ok((model, excitation, integration))
     }
@@ -1018,7 +1021,7 @@ impl From<&SergienkoBukharovRun> for AsperitySergienkoBukharovResult {
 /// Run the Sergienko–Bukharov model `params` on `n_heights` spring-top
 /// heights `heights` (m, finite; read only for `ASPERITY_HEIGHTS_LIST`, may
 /// be NULL otherwise) and write the averages to `*out`. A run needing more
-/// than 5e7 steps is refused (ω far below the natural frequency).
+/// than `max_steps` steps is refused (ω far below the natural frequency).
 #[no_mangle]
 pub unsafe extern "C" fn asperity_sergienko_bukharov_run(
     params: *const AsperitySergienkoBukharovParams,

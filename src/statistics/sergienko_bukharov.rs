@@ -208,6 +208,9 @@ pub struct Integration {
     /// Record every this many steps into [`SergienkoBukharovRun::samples`]
     /// (0: record nothing).
     pub record_every: u32,
+    /// Most time steps a run may take (0: [`MAX_STEPS`]); a run that needs
+    /// more is refused before it starts.
+    pub max_steps: u64,
 }
 
 impl Default for Integration {
@@ -219,6 +222,7 @@ impl Default for Integration {
             average_periods: 10,
             steps_per_natural_period: 64,
             record_every: 0,
+            max_steps: 0,
         }
     }
 }
@@ -394,8 +398,9 @@ impl SergienkoBukharov {
 
     /// Integrate the body's normal motion under `excitation` and average
     /// over whole periods as `integration` says. Errors name the offending
-    /// argument; a run needing more than [`MAX_STEPS`] steps is refused
-    /// (naming `frequency`, or `average_periods` when F_0 = 0).
+    /// argument; a run needing more than `max_steps` (default [`MAX_STEPS`])
+    /// steps is refused (naming `frequency`, or `average_periods` when
+    /// F_0 = 0).
     pub fn run(
         &self,
         excitation: &Excitation,
@@ -453,6 +458,11 @@ impl SergienkoBukharov {
         }
         .max(k * self.static_contacts);
         let periods = integration.transient_periods as u64 + integration.average_periods as u64;
+        let budget = if integration.max_steps == 0 {
+            MAX_STEPS
+        } else {
+            integration.max_steps
+        };
         for _attempt in 0..8 {
             let dt_max = TAU / ((stiff / self.mass).sqrt() * spp as f64);
             let per = (period / dt_max).ceil();
@@ -467,17 +477,17 @@ impl SergienkoBukharov {
                     name,
                     value,
                     reason: if per.is_finite() {
-                        "the run needs more than 5e7 time steps"
+                        "the run needs more time steps than max_steps (default 5e7)"
                     } else {
                         "the time step is not finite"
                     },
                 }
             };
-            if !(per.is_finite() && per * periods as f64 <= MAX_STEPS as f64) {
+            if !(per.is_finite() && per * periods as f64 <= budget as f64) {
                 return Err(too_many(per));
             }
             let per = (per as u64).max(MIN_STEPS_PER_PERIOD);
-            if per * periods > MAX_STEPS {
+            if per.saturating_mul(periods) > budget {
                 return Err(too_many(per as f64));
             }
             let dt = period / per as f64;
