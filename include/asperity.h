@@ -1534,6 +1534,8 @@ typedef struct AsperitySergienkoBukharovParams {
     double slope;
     // Start position relative to the static equilibrium (m, > 0 above).
     double initial_offset;
+    // Most time steps the run may take (0: 5e7); a longer run is refused.
+    uint64_t max_steps;
 } AsperitySergienkoBukharovParams;
 
 // The result of a Sergienko–Bukharov run: static reference, averages over
@@ -2734,7 +2736,7 @@ int32_t asperity_bora_separation_at_load(const struct AsperityBora *bora,
 // Run the Sergienko–Bukharov model `params` on `n_heights` spring-top
 // heights `heights` (m, finite; read only for `ASPERITY_HEIGHTS_LIST`, may
 // be NULL otherwise) and write the averages to `*out`. A run needing more
-// than 5e7 steps is refused (ω far below the natural frequency).
+// than `max_steps` steps is refused (ω far below the natural frequency).
 int32_t asperity_sergienko_bukharov_run(const struct AsperitySergienkoBukharovParams *params,
                                         const double *heights,
                                         size_t n_heights,
