@@ -79,7 +79,12 @@ fn sergienko_bukharov_c_matches_rust() {
         .unwrap();
     let mut r = AsperitySergienkoBukharovResult::default();
     unsafe {
-        ok(asperity_sergienko_bukharov_run(&p, h.as_ptr(), h.len(), &mut r));
+        ok(asperity_sergienko_bukharov_run(
+            &p,
+            h.as_ptr(),
+            h.len(),
+            &mut r,
+        ));
     }
     assert_eq!(r, (&want).into());
     assert_eq!(r.steps, want.steps);
@@ -89,7 +94,12 @@ fn sergienko_bukharov_c_matches_rust() {
     q.force_amplitude = 0.9;
     let mut s = AsperitySergienkoBukharovResult::default();
     unsafe {
-        ok(asperity_sergienko_bukharov_run(&q, h.as_ptr(), h.len(), &mut s));
+        ok(asperity_sergienko_bukharov_run(
+            &q,
+            h.as_ptr(),
+            h.len(),
+            &mut s,
+        ));
     }
     assert!(s.friction_ratio < r.friction_ratio && s.lift > r.lift);
     // Gaussian heights: no array needed.
@@ -153,7 +163,10 @@ fn sergienko_bukharov_c_errors_name_the_argument() {
             "`distribution`",
         );
         for (q, name) in [
-            (AsperitySergienkoBukharovParams { mass: -1.0, ..p }, "`mass`"),
+            (
+                AsperitySergienkoBukharovParams { mass: -1.0, ..p },
+                "`mass`",
+            ),
             (AsperitySergienkoBukharovParams { load: 0.0, ..p }, "`load`"),
             (
                 AsperitySergienkoBukharovParams {

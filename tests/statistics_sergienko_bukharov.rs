@@ -130,7 +130,11 @@ fn small_impulse_gives_the_linear_oscillation() {
             },
         )
         .unwrap();
-    assert!((r.separation_amplitude / amp - 1.0).abs() < 2e-3, "{}", r.separation_amplitude / amp);
+    assert!(
+        (r.separation_amplitude / amp - 1.0).abs() < 2e-3,
+        "{}",
+        r.separation_amplitude / amp
+    );
     assert!(r.lift.abs() < 2e-3 * amp);
     assert!((r.period * omega0 / TAU - 1.0).abs() < 1e-12);
     // The record starts at the equilibrium going up, and after one
@@ -146,7 +150,11 @@ fn small_impulse_gives_the_linear_oscillation() {
 fn mean_sqrt(a: f64) -> f64 {
     let n = 4096;
     (0..n)
-        .map(|i| (1.0 + a * (TAU * i as f64 / n as f64).sin()).max(0.0).sqrt())
+        .map(|i| {
+            (1.0 + a * (TAU * i as f64 / n as f64).sin())
+                .max(0.0)
+                .sqrt()
+        })
         .sum::<f64>()
         / n as f64
 }
@@ -191,16 +199,31 @@ fn exponential_heights_keep_the_static_friction() {
     // n = P/(kσ) exactly: ⟨n⟩ = ⟨P⟩/(kσ) = n_s at any amplitude, while the
     // body still lifts (d = −σ ln P + const is convex in P).
     let sigma = 1e-6;
-    let rods = KragelskyRods::new(1e4, AREA, K, HeightDistribution::exponential(sigma).unwrap())
-        .unwrap();
+    let rods = KragelskyRods::new(
+        1e4,
+        AREA,
+        K,
+        HeightDistribution::exponential(sigma).unwrap(),
+    )
+    .unwrap();
     let m = body(rods, 1e-2, 0.3);
     let omega0 = m.natural_frequency();
     assert!((m.static_contacts() - LOAD / (K * sigma)).abs() < 1e-9 * m.static_contacts());
     let mut last_lift = 0.0;
     for a in [0.2, 0.5, 0.9] {
-        let r = m.run(&driven(a * LOAD, 0.5 * omega0), &periods(40, 10)).unwrap();
-        assert!((r.contact_ratio - 1.0).abs() < 1e-4, "a {a}: {}", r.contact_ratio);
-        assert!((r.friction_ratio - 1.0).abs() < 1e-4, "a {a}: {}", r.friction_ratio);
+        let r = m
+            .run(&driven(a * LOAD, 0.5 * omega0), &periods(40, 10))
+            .unwrap();
+        assert!(
+            (r.contact_ratio - 1.0).abs() < 1e-4,
+            "a {a}: {}",
+            r.contact_ratio
+        );
+        assert!(
+            (r.friction_ratio - 1.0).abs() < 1e-4,
+            "a {a}: {}",
+            r.friction_ratio
+        );
         assert!(r.lift > last_lift, "a {a}");
         last_lift = r.lift;
     }
@@ -258,7 +281,12 @@ fn halving_the_step_changes_little() {
     let (a, b) = (run(32), run(64));
     assert!(b.time_step < 0.6 * a.time_step);
     assert!(a.resolution >= 0.8 * 32.0 && b.resolution >= 0.8 * 64.0);
-    assert!((a.lift / b.lift - 1.0).abs() < 1e-4, "{} {}", a.lift, b.lift);
+    assert!(
+        (a.lift / b.lift - 1.0).abs() < 1e-4,
+        "{} {}",
+        a.lift,
+        b.lift
+    );
     assert!((a.friction_ratio - b.friction_ratio).abs() < 1e-6);
     // The amplitude is read from the step ends: its sampling error is
     // (2π/steps per period)²/8 ≈ 3e-4 for the coarser run.
@@ -270,8 +298,9 @@ fn halving_the_step_changes_little() {
 fn finite_over_decades() {
     for mass in [1e-6, 1e-3, 1.0, 1e3] {
         for k in [1e2, 1e5, 1e8] {
-            let rods = KragelskyRods::new(1e3, AREA, k, HeightDistribution::gaussian(1e-6).unwrap())
-                .unwrap();
+            let rods =
+                KragelskyRods::new(1e3, AREA, k, HeightDistribution::gaussian(1e-6).unwrap())
+                    .unwrap();
             let m = SergienkoBukharov::new(rods, mass, LOAD, 0.1, MU, P0).unwrap();
             let omega0 = m.natural_frequency();
             for ratio in [0.03, 1.0, 10.0] {
@@ -308,17 +337,35 @@ fn bad_input_is_named() {
         other => panic!("{other:?}"),
     };
     let r = gaussian;
-    named(SergienkoBukharov::new(r(), 0.0, 1.0, 0.1, MU, P0).unwrap_err(), "mass");
-    named(SergienkoBukharov::new(r(), 1.0, -1.0, 0.1, MU, P0).unwrap_err(), "load");
-    named(SergienkoBukharov::new(r(), 1.0, 1.0, f64::NAN, MU, P0).unwrap_err(), "damping_ratio");
-    named(SergienkoBukharov::new(r(), 1.0, 1.0, 0.1, 0.0, P0).unwrap_err(), "friction_coefficient");
-    named(SergienkoBukharov::new(r(), 1.0, 1.0, 0.1, MU, -1.0).unwrap_err(), "attractive_pressure");
+    named(
+        SergienkoBukharov::new(r(), 0.0, 1.0, 0.1, MU, P0).unwrap_err(),
+        "mass",
+    );
+    named(
+        SergienkoBukharov::new(r(), 1.0, -1.0, 0.1, MU, P0).unwrap_err(),
+        "load",
+    );
+    named(
+        SergienkoBukharov::new(r(), 1.0, 1.0, f64::NAN, MU, P0).unwrap_err(),
+        "damping_ratio",
+    );
+    named(
+        SergienkoBukharov::new(r(), 1.0, 1.0, 0.1, 0.0, P0).unwrap_err(),
+        "friction_coefficient",
+    );
+    named(
+        SergienkoBukharov::new(r(), 1.0, 1.0, 0.1, MU, -1.0).unwrap_err(),
+        "attractive_pressure",
+    );
     let m = body(gaussian(), 1.0, 0.1);
     let w = m.natural_frequency();
     let ok = periods(2, 2);
     named(m.run(&driven(-1.0, w), &ok).unwrap_err(), "force_amplitude");
     named(m.run(&driven(1.0, 0.0), &ok).unwrap_err(), "frequency");
-    named(m.run(&driven(1.0, f64::INFINITY), &ok).unwrap_err(), "frequency");
+    named(
+        m.run(&driven(1.0, f64::INFINITY), &ok).unwrap_err(),
+        "frequency",
+    );
     // An excitation far below the natural frequency needs too many steps.
     named(m.run(&driven(1.0, 1e-9 * w), &ok).unwrap_err(), "frequency");
     // So does a run over the caller's budget.
@@ -327,17 +374,37 @@ fn bad_input_is_named() {
         ..ok
     };
     named(m.run(&driven(1.0, w), &tight).unwrap_err(), "frequency");
-    named(m.run(&Excitation::default(), &tight).unwrap_err(), "average_periods");
+    named(
+        m.run(&Excitation::default(), &tight).unwrap_err(),
+        "average_periods",
+    );
     let exc = |f: fn(&mut Excitation)| {
         let mut e = driven(0.5, w);
         f(&mut e);
         e
     };
-    named(m.run(&exc(|e| e.tangential_impulse = -1.0), &ok).unwrap_err(), "tangential_impulse");
-    named(m.run(&exc(|e| e.slope = f64::NAN), &ok).unwrap_err(), "slope");
-    named(m.run(&exc(|e| e.initial_offset = f64::INFINITY), &ok).unwrap_err(), "initial_offset");
-    named(m.run(&driven(0.5, w), &periods(2, 0)).unwrap_err(), "average_periods");
+    named(
+        m.run(&exc(|e| e.tangential_impulse = -1.0), &ok)
+            .unwrap_err(),
+        "tangential_impulse",
+    );
+    named(
+        m.run(&exc(|e| e.slope = f64::NAN), &ok).unwrap_err(),
+        "slope",
+    );
+    named(
+        m.run(&exc(|e| e.initial_offset = f64::INFINITY), &ok)
+            .unwrap_err(),
+        "initial_offset",
+    );
+    named(
+        m.run(&driven(0.5, w), &periods(2, 0)).unwrap_err(),
+        "average_periods",
+    );
     let mut i = ok;
     i.steps_per_natural_period = 8;
-    named(m.run(&driven(0.5, w), &i).unwrap_err(), "steps_per_natural_period");
+    named(
+        m.run(&driven(0.5, w), &i).unwrap_err(),
+        "steps_per_natural_period",
+    );
 }

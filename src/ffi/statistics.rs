@@ -956,7 +956,9 @@ impl AsperitySergienkoBukharovParams {
                 };
                 (h, count)
             }
-            ASPERITY_HEIGHTS_GAUSSIAN => (HeightDistribution::gaussian(self.sigma)?, self.rod_count),
+            ASPERITY_HEIGHTS_GAUSSIAN => {
+                (HeightDistribution::gaussian(self.sigma)?, self.rod_count)
+            }
             ASPERITY_HEIGHTS_EXPONENTIAL => {
                 (HeightDistribution::exponential(self.sigma)?, self.rod_count)
             }

@@ -435,7 +435,11 @@ impl SergienkoBukharov {
         }
         let v0 = check::finite_of(
             slope * j / self.mass,
-            &[("tangential_impulse", j), ("slope", slope), ("mass", self.mass)],
+            &[
+                ("tangential_impulse", j),
+                ("slope", slope),
+                ("mass", self.mass),
+            ],
             "the initial velocity overflows",
         )?;
         let d0 = check::finite_result(
@@ -467,7 +471,11 @@ impl SergienkoBukharov {
             let dt_max = TAU / ((stiff / self.mass).sqrt() * spp as f64);
             let per = (period / dt_max).ceil();
             let too_many = |per: f64| {
-                let name = if f0 > 0.0 { "frequency" } else { "average_periods" };
+                let name = if f0 > 0.0 {
+                    "frequency"
+                } else {
+                    "average_periods"
+                };
                 let value = if f0 > 0.0 {
                     omega
                 } else {
@@ -491,14 +499,7 @@ impl SergienkoBukharov {
                 return Err(too_many(per as f64));
             }
             let dt = period / per as f64;
-            let run = self.integrate(
-                (d0, v0),
-                (f0, omega),
-                dt,
-                per,
-                integration,
-                period,
-            )?;
+            let run = self.integrate((d0, v0), (f0, omega), dt, per, integration, period)?;
             let n_max = run.1;
             let mut out = run.0;
             let reached = k * n_max;

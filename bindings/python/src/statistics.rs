@@ -621,9 +621,8 @@ impl SergienkoBukharov {
             match o {
                 None => Ok(default),
                 Some(v) if v.is_none() => Ok(default),
-                Some(v) => u32::try_from(count(v, name)?).map_err(|_| {
-                    crate::common::arg_error(name, "must be an integer below 2**32")
-                }),
+                Some(v) => u32::try_from(count(v, name)?)
+                    .map_err(|_| crate::common::arg_error(name, "must be an integer below 2**32")),
             }
         };
         let excitation = st::Excitation {
@@ -635,7 +634,11 @@ impl SergienkoBukharov {
         };
         let default = st::Integration::default();
         let integration = st::Integration {
-            transient_periods: int(transient_periods, "transient_periods", default.transient_periods)?,
+            transient_periods: int(
+                transient_periods,
+                "transient_periods",
+                default.transient_periods,
+            )?,
             average_periods: int(average_periods, "average_periods", default.average_periods)?,
             steps_per_natural_period: int(
                 steps_per_natural_period,
@@ -681,11 +684,23 @@ impl SergienkoBukharov {
                 r.samples.iter().map(f).collect()
             };
             s.set_item("time", numpy::PyArray1::from_vec(py, col(|x| x.time)))?;
-            s.set_item("separation", numpy::PyArray1::from_vec(py, col(|x| x.separation)))?;
-            s.set_item("velocity", numpy::PyArray1::from_vec(py, col(|x| x.velocity)))?;
+            s.set_item(
+                "separation",
+                numpy::PyArray1::from_vec(py, col(|x| x.separation)),
+            )?;
+            s.set_item(
+                "velocity",
+                numpy::PyArray1::from_vec(py, col(|x| x.velocity)),
+            )?;
             s.set_item("load", numpy::PyArray1::from_vec(py, col(|x| x.load)))?;
-            s.set_item("contacts", numpy::PyArray1::from_vec(py, col(|x| x.contacts)))?;
-            s.set_item("friction", numpy::PyArray1::from_vec(py, col(|x| x.friction)))?;
+            s.set_item(
+                "contacts",
+                numpy::PyArray1::from_vec(py, col(|x| x.contacts)),
+            )?;
+            s.set_item(
+                "friction",
+                numpy::PyArray1::from_vec(py, col(|x| x.friction)),
+            )?;
             d.set_item("samples", s)?;
         }
         Ok(d)
