@@ -425,6 +425,9 @@
 // Deformation regime ψ > 1: plastic even at light loads.
 #define ASPERITY_REGIME_PLASTIC 2
 
+// Spring heights for `asperity_sergienko_bukharov_run`: the listed heights.
+#define ASPERITY_HEIGHTS_LIST 0
+
 // Success.
 #define ASPERITY_OK 0
 
@@ -1610,6 +1613,94 @@ typedef struct AsperityBoraResponse {
     // Reserved, 0.
     uint32_t reserved;
 } AsperityBoraResponse;
+
+// The Sergienko–Bukharov model (thesis §5.3.5, in the library's formulation
+// from the thesis's description; Rust module `sergienko_bukharov`), by value: a rigid body of mass m under the load N₀
+// on Kragelsky's independent springs, driven by the normal force
+// F₀ sin ωt and/or a tangential impulse J turned upwards by flanks of slope
+// tan θ; friction μ(P + p₀ A_rod n) (Derjaguin, thesis (1-3)). An all-zero
+// value is invalid.
+typedef struct AsperitySergienkoBukharovParams {
+    // `ASPERITY_HEIGHTS_LIST` (the `heights` array), `ASPERITY_HEIGHTS_GAUSSIAN`
+    // or `ASPERITY_HEIGHTS_EXPONENTIAL` (zero-mean, standard deviation `sigma`).
+    int32_t distribution;
+    // Periods skipped before averaging.
+    uint32_t transient_periods;
+    // Periods averaged over (≥ 1).
+    uint32_t average_periods;
+    // Least steps per natural period of the stiffest state reached
+    // (16..=100000; 64 is a good default).
+    uint32_t steps_per_natural_period;
+    // Number of springs N (> 0); for a list, 0 means one spring per height.
+    double rod_count;
+    // Standard deviation σ of parametric heights (m, > 0); ignored for a list.
+    double sigma;
+    // Stiffness k of one spring (N/m, > 0).
+    double rod_stiffness;
+    // Cross-section A_rod of one spring (m², > 0).
+    double rod_area;
+    // Mass m of the body (kg, > 0).
+    double mass;
+    // Normal load N₀ (N, > 0).
+    double load;
+    // Damping ratio ζ of the motion linearised at rest (≥ 0).
+    double damping_ratio;
+    // Friction coefficient μ (> 0).
+    double friction_coefficient;
+    // Specific attractive force p₀ of Derjaguin's law (Pa, ≥ 0).
+    double attractive_pressure;
+    // Amplitude F₀ of the normal force F₀ sin ωt (N, ≥ 0).
+    double force_amplitude;
+    // Angular frequency ω (rad/s; > 0 when `force_amplitude` > 0).
+    double frequency;
+    // Tangential impulse J at t = 0 (N·s, ≥ 0).
+    double tangential_impulse;
+    // Flank slope tan θ turning J/m into an upward velocity (≥ 0).
+    double slope;
+    // Start position relative to the static equilibrium (m, > 0 above).
+    double initial_offset;
+    // Most time steps the run may take (0: 5e7); a longer run is refused.
+    uint64_t max_steps;
+} AsperitySergienkoBukharovParams;
+
+// The result of a Sergienko–Bukharov run: static reference, averages over
+// whole periods after the transient, and the integration report.
+typedef struct AsperitySergienkoBukharovResult {
+    // Static separation d_s (m): the springs carry N₀.
+    double static_separation;
+    // Springs in contact at rest.
+    double static_contacts;
+    // Static friction F_s (N).
+    double static_friction;
+    // Mean separation ⟨d⟩ (m).
+    double mean_separation;
+    // Dynamic lift ⟨d⟩ − d_s (m).
+    double lift;
+    // Half the peak-to-peak range of d (m).
+    double separation_amplitude;
+    // Mean number of contacting springs.
+    double mean_contacts;
+    // Mean contacts over static contacts.
+    double contact_ratio;
+    // Mean spring load (N); N₀ in a periodic steady state.
+    double mean_load;
+    // Mean friction force (N).
+    double mean_friction;
+    // Mean friction over static friction.
+    double friction_ratio;
+    // Fraction of the averaged time spent off the springs.
+    double lift_off_fraction;
+    // Damping coefficient c (N·s/m).
+    double damping;
+    // Averaging period T (s).
+    double period;
+    // Time step (s).
+    double time_step;
+    // Steps per natural period of the stiffest state reached.
+    double resolution;
+    // Steps taken.
+    uint64_t steps;
+} AsperitySergienkoBukharovResult;
 
 // ISO 4287 parameters of a profile, its spectral moments and its Hurst
 // exponent, from `asperity_roughness_parameters`. Heights are measured from
@@ -2840,6 +2931,15 @@ int32_t asperity_bora_solve(const struct AsperityBora *bora,
 int32_t asperity_bora_separation_at_load(const struct AsperityBora *bora,
                                          double load,
                                          struct AsperitySeparation *out);
+
+// Run the Sergienko–Bukharov model `params` on `n_heights` spring-top
+// heights `heights` (m, finite; read only for `ASPERITY_HEIGHTS_LIST`, may
+// be NULL otherwise) and write the averages to `*out`. A run needing more
+// than `max_steps` steps is refused (ω far below the natural frequency).
+int32_t asperity_sergienko_bukharov_run(const struct AsperitySergienkoBukharovParams *params,
+                                        const double *heights,
+                                        size_t n_heights,
+                                        struct AsperitySergienkoBukharovResult *out);
 
 // A static, NUL-terminated description of a status code; "unknown status"
 // for a value that is not one. Do not free.

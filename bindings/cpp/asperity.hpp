@@ -1772,6 +1772,20 @@ public:
     }
 };
 
+/// `asperity_sergienko_bukharov_run`: one run of the Sergienko-Bukharov
+/// model `params` (thesis 5.3.5, the library's formulation) on the
+/// spring-top `heights` (m; read for `ASPERITY_HEIGHTS_LIST`, may be empty
+/// otherwise): the dynamic lift and the friction ratio, averaged over whole
+/// periods.
+[[nodiscard]] inline AsperitySergienkoBukharovResult sergienko_bukharov_run(
+    const AsperitySergienkoBukharovParams& params, span<const double> heights = {})
+{
+    AsperitySergienkoBukharovResult out{};
+    check(asperity_sergienko_bukharov_run(&params, heights.empty() ? nullptr : heights.data(),
+                                          heights.size(), &out));
+    return out;
+}
+
 /// `asperity_zhuravlev_linear`: Zhuravlev's model with summit densities
 /// alpha_i xi at the approach `approach` (m).
 [[nodiscard]] inline AsperityZhuravlevResponse zhuravlev_linear(const AsperityZhuravlev& model,

@@ -325,6 +325,8 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_ARCHARD_NON_UNIFORM = 1
   !> Summit heights: exponential tail shifted to zero mean, standard deviation (decay length) σ.
   integer(c_int32_t), parameter, public :: ASPERITY_HEIGHTS_EXPONENTIAL = 2
+  !> Spring heights for `asperity_sergienko_bukharov_run`: the listed heights.
+  integer(c_int32_t), parameter, public :: ASPERITY_HEIGHTS_LIST = 0
   !> Deformation regime of a plasticity index ψ < 0.6: elastic.
   integer(c_int32_t), parameter, public :: ASPERITY_REGIME_ELASTIC = 0
   !> Deformation regime 0.6 ≤ ψ ≤ 1: transitional.
@@ -1281,6 +1283,85 @@ module asperity
     !> Friction force F_fr,x on the block (N).
     real(c_double) :: friction_force = 0.0_c_double
   end type asperity_borodich_kryukova_sample
+  !> `AsperitySergienkoBukharovParams`
+  type, bind(c), public :: asperity_sergienko_bukharov_params
+    !> `ASPERITY_HEIGHTS_LIST`, `ASPERITY_HEIGHTS_GAUSSIAN` or `ASPERITY_HEIGHTS_EXPONENTIAL`.
+    integer(c_int32_t) :: distribution = 0_c_int32_t
+    !> Periods skipped before averaging.
+    integer(c_int32_t) :: transient_periods = 0_c_int32_t
+    !> Periods averaged over (>= 1).
+    integer(c_int32_t) :: average_periods = 0_c_int32_t
+    !> Least steps per natural period of the stiffest state reached (16..100000).
+    integer(c_int32_t) :: steps_per_natural_period = 0_c_int32_t
+    !> Number of springs N (> 0); for a list, 0 means one spring per height.
+    real(c_double) :: rod_count = 0.0_c_double
+    !> Standard deviation of parametric heights (m, > 0).
+    real(c_double) :: sigma = 0.0_c_double
+    !> Stiffness k of one spring (N/m, > 0).
+    real(c_double) :: rod_stiffness = 0.0_c_double
+    !> Cross-section of one spring (m², > 0).
+    real(c_double) :: rod_area = 0.0_c_double
+    !> Mass m of the body (kg, > 0).
+    real(c_double) :: mass = 0.0_c_double
+    !> Normal load N₀ (N, > 0).
+    real(c_double) :: load = 0.0_c_double
+    !> Damping ratio ζ (>= 0).
+    real(c_double) :: damping_ratio = 0.0_c_double
+    !> Friction coefficient μ (> 0).
+    real(c_double) :: friction_coefficient = 0.0_c_double
+    !> Specific attractive force p₀ (Pa, >= 0).
+    real(c_double) :: attractive_pressure = 0.0_c_double
+    !> Amplitude F₀ of the normal force F₀ sin ωt (N, >= 0).
+    real(c_double) :: force_amplitude = 0.0_c_double
+    !> Angular frequency ω (rad/s).
+    real(c_double) :: frequency = 0.0_c_double
+    !> Tangential impulse J at t = 0 (N·s, >= 0).
+    real(c_double) :: tangential_impulse = 0.0_c_double
+    !> Flank slope tan θ (>= 0).
+    real(c_double) :: slope = 0.0_c_double
+    !> Start position relative to the static equilibrium (m).
+    real(c_double) :: initial_offset = 0.0_c_double
+    !> Most time steps (0: 5e7).
+    integer(c_int64_t) :: max_steps = 0_c_int64_t
+  end type asperity_sergienko_bukharov_params
+
+  !> `AsperitySergienkoBukharovResult`
+  type, bind(c), public :: asperity_sergienko_bukharov_result
+    !> Static separation d_s (m).
+    real(c_double) :: static_separation = 0.0_c_double
+    !> Springs in contact at rest.
+    real(c_double) :: static_contacts = 0.0_c_double
+    !> Static friction (N).
+    real(c_double) :: static_friction = 0.0_c_double
+    !> Mean separation (m).
+    real(c_double) :: mean_separation = 0.0_c_double
+    !> Dynamic lift, mean minus static separation (m).
+    real(c_double) :: lift = 0.0_c_double
+    !> Half the peak-to-peak range of the separation (m).
+    real(c_double) :: separation_amplitude = 0.0_c_double
+    !> Mean number of contacting springs.
+    real(c_double) :: mean_contacts = 0.0_c_double
+    !> Mean over static contacts.
+    real(c_double) :: contact_ratio = 0.0_c_double
+    !> Mean spring load (N).
+    real(c_double) :: mean_load = 0.0_c_double
+    !> Mean friction force (N).
+    real(c_double) :: mean_friction = 0.0_c_double
+    !> Mean over static friction.
+    real(c_double) :: friction_ratio = 0.0_c_double
+    !> Fraction of the averaged time off the springs.
+    real(c_double) :: lift_off_fraction = 0.0_c_double
+    !> Damping coefficient c (N·s/m).
+    real(c_double) :: damping = 0.0_c_double
+    !> Averaging period T (s).
+    real(c_double) :: period = 0.0_c_double
+    !> Time step (s).
+    real(c_double) :: time_step = 0.0_c_double
+    !> Steps per natural period of the stiffest state reached.
+    real(c_double) :: resolution = 0.0_c_double
+    !> Steps taken.
+    integer(c_int64_t) :: steps = 0_c_int64_t
+  end type asperity_sergienko_bukharov_result
 
   !> `AsperityZhuravlev`
   type, bind(c), public :: asperity_zhuravlev
@@ -3017,6 +3098,19 @@ module asperity
       integer(c_int32_t) :: r
     end function c_asperity_bora_separation_at_load
 
+    !> Run the Sergienko–Bukharov model `params` on `n_heights` spring-top heights (m; read only
+    !  for `ASPERITY_HEIGHTS_LIST`) and write the averages to `out`.
+    function c_asperity_sergienko_bukharov_run(params, heights, n_heights, out) result(r) &
+        bind(c, name="asperity_sergienko_bukharov_run")
+      import
+      implicit none
+      type(asperity_sergienko_bukharov_params), intent(in) :: params
+      real(c_double), intent(in) :: heights(*)
+      integer(c_size_t), value :: n_heights
+      type(asperity_sergienko_bukharov_result), intent(inout) :: out
+      integer(c_int32_t) :: r
+    end function c_asperity_sergienko_bukharov_run
+
     !> `asperity_gw_eval` for `n` separations `separation[i]` (m), writing `load[i]` (N) and,
     !  where the array is not NULL, `area[i]` (m²), `contacts[i]` and `stiffness[i]` (N/m).
     !  `separation` and `load` are required (unless n = 0); inputs and outputs may be the same
@@ -3762,6 +3856,7 @@ module asperity
   public :: c_asperity_bora_free
   public :: c_asperity_bora_solve
   public :: c_asperity_bora_separation_at_load
+  public :: c_asperity_sergienko_bukharov_run
   public :: c_asperity_gw_eval_batch
   public :: c_asperity_gw_separation_at_load
   public :: c_asperity_gw_plasticity_index
@@ -3910,6 +4005,7 @@ module asperity
   public :: asperity_bora_free
   public :: asperity_bora_solve
   public :: asperity_bora_separation_at_load
+  public :: asperity_sergienko_bukharov_run
   public :: asperity_gw_eval_batch
   public :: asperity_gw_separation_at_load
   public :: asperity_gw_plasticity_index
@@ -5841,6 +5937,18 @@ contains
     call check(c_asperity_bora_separation_at_load(bora%ptr, load, out), &
         'asperity_bora_separation_at_load', status)
   end subroutine asperity_bora_separation_at_load
+
+  !> One Sergienko–Bukharov run of `params` (thesis 5.3.5, the library's formulation) on the
+  !> spring-top `heights` (m; read for `ASPERITY_HEIGHTS_LIST`, any size otherwise): the
+  !> dynamic lift and the friction ratio averaged over whole periods, to `out`.
+  subroutine asperity_sergienko_bukharov_run(params, heights, out, status)
+    type(asperity_sergienko_bukharov_params), intent(in) :: params
+    real(c_double), intent(in) :: heights(:)
+    type(asperity_sergienko_bukharov_result), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: status
+    call check(c_asperity_sergienko_bukharov_run(params, heights, int(size(heights), c_size_t), &
+        out), 'asperity_sergienko_bukharov_run', status)
+  end subroutine asperity_sergienko_bukharov_run
 
   !> The separation (m) that carries `load` (N), with the solver's report.
   subroutine asperity_gw_separation_at_load(gw, load, out, status)

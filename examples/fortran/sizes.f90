@@ -59,6 +59,8 @@ program sizes
   type(asperity_bgt_params) :: bgt_params
   type(asperity_bgt_response) :: bgt_response
   type(asperity_bora_response) :: bora_response
+  type(asperity_sergienko_bukharov_params) :: sb_params
+  type(asperity_sergienko_bukharov_result) :: sb_result
   type(asperity_zhuravlev) :: zhuravlev
   type(asperity_zhuravlev_response) :: zhuravlev_response
   type(asperity_zhuravlev_friction) :: zhuravlev_friction
@@ -112,6 +114,8 @@ program sizes
   call row('AsperityBgtParams', c_sizeof(bgt_params))
   call row('AsperityBgtResponse', c_sizeof(bgt_response))
   call row('AsperityBoraResponse', c_sizeof(bora_response))
+  call row('AsperitySergienkoBukharovParams', c_sizeof(sb_params))
+  call row('AsperitySergienkoBukharovResult', c_sizeof(sb_result))
   call row('AsperityZhuravlev', c_sizeof(zhuravlev))
   call row('AsperityZhuravlevResponse', c_sizeof(zhuravlev_response))
   call row('AsperityZhuravlevFriction', c_sizeof(zhuravlev_friction))

@@ -344,6 +344,13 @@ pub enum Op {
         heights: Heights,
         nulls: Nulls,
     },
+    SergienkoBukharov {
+        a: [F; 14],
+        distribution: Sel,
+        periods: [u8; 3],
+        heights: Heights,
+        nulls: Nulls,
+    },
     // Surfaces.
     Roughness {
         h: Heights,
@@ -808,7 +815,8 @@ unsafe fn call(ctx: &mut Ctx, op: &Op) {
         | Op::Zhuravlev { .. }
         | Op::ZhuravlevEval { .. }
         | Op::Bgt { .. }
-        | Op::Bora { .. } => statistics::call(ctx, op),
+        | Op::Bora { .. }
+        | Op::SergienkoBukharov { .. } => statistics::call(ctx, op),
         Op::Roughness { .. }
         | Op::RemoveForm { .. }
         | Op::Filter { .. }

@@ -82,6 +82,16 @@ impl KragelskyRods {
         Self::new(rod_count, a, e * a / l, heights)
     }
 
+    /// Number of rods N.
+    pub fn rod_count(&self) -> f64 {
+        self.rod_count
+    }
+
+    /// Cross-section A_rod of one rod (m²).
+    pub fn rod_area(&self) -> f64 {
+        self.rod_area
+    }
+
     /// Axial stiffness k of one rod (N/m).
     pub fn rod_stiffness(&self) -> f64 {
         self.rod_stiffness

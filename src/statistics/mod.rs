@@ -25,6 +25,10 @@
 //!   moving belt, both faces covered with elastic rough layers, integrated
 //!   in time.
 //! * [`kragelsky`]: Kragelsky's assembly of elastic rods (5-7).
+//! * [`sergienko_bukharov`]: Sergienko & Bukharov (2015), §5.3.5: a rigid
+//!   body oscillating normally on Kragelsky's rods; the dynamic lift and the
+//!   drop of the friction with the amplitude (formulated from the thesis's
+//!   description).
 //! * [`power_law`]: asperities `B r^d` on a material `σ ∝ ε^κ`, through
 //!   Borodich's rescaling of one known solution ((3-27), (3-28)).
 //!
@@ -70,6 +74,7 @@ pub mod heights;
 pub mod kragelsky;
 pub mod power_law;
 mod quadrature;
+pub mod sergienko_bukharov;
 pub mod zhuravlev;
 
 pub use bora::{BoraSolution, BoraTopography};
@@ -81,6 +86,9 @@ pub use heights::{EmpiricalHeights, HeightDistribution};
 pub use kragelsky::{BearingCurveRods, KragelskyRods};
 pub use power_law::PowerLawAsperities;
 pub use quadrature::Quadrature;
+pub use sergienko_bukharov::{
+    Excitation, Integration, SergienkoBukharov, SergienkoBukharovRun, SergienkoBukharovSample,
+};
 pub use zhuravlev::{Zhuravlev, ZhuravlevFriction};
 
 use crate::error::{check, Error, Result};

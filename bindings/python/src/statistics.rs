@@ -1,7 +1,7 @@
 //! Statistical multi-asperity models (`asperity::statistics`): height
 //! distributions, Greenwood–Williamson, Bush–Gibson–Thomas, Bora et al.,
 //! Borodich–Kryukova's block on a belt,
-//! Kragelsky rods and bearing curve,
+//! Kragelsky rods and bearing curve, Sergienko–Bukharov's body on the rods,
 //! Zhuravlev, power-law asperities; every response on a float or an array of
 //! separations.
 
@@ -523,6 +523,191 @@ impl KragelskyRods {
     }
 }
 
+/// SergienkoBukharov(rods, mass, load, friction_coefficient, damping_ratio=0.1, attractive_pressure=0.0)
+///
+/// Sergienko & Bukharov (2015), thesis §5.3.5, in the library's formulation
+/// from the thesis's description (the book's equations were not available):
+/// a rigid body of mass m (kg) under the load N0 (N) on Kragelsky's
+/// independent springs ``rods`` (``KragelskyRods``), viscous damping of ratio
+/// ζ about the static equilibrium, friction μ(P + p0 A_rod n) (Derjaguin).
+/// ``run(...)`` drives it with F0 sin ωt and/or a tangential impulse and
+/// returns the time averages: the dynamic lift and the friction ratio.
+#[pyclass(module = "asperity", frozen)]
+pub struct SergienkoBukharov {
+    pub inner: st::SergienkoBukharov,
+}
+
+#[pymethods]
+impl SergienkoBukharov {
+    #[new]
+    #[pyo3(signature = (rods, mass, load, friction_coefficient, damping_ratio=None, attractive_pressure=None))]
+    fn new(
+        rods: &KragelskyRods,
+        mass: &Bound<'_, PyAny>,
+        load: &Bound<'_, PyAny>,
+        friction_coefficient: &Bound<'_, PyAny>,
+        damping_ratio: Option<&Bound<'_, PyAny>>,
+        attractive_pressure: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: st::SergienkoBukharov::new(
+                rods.inner.clone(),
+                real(mass, "mass")?,
+                real(load, "load")?,
+                real_opt(damping_ratio, "damping_ratio")?.unwrap_or(0.1),
+                real(friction_coefficient, "friction_coefficient")?,
+                real_opt(attractive_pressure, "attractive_pressure")?.unwrap_or(0.0),
+            )
+            .map_err(rs)?,
+        })
+    }
+    /// Static separation d_s (m): the springs carry the load.
+    #[getter]
+    fn static_separation(&self) -> f64 {
+        self.inner.static_separation()
+    }
+    /// Springs in contact at rest.
+    #[getter]
+    fn static_contacts(&self) -> f64 {
+        self.inner.static_contacts()
+    }
+    /// Static friction μ(N0 + p0 A_rod n_s) (N).
+    #[getter]
+    fn static_friction(&self) -> f64 {
+        self.inner.static_friction()
+    }
+    /// Natural angular frequency √(k n_s/m) (rad/s) about the rest state.
+    #[getter]
+    fn natural_frequency(&self) -> f64 {
+        self.inner.natural_frequency()
+    }
+    /// Damping coefficient c = 2ζ√(m k n_s) (N·s/m).
+    #[getter]
+    fn damping(&self) -> f64 {
+        self.inner.damping()
+    }
+    /// run(force_amplitude=0.0, frequency=0.0, tangential_impulse=0.0, slope=0.0, initial_offset=0.0, transient_periods=20, average_periods=10, steps_per_natural_period=64, record_every=0, max_steps=0) -> dict
+    ///
+    /// Integrate under F0 sin ωt (N, rad/s), a tangential impulse J (N·s)
+    /// turned upwards by flanks of slope tan θ, from d_s + initial_offset
+    /// (m); average over whole periods after the transient. The dict holds
+    /// ``static_separation``, ``static_contacts``, ``static_friction``,
+    /// ``mean_separation``, ``lift``, ``separation_amplitude``,
+    /// ``mean_contacts``, ``contact_ratio``, ``mean_load``,
+    /// ``mean_friction``, ``friction_ratio``, ``lift_off_fraction``,
+    /// ``damping``, ``period``, ``time_step``, ``steps``, ``resolution``
+    /// and, when ``record_every`` > 0, ``samples``: a dict of arrays
+    /// ``time``, ``separation``, ``velocity``, ``load``, ``contacts``,
+    /// ``friction``.
+    #[pyo3(signature = (force_amplitude=None, frequency=None, tangential_impulse=None, slope=None, initial_offset=None, transient_periods=None, average_periods=None, steps_per_natural_period=None, record_every=None, max_steps=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn run<'py>(
+        &self,
+        py: Python<'py>,
+        force_amplitude: Option<&Bound<'_, PyAny>>,
+        frequency: Option<&Bound<'_, PyAny>>,
+        tangential_impulse: Option<&Bound<'_, PyAny>>,
+        slope: Option<&Bound<'_, PyAny>>,
+        initial_offset: Option<&Bound<'_, PyAny>>,
+        transient_periods: Option<&Bound<'_, PyAny>>,
+        average_periods: Option<&Bound<'_, PyAny>>,
+        steps_per_natural_period: Option<&Bound<'_, PyAny>>,
+        record_every: Option<&Bound<'_, PyAny>>,
+        max_steps: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let or0 = |o: Option<&Bound<'_, PyAny>>, name: &str| -> PyResult<f64> {
+            Ok(real_opt(o, name)?.unwrap_or(0.0))
+        };
+        let int = |o: Option<&Bound<'_, PyAny>>, name: &str, default: u32| -> PyResult<u32> {
+            match o {
+                None => Ok(default),
+                Some(v) if v.is_none() => Ok(default),
+                Some(v) => u32::try_from(count(v, name)?)
+                    .map_err(|_| crate::common::arg_error(name, "must be an integer below 2**32")),
+            }
+        };
+        let excitation = st::Excitation {
+            force_amplitude: or0(force_amplitude, "force_amplitude")?,
+            frequency: or0(frequency, "frequency")?,
+            tangential_impulse: or0(tangential_impulse, "tangential_impulse")?,
+            slope: or0(slope, "slope")?,
+            initial_offset: or0(initial_offset, "initial_offset")?,
+        };
+        let default = st::Integration::default();
+        let integration = st::Integration {
+            transient_periods: int(
+                transient_periods,
+                "transient_periods",
+                default.transient_periods,
+            )?,
+            average_periods: int(average_periods, "average_periods", default.average_periods)?,
+            steps_per_natural_period: int(
+                steps_per_natural_period,
+                "steps_per_natural_period",
+                default.steps_per_natural_period,
+            )?,
+            record_every: int(record_every, "record_every", 0)?,
+            max_steps: match max_steps {
+                None => 0,
+                Some(v) if v.is_none() => 0,
+                Some(v) => count(v, "max_steps")? as u64,
+            },
+        };
+        let model = &self.inner;
+        let r = py
+            .detach(|| model.run(&excitation, &integration))
+            .map_err(rs)?;
+        let d = PyDict::new(py);
+        for (k, v) in [
+            ("static_separation", r.static_separation),
+            ("static_contacts", r.static_contacts),
+            ("static_friction", r.static_friction),
+            ("mean_separation", r.mean_separation),
+            ("lift", r.lift),
+            ("separation_amplitude", r.separation_amplitude),
+            ("mean_contacts", r.mean_contacts),
+            ("contact_ratio", r.contact_ratio),
+            ("mean_load", r.mean_load),
+            ("mean_friction", r.mean_friction),
+            ("friction_ratio", r.friction_ratio),
+            ("lift_off_fraction", r.lift_off_fraction),
+            ("damping", r.damping),
+            ("period", r.period),
+            ("time_step", r.time_step),
+            ("resolution", r.resolution),
+        ] {
+            d.set_item(k, v)?;
+        }
+        d.set_item("steps", r.steps)?;
+        if integration.record_every > 0 {
+            let s = PyDict::new(py);
+            let col = |f: fn(&st::SergienkoBukharovSample) -> f64| -> Vec<f64> {
+                r.samples.iter().map(f).collect()
+            };
+            s.set_item("time", numpy::PyArray1::from_vec(py, col(|x| x.time)))?;
+            s.set_item(
+                "separation",
+                numpy::PyArray1::from_vec(py, col(|x| x.separation)),
+            )?;
+            s.set_item(
+                "velocity",
+                numpy::PyArray1::from_vec(py, col(|x| x.velocity)),
+            )?;
+            s.set_item("load", numpy::PyArray1::from_vec(py, col(|x| x.load)))?;
+            s.set_item(
+                "contacts",
+                numpy::PyArray1::from_vec(py, col(|x| x.contacts)),
+            )?;
+            s.set_item(
+                "friction",
+                numpy::PyArray1::from_vec(py, col(|x| x.friction)),
+            )?;
+            d.set_item("samples", s)?;
+        }
+        Ok(d)
+    }
+}
+
 /// BearingCurveRods(contour_area, stiffness_per_area, b, nu, max_height, rod_area)
 ///
 /// Kragelsky's rods under a bearing curve η = b (x/max_height)^ν: contour
@@ -1009,6 +1194,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<BorodichKryukova>()?;
     m.add_class::<KragelskyRods>()?;
     m.add_class::<BearingCurveRods>()?;
+    m.add_class::<SergienkoBukharov>()?;
     m.add_class::<Zhuravlev>()?;
     m.add_class::<PowerLawAsperities>()?;
     m.add_function(wrap_pyfunction!(plasticity_index, m)?)?;

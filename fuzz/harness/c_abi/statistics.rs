@@ -1,6 +1,7 @@
 //! Multi-asperity statistics (`src/ffi/statistics.rs`): Greenwood–Williamson
 //! (parametric and empirical surfaces), plasticity index, deformation
-//! regime, Zhuravlev, Bush–Gibson–Thomas, Bora et al., Borodich–Kryukova.
+//! regime, Zhuravlev, Bush–Gibson–Thomas, Bora et al., Borodich–Kryukova,
+//! Sergienko–Bukharov.
 
 use super::common::*;
 use super::{pick, take, Ctx, Op};
@@ -279,6 +280,47 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             } else {
                 assert_eq!(written, usize::MAX, "a failed run wrote `written`");
             }
+        Op::SergienkoBukharov {
+            a,
+            distribution,
+            periods,
+            heights,
+            nulls,
+        } => {
+            // A bounded run: few periods, a small step budget.
+            let mut h = heights.make();
+            h.truncate(256);
+            let p = AsperitySergienkoBukharovParams {
+                distribution: distribution.0 % 3,
+                transient_periods: periods[0] as u32 % 4,
+                average_periods: periods[1] as u32 % 4,
+                steps_per_natural_period: 8 + periods[2] as u32 % 64,
+                rod_count: a[0].0,
+                sigma: a[1].0,
+                rod_stiffness: a[2].0,
+                rod_area: a[3].0,
+                mass: a[4].0,
+                load: a[5].0,
+                damping_ratio: a[6].0,
+                friction_coefficient: a[7].0,
+                attractive_pressure: a[8].0,
+                force_amplitude: a[9].0,
+                frequency: a[10].0,
+                tangential_impulse: a[11].0,
+                slope: a[12].0,
+                initial_offset: a[13].0,
+                max_steps: 20_000,
+            };
+            let mut out: AsperitySergienkoBukharovResult = zeroed();
+            ok(
+                asperity_sergienko_bukharov_run(
+                    cp(&p, nulls.at(0)),
+                    bufp(&h, nulls.at(1)),
+                    h.len(),
+                    mp(&mut out, nulls.at(2)),
+                ),
+                "sergienko_bukharov_run",
+            );
         }
         Op::GwEmpiricalNew {
             a,
