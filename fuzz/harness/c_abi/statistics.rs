@@ -280,6 +280,7 @@ pub(super) unsafe fn call(ctx: &mut Ctx, op: &Op) {
             } else {
                 assert_eq!(written, usize::MAX, "a failed run wrote `written`");
             }
+        }
         Op::SergienkoBukharov {
             a,
             distribution,
