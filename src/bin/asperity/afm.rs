@@ -18,8 +18,11 @@ pub struct AfmArgs {
     /// Tip radius R (m); without it the fits give E*·√R and w·R.
     #[arg(long)]
     pub tip_radius: Option<f64>,
-    /// auto (fit every model, recommend one) | hertz | dmt | jkr |
-    /// maugis_dugdale.
+    /// auto (fit the models, recommend one) | hertz | dmt | jkr |
+    /// maugis_dugdale | lj (the numerical Lennard-Jones sphere, tabulated:
+    /// about 1–3 s; auto fits it only when the Maugis–Dugdale fit's
+    /// λ = 1.157 μ lies between 0.1 and 5, where it differs from
+    /// Maugis–Dugdale, and says so otherwise).
     #[arg(long, default_value = "auto")]
     pub model: String,
     /// Spring constant k (N/m), overriding the file's.
@@ -29,7 +32,7 @@ pub struct AfmArgs {
     #[arg(long)]
     pub position_column: Option<String>,
     /// Lennard-Jones equilibrium separation z₀ (m) of the Maugis–Dugdale
-    /// stress and the Tabor parameter.
+    /// stress, the Lennard-Jones sphere and the Tabor parameter.
     #[arg(long, default_value_t = 0.3e-9)]
     pub z0: f64,
     /// Print one JSON object instead of the report.
@@ -45,15 +48,8 @@ pub struct AfmArgs {
 pub fn run(args: &AfmArgs) -> Result<(), Box<dyn Error>> {
     let models = match args.model.as_str() {
         "auto" => Vec::new(),
-        "lj" => {
-            return Err(
-                "model `lj`: the tabulated Lennard-Jones sphere is not fitted yet; \
-                        maugis_dugdale uses the Lennard-Jones stress (λ = 1.157 μ)"
-                    .into(),
-            )
-        }
         m => vec![AfmModel::from_name(m).ok_or_else(|| {
-            format!("unknown model `{m}`: auto | hertz | dmt | jkr | maugis_dugdale")
+            format!("unknown model `{m}`: auto | hertz | dmt | jkr | maugis_dugdale | lj")
         })?],
     };
     let curve = AfmCurve::read(&args.file, args.position_column.as_deref())
@@ -165,6 +161,9 @@ fn report(a: &AfmAnalysis, c: &AfmCurve) {
     }
     for (m, e) in &a.failed_fits {
         outln!("{m:<15} not fitted: {e}");
+    }
+    for (m, e) in &a.skipped_fits {
+        outln!("{m:<15} {e}");
     }
     outln!(
         "recommended model    {}",
