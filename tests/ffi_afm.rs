@@ -143,6 +143,51 @@ fn jkr_curve_through_the_c_abi() {
 }
 
 #[test]
+fn lennard_jones_model_code_through_the_c_abi() {
+    // The JKR curve (μ ≈ 12) fitted with the Lennard-Jones sphere, code 5:
+    // the same numbers as the Rust API, close to JKR's E*, w.
+    let (z, f, rs) = jkr_curve();
+    let mut r = AsperityAfmResult::default();
+    let st = unsafe {
+        asperity_afm_analyze(
+            z.len(),
+            z.as_ptr(),
+            f.as_ptr(),
+            ASPERITY_AFM_INPUT_FORCE,
+            rs,
+            40.0,
+            50e-9,
+            ASPERITY_AFM_MODEL_LJ,
+            &mut r,
+        )
+    };
+    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    assert_eq!(r.n_fits, 1);
+    assert_eq!(r.recommended_model, ASPERITY_AFM_MODEL_LJ);
+    let fit = r.fits[0];
+    assert_eq!(fit.model, ASPERITY_AFM_MODEL_LJ);
+    assert!((fit.e_star / 0.5e9 - 1.0).abs() < 0.1, "E* {}", fit.e_star);
+    assert!(
+        (fit.work_of_adhesion / 0.5 - 1.0).abs() < 0.1,
+        "w {}",
+        fit.work_of_adhesion
+    );
+    assert!(fit.e_star_stderr > 0.0 && fit.tabor_parameter > 5.0);
+    let curve = AfmCurve::new(z, f, Some(rs), Some(40.0)).unwrap();
+    let a = analyze(
+        &curve,
+        &AfmOptions {
+            tip_radius: Some(50e-9),
+            models: vec![asperity::afm::AfmModel::LennardJones],
+            ..AfmOptions::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(a.fits[0].e_star, Some(fit.e_star));
+    assert_eq!(a.fits[0].tabor_parameter, Some(fit.tabor_parameter));
+}
+
+#[test]
 fn flag_names_match_the_bits() {
     let name = |b: u32| {
         unsafe { CStr::from_ptr(asperity_afm_flag_name(b)) }
