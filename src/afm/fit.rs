@@ -60,6 +60,7 @@ pub enum AfmModel {
     /// The numerical Lennard-Jones sphere ([`crate::contact::lj_sphere`])
     /// through its [`TabulatedLaw`] (module [`super::lj`]): one table per
     /// Tabor parameter, the dearest fit.
+    #[serde(rename = "lj")]
     LennardJones,
 }
 
