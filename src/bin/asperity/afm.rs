@@ -256,24 +256,14 @@ fn plot(path: &Path, a: &AfmAnalysis, c: &AfmCurve) -> Result<(), Box<dyn Error>
         ))?
         .label("contact point")
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], red.stroke_width(1)));
-    for (i, (name, pts)) in models.into_iter().enumerate() {
-        let color = Palette99::pick(i + 2).to_rgba();
-        chart
-            .draw_series(LineSeries::new(
-                pts.into_iter()
-                    .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1),
-                color.stroke_width(2),
-            ))?
-            .label(format!("{name} fit"))
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
-            });
-    }
-    chart
-        .configure_series_labels()
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.8))
-        .draw()?;
+    let fits = models.into_iter().map(|(name, pts)| {
+        let inside = pts
+            .into_iter()
+            .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1)
+            .collect();
+        (format!("{name} fit"), inside)
+    });
+    super::chart::lines_with_legend(&mut chart, fits, 2)?;
     root.present()?;
     Ok(())
 }
