@@ -60,9 +60,9 @@ fn jkr_curve() -> (Vec<f64>, Vec<f64>, usize) {
     (z, raw, rs)
 }
 
-#[test]
-fn jkr_curve_through_the_c_abi() {
-    let (z, f, rs) = jkr_curve();
+/// `asperity_afm_analyze` of the JKR curve's forces (k = 40 N/m, R = 50
+/// nm) with `model`; asserts success.
+fn analyze_jkr_force(z: &[f64], f: &[f64], rs: usize, model: i32) -> AsperityAfmResult {
     let mut r = AsperityAfmResult::default();
     let st = unsafe {
         asperity_afm_analyze(
@@ -73,11 +73,18 @@ fn jkr_curve_through_the_c_abi() {
             rs,
             40.0,
             50e-9,
-            ASPERITY_AFM_MODEL_AUTO,
+            model,
             &mut r,
         )
     };
     assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    r
+}
+
+#[test]
+fn jkr_curve_through_the_c_abi() {
+    let (z, f, rs) = jkr_curve();
+    let r = analyze_jkr_force(&z, &f, rs, ASPERITY_AFM_MODEL_AUTO);
     assert_eq!(r.n_fits, 4);
     assert_eq!(r.recommended_model, ASPERITY_AFM_MODEL_JKR);
     let fit = r.fits[r.recommended_index as usize];
@@ -147,21 +154,7 @@ fn lennard_jones_model_code_through_the_c_abi() {
     // The JKR curve (μ ≈ 12) fitted with the Lennard-Jones sphere, code 5:
     // the same numbers as the Rust API, close to JKR's E*, w.
     let (z, f, rs) = jkr_curve();
-    let mut r = AsperityAfmResult::default();
-    let st = unsafe {
-        asperity_afm_analyze(
-            z.len(),
-            z.as_ptr(),
-            f.as_ptr(),
-            ASPERITY_AFM_INPUT_FORCE,
-            rs,
-            40.0,
-            50e-9,
-            ASPERITY_AFM_MODEL_LJ,
-            &mut r,
-        )
-    };
-    assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    let r = analyze_jkr_force(&z, &f, rs, ASPERITY_AFM_MODEL_LJ);
     assert_eq!(r.n_fits, 1);
     assert_eq!(r.recommended_model, ASPERITY_AFM_MODEL_LJ);
     let fit = r.fits[0];
