@@ -213,7 +213,10 @@ fn afm_model_lj_json_and_plot() {
     assert_eq!(v["recommended_model"], "lj");
     let e = lj["e_star"].as_f64().unwrap();
     let w = lj["work_of_adhesion"].as_f64().unwrap();
-    assert!((e / 0.5e9 - 1.0).abs() < 0.1 && (w / 0.5 - 1.0).abs() < 0.1, "{lj}");
+    assert!(
+        (e / 0.5e9 - 1.0).abs() < 0.1 && (w / 0.5 - 1.0).abs() < 0.1,
+        "{lj}"
+    );
     for key in [
         "e_star_stderr",
         "work_of_adhesion_stderr",
@@ -227,7 +230,10 @@ fn afm_model_lj_json_and_plot() {
     assert!(svg.contains("lj fit"));
     let out = run(&["afm", csv.to_str().unwrap(), "--tip-radius", "50e-9"]);
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("lj              not fitted by auto"), "{text}");
+    assert!(
+        text.contains("lj              not fitted by auto"),
+        "{text}"
+    );
 }
 
 #[test]

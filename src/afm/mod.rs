@@ -29,11 +29,19 @@
 //!    retract curve from its maximum force to the pull-off ([`fit`]: E* and w
 //!    with standard errors for a given tip radius, `E*√R` and `wR` without
 //!    it), with the Tabor parameter `μ = (Rw²/(E*²z₀³))^{1/3}` that follows;
+//!    and the numerical Lennard-Jones sphere through its tabulated law
+//!    (module `lj`: a search in μ from the Maugis–Dugdale fit's, one table
+//!    per μ, 1–4 s optimised). `auto` (no models given) fits the
+//!    Lennard-Jones sphere only when the Maugis–Dugdale fit's λ = 1.157 μ
+//!    lies in the transition range 0.1 < λ < 5, where the two laws differ;
+//!    elsewhere it lists it in [`AfmAnalysis::skipped_fits`] with the reason;
 //! 6. recommends a model the way [`crate::fidelity::advise`] does: among the
 //!    fits whose rms residual is within the tolerance (default 10 %) of the
-//!    best one's, the cheapest (Hertz, DMT, JKR, Maugis–Dugdale) that is
+//!    best one's, the cheapest (Hertz, DMT, JKR, Maugis–Dugdale, Lennard-Jones
+//!    sphere) that is
 //!    consistent with its own Tabor parameter (Johnson & Greenwood 1997: DMT
-//!    for λ ≤ 0.1, JKR for λ ≥ 5, λ = 1.157 μ; Maugis–Dugdale throughout),
+//!    for λ ≤ 0.1, JKR for λ ≥ 5, λ = 1.157 μ; Maugis–Dugdale and the
+//!    Lennard-Jones sphere throughout),
 //!    else the cheapest within the tolerance (flagged);
 //! 7. raises flags ([`FLAG_CODES`]) for what the data do not support.
 //!
@@ -246,7 +254,8 @@ const DMT_LAMBDA_MAX: f64 = 0.1;
 const JKR_LAMBDA_MIN: f64 = 5.0;
 
 /// Whether a fit's own Maugis parameter λ = 1.157 μ lies in its model's
-/// range: DMT for λ ≤ 0.1, JKR for λ ≥ 5, Maugis–Dugdale and Hertz always
+/// range: DMT for λ ≤ 0.1, JKR for λ ≥ 5, Maugis–Dugdale, the Lennard-Jones
+/// sphere and Hertz always
 /// (Hertz comes within the tolerance only when adhesion is negligible).
 fn in_tabor_range(f: &ModelFit) -> bool {
     let lambda = f
