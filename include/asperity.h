@@ -58,6 +58,11 @@
 // Model selector: Maugis–Dugdale with the Lennard-Jones stress.
 #define ASPERITY_AFM_MODEL_MAUGIS_DUGDALE 4
 
+// Model selector: the numerical Lennard-Jones sphere (tabulated; about
+// 1–4 s a fit). AUTO fits it only when the Maugis–Dugdale fit's
+// λ = 1.157 μ lies between 0.1 and 5.
+#define ASPERITY_AFM_MODEL_LJ 5
+
 // Input signal: the array holds the cantilever force (N, positive repulsive).
 #define ASPERITY_AFM_INPUT_FORCE 0
 
@@ -606,7 +611,9 @@ typedef struct AsperityAfmResult {
     uint32_t flags;
     // Reserved, 0.
     uint32_t reserved;
-    // The fitted models, cheapest first; `n_fits` are valid.
+    // The fitted models, cheapest first; `n_fits` are valid. Of five fits
+    // (AUTO with the Lennard-Jones sphere) the four cheapest are kept,
+    // the recommended one always among them.
     struct AsperityAfmFit fits[4];
 } AsperityAfmResult;
 

@@ -69,6 +69,7 @@ pub mod friction;
 pub mod hierarchical;
 pub mod indentation;
 pub mod material;
+mod report;
 pub mod rescaling;
 pub mod scene;
 mod serde_exact;

@@ -88,7 +88,7 @@ fn check_contract(v: &serde_json::Value, radius_known: bool) {
     assert!(v["pull_off_force"].as_f64().unwrap() < 0.0);
     assert!(v["baseline"]["offset"].is_f64() && v["baseline"]["slope"].is_f64());
     let fits = v["fits"].as_array().unwrap();
-    assert_eq!(fits.len(), 4);
+    assert!(!fits.is_empty());
     for f in fits {
         assert!(f["model"].is_string() && f["rms_residual"].is_f64());
         for key in [
@@ -128,6 +128,9 @@ fn afm_json_on_a_synthetic_jkr_curve() {
         prefix.to_str().unwrap(),
     ]));
     check_contract(&v, true);
+    // Auto at μ ≈ 12: the four closed forms, the LJ sphere skipped.
+    assert_eq!(v["fits"].as_array().unwrap().len(), 4);
+    assert_eq!(v["skipped_fits"][0][0], "lj");
     assert_eq!(v["recommended_model"], "jkr");
     // JKR pull-off −(3/2)πwR = −117.81 nN.
     let po = v["pull_off_force"].as_f64().unwrap();
@@ -180,6 +183,57 @@ fn afm_json_on_a_synthetic_jkr_curve() {
     let out = run(&["afm", csv.to_str().unwrap(), "--tip-radius", "50e-9"]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("recommended model    jkr"), "{text}");
+}
+
+#[test]
+fn afm_model_lj_json_and_plot() {
+    // The JKR curve (μ ≈ 12) with `--model lj`: the contract keys, the
+    // Lennard-Jones sphere close to JKR's E*, w, its curve on the plot; the
+    // text report of auto names the skipped fit.
+    let dir = scratch("lj");
+    let csv = dir.join("jkr.csv");
+    write_jkr_csv(&csv);
+    let prefix = dir.join("lj");
+    let v = json(&run(&[
+        "afm",
+        csv.to_str().unwrap(),
+        "--tip-radius",
+        "50e-9",
+        "--model",
+        "lj",
+        "--json",
+        "--svg",
+        prefix.to_str().unwrap(),
+    ]));
+    check_contract(&v, true);
+    let fits = v["fits"].as_array().unwrap();
+    assert_eq!(fits.len(), 1);
+    let lj = &fits[0];
+    assert_eq!(lj["model"], "lj");
+    assert_eq!(v["recommended_model"], "lj");
+    let e = lj["e_star"].as_f64().unwrap();
+    let w = lj["work_of_adhesion"].as_f64().unwrap();
+    assert!(
+        (e / 0.5e9 - 1.0).abs() < 0.1 && (w / 0.5 - 1.0).abs() < 0.1,
+        "{lj}"
+    );
+    for key in [
+        "e_star_stderr",
+        "work_of_adhesion_stderr",
+        "work_of_adhesion_times_radius",
+        "rms_residual",
+        "tabor_parameter",
+    ] {
+        assert!(lj[key].as_f64().unwrap().is_finite(), "{key}");
+    }
+    let svg = std::fs::read_to_string(dir.join("lj-afm.svg")).expect("the plot");
+    assert!(svg.contains("lj fit"));
+    let out = run(&["afm", csv.to_str().unwrap(), "--tip-radius", "50e-9"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("lj              not fitted by auto"),
+        "{text}"
+    );
 }
 
 #[test]

@@ -60,9 +60,9 @@ fn jkr_curve() -> (Vec<f64>, Vec<f64>, usize) {
     (z, raw, rs)
 }
 
-#[test]
-fn jkr_curve_through_the_c_abi() {
-    let (z, f, rs) = jkr_curve();
+/// `asperity_afm_analyze` of the JKR curve's forces (k = 40 N/m, R = 50
+/// nm) with `model`; asserts success.
+fn analyze_jkr_force(z: &[f64], f: &[f64], rs: usize, model: i32) -> AsperityAfmResult {
     let mut r = AsperityAfmResult::default();
     let st = unsafe {
         asperity_afm_analyze(
@@ -73,11 +73,18 @@ fn jkr_curve_through_the_c_abi() {
             rs,
             40.0,
             50e-9,
-            ASPERITY_AFM_MODEL_AUTO,
+            model,
             &mut r,
         )
     };
     assert_eq!(st, ASPERITY_OK, "{}", last_message());
+    r
+}
+
+#[test]
+fn jkr_curve_through_the_c_abi() {
+    let (z, f, rs) = jkr_curve();
+    let r = analyze_jkr_force(&z, &f, rs, ASPERITY_AFM_MODEL_AUTO);
     assert_eq!(r.n_fits, 4);
     assert_eq!(r.recommended_model, ASPERITY_AFM_MODEL_JKR);
     let fit = r.fits[r.recommended_index as usize];
@@ -140,6 +147,37 @@ fn jkr_curve_through_the_c_abi() {
         (f0.e_star_times_sqrt_radius - k_sqrt_r).abs() <= 3.0 * f0.e_star_times_sqrt_radius_stderr
     );
     assert!((r2.pull_off_force - r.pull_off_force).abs() < 1e-12);
+}
+
+#[test]
+fn lennard_jones_model_code_through_the_c_abi() {
+    // The JKR curve (μ ≈ 12) fitted with the Lennard-Jones sphere, code 5:
+    // the same numbers as the Rust API, close to JKR's E*, w.
+    let (z, f, rs) = jkr_curve();
+    let r = analyze_jkr_force(&z, &f, rs, ASPERITY_AFM_MODEL_LJ);
+    assert_eq!(r.n_fits, 1);
+    assert_eq!(r.recommended_model, ASPERITY_AFM_MODEL_LJ);
+    let fit = r.fits[0];
+    assert_eq!(fit.model, ASPERITY_AFM_MODEL_LJ);
+    assert!((fit.e_star / 0.5e9 - 1.0).abs() < 0.1, "E* {}", fit.e_star);
+    assert!(
+        (fit.work_of_adhesion / 0.5 - 1.0).abs() < 0.1,
+        "w {}",
+        fit.work_of_adhesion
+    );
+    assert!(fit.e_star_stderr > 0.0 && fit.tabor_parameter > 5.0);
+    let curve = AfmCurve::new(z, f, Some(rs), Some(40.0)).unwrap();
+    let a = analyze(
+        &curve,
+        &AfmOptions {
+            tip_radius: Some(50e-9),
+            models: vec![asperity::afm::AfmModel::LennardJones],
+            ..AfmOptions::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(a.fits[0].e_star, Some(fit.e_star));
+    assert_eq!(a.fits[0].tabor_parameter, Some(fit.tabor_parameter));
 }
 
 #[test]

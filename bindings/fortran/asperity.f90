@@ -224,6 +224,8 @@ module asperity
   integer(c_int32_t), parameter, public :: ASPERITY_AFM_MODEL_JKR = 3
   !> AFM model selector: Maugis–Dugdale with the Lennard-Jones stress.
   integer(c_int32_t), parameter, public :: ASPERITY_AFM_MODEL_MAUGIS_DUGDALE = 4
+  !> AFM model selector: the numerical Lennard-Jones sphere (tabulated).
+  integer(c_int32_t), parameter, public :: ASPERITY_AFM_MODEL_LJ = 5
   !> AFM input signal: force (N, positive repulsive).
   integer(c_int32_t), parameter, public :: ASPERITY_AFM_INPUT_FORCE = 0
   !> AFM input signal: deflection (m); force = k · deflection.

@@ -37,10 +37,12 @@
 //!   [doi:10.1016/j.surfrep.2005.08.003](https://doi.org/10.1016/j.surfrep.2005.08.003)
 //!   (tip–sample separation from piezo travel and deflection, §2.2).
 
-use crate::contact::{Control, Dmt, Hertz, Jkr, MaugisDugdale, NormalContact};
+use super::lj::ScaledTable;
+use crate::contact::{Control, Dmt, Hertz, Jkr, MaugisDugdale, NormalContact, TabulatedLaw};
 use crate::error::{Error, Result};
 use serde::Serialize;
 use std::f64::consts::PI;
+use std::sync::Arc;
 
 /// A contact law the analysis fits, cheapest first.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
@@ -55,15 +57,21 @@ pub enum AfmModel {
     /// [`MaugisDugdale`] with the Lennard-Jones theoretical stress
     /// (λ = 1.157 μ, [`MaugisDugdale::from_tabor`]).
     MaugisDugdale,
+    /// The numerical Lennard-Jones sphere ([`crate::contact::lj_sphere`])
+    /// through its [`TabulatedLaw`] (module [`super::lj`]): one table per
+    /// Tabor parameter, the dearest fit.
+    #[serde(rename = "lj")]
+    LennardJones,
 }
 
 impl AfmModel {
     /// Every model, cheapest first (the advisor's order).
-    pub const ALL: [AfmModel; 4] = [
+    pub const ALL: [AfmModel; 5] = [
         AfmModel::Hertz,
         AfmModel::Dmt,
         AfmModel::Jkr,
         AfmModel::MaugisDugdale,
+        AfmModel::LennardJones,
     ];
 
     /// The name used on the command line and in JSON.
@@ -73,6 +81,7 @@ impl AfmModel {
             AfmModel::Dmt => "dmt",
             AfmModel::Jkr => "jkr",
             AfmModel::MaugisDugdale => "maugis_dugdale",
+            AfmModel::LennardJones => "lj",
         }
     }
 
@@ -88,10 +97,11 @@ impl AfmModel {
             AfmModel::Dmt => 2,
             AfmModel::Jkr => 3,
             AfmModel::MaugisDugdale => 4,
+            AfmModel::LennardJones => 5,
         }
     }
 
-    /// The model of a C code (1..=4).
+    /// The model of a C code (1..=5).
     pub fn from_code(code: i32) -> Option<Self> {
         Self::ALL.into_iter().find(|m| m.code() == code)
     }
@@ -101,7 +111,8 @@ impl AfmModel {
     }
 
     /// The law for `K = E*√R` (Pa·m^½) and `W = wR` (J/m), built with
-    /// radius `r` (m).
+    /// radius `r` (m). The Lennard-Jones sphere builds its table (about
+    /// 0.1–0.35 s optimised).
     pub(crate) fn law(self, r: f64, k: f64, w: f64, z0: f64) -> Result<Box<dyn NormalContact>> {
         let e = k / r.sqrt();
         let wa = w / r;
@@ -110,6 +121,22 @@ impl AfmModel {
             AfmModel::Dmt => Box::new(Dmt::new(r, e, wa)?),
             AfmModel::Jkr => Box::new(Jkr::new(r, e, wa)?),
             AfmModel::MaugisDugdale => Box::new(MaugisDugdale::from_tabor(r, e, wa, z0)?),
+            AfmModel::LennardJones => {
+                let mu = (w * w / (k * k * z0.powi(3))).cbrt();
+                let mu = crate::error::check::in_range(
+                    "tabor_parameter",
+                    mu,
+                    0.0,
+                    100.0,
+                    "in [0, 100] (the Lennard-Jones sphere's range)",
+                )?;
+                Box::new(ScaledTable {
+                    table: super::lj::unit_table(mu)?,
+                    force: w,
+                    length: z0,
+                    radius: (r * z0).sqrt(),
+                })
+            }
         })
     }
 }
@@ -193,6 +220,78 @@ pub struct ModelFit {
     /// u_c in travel coordinates.
     #[serde(skip)]
     pub(crate) u_c: f64,
+    /// The Lennard-Jones fit's unit table (at its μ).
+    #[serde(skip)]
+    pub(crate) table: Option<SharedTable>,
+}
+
+/// A shared table; equal when it is the same table.
+#[derive(Debug, Clone)]
+pub(crate) struct SharedTable(pub Arc<TabulatedLaw>);
+
+impl PartialEq for SharedTable {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl ModelFit {
+    /// The fitted law, built with radius `r` (m; 1 when unknown: only
+    /// forces and overlaps are meaningful then) and z₀ (m).
+    pub(crate) fn law(&self, r: f64, z0: f64) -> Result<Box<dyn NormalContact>> {
+        match (&self.table, self.kind) {
+            (Some(t), _) => Ok(Box::new(ScaledTable {
+                table: t.0.clone(),
+                force: self.w,
+                length: z0,
+                radius: (r * z0).sqrt(),
+            })),
+            (None, Some(m)) => m.law(r, self.k, self.w, z0),
+            (None, None) => Err(Error::InvalidArgument {
+                name: "fit",
+                value: 0.0,
+                bound: "a fit made by analyze",
+            }),
+        }
+    }
+}
+
+/// Reference scales of a fit's data (θ is O(1) in them).
+pub(crate) struct Scales {
+    /// Tip position at the pull-off (the last point), m.
+    pub y_ref: f64,
+    /// Span of the tip positions, m.
+    pub len: f64,
+    /// Force span, N (the residuals' unit).
+    pub df: f64,
+    /// Position span from the pull-off to the maximum, m.
+    pub dy: f64,
+    /// The smallest force (N).
+    pub f_po: f64,
+}
+
+impl Scales {
+    pub(crate) fn of(d: &FitData) -> Self {
+        let (i_min, i_max) = extremes(d.force);
+        let y_ref = d.tip[i_min];
+        let (ylo, yhi) = d
+            .tip
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| {
+                (a.min(y), b.max(y))
+            });
+        let len = (yhi - ylo).max(1e-13);
+        let f_po = d.force[i_min];
+        let df = (d.force[i_max] - f_po).max(1e-300);
+        let dy = (d.tip[i_max] - y_ref).max(0.05 * len);
+        Self {
+            y_ref,
+            len,
+            df,
+            dy,
+            f_po,
+        }
+    }
 }
 
 /// The data of a fit: corrected force (N) and tip position y = u − F/k (m).
@@ -226,24 +325,26 @@ pub(crate) fn fit(model: AfmModel, d: &FitData) -> Result<ModelFit> {
     }
     let r = d.radius.unwrap_or(1.0);
     // Reference: the last point (the pull-off), the length unit L.
-    let (i_min, i_max) = extremes(d.force);
-    let y_ref = d.tip[i_min];
-    let (ylo, yhi) = d
-        .tip
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| {
-            (a.min(y), b.max(y))
-        });
-    let len = (yhi - ylo).max(1e-13);
-    let f_po = d.force[i_min];
-    let df = (d.force[i_max] - f_po).max(1e-300);
-    let dy = (d.tip[i_max] - y_ref).max(0.05 * len);
+    let Scales {
+        y_ref,
+        len,
+        df,
+        dy,
+        f_po,
+    } = Scales::of(d);
     let k0 = 0.75 * df / dy.powf(1.5);
     let w0 = match model {
         AfmModel::Hertz => 0.0,
         AfmModel::Dmt => (-f_po / (2.0 * PI)).max(1e-6 * df / PI),
         AfmModel::Jkr => (-f_po / (1.5 * PI)).max(1e-6 * df / PI),
         AfmModel::MaugisDugdale => (-f_po / (1.75 * PI)).max(1e-6 * df / PI),
+        AfmModel::LennardJones => {
+            return Err(Error::InvalidArgument {
+                name: "model",
+                value: model.code() as f64,
+                bound: "a closed-form law (the Lennard-Jones sphere is fitted by fit_lj)",
+            })
+        }
     };
     let fs = df;
     let kl = d.spring_constant;
@@ -300,8 +401,86 @@ pub(crate) fn fit(model: AfmModel, d: &FitData) -> Result<ModelFit> {
     let se_w = if p == 3 { se(1).map(|s| s * w) } else { None };
     let se_uc = se(p - 1).map(|s| s * len);
     let law = model.law(r, k, w, d.z0)?;
-    let pull_off = law.pull_off_force(Control::Load)?;
-    let rms = fs * (b.ssr / m as f64).sqrt();
+    finish(
+        model,
+        d,
+        Solved {
+            k,
+            w,
+            u_c: uc,
+            se_k,
+            se_w,
+            se_uc,
+            rms: fs * (b.ssr / m as f64).sqrt(),
+            iterations: b.iterations,
+            converged: b.converged,
+            law,
+            table: None,
+        },
+    )
+}
+
+/// Fit the numerical Lennard-Jones sphere (module [`super::lj`]), its
+/// search in μ starting at `mu_start` (the Maugis–Dugdale fit's).
+pub(crate) fn fit_lj(d: &FitData, mu_start: f64) -> Result<ModelFit> {
+    let f = super::lj::fit(d, mu_start)?;
+    let m = d.force.len() + usize::from(d.pull_off.is_some());
+    let df = Scales::of(d).df;
+    let k = f.w / (f.mu.powf(1.5) * d.z0.powf(1.5));
+    let r = d.radius.unwrap_or(1.0);
+    let law = Box::new(ScaledTable {
+        table: f.table.clone(),
+        force: f.w,
+        length: d.z0,
+        radius: (r * d.z0).sqrt(),
+    });
+    finish(
+        AfmModel::LennardJones,
+        d,
+        Solved {
+            k,
+            w: f.w,
+            u_c: f.u_c,
+            se_k: f.se_ln_k.map(|s| s * k),
+            se_w: f.se_ln_w.map(|s| s * f.w),
+            se_uc: f.se_uc,
+            rms: df * (f.ssr / m as f64).sqrt(),
+            iterations: f.iterations,
+            converged: f.converged,
+            law,
+            table: Some(SharedTable(f.table)),
+        },
+    )
+}
+
+/// A fit's solution in K, W, u_c with its standard errors.
+struct Solved {
+    k: f64,
+    w: f64,
+    u_c: f64,
+    se_k: Option<f64>,
+    se_w: Option<f64>,
+    se_uc: Option<f64>,
+    rms: f64,
+    iterations: usize,
+    converged: bool,
+    law: Box<dyn NormalContact>,
+    table: Option<SharedTable>,
+}
+
+/// The reported fit of a solution.
+fn finish(model: AfmModel, d: &FitData, s: Solved) -> Result<ModelFit> {
+    let Solved {
+        k,
+        w,
+        u_c: uc,
+        se_k,
+        se_w,
+        se_uc,
+        ..
+    } = s;
+    let r = d.radius.unwrap_or(1.0);
+    let pull_off = s.law.pull_off_force(Control::Load)?;
     let known = d.radius.is_some();
     let adhesive = model.adhesive();
     let tabor = if adhesive {
@@ -328,14 +507,15 @@ pub(crate) fn fit(model: AfmModel, d: &FitData) -> Result<ModelFit> {
         pull_off_force: pull_off,
         zero_overlap_position: d.direction * uc,
         zero_overlap_position_stderr: se_uc,
-        rms_residual: rms,
-        points: n,
-        iterations: b.iterations,
-        converged: b.converged,
+        rms_residual: s.rms,
+        points: d.force.len(),
+        iterations: s.iterations,
+        converged: s.converged,
         kind: Some(model),
         k,
         w,
         u_c: uc,
+        table: s.table,
     })
 }
 
@@ -355,22 +535,22 @@ pub(crate) fn extremes(v: &[f64]) -> (usize, usize) {
 }
 
 /// The result of a Levenberg–Marquardt run.
-struct Lm {
-    theta: Vec<f64>,
-    ssr: f64,
+pub(super) struct Lm {
+    pub theta: Vec<f64>,
+    pub ssr: f64,
     /// (JᵀJ)⁻¹ at the solution, row-major, `None` when singular.
-    cov: Option<Vec<f64>>,
-    iterations: usize,
-    converged: bool,
+    pub cov: Option<Vec<f64>>,
+    pub iterations: usize,
+    pub converged: bool,
 }
 
 /// Levenberg–Marquardt with Marquardt's diagonal scaling on a residual
 /// `r(θ)` of length `n` (`None` where the model is undefined); central
 /// differences with step 1e-6 (θ is O(1) by construction).
 /// A residual function: fills its second argument, `None` where undefined.
-type Residual<'a> = dyn Fn(&[f64], &mut [f64]) -> Option<()> + 'a;
+pub(super) type Residual<'a> = dyn Fn(&[f64], &mut [f64]) -> Option<()> + 'a;
 
-fn levenberg_marquardt(r: &Residual, mut th: Vec<f64>, n: usize) -> Option<Lm> {
+pub(super) fn levenberg_marquardt(r: &Residual, mut th: Vec<f64>, n: usize) -> Option<Lm> {
     let p = th.len();
     let mut res = vec![0.0; n];
     r(&th, &mut res)?;
@@ -455,7 +635,12 @@ fn levenberg_marquardt(r: &Residual, mut th: Vec<f64>, n: usize) -> Option<Lm> {
     })
 }
 
-fn normal_equations(jac: &[f64], res: &[f64], n: usize, p: usize) -> (Vec<f64>, Vec<f64>) {
+pub(super) fn normal_equations(
+    jac: &[f64],
+    res: &[f64],
+    n: usize,
+    p: usize,
+) -> (Vec<f64>, Vec<f64>) {
     let mut jtj = vec![0.0; p * p];
     let mut g = vec![0.0; p];
     for i in 0..n {
@@ -509,7 +694,7 @@ fn solve(a: &[f64], b: &[f64], p: usize) -> Option<Vec<f64>> {
 }
 
 /// The inverse of a p×p matrix, column by column.
-fn invert(a: &[f64], p: usize) -> Option<Vec<f64>> {
+pub(super) fn invert(a: &[f64], p: usize) -> Option<Vec<f64>> {
     let mut inv = vec![0.0; p * p];
     for c in 0..p {
         let mut e = vec![0.0; p];

@@ -29,11 +29,19 @@
 //!    retract curve from its maximum force to the pull-off ([`fit`]: E* and w
 //!    with standard errors for a given tip radius, `E*√R` and `wR` without
 //!    it), with the Tabor parameter `μ = (Rw²/(E*²z₀³))^{1/3}` that follows;
+//!    and the numerical Lennard-Jones sphere through its tabulated law
+//!    (module `lj`: a search in μ from the Maugis–Dugdale fit's, one table
+//!    per μ, 1–4 s optimised). `auto` (no models given) fits the
+//!    Lennard-Jones sphere only when the Maugis–Dugdale fit's λ = 1.157 μ
+//!    lies in the transition range 0.1 < λ < 5, where the two laws differ;
+//!    elsewhere it lists it in [`AfmAnalysis::skipped_fits`] with the reason;
 //! 6. recommends a model the way [`crate::fidelity::advise`] does: among the
 //!    fits whose rms residual is within the tolerance (default 10 %) of the
-//!    best one's, the cheapest (Hertz, DMT, JKR, Maugis–Dugdale) that is
+//!    best one's, the cheapest (Hertz, DMT, JKR, Maugis–Dugdale, Lennard-Jones
+//!    sphere) that is
 //!    consistent with its own Tabor parameter (Johnson & Greenwood 1997: DMT
-//!    for λ ≤ 0.1, JKR for λ ≥ 5, λ = 1.157 μ; Maugis–Dugdale throughout),
+//!    for λ ≤ 0.1, JKR for λ ≥ 5, λ = 1.157 μ; Maugis–Dugdale and the
+//!    Lennard-Jones sphere throughout),
 //!    else the cheapest within the tolerance (flagged);
 //! 7. raises flags ([`FLAG_CODES`]) for what the data do not support.
 //!
@@ -61,6 +69,7 @@
 //! * Thesis chapter 1 (1-41)–(1-44) (the adhesive-sphere laws).
 
 pub mod fit;
+mod lj;
 pub mod read;
 
 pub use fit::{AfmModel, ModelFit};
@@ -193,6 +202,9 @@ pub struct AfmAnalysis {
     pub flag_details: Vec<Flag>,
     /// Models that could not be fitted, with the reason.
     pub failed_fits: Vec<(String, String)>,
+    /// Models `auto` did not fit, with the reason (the Lennard-Jones sphere
+    /// outside the DMT–JKR transition range).
+    pub skipped_fits: Vec<(String, String)>,
     /// The options used.
     pub options: AfmOptions,
 }
@@ -200,15 +212,12 @@ pub struct AfmAnalysis {
 impl AfmAnalysis {
     /// One JSON object.
     pub fn to_json(&self) -> String {
-        serde_json::to_string(self).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+        crate::report::to_json(self)
     }
 
     /// The flags as a bit mask, bit i for `FLAG_CODES[i]`.
     pub fn flag_mask(&self) -> u32 {
-        self.flags
-            .iter()
-            .filter_map(|c| FLAG_CODES.iter().position(|x| x == c))
-            .fold(0, |m, i| m | (1 << i))
+        crate::report::flag_mask(&self.flags, &FLAG_CODES)
     }
 
     /// The recommended fit.
@@ -222,13 +231,8 @@ impl AfmAnalysis {
     /// retract baseline) from the maximum corrected force `f_max` (N) down to
     /// the model's pull-off.
     pub fn model_curve(&self, fit: &ModelFit, f_max: f64, n: usize) -> Result<Vec<(f64, f64)>> {
-        let model = fit.kind.ok_or(Error::InvalidArgument {
-            name: "fit",
-            value: 0.0,
-            bound: "a fit made by analyze",
-        })?;
         let r = self.tip_radius.unwrap_or(1.0);
-        let law = model.law(r, fit.k, fit.w, self.options.equilibrium_separation)?;
+        let law = fit.law(r, self.options.equilibrium_separation)?;
         let pc = law.pull_off_force(Control::Load)?;
         let n = n.max(2);
         let mut out = Vec::with_capacity(n);
@@ -250,7 +254,8 @@ const DMT_LAMBDA_MAX: f64 = 0.1;
 const JKR_LAMBDA_MIN: f64 = 5.0;
 
 /// Whether a fit's own Maugis parameter λ = 1.157 μ lies in its model's
-/// range: DMT for λ ≤ 0.1, JKR for λ ≥ 5, Maugis–Dugdale and Hertz always
+/// range: DMT for λ ≤ 0.1, JKR for λ ≥ 5, Maugis–Dugdale, the Lennard-Jones
+/// sphere and Hertz always
 /// (Hertz comes within the tolerance only when adhesion is negligible).
 fn in_tabor_range(f: &ModelFit) -> bool {
     let lambda = f
@@ -444,18 +449,40 @@ pub fn analyze(curve: &AfmCurve, options: &AfmOptions) -> Result<AfmAnalysis> {
         spring_constant: k,
         pull_off: (pull_off_force < -THRESHOLD * floor_r).then_some(pull_off_force),
     };
-    let models: Vec<AfmModel> = if options.models.is_empty() {
-        AfmModel::ALL.to_vec()
-    } else {
-        AfmModel::ALL
-            .into_iter()
-            .filter(|m| options.models.contains(m))
-            .collect()
-    };
-    let mut fits = Vec::new();
+    let auto = options.models.is_empty();
+    let models: Vec<AfmModel> = AfmModel::ALL
+        .into_iter()
+        .filter(|m| auto || options.models.contains(m))
+        .collect();
+    let mut fits: Vec<ModelFit> = Vec::new();
     let mut failed_fits = Vec::new();
+    let mut skipped_fits = Vec::new();
     for m in models {
-        match fit::fit(m, &data) {
+        let result = if m == AfmModel::LennardJones {
+            // The search in μ starts at the Maugis–Dugdale fit's μ.
+            let md = fits
+                .iter()
+                .find(|f| f.kind == Some(AfmModel::MaugisDugdale))
+                .cloned()
+                .or_else(|| fit::fit(AfmModel::MaugisDugdale, &data).ok());
+            let mu = md.as_ref().and_then(|f| f.tabor_parameter);
+            let lambda = mu.map(|mu| crate::material::maugis_over_tabor() * mu);
+            match lambda {
+                Some(l) if auto && !(l > DMT_LAMBDA_MAX && l < JKR_LAMBDA_MIN) => {
+                    skipped_fits.push((
+                        m.name().to_string(),
+                        format!(
+                            "not fitted by auto: the Maugis–Dugdale fit's λ = {l:.3} lies outside the transition range {DMT_LAMBDA_MAX} < λ < {JKR_LAMBDA_MIN}, where the Lennard-Jones sphere and Maugis–Dugdale agree (ask for --model lj to fit it)"
+                        ),
+                    ));
+                    continue;
+                }
+                _ => fit::fit_lj(&data, mu.unwrap_or(1.0)),
+            }
+        } else {
+            fit::fit(m, &data)
+        };
+        match result {
             Ok(f) => fits.push(f),
             Err(e) => failed_fits.push((m.name().to_string(), e.to_string())),
         }
@@ -589,6 +616,7 @@ pub fn analyze(curve: &AfmCurve, options: &AfmOptions) -> Result<AfmAnalysis> {
         flags,
         flag_details,
         failed_fits,
+        skipped_fits,
         options: options.clone(),
     })
 }

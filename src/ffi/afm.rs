@@ -16,6 +16,10 @@ pub const ASPERITY_AFM_MODEL_DMT: i32 = 2;
 pub const ASPERITY_AFM_MODEL_JKR: i32 = 3;
 /// Model selector: Maugis–Dugdale with the Lennard-Jones stress.
 pub const ASPERITY_AFM_MODEL_MAUGIS_DUGDALE: i32 = 4;
+/// Model selector: the numerical Lennard-Jones sphere (tabulated; about
+/// 1–4 s a fit). AUTO fits it only when the Maugis–Dugdale fit's
+/// λ = 1.157 μ lies between 0.1 and 5.
+pub const ASPERITY_AFM_MODEL_LJ: i32 = 5;
 
 /// Input signal: the array holds the cantilever force (N, positive repulsive).
 pub const ASPERITY_AFM_INPUT_FORCE: i32 = 0;
@@ -127,7 +131,9 @@ pub struct AsperityAfmResult {
     pub flags: u32,
     /// Reserved, 0.
     pub reserved: u32,
-    /// The fitted models, cheapest first; `n_fits` are valid.
+    /// The fitted models, cheapest first; `n_fits` are valid. Of five fits
+    /// (AUTO with the Lennard-Jones sphere) the four cheapest are kept,
+    /// the recommended one always among them.
     pub fits: [AsperityAfmFit; 4],
 }
 
@@ -245,7 +251,16 @@ pub unsafe extern "C" fn asperity_afm_analyze(
             flags: a.flag_mask(),
             ..Default::default()
         };
-        for (i, f) in a.fits.iter().take(4).enumerate() {
+        // The four cheapest, the recommended one always kept.
+        let mut kept: Vec<&ModelFit> = a.fits.iter().collect();
+        while kept.len() > 4 {
+            let drop = kept
+                .iter()
+                .rposition(|f| Some(f.model) != a.recommended_model)
+                .unwrap_or(kept.len() - 1);
+            kept.remove(drop);
+        }
+        for (i, f) in kept.into_iter().enumerate() {
             o.fits[i] = fit_of(f);
             if Some(f.model) == a.recommended_model {
                 o.recommended_index = i as i32;

@@ -222,15 +222,12 @@ pub struct IndentationResult {
 impl IndentationResult {
     /// One JSON object (`serde_json`).
     pub fn to_json(&self) -> String {
-        serde_json::to_string(self).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+        crate::report::to_json(self)
     }
 
     /// The flags as a bit mask, bit i for `FLAG_CODES[i]`.
     pub fn flag_mask(&self) -> u32 {
-        self.flags
-            .iter()
-            .filter_map(|c| FLAG_CODES.iter().position(|x| x == c))
-            .fold(0, |m, i| m | (1 << i))
+        crate::report::flag_mask(&self.flags, &FLAG_CODES)
     }
 }
 

@@ -10,7 +10,10 @@ use pyo3::prelude::*;
 /// Analyse an AFM force–distance curve as ``asperity afm --json`` does:
 /// baselines (offset N, slope N/m), contact point (m), jump-in distance (m),
 /// pull-off force (N, negative, from the baseline), adhesion energy (J), the
-/// fits of Hertz, DMT, JKR and Maugis–Dugdale to the retract curve (E* Pa and
+/// fits of Hertz, DMT, JKR, Maugis–Dugdale and the numerical Lennard-Jones
+/// sphere (``"lj"``: tabulated, 1–4 s; ``"auto"`` fits it only when the
+/// Maugis–Dugdale fit's λ = 1.157 μ lies between 0.1 and 5, and lists it in
+/// ``skipped_fits`` otherwise) to the retract curve (E* Pa and
 /// w J/m² with standard errors for a given ``tip_radius`` m, else E*·√R and
 /// w·R), their Tabor parameters and rms residuals (N), the recommended model
 /// and the flags. The curve is a file (``source``: the CSV format of
@@ -18,7 +21,8 @@ use pyo3::prelude::*;
 /// positive repulsive) or ``deflection`` (m, times ``spring_constant``),
 /// approach first; ``retract_start`` splits them (None: at the turning
 /// point). ``spring_constant`` (N/m) overrides the file's. ``model``:
-/// ``"auto"``, ``"hertz"``, ``"dmt"``, ``"jkr"`` or ``"maugis_dugdale"``.
+/// ``"auto"``, ``"hertz"``, ``"dmt"``, ``"jkr"``, ``"maugis_dugdale"`` or
+/// ``"lj"``.
 /// Returns the dict of the CLI's JSON (keys ``pull_off_force``,
 /// ``jump_in_distance``, ``adhesion_energy``, ``baseline``,
 /// ``contact_point``, ``fits``, ``recommended_model``, ``flags``, …).
@@ -72,7 +76,7 @@ fn analyze_afm(
             name => vec![afm::AfmModel::from_name(name).ok_or_else(|| {
                 arg_error(
                     "model",
-                    format!("unknown model `{name}`: auto | hertz | dmt | jkr | maugis_dugdale"),
+                    format!("unknown model `{name}`: auto | hertz | dmt | jkr | maugis_dugdale | lj"),
                 )
             })?],
         },

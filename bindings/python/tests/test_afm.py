@@ -67,6 +67,21 @@ def test_deflection_and_unknown_radius():
     assert abs(fit["work_of_adhesion_times_radius"] - W * R) <= 3 * fit["work_of_adhesion_times_radius_stderr"]
 
 
+def test_lennard_jones_sphere_fit():
+    # The JKR curve (μ ≈ 12) fitted by the numerical Lennard-Jones sphere:
+    # close to the JKR values (the LJ sphere tends to JKR at large μ).
+    z, f, rs = jkr_curve()
+    r = asperity.analyze_afm(position=z, force=f, retract_start=rs, spring_constant=K, tip_radius=R, model="lj")
+    assert [x["model"] for x in r["fits"]] == ["lj"]
+    lj = r["fits"][0]
+    assert lj["e_star"] == pytest.approx(E, rel=0.1)
+    assert lj["work_of_adhesion"] == pytest.approx(W, rel=0.1)
+    assert lj["tabor_parameter"] > 5 and lj["e_star_stderr"] > 0
+    # auto leaves it out at this μ and says why.
+    a = asperity.analyze_afm(position=z, force=f, retract_start=rs, spring_constant=K, tip_radius=R)
+    assert [m for m, _ in a["skipped_fits"]] == ["lj"]
+
+
 def test_errors_name_the_argument():
     z, f, rs = jkr_curve()
     with pytest.raises(asperity.Error, match="model"):

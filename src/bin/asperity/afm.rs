@@ -18,8 +18,11 @@ pub struct AfmArgs {
     /// Tip radius R (m); without it the fits give E*·√R and w·R.
     #[arg(long)]
     pub tip_radius: Option<f64>,
-    /// auto (fit every model, recommend one) | hertz | dmt | jkr |
-    /// maugis_dugdale.
+    /// auto (fit the models, recommend one) | hertz | dmt | jkr |
+    /// maugis_dugdale | lj (the numerical Lennard-Jones sphere, tabulated:
+    /// about 1–3 s; auto fits it only when the Maugis–Dugdale fit's
+    /// λ = 1.157 μ lies between 0.1 and 5, where it differs from
+    /// Maugis–Dugdale, and says so otherwise).
     #[arg(long, default_value = "auto")]
     pub model: String,
     /// Spring constant k (N/m), overriding the file's.
@@ -29,7 +32,7 @@ pub struct AfmArgs {
     #[arg(long)]
     pub position_column: Option<String>,
     /// Lennard-Jones equilibrium separation z₀ (m) of the Maugis–Dugdale
-    /// stress and the Tabor parameter.
+    /// stress, the Lennard-Jones sphere and the Tabor parameter.
     #[arg(long, default_value_t = 0.3e-9)]
     pub z0: f64,
     /// Print one JSON object instead of the report.
@@ -45,15 +48,8 @@ pub struct AfmArgs {
 pub fn run(args: &AfmArgs) -> Result<(), Box<dyn Error>> {
     let models = match args.model.as_str() {
         "auto" => Vec::new(),
-        "lj" => {
-            return Err(
-                "model `lj`: the tabulated Lennard-Jones sphere is not fitted yet; \
-                        maugis_dugdale uses the Lennard-Jones stress (λ = 1.157 μ)"
-                    .into(),
-            )
-        }
         m => vec![AfmModel::from_name(m).ok_or_else(|| {
-            format!("unknown model `{m}`: auto | hertz | dmt | jkr | maugis_dugdale")
+            format!("unknown model `{m}`: auto | hertz | dmt | jkr | maugis_dugdale | lj")
         })?],
     };
     let curve = AfmCurve::read(&args.file, args.position_column.as_deref())
@@ -166,6 +162,9 @@ fn report(a: &AfmAnalysis, c: &AfmCurve) {
     for (m, e) in &a.failed_fits {
         outln!("{m:<15} not fitted: {e}");
     }
+    for (m, e) in &a.skipped_fits {
+        outln!("{m:<15} {e}");
+    }
     outln!(
         "recommended model    {}",
         a.recommended_model.unwrap_or("none")
@@ -257,24 +256,14 @@ fn plot(path: &Path, a: &AfmAnalysis, c: &AfmCurve) -> Result<(), Box<dyn Error>
         ))?
         .label("contact point")
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], red.stroke_width(1)));
-    for (i, (name, pts)) in models.into_iter().enumerate() {
-        let color = Palette99::pick(i + 2).to_rgba();
-        chart
-            .draw_series(LineSeries::new(
-                pts.into_iter()
-                    .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1),
-                color.stroke_width(2),
-            ))?
-            .label(format!("{name} fit"))
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
-            });
-    }
-    chart
-        .configure_series_labels()
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.8))
-        .draw()?;
+    let fits = models.into_iter().map(|(name, pts)| {
+        let inside = pts
+            .into_iter()
+            .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1)
+            .collect();
+        (format!("{name} fit"), inside)
+    });
+    super::chart::lines_with_legend(&mut chart, fits, 2)?;
     root.present()?;
     Ok(())
 }

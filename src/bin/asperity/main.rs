@@ -30,6 +30,7 @@ macro_rules! outln {
 
 mod afm;
 mod axis;
+mod chart;
 mod profile;
 mod slide;
 
@@ -605,20 +606,7 @@ fn plot(
         .x_label_formatter(&*fx)
         .y_label_formatter(&*fy)
         .draw()?;
-    for (i, (name, pts)) in series.iter().enumerate() {
-        let color = Palette99::pick(i).to_rgba();
-        chart
-            .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))?
-            .label(name.as_str())
-            .legend(move |(a, b)| {
-                PathElement::new(vec![(a, b), (a + 20, b)], color.stroke_width(2))
-            });
-    }
-    chart
-        .configure_series_labels()
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.8))
-        .draw()?;
+    chart::lines_with_legend(&mut chart, series.iter().cloned(), 0)?;
     root.present()?;
     Ok(())
 }

@@ -366,7 +366,7 @@ def analyze_afm(
     retract_start: Optional[int] = None,
     spring_constant: Optional[Real] = None,
     tip_radius: Optional[Real] = None,
-    model: Literal["auto", "hertz", "dmt", "jkr", "maugis_dugdale"] = "auto",
+    model: Literal["auto", "hertz", "dmt", "jkr", "maugis_dugdale", "lj"] = "auto",
     position_column: Optional[str] = None,
     z0: Real = 0.3e-9,
     tolerance: Real = 0.1,
