@@ -58,7 +58,7 @@ pub enum AfmModel {
     /// (λ = 1.157 μ, [`MaugisDugdale::from_tabor`]).
     MaugisDugdale,
     /// The numerical Lennard-Jones sphere ([`crate::contact::lj_sphere`])
-    /// through its [`TabulatedLaw`] (module [`super::lj`]): one table per
+    /// through its [`TabulatedLaw`] (module `afm::lj`): one table per
     /// Tabor parameter, the dearest fit.
     #[serde(rename = "lj")]
     LennardJones,
