@@ -1514,6 +1514,22 @@ typedef struct AsperityZhuravlevFriction {
 typedef double (*AsperitySummitDensity)(double xi,
                                         void *user_data);
 
+// The equilibrium of a Bora interface at one separation.
+typedef struct AsperityBoraResponse {
+    // Total load P (N), ≥ 0.
+    double load;
+    // Real contact area (m²): loaded springs times the cell area Δ².
+    double area;
+    // Normal stiffness −dP/dd (N/m), ≥ 0.
+    double stiffness;
+    // Number of loaded springs.
+    uint64_t contacts;
+    // Conjugate-gradient iterations spent.
+    uint32_t iterations;
+    // Reserved, 0.
+    uint32_t reserved;
+} AsperityBoraResponse;
+
 // The Borodich–Kryukova slider (thesis §5.3.7), by value: a rigid block
 // of length 2a and mass M on a horizontal spring k_x, on a belt moving at
 // speed U, both faces carrying a layer of linear springs (stiffness ε per
@@ -1604,22 +1620,6 @@ typedef struct AsperityBgtResponse {
     // Normal stiffness −dP/dd (N/m), ≥ 0.
     double stiffness;
 } AsperityBgtResponse;
-
-// The equilibrium of a Bora interface at one separation.
-typedef struct AsperityBoraResponse {
-    // Total load P (N), ≥ 0.
-    double load;
-    // Real contact area (m²): loaded springs times the cell area Δ².
-    double area;
-    // Normal stiffness −dP/dd (N/m), ≥ 0.
-    double stiffness;
-    // Number of loaded springs.
-    uint64_t contacts;
-    // Conjugate-gradient iterations spent.
-    uint32_t iterations;
-    // Reserved, 0.
-    uint32_t reserved;
-} AsperityBoraResponse;
 
 // The Sergienko–Bukharov model (thesis §5.3.5, in the library's formulation
 // from the thesis's description; Rust module `sergienko_bukharov`), by value: a rigid body of mass m under the load N₀
@@ -2849,6 +2849,37 @@ int32_t asperity_zhuravlev_eval(const struct AsperityZhuravlev *model,
                                 size_t order,
                                 struct AsperityZhuravlevResponse *out);
 
+// A Bora interface on `nx` × `ny` heights `heights` (m, finite, row-major:
+// `heights[i + nx*j]` at x = iΔ, y = jΔ; copied) with grid spacing `spacing`
+// Δ (m, > 0), springs of stiffness `spring_stiffness` (N/m, > 0) on a
+// substrate of contact modulus `contact_modulus` E* (Pa, > 0), or a rigid
+// substrate (independent springs) when `contact_modulus` is 0. At most
+// 16384 points. Writes a new handle to `*out` (NULL on failure).
+int32_t asperity_bora_new(size_t nx,
+                          size_t ny,
+                          double spacing,
+                          const double *heights,
+                          double spring_stiffness,
+                          double contact_modulus,
+                          struct AsperityBora **out);
+
+// Release a Bora interface; NULL is accepted.
+void asperity_bora_free(struct AsperityBora *bora);
+
+// The equilibrium with the flat at `separation` d (m, finite, in the frame
+// of the heights): load, area, stiffness, contacts to `*out`, and, unless
+// `forces` is NULL, the nx·ny spring forces (N) to `forces`.
+int32_t asperity_bora_solve(const struct AsperityBora *bora,
+                            double separation,
+                            struct AsperityBoraResponse *out,
+                            double *forces);
+
+// The separation (m) at which the interface carries `load` (N, finite
+// and > 0).
+int32_t asperity_bora_separation_at_load(const struct AsperityBora *bora,
+                                         double load,
+                                         struct AsperitySeparation *out);
+
 // The elastic normal force F_el,y = ε ∫ max(f_s(ξ) + f_b(ξ + x − Ut) − y, 0) dξ
 // (N, midpoint rule on `nodes` cells) of the slider `bk` at position `x`
 // (m), mean-line distance `y` (m) and time `time` (s), to `*out`.
@@ -2907,37 +2938,6 @@ int32_t asperity_bgt_separation_at_load(const struct AsperityBgtParams *bgt,
 int32_t asperity_bgt_properties(const struct AsperityBgtParams *bgt,
                                 double *summit_density,
                                 double *area_per_load);
-
-// A Bora interface on `nx` × `ny` heights `heights` (m, finite, row-major:
-// `heights[i + nx*j]` at x = iΔ, y = jΔ; copied) with grid spacing `spacing`
-// Δ (m, > 0), springs of stiffness `spring_stiffness` (N/m, > 0) on a
-// substrate of contact modulus `contact_modulus` E* (Pa, > 0), or a rigid
-// substrate (independent springs) when `contact_modulus` is 0. At most
-// 16384 points. Writes a new handle to `*out` (NULL on failure).
-int32_t asperity_bora_new(size_t nx,
-                          size_t ny,
-                          double spacing,
-                          const double *heights,
-                          double spring_stiffness,
-                          double contact_modulus,
-                          struct AsperityBora **out);
-
-// Release a Bora interface; NULL is accepted.
-void asperity_bora_free(struct AsperityBora *bora);
-
-// The equilibrium with the flat at `separation` d (m, finite, in the frame
-// of the heights): load, area, stiffness, contacts to `*out`, and, unless
-// `forces` is NULL, the nx·ny spring forces (N) to `forces`.
-int32_t asperity_bora_solve(const struct AsperityBora *bora,
-                            double separation,
-                            struct AsperityBoraResponse *out,
-                            double *forces);
-
-// The separation (m) at which the interface carries `load` (N, finite
-// and > 0).
-int32_t asperity_bora_separation_at_load(const struct AsperityBora *bora,
-                                         double load,
-                                         struct AsperitySeparation *out);
 
 // Run the Sergienko–Bukharov model `params` on `n_heights` spring-top
 // heights `heights` (m, finite; read only for `ASPERITY_HEIGHTS_LIST`, may

@@ -1123,7 +1123,7 @@ fn indentation_fit_shared() {
 }
 
 const SURFACE: &str = "surfaces (src/surface, src/ffi/surface.rs)";
-const GW: &str = "Greenwood–Williamson (src/statistics, src/ffi/statistics.rs)";
+const GW: &str = "Greenwood–Williamson (src/statistics, src/ffi/statistics/mod.rs)";
 
 /// `profile_characterise` without arguments: a seeded self-affine profile
 /// (H = 0.7, Rq = 1 µm, 2^14 points at 1 µm) generated, characterised and fed
@@ -1211,7 +1211,7 @@ fn profile_characterise_shared() {
     check_profile_characterise(Linkage::Shared);
 }
 
-const BELT: &str = "Borodich–Kryukova (src/statistics/borodich_kryukova.rs, src/ffi/statistics.rs)";
+const BELT: &str = "Borodich–Kryukova (src/statistics/borodich_kryukova.rs, src/ffi/statistics/borodich_kryukova.rs)";
 const CHAIN: &str = "Schmittbuhl (src/hierarchical/schmittbuhl.rs, src/ffi/hierarchical.rs)";
 
 /// `thesis_models`: Borodich–Kryukova on flat layers (rest force = weight,

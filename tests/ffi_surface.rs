@@ -1,5 +1,5 @@
 //! The surface and statistics C ABI (`src/ffi/surface.rs`,
-//! `src/ffi/statistics.rs`) called from Rust: analytic values of a sine
+//! `src/ffi/statistics/`) called from Rust: analytic values of a sine
 //! profile, equality with the Rust API, the generators, Greenwood–Williamson
 //! and Zhuravlev, and the error paths (NULL pointers, lengths, selectors,
 //! non-finite input, the failing index of a batch).

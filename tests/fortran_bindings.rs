@@ -896,7 +896,7 @@ const HOMOGENISED: &str =
     "the homogenised friction law (src/friction/homogenised.rs, src/ffi/homogenised.rs)";
 const TABLE: &str = "the tabulated law (src/contact/tabulated.rs, src/ffi/tabulated.rs)";
 const SURFACE: &str = "surfaces (src/surface, src/ffi/surface.rs)";
-const GW: &str = "Greenwood–Williamson and Zhuravlev (src/statistics, src/ffi/statistics.rs)";
+const GW: &str = "Greenwood–Williamson and Zhuravlev (src/statistics, src/ffi/statistics/mod.rs)";
 const INDENT: &str =
     "indentation and rescaling (src/indentation.rs, src/rescaling.rs, src/ffi/indentation.rs)";
 

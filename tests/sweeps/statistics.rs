@@ -1,4 +1,4 @@
-//! Greenwood–Williamson surfaces through `src/ffi/statistics.rs`
+//! Greenwood–Williamson surfaces through `src/ffi/statistics/`
 //! (`statistics_*`): parametric and empirical, monotone in the separation,
 //! the inverse reproducing the load, batches.
 

@@ -1,4 +1,4 @@
-//! Multi-asperity statistics (`src/ffi/statistics.rs`): Greenwood–Williamson
+//! Multi-asperity statistics (`src/ffi/statistics/`): Greenwood–Williamson
 //! (parametric and empirical surfaces), plasticity index, deformation
 //! regime, Zhuravlev, Bush–Gibson–Thomas, Bora et al., Borodich–Kryukova,
 //! Sergienko–Bukharov.
