@@ -184,6 +184,21 @@ pub struct RoughnessParameters {
     pub convention: Convention,
 }
 
+impl RoughnessParameters {
+    /// Why Rc and RSm are `None`, or `None` when they are given: no profile
+    /// element passes the height (10 % by default) and width (1 % of the
+    /// sampling length) discriminations (ISO 4287 §3.2.8–3.2.9), which
+    /// happens to a form-dominated profile without a cut-off and to tall
+    /// peaks narrower than the width discrimination.
+    pub fn profile_elements_reason(&self) -> Option<&'static str> {
+        self.rc.is_none().then_some(
+            "no profile element passes the convention's height (10 %) and width (1 % of the \
+             sampling length) discriminations: a form-dominated profile (give a cut-off λc) or \
+             tall peaks narrower than the width discrimination",
+        )
+    }
+}
+
 /// Options of [`roughness_parameters`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ParameterOptions {

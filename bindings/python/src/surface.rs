@@ -121,6 +121,7 @@ fn line_json(
         .map_err(err_text)?;
     let estimate = s::hurst_estimate(analysed.heights(), dx).map_err(err_text)?;
     let fit = estimate.fit;
+    let elements_reason = p.profile_elements_reason();
     let mut v = serde_json::to_value(p).map_err(err_text)?;
     if let (Some(o), Value::Object(k)) = (
         v.as_object_mut(),
@@ -152,6 +153,7 @@ fn line_json(
         "psd_hurst_uncertainty": fit.map(|f| f.hurst_uncertainty),
         "psd_fit": fit,
         "psd_fit_reason": estimate.reason,
+        "profile_elements_reason": elements_reason,
     });
     if let (Some(o), Value::Object(extra)) = (v.as_object_mut(), extra) {
         o.extend(extra);

@@ -107,11 +107,6 @@ pub(super) fn analyse_line(
     })
 }
 
-/// Why Rc and RSm are n/a: no profile element survives the rules.
-const NO_ELEMENTS: &str = "no profile element passes the convention's height (10 %) and width \
-     (1 % of the sampling length) discriminations: a form-dominated profile (give --cutoff λc) or \
-     tall peaks narrower than the width discrimination";
-
 /// `asperity profile` on a line scan: analyses it, prints the table or the
 /// JSON, and writes the plots.
 pub(super) fn line_scan(
@@ -165,7 +160,7 @@ pub(super) fn line_scan(
             "psd_hurst_uncertainty": a.fit.map(|f| f.hurst_uncertainty),
             "psd_fit": a.fit,
             "psd_fit_reason": a.no_fit,
-            "profile_elements_reason": p.rc.is_none().then_some(NO_ELEMENTS),
+            "profile_elements_reason": p.profile_elements_reason(),
             "plots": plots,
         });
         if let Value::Object(extra) = extra {
@@ -305,8 +300,8 @@ pub(super) fn line_scan(
         ),
     ];
     print_rows(&rows);
-    if p.rc.is_none() {
-        outln!("Rc, RSm: {NO_ELEMENTS}");
+    if let Some(reason) = p.profile_elements_reason() {
+        outln!("Rc, RSm: {reason}");
     }
     if let Some(f) = &a.fit {
         outln!(
