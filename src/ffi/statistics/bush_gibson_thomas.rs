@@ -89,27 +89,10 @@ pub unsafe extern "C" fn asperity_bgt_eval_batch(
 ) -> i32 {
     guard(|| {
         let bgt = input(bgt, "bgt")?.to_model()?;
-        if n == 0 {
-            return Ok(());
-        }
-        input(separation, "separation")?;
-        output(load, "load")?;
-        for i in 0..n {
-            // Read before any write: the input and output arrays may alias.
-            let d = *separation.add(i);
-            let r = bgt_eval(&bgt, d).map_err(|e| Failure::at(i, e))?;
-            *load.add(i) = r.load;
-            if !area.is_null() {
-                *area.add(i) = r.area;
-            }
-            if !contacts.is_null() {
-                *contacts.add(i) = r.contacts;
-            }
-            if !stiffness.is_null() {
-                *stiffness.add(i) = r.stiffness;
-            }
-        }
-        Ok(())
+        response_batch(n, separation, [load, area, contacts, stiffness], |d, _| {
+            let r = bgt_eval(&bgt, d)?;
+            Ok([r.load, r.area, r.contacts, r.stiffness])
+        })
     })
 }
 

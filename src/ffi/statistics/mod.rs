@@ -232,14 +232,17 @@ fn gw_eval(gw: &GreenwoodWilliamson, separation: f64) -> Result<AsperityGwRespon
     })
 }
 
-unsafe fn gw_batch(
-    gw: &GreenwoodWilliamson,
+/// The batch loop of the multi-asperity responses: for each separation d,
+/// `eval(d, with_stiffness)` gives (load, area, contacts, stiffness), written
+/// to `load` and to the outputs that are not NULL (the stiffness is asked for
+/// only when its array is given). `separation` and `load` are required
+/// unless n = 0; inputs and outputs may alias; an error at element i leaves
+/// the elements from i on untouched and names i.
+unsafe fn response_batch(
     n: usize,
     separation: *const f64,
-    load: *mut f64,
-    area: *mut f64,
-    contacts: *mut f64,
-    stiffness: *mut f64,
+    [load, area, contacts, stiffness]: [*mut f64; 4],
+    mut eval: impl FnMut(f64, bool) -> Result<[f64; 4]>,
 ) -> core::result::Result<(), Failure> {
     if n == 0 {
         return Ok(());
@@ -249,24 +252,33 @@ unsafe fn gw_batch(
     for i in 0..n {
         // Read before any write: the input and output arrays may alias.
         let d = *separation.add(i);
-        let r = gw.response(d).map_err(|e| Failure::at(i, e))?;
-        let k = if stiffness.is_null() {
-            0.0
-        } else {
-            gw.stiffness(d).map_err(|e| Failure::at(i, e))?
-        };
-        *load.add(i) = r.load;
-        if !area.is_null() {
-            *area.add(i) = r.area;
-        }
-        if !contacts.is_null() {
-            *contacts.add(i) = r.contacts;
-        }
-        if !stiffness.is_null() {
-            *stiffness.add(i) = k;
+        let [p, a, c, k] = eval(d, !stiffness.is_null()).map_err(|e| Failure::at(i, e))?;
+        *load.add(i) = p;
+        for (out, v) in [(area, a), (contacts, c), (stiffness, k)] {
+            if !out.is_null() {
+                *out.add(i) = v;
+            }
         }
     }
     Ok(())
+}
+
+/// [`response_batch`] of a Greenwood–Williamson surface.
+unsafe fn gw_batch(
+    gw: &GreenwoodWilliamson,
+    n: usize,
+    separation: *const f64,
+    outputs: [*mut f64; 4],
+) -> core::result::Result<(), Failure> {
+    response_batch(n, separation, outputs, |d, with_stiffness| {
+        let r = gw.response(d)?;
+        let k = if with_stiffness {
+            gw.stiffness(d)?
+        } else {
+            0.0
+        };
+        Ok([r.load, r.area, r.contacts, k])
+    })
 }
 
 /// Greenwood–Williamson load, real area, number of contacts and stiffness at
@@ -303,7 +315,7 @@ pub unsafe extern "C" fn asperity_gw_eval_batch(
 ) -> i32 {
     guard(|| {
         let gw = input(gw, "gw")?.to_model()?;
-        gw_batch(&gw, n, separation, load, area, contacts, stiffness)
+        gw_batch(&gw, n, separation, [load, area, contacts, stiffness])
     })
 }
 
@@ -446,7 +458,7 @@ pub unsafe extern "C" fn asperity_gw_empirical_eval_batch(
 ) -> i32 {
     guard(|| {
         let gw = &input(gw, "gw")?.0;
-        gw_batch(gw, n, separation, load, area, contacts, stiffness)
+        gw_batch(gw, n, separation, [load, area, contacts, stiffness])
     })
 }
 
