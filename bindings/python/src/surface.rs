@@ -686,19 +686,7 @@ fn areal_gaussian_filter<'py>(
     dy: Option<&Bound<'_, PyAny>>,
     ends: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let e = match ends {
-        None => s::FilterEnds::Discard,
-        Some(v) => match string(v, "ends")?.as_str() {
-            "discard" => s::FilterEnds::Discard,
-            "keep" => s::FilterEnds::Keep,
-            x => {
-                return Err(arg_error(
-                    "ends",
-                    format!("must be \"discard\" or \"keep\", got {x:?}"),
-                ))
-            }
-        },
-    };
+    let e = filter_ends(ends)?;
     let lc = real(cutoff, "cutoff")?;
     let t = topography_arg(z, dx, dy)?;
     let f = py
@@ -752,6 +740,21 @@ fn remove_form<'py>(
 
 /// gaussian_filter(z, dx, cutoff, ends="discard") -> dict
 ///
+/// The ``ends`` argument of the filters: ``"discard"`` (default) or ``"keep"``.
+fn filter_ends(ends: Option<&Bound<'_, PyAny>>) -> PyResult<s::FilterEnds> {
+    match ends {
+        None => Ok(s::FilterEnds::Discard),
+        Some(v) => match string(v, "ends")?.as_str() {
+            "discard" => Ok(s::FilterEnds::Discard),
+            "keep" => Ok(s::FilterEnds::Keep),
+            x => Err(arg_error(
+                "ends",
+                format!("must be \"discard\" or \"keep\", got {x:?}"),
+            )),
+        },
+    }
+}
+
 /// ISO 16610-21 Gaussian filter of heights ``z`` (m, every ``dx`` m) with
 /// cut-off λc ``cutoff`` (m): ``mean_line`` and ``roughness`` (m) on the
 /// retained samples, from index ``first_index`` (``ends="discard"`` drops
@@ -765,19 +768,7 @@ fn gaussian_filter<'py>(
     cutoff: &Bound<'_, PyAny>,
     ends: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let e = match ends {
-        None => s::FilterEnds::Discard,
-        Some(e) => match string(e, "ends")?.as_str() {
-            "discard" => s::FilterEnds::Discard,
-            "keep" => s::FilterEnds::Keep,
-            x => {
-                return Err(arg_error(
-                    "ends",
-                    format!("must be \"discard\" or \"keep\", got {x:?}"),
-                ))
-            }
-        },
-    };
+    let e = filter_ends(ends)?;
     let p = s::Profile::new(real(dx, "dx")?, heights(z)?.as_slice()?.to_vec()).map_err(rz)?;
     let lc = real(cutoff, "cutoff")?;
     let f = py.detach(|| s::gaussian_filter(&p, lc, e)).map_err(rs)?;
